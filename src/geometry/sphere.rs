@@ -1,0 +1,56 @@
+//! Spheres.
+
+use std::f64::consts::PI;
+
+use glam::{DVec2, DVec3};
+
+use super::{Aabb, Hit, Ray};
+
+/// Nearest intersection of `ray` with the sphere in (t_min, t_max).
+///
+/// Uses the numerically stable quadratic (no cancellation between −b and √disc).
+pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    let oc = ray.origin - center;
+    let a = ray.dir.length_squared();
+    let half_b = oc.dot(ray.dir);
+    let c = oc.length_squared() - radius * radius;
+    let disc = half_b * half_b - a * c;
+    if disc < 0.0 {
+        return None;
+    }
+    let sq = disc.sqrt();
+    let q = -half_b - sq.copysign(half_b);
+    let (mut t0, mut t1) = (q / a, c / q);
+    if t0 > t1 {
+        std::mem::swap(&mut t0, &mut t1);
+    }
+    let t = if t0 > t_min && t0 < t_max {
+        t0
+    } else if t1 > t_min && t1 < t_max {
+        t1
+    } else {
+        return None;
+    };
+    let normal = (ray.at(t) - center) / radius;
+    Some(Hit {
+        t,
+        normal,
+        uv: uv(normal),
+    })
+}
+
+/// Equirectangular coordinates of a unit direction from the centre: +Y is the north pole (v = 0),
+/// u = φ/2π with φ measured from +X towards −Z (counter-clockwise seen from above).
+pub fn uv(n: DVec3) -> DVec2 {
+    let theta = n.y.clamp(-1.0, 1.0).acos();
+    let mut phi = (-n.z).atan2(n.x);
+    if phi < 0.0 {
+        phi += 2.0 * PI;
+    }
+    DVec2::new(phi / (2.0 * PI), theta / PI)
+}
+
+/// Object-space bounds.
+pub fn bounds(center: DVec3, radius: f64) -> Aabb {
+    Aabb::new(center - radius, center + radius)
+}

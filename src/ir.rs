@@ -1,0 +1,537 @@
+//! The scene IR: plain data produced by the language evaluator and the legacy front ends, consumed
+//! by the optimizer and the renderer. No parsing types and no render types live here.
+//!
+//! Conventions: world units are free (the course uses pixels), `f64` everywhere, colours are linear
+//! RGB with no upper clamp, every item carries the [`Span`] of the source that made it.
+
+use std::path::PathBuf;
+
+use glam::{DAffine3, DVec3};
+
+use crate::source::Span;
+
+/// Linear RGB colour (channels may exceed 1 for bright lights).
+pub type Color = DVec3;
+
+/// Index into [`Scene::materials`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct MaterialId(pub u32);
+
+/// Index into [`Scene::textures`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TextureId(pub u32);
+
+/// A whole evaluated scene, ready for optimisation and rendering.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// The one camera.
+    pub camera: Camera,
+    /// All light sources.
+    pub lights: Vec<Light>,
+    /// Materials referenced by objects.
+    pub materials: Vec<Material>,
+    /// Textures referenced by materials.
+    pub textures: Vec<Texture>,
+    /// Top-level objects (groups are flattened by the front ends; CSG nodes keep children).
+    pub objects: Vec<Object>,
+    /// How to render.
+    pub settings: RenderSettings,
+}
+
+impl Scene {
+    /// The material behind an id.
+    pub fn material(&self, id: MaterialId) -> &Material {
+        &self.materials[id.0 as usize]
+    }
+
+    /// Adds a material and returns its id.
+    pub fn add_material(&mut self, m: Material) -> MaterialId {
+        self.materials.push(m);
+        MaterialId((self.materials.len() - 1) as u32)
+    }
+
+    /// Adds a texture and returns its id.
+    pub fn add_texture(&mut self, t: Texture) -> TextureId {
+        self.textures.push(t);
+        TextureId((self.textures.len() - 1) as u32)
+    }
+}
+
+/// How pixels map to rays.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Camera {
+    /// Eye point (ray origin).
+    pub eye: DVec3,
+    /// The point looked at; the course image plane passes through it.
+    pub center: DVec3,
+    /// Up direction (re-orthogonalised against the view direction by the renderer).
+    pub up: DVec3,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// How the view is sized.
+    pub projection: Projection,
+    /// Thin-lens aperture radius in world units; 0 is a pinhole.
+    pub aperture: f64,
+    /// Distance from the eye to the plane in focus (used when `aperture > 0`).
+    pub focus_distance: f64,
+    /// Where it was defined.
+    pub span: Span,
+}
+
+/// View sizing of a [`Camera`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// The course camera (COURSE.md §2.4): `|up|` is the size of one pixel at the plane through
+    /// `center`; pixel (x, y) with offset (sx, sy) looks through
+    /// `center + (x+sx−w/2)·right + ((h−1−y)+sy−h/2)·up'`.
+    Course,
+    /// A pinhole (or thin lens) with this vertical field of view, in radians.
+    Perspective {
+        /// Vertical field of view in radians, in (0, π).
+        fov_y: f64,
+    },
+}
+
+/// A light source with an RGB intensity.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    /// Where and what shape.
+    pub kind: LightKind,
+    /// RGB intensity; may exceed 1.
+    pub color: Color,
+    /// Where it was defined.
+    pub span: Span,
+}
+
+/// The geometry of a light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// A point light.
+    Point {
+        /// Position.
+        position: DVec3,
+    },
+    /// A parallelogram light `corner + s·u + t·v`, sampled on a `samples[0]×samples[1]` grid.
+    Area {
+        /// One corner.
+        corner: DVec3,
+        /// First edge.
+        u: DVec3,
+        /// Second edge.
+        v: DVec3,
+        /// Stratified sample counts along `u` and `v` (each ≥ 1).
+        samples: [u32; 2],
+    },
+}
+
+impl LightKind {
+    /// The light's centre (its position for a point light).
+    pub fn center(&self) -> DVec3 {
+        match *self {
+            LightKind::Point { position } => position,
+            LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
+        }
+    }
+}
+
+/// Surface appearance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Base colour C (replaced by `texture` where present).
+    pub color: Color,
+    /// Colour texture, replacing `color`.
+    pub texture: Option<TextureId>,
+    /// Bump map perturbing the normal.
+    pub bump: Option<Bump>,
+    /// Ambient coefficient.
+    pub ka: f64,
+    /// Diffuse coefficient.
+    pub kd: f64,
+    /// Specular coefficient.
+    pub ks: f64,
+    /// Phong exponent.
+    pub n: f64,
+    /// Mirror reflection weight (course files: equal to `ks`).
+    pub reflect: f64,
+    /// Transmission weight.
+    pub refract: f64,
+    /// Index of refraction of the material; the outside is 1.
+    pub eta: f64,
+    /// Shading model for this material; `None` uses the scene's.
+    pub shading: Option<ShadingModel>,
+    /// Where it was defined.
+    pub span: Span,
+}
+
+impl Default for Material {
+    fn default() -> Material {
+        Material {
+            color: DVec3::splat(0.8),
+            texture: None,
+            bump: None,
+            ka: 0.2,
+            kd: 0.8,
+            ks: 0.0,
+            n: 1.0,
+            reflect: 0.0,
+            refract: 0.0,
+            eta: 1.0,
+            shading: None,
+            span: Span::default(),
+        }
+    }
+}
+
+/// A bump map: a height texture whose gradient perturbs the normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bump {
+    /// The height field (the green channel of an image, or a procedural texture's luminance).
+    pub texture: TextureId,
+    /// Strength of the perturbation.
+    pub scale: f64,
+}
+
+/// A colour source over surface coordinates.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Texture {
+    /// An image file, looked up nearest-pixel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top.
+    Image {
+        /// Resolved path.
+        path: PathBuf,
+        /// How surface points map to (u, v).
+        mapping: Mapping,
+        /// Where the path was written.
+        span: Span,
+    },
+    /// A 3-D checkerboard of cubes of edge `size` in object space.
+    Checker {
+        /// First colour.
+        a: Color,
+        /// Second colour.
+        b: Color,
+        /// Cube edge length.
+        size: f64,
+    },
+    /// Stripes along object-space x of width `size`.
+    Stripes {
+        /// First colour.
+        a: Color,
+        /// Second colour.
+        b: Color,
+        /// Stripe width.
+        size: f64,
+    },
+}
+
+/// Surface parameterisation used for texture lookups.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mapping {
+    /// The shape's own (u, v).
+    Uv,
+    /// Equirectangular about object-space +Y (the north pole): v = θ/π from the pole, u = φ/2π.
+    Spherical,
+    /// Object-space x, z, wrapped to [0, 1).
+    Planar,
+    /// Angle about +Y and height.
+    Cylindrical,
+}
+
+/// An object: a shape in its own space, placed by an affine transform, with a material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Geometry in object space.
+    pub shape: Shape,
+    /// Object-to-world transform (applied after the shape's own parameters).
+    pub transform: DAffine3,
+    /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
+    pub material: Option<MaterialId>,
+    /// Where it was defined.
+    pub span: Span,
+}
+
+/// Every kind of geometry the renderer knows.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+    },
+    /// An infinite plane through `point`; `normal` points to the outside of the half-space.
+    Plane {
+        /// A point on the plane.
+        point: DVec3,
+        /// Outward unit normal.
+        normal: DVec3,
+    },
+    /// An axis-aligned box.
+    Box {
+        /// Minimum corner.
+        min: DVec3,
+        /// Maximum corner.
+        max: DVec3,
+    },
+    /// A single triangle.
+    Triangle {
+        /// Corners, counter-clockwise seen from the front.
+        vertices: [DVec3; 3],
+    },
+    /// A parallelogram `corner + s·u + t·v`, s, t ∈ [0, 1].
+    Quad {
+        /// One corner.
+        corner: DVec3,
+        /// First edge.
+        u: DVec3,
+        /// Second edge.
+        v: DVec3,
+    },
+    /// A planar polygon (convex or concave), closed implicitly.
+    Polygon {
+        /// Vertices in order (≥ 3, coplanar).
+        points: Vec<DVec3>,
+    },
+    /// A flat disk.
+    Disk {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+    },
+    /// A cylinder between two points.
+    Cylinder {
+        /// Centre of the bottom cap.
+        base: DVec3,
+        /// Centre of the top cap.
+        top: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+        /// Whether the ends are closed.
+        capped: bool,
+    },
+    /// A cone or frustum between two points.
+    Cone {
+        /// Centre of the base.
+        base: DVec3,
+        /// Centre of the top.
+        top: DVec3,
+        /// Radius at `base` (≥ 0).
+        base_radius: f64,
+        /// Radius at `top` (≥ 0, not both 0).
+        top_radius: f64,
+        /// Whether the ends are closed.
+        capped: bool,
+    },
+    /// A torus about the +Y axis through `center`.
+    Torus {
+        /// Centre.
+        center: DVec3,
+        /// Distance from the centre to the tube's centre line.
+        major_radius: f64,
+        /// Tube radius.
+        minor_radius: f64,
+    },
+    /// Metaballs: the surface where the summed field equals `threshold`.
+    Blob {
+        /// Field sources.
+        components: Vec<BlobComponent>,
+        /// Iso-value.
+        threshold: f64,
+    },
+    /// A triangle mesh from an OBJ file (loaded by the optimizer; instanced by path).
+    Mesh {
+        /// Resolved path.
+        path: PathBuf,
+        /// Interpolate normals.
+        smooth: bool,
+        /// Use the file's MTL materials where present.
+        use_mtl: bool,
+    },
+    /// Constructive solid geometry over closed children.
+    Csg {
+        /// The operation.
+        op: CsgOp,
+        /// Operands (two or more; for `Difference` the first is the base).
+        children: Vec<Object>,
+    },
+}
+
+impl Shape {
+    /// Short lower-case kind name used in messages and statistics.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Shape::Sphere { .. } => "sphere",
+            Shape::Plane { .. } => "plane",
+            Shape::Box { .. } => "box",
+            Shape::Triangle { .. } => "triangle",
+            Shape::Quad { .. } => "quad",
+            Shape::Polygon { .. } => "polygon",
+            Shape::Disk { .. } => "disk",
+            Shape::Cylinder { .. } => "cylinder",
+            Shape::Cone { .. } => "cone",
+            Shape::Torus { .. } => "torus",
+            Shape::Blob { .. } => "blob",
+            Shape::Mesh { .. } => "mesh",
+            Shape::Csg { .. } => "csg",
+        }
+    }
+}
+
+/// One metaball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlobComponent {
+    /// Centre.
+    pub center: DVec3,
+    /// Radius of influence (field is 0 beyond it).
+    pub radius: f64,
+    /// Field strength at the centre (negative subtracts).
+    pub strength: f64,
+}
+
+/// A CSG operation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    /// Inside any operand; internal surfaces kept.
+    Union,
+    /// Inside any operand; internal surfaces removed (POV-Ray's `merge`).
+    Merge,
+    /// Inside every operand.
+    Intersection,
+    /// Inside the first operand and outside all others.
+    Difference,
+}
+
+/// How pixels become colours.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderSettings {
+    /// The scene-wide shading model (materials may override it).
+    pub shading: ShadingModel,
+    /// Image mode: shaded colour or a geometric buffer.
+    pub mode: RenderMode,
+    /// Cast shadow rays.
+    pub shadows: bool,
+    /// Maximum number of reflection/refraction bounces.
+    pub max_depth: u32,
+    /// Samples per pixel.
+    pub sampling: Sampling,
+    /// How Phong's ambient term is counted.
+    pub ambient: AmbientConvention,
+    /// Colour of rays that hit nothing.
+    pub background: Color,
+    /// Material for objects that name none.
+    pub default_material: Option<MaterialId>,
+    /// Seed for every random decision (area lights, lens, jitter); bytes depend only on it.
+    pub seed: u64,
+    /// Output file requested by the scene, resolved relative to it.
+    pub output: Option<PathBuf>,
+}
+
+impl Default for RenderSettings {
+    fn default() -> RenderSettings {
+        RenderSettings {
+            shading: ShadingModel::Phong,
+            mode: RenderMode::Shaded,
+            shadows: false,
+            max_depth: 0,
+            sampling: Sampling::Grid { factor: 1 },
+            ambient: AmbientConvention::PerLight,
+            background: DVec3::ZERO,
+            default_material: None,
+            seed: 0,
+            output: None,
+        }
+    }
+}
+
+/// Shading model for colour images.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShadingModel {
+    /// Phong as COURSE.md §2.5.
+    Phong,
+    /// Gooch cool-to-warm shading (COURSE.md §2.5), no ambient term.
+    Gooch(GoochParams),
+    /// Pen-and-ink hatching (non-photorealistic).
+    Hatching,
+}
+
+/// Parameters of the Gooch model: `kCool = (0,0,b) + alpha·kd·C`, `kWarm = (y,y,0) + beta·kd·C`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GoochParams {
+    /// Blue of the cool colour.
+    pub b: f64,
+    /// Yellow of the warm colour.
+    pub y: f64,
+    /// Share of the object colour in the cool tone.
+    pub alpha: f64,
+    /// Share of the object colour in the warm tone.
+    pub beta: f64,
+}
+
+impl Default for GoochParams {
+    fn default() -> GoochParams {
+        GoochParams {
+            b: 0.55,
+            y: 0.3,
+            alpha: 0.25,
+            beta: 0.5,
+        }
+    }
+}
+
+/// What a pixel shows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RenderMode {
+    /// The shading model's colour.
+    Shaded,
+    /// `(N + 1) / 2` of the first hit, background black.
+    Normal,
+    /// Distance along the ray mapped to grey: near white, far black.
+    Depth(DepthRange),
+}
+
+/// The distance range of a depth image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum DepthRange {
+    /// The nearest and farthest hit distances in the image.
+    Auto,
+    /// Fixed distances: `near` is white, `far` is black.
+    Fixed {
+        /// Distance shown white.
+        near: f64,
+        /// Distance shown black.
+        far: f64,
+    },
+}
+
+/// Pixel sampling.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Sampling {
+    /// A regular f×f grid at ((i+½)/f, (j+½)/f), averaged.
+    Grid {
+        /// Samples per axis (≥ 1).
+        factor: u32,
+    },
+    /// Start with `min` samples per axis and refine to `max` where neighbours differ by > threshold.
+    Adaptive {
+        /// Initial samples per axis.
+        min: u32,
+        /// Maximum samples per axis.
+        max: u32,
+        /// Colour difference that triggers refinement.
+        threshold: f64,
+    },
+}
+
+/// How Phong's ambient term is counted (COURSE.md §2.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AmbientConvention {
+    /// `ka·C·Lc` for every light (convention A, the default).
+    PerLight,
+    /// `ka·C` once, without light colour (convention B).
+    Once,
+}
