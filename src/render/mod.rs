@@ -1,7 +1,37 @@
-//! The renderer: IR scene → image. (Contract placeholder: the renderer branch replaces it.)
+//! The renderer: IR scene → film → 8-bit image.
+//!
+//! Pipeline: [`plan`] prepares the world, camera, textures and the effects the scene calls for;
+//! [`tiles`] runs bands of rows on all cores; per pixel the [`sampler`] places the samples, the
+//! [`integrator`] traces each one (Whitted recursion) with a [`shading`] model; the [`film`]
+//! averages and quantises; [`output`] writes PNG or PPM atomically.
+
+// `Diagnostic` is the contract's error type; errors are rare and cold, so its size does not matter.
+#![allow(clippy::result_large_err)]
+
+pub mod bump;
+pub mod camera;
+pub mod film;
+pub mod integrator;
+pub mod output;
+pub mod plan;
+pub mod progress;
+pub mod sampler;
+pub mod shading;
+pub mod texture;
+pub mod tiles;
+
+use glam::DVec3;
 
 use crate::diag::Diagnostic;
-use crate::ir::Scene;
+use crate::ir::{Color, DepthRange, RenderMode, Scene};
+use film::{Film, clamp01};
+use integrator::Media;
+use plan::Plan;
+use progress::Progress;
+use sampler::{Grid, Rng};
+use shading::Ctx;
+
+pub use film::Stats;
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]
@@ -15,13 +45,149 @@ pub struct RenderOptions {
 /// A rendered 8-bit RGB image.
 pub type Image = image::RgbImage;
 
-/// Renders a scene.
+/// Renders a scene to 8-bit RGB.
 pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, Diagnostic> {
-    let _ = options;
-    Err(Diagnostic::new(
-        crate::diag::Severity::Error,
-        "rtc::unsupported",
-        Some(scene.camera.span),
-        "the renderer is not built yet",
-    ))
+    render_film(scene, options).map(|f| f.to_image())
+}
+
+/// Renders a scene to a floating-point film (with statistics).
+///
+/// Supersampling averages samples that are each clamped to [0, 1] first (a sample brighter than
+/// white counts as white), which matches the course's 4×4 renders better than clamping the
+/// average (tested against `scene01-zoom-ss-reflect-lights-shadows.png`, see tests/golden.rs).
+pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagnostic> {
+    let plan = Plan::new(scene)?;
+    let pool = tiles::pool(options.threads)?;
+    let (w, h) = (plan.camera.width(), plan.camera.height());
+    let (near, far) = match plan.mode {
+        RenderMode::Depth(DepthRange::Fixed { near, far }) => (near, far),
+        RenderMode::Depth(DepthRange::Auto) => hit_range(&plan, &pool),
+        _ => (0.0, 0.0),
+    };
+    let progress = Progress::new(options.progress, u64::from(h));
+    let (pixels, stats) = tiles::run(&pool, w, h, &progress, |x, y, ctx| {
+        pixel(&plan, x, y, ctx, near, far)
+    });
+    progress.finish();
+    Ok(Film {
+        width: w,
+        height: h,
+        pixels,
+        stats,
+    })
+}
+
+/// The average colour of one pixel, refining to the finer grid under adaptive sampling.
+fn pixel(plan: &Plan<'_>, x: u32, y: u32, ctx: &mut Ctx, near: f64, far: f64) -> Color {
+    let first = plan.sampler.first;
+    let Some((fine, threshold)) = plan.sampler.refine else {
+        return average(plan, first, 0, x, y, ctx, near, far, None);
+    };
+    let mut lo = DVec3::INFINITY;
+    let mut hi = DVec3::NEG_INFINITY;
+    let coarse = average(
+        plan,
+        first,
+        0,
+        x,
+        y,
+        ctx,
+        near,
+        far,
+        Some((&mut lo, &mut hi)),
+    );
+    if (hi - lo).max_element() <= threshold {
+        return coarse;
+    }
+    ctx.stats.refined_pixels += 1;
+    // Sample numbers continue after the first grid's, so random decisions differ.
+    average(plan, fine, first.len(), x, y, ctx, near, far, None)
+}
+
+/// The mean of the clamped samples of `grid`, optionally recording their per-channel range.
+#[allow(clippy::too_many_arguments)]
+fn average(
+    plan: &Plan<'_>,
+    grid: Grid,
+    first_index: u32,
+    x: u32,
+    y: u32,
+    ctx: &mut Ctx,
+    near: f64,
+    far: f64,
+    mut range: Option<(&mut DVec3, &mut DVec3)>,
+) -> Color {
+    let mut sum = Color::ZERO;
+    for k in 0..grid.len() {
+        let (sx, sy) = grid.offset(k);
+        let c = clamp01(sample(plan, x, y, sx, sy, first_index + k, ctx, near, far));
+        if let Some((lo, hi)) = range.as_mut() {
+            **lo = lo.min(c);
+            **hi = hi.max(c);
+        }
+        sum += c;
+    }
+    sum / f64::from(grid.len())
+}
+
+/// The colour of one camera sample.
+#[allow(clippy::too_many_arguments)]
+fn sample(
+    plan: &Plan<'_>,
+    x: u32,
+    y: u32,
+    sx: f64,
+    sy: f64,
+    index: u32,
+    ctx: &mut Ctx,
+    near: f64,
+    far: f64,
+) -> Color {
+    ctx.rng = Rng::new(x, y, index, plan.scene.settings.seed);
+    let lens = if plan.camera.has_lens() {
+        ctx.rng.get2(0)
+    } else {
+        (0.5, 0.5)
+    };
+    let ray = plan.camera.ray(x, y, sx, sy, lens);
+    ctx.stats.camera_rays += 1;
+    match plan.mode {
+        RenderMode::Shaded => plan.trace(&ray, 0, Media::OUTSIDE, ctx),
+        RenderMode::Normal => plan
+            .world
+            .intersect(&ray, 0.0, f64::INFINITY)
+            .map_or(Color::ZERO, |h| shading::normal::encode(h.normal)),
+        RenderMode::Depth(_) => plan
+            .world
+            .intersect(&ray, 0.0, f64::INFINITY)
+            .map_or(Color::ZERO, |h| shading::depth::grey(h.t, near, far)),
+    }
+}
+
+/// The nearest and farthest camera-ray hit distances over every sample of the image (a first
+/// pass for automatic depth images); (0, 0) when nothing is hit.
+fn hit_range(plan: &Plan<'_>, pool: &rayon::ThreadPool) -> (f64, f64) {
+    let grid = plan.sampler.first;
+    let hidden = Progress::new(false, 0);
+    let (w, h) = (plan.camera.width(), plan.camera.height());
+    let (ranges, _) = tiles::run(pool, w, h, &hidden, |x, y, _ctx| {
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for k in 0..grid.len() {
+            let (sx, sy) = grid.offset(k);
+            let lens = if plan.camera.has_lens() {
+                Rng::new(x, y, k, plan.scene.settings.seed).get2(0)
+            } else {
+                (0.5, 0.5)
+            };
+            let ray = plan.camera.ray(x, y, sx, sy, lens);
+            if let Some(hit) = plan.world.intersect(&ray, 0.0, f64::INFINITY) {
+                lo = lo.min(hit.t);
+                hi = hi.max(hit.t);
+            }
+        }
+        DVec3::new(lo, hi, 0.0)
+    });
+    let lo = ranges.iter().map(|r| r.x).fold(f64::INFINITY, f64::min);
+    let hi = ranges.iter().map(|r| r.y).fold(f64::NEG_INFINITY, f64::max);
+    if lo.is_finite() { (lo, hi) } else { (0.0, 0.0) }
 }

@@ -1,0 +1,93 @@
+//! Bump mapping: the gradient of a height field tilts the shading normal. Heights are the green
+//! channel of an image (as the course framework's derivative accessor) or the luminance of a
+//! procedural texture. The tangent frame is T = normalize(+Y × N) (the direction of increasing
+//! longitude u on a sphere) and B = T × N (increasing v, i.e. southwards), so on spheres the
+//! gradient follows the texture exactly; on other shapes it is an approximation.
+
+use glam::{DVec2, DVec3};
+
+use super::texture::{self, Loaded};
+use crate::geometry::SurfaceHit;
+use crate::ir::Shape;
+
+/// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
+pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVec3) -> DVec3 {
+    let up = if n.y.abs() > 0.999 {
+        DVec3::X
+    } else {
+        DVec3::Y
+    };
+    let t = up.cross(n).normalize();
+    let b = t.cross(n);
+    let (dh_du, dh_dv) = match tex {
+        Loaded::Image(pic, mapping) => {
+            let uv = texture::uv(*mapping, hit, shape);
+            let (du, dv) = pic.texel_size();
+            let h = |o: DVec2| pic.nearest(uv + o).y;
+            let h0 = h(DVec2::ZERO);
+            (
+                (h(DVec2::new(du, 0.0)) - h0) / du,
+                (h(DVec2::new(0.0, dv)) - h0) / dv,
+            )
+        }
+        Loaded::Checker(_, _, size) | Loaded::Stripes(_, _, size) => {
+            let step = size / 8.0;
+            let lum = |p: DVec3| {
+                let mut moved = *hit;
+                moved.local_point = p;
+                let c = tex.color(&moved, shape);
+                (c.x + c.y + c.z) / 3.0
+            };
+            let h0 = lum(hit.local_point);
+            (
+                (lum(hit.local_point + step * t) - h0) / step,
+                (lum(hit.local_point + step * b) - h0) / step,
+            )
+        }
+    };
+    if dh_du == 0.0 && dh_dv == 0.0 {
+        return n;
+    }
+    let tilted = n - scale * (dh_du * t + dh_dv * b);
+    tilted.try_normalize().unwrap_or(n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ir::{Mapping, MaterialId};
+    use crate::render::texture::Picture;
+
+    fn hit_at(n: DVec3) -> SurfaceHit {
+        SurfaceHit {
+            t: 1.0,
+            point: n,
+            normal: n,
+            uv: crate::geometry::sphere::uv(n),
+            local_point: n,
+            material: MaterialId(0),
+            object: 0,
+        }
+    }
+
+    #[test]
+    fn flat_height_keeps_the_normal_and_a_ramp_tilts_it() {
+        let sphere = Shape::Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        };
+        let n = DVec3::new(1.0, 0.2, -0.3).normalize();
+        let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
+        let flat = Loaded::Image(flat, Mapping::Spherical);
+        assert_eq!(perturb(&flat, 1.0, &hit_at(n), &sphere, n), n);
+        // Height grows with u (eastwards): the normal tilts westwards, against T.
+        let ramp: Vec<DVec3> = (0..64)
+            .map(|i| DVec3::splat(f64::from(i % 64) / 63.0))
+            .collect();
+        let ramp = Loaded::Image(Picture::new(64, 1, ramp).unwrap(), Mapping::Spherical);
+        let tilted = perturb(&ramp, 0.01, &hit_at(n), &sphere, n);
+        let t = DVec3::Y.cross(n).normalize();
+        assert!((tilted.length() - 1.0).abs() < 1e-12);
+        assert!(tilted.dot(t) < 0.0);
+    }
+}

@@ -1,0 +1,228 @@
+//! Primary rays: the course camera (COURSE.md §2.4) and a perspective camera with a field of view,
+//! both optionally with a thin lens.
+
+use glam::DVec3;
+
+use crate::diag::Diagnostic;
+use crate::geometry::Ray;
+use crate::ir::{self, Projection};
+
+/// A camera ready to generate rays for continuous image coordinates.
+#[derive(Clone, Copy, Debug)]
+pub struct Camera {
+    eye: DVec3,
+    /// Image-plane point at image coordinate (0, 0) (the bottom-left corner).
+    origin: DVec3,
+    /// Image-plane step per pixel to the right.
+    right: DVec3,
+    /// Image-plane step per pixel upwards.
+    up: DVec3,
+    /// Unit vectors spanning the lens, and the lens radius.
+    lens_u: DVec3,
+    lens_v: DVec3,
+    aperture: f64,
+    /// Unit view direction and the distance of the focal plane along it.
+    forward: DVec3,
+    focus_distance: f64,
+    width: u32,
+    height: u32,
+}
+
+impl Camera {
+    /// Builds the camera of a scene, rejecting degenerate set-ups with a diagnostic.
+    pub fn new(c: &ir::Camera) -> Result<Camera, Diagnostic> {
+        let bad = |what: &str, help: &str| {
+            Err(
+                Diagnostic::error("rtc::render::camera", c.span, format!("the camera {what}"))
+                    .with_label("this camera")
+                    .with_help(help.to_string()),
+            )
+        };
+        if c.width == 0 || c.height == 0 {
+            return bad(
+                "has an empty image",
+                "give a width and height of at least 1 pixel",
+            );
+        }
+        let view = c.center - c.eye;
+        let right_dir = view.cross(c.up);
+        if !view.is_finite() || view.length_squared() == 0.0 {
+            return bad(
+                "looks at its own eye point",
+                "move `center` away from `eye`",
+            );
+        }
+        if !right_dir.is_finite() || right_dir.length_squared() == 0.0 {
+            return bad(
+                "has `up` parallel to the view direction",
+                "choose an `up` that is not parallel to `center - eye`",
+            );
+        }
+        let (w, h) = (f64::from(c.width), f64::from(c.height));
+        let forward = view.normalize();
+        let r_unit = right_dir.normalize();
+        let u_unit = r_unit.cross(view).normalize();
+        let (center, right, up) = match c.projection {
+            Projection::Course => {
+                // |up| is the size of one pixel on the plane through `center` (COURSE.md §2.4).
+                let size = c.up.length();
+                (c.center, r_unit * size, u_unit * size)
+            }
+            Projection::Perspective { fov_y } => {
+                if !(fov_y > 0.0 && fov_y < std::f64::consts::PI) {
+                    return bad(
+                        "has a field of view outside (0°, 180°)",
+                        "use a field of view such as 45deg",
+                    );
+                }
+                // The plane through `center`, sized so the image height spans `fov_y`.
+                let pixel = 2.0 * view.length() * (0.5 * fov_y).tan() / h;
+                (c.center, r_unit * pixel, u_unit * pixel)
+            }
+        };
+        let origin = center - 0.5 * w * right - 0.5 * h * up;
+        let focus_distance = if c.focus_distance > 0.0 {
+            c.focus_distance
+        } else {
+            view.length()
+        };
+        Ok(Camera {
+            eye: c.eye,
+            origin,
+            right,
+            up,
+            lens_u: r_unit,
+            lens_v: u_unit,
+            aperture: c.aperture.max(0.0),
+            forward,
+            focus_distance,
+            width: c.width,
+            height: c.height,
+        })
+    }
+
+    /// Image width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Image height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// True when the camera has a lens (depth of field), so rays need lens samples.
+    pub fn has_lens(&self) -> bool {
+        self.aperture > 0.0
+    }
+
+    /// The ray through pixel column `x`, row `y` (0 = top) at sub-pixel offset `(sx, sy)` ∈ [0,1)²
+    /// (`sy` upwards), with `lens` ∈ [0,1)² picking a point on the lens when there is one.
+    pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64, lens: (f64, f64)) -> Ray {
+        let px = f64::from(x) + sx;
+        let py = f64::from(self.height - 1 - y) + sy;
+        let target = self.origin + px * self.right + py * self.up;
+        let dir = (target - self.eye).normalize();
+        if self.aperture <= 0.0 {
+            return Ray::new(self.eye, dir);
+        }
+        // Thin lens: aim every lens point at where the pinhole ray meets the focal plane.
+        let focus = self.eye + dir * (self.focus_distance / dir.dot(self.forward));
+        let (a, b) = concentric_disk(lens.0, lens.1);
+        let origin = self.eye + self.aperture * (a * self.lens_u + b * self.lens_v);
+        Ray::new(origin, (focus - origin).normalize())
+    }
+}
+
+/// Shirley–Chiu mapping of the unit square onto the unit disk (keeps stratification).
+fn concentric_disk(u: f64, v: f64) -> (f64, f64) {
+    let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let q = std::f64::consts::FRAC_PI_4;
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, q * (b / a))
+    } else {
+        (b, 2.0 * q - q * (a / b))
+    };
+    (r * phi.cos(), r * phi.sin())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::source::Span;
+
+    fn course(eye: DVec3, up: DVec3, w: u32, h: u32) -> ir::Camera {
+        ir::Camera {
+            eye,
+            center: DVec3::new(200.0, 200.0, 0.0),
+            up,
+            width: w,
+            height: h,
+            projection: Projection::Course,
+            aperture: 0.0,
+            focus_distance: 0.0,
+            span: Span::default(),
+        }
+    }
+
+    #[test]
+    fn course_default_maps_pixel_centres_to_the_plane() {
+        let eye = DVec3::new(200.0, 200.0, 1000.0);
+        let cam = Camera::new(&course(eye, DVec3::Y, 400, 400)).unwrap();
+        for (x, y) in [(0, 0), (399, 0), (17, 250), (399, 399)] {
+            let r = cam.ray(x, y, 0.5, 0.5, (0.5, 0.5));
+            let want = DVec3::new(f64::from(x) + 0.5, 399.0 - f64::from(y) + 0.5, 0.0);
+            let t = -r.origin.z / r.dir.z;
+            assert!((r.at(t) - want).length() < 1e-9, "{x},{y}: {:?}", r.at(t));
+        }
+    }
+
+    #[test]
+    fn up_length_is_the_pixel_size() {
+        let eye = DVec3::new(200.0, 200.0, 1000.0);
+        let cam = Camera::new(&course(eye, DVec3::new(0.0, 0.75, 0.0), 800, 400)).unwrap();
+        let r = cam.ray(0, 399, 0.0, 0.0, (0.5, 0.5));
+        let t = -r.origin.z / r.dir.z;
+        let p = r.at(t);
+        assert!((p.x - (200.0 - 400.0 * 0.75)).abs() < 1e-9);
+        assert!((p.y - (200.0 - 200.0 * 0.75)).abs() < 1e-9);
+    }
+
+    #[test]
+    fn degenerate_cameras_are_diagnosed() {
+        let eye = DVec3::new(200.0, 200.0, 1000.0);
+        assert!(Camera::new(&course(eye, DVec3::Z, 4, 4)).is_err());
+        assert!(Camera::new(&course(eye, DVec3::Y, 0, 4)).is_err());
+        let mut c = course(eye, DVec3::Y, 4, 4);
+        c.projection = Projection::Perspective { fov_y: 0.0 };
+        assert!(Camera::new(&c).is_err());
+    }
+
+    #[test]
+    fn perspective_spans_the_field_of_view() {
+        let mut c = course(DVec3::new(200.0, 200.0, 1000.0), DVec3::Y, 100, 100);
+        c.projection = Projection::Perspective {
+            fov_y: 90f64.to_radians(),
+        };
+        let cam = Camera::new(&c).unwrap();
+        let top = cam.ray(50, 0, 0.0, 1.0, (0.5, 0.5));
+        assert!((top.dir.angle_between(DVec3::NEG_Z) - 45f64.to_radians()).abs() < 1e-9);
+    }
+
+    #[test]
+    fn lens_rays_meet_at_the_focal_plane() {
+        let mut c = course(DVec3::new(200.0, 200.0, 1000.0), DVec3::Y, 10, 10);
+        c.aperture = 20.0;
+        c.focus_distance = 500.0;
+        let cam = Camera::new(&c).unwrap();
+        let a = cam.ray(3, 4, 0.5, 0.5, (0.1, 0.9));
+        let b = cam.ray(3, 4, 0.5, 0.5, (0.8, 0.2));
+        assert!(a.origin != b.origin);
+        let pa = a.at((500.0 - a.origin.z) / a.dir.z);
+        let pb = b.at((500.0 - b.origin.z) / b.dir.z);
+        assert!((pa - pb).length() < 1e-9);
+    }
+}

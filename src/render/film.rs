@@ -1,0 +1,83 @@
+//! The film: one floating-point colour per pixel, turned into bytes by clamping each channel to
+//! [0, 1] and truncating `255·c` (COURSE.md §1.4/§2.5: trunc, not round).
+
+use glam::DVec3;
+
+use super::Image;
+use crate::ir::Color;
+
+/// Per-render counters (integers, so sums are identical for any thread count).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Camera rays traced.
+    pub camera_rays: u64,
+    /// Reflected and refracted rays traced.
+    pub secondary_rays: u64,
+    /// Shadow rays tested.
+    pub shadow_rays: u64,
+    /// Pixels that took the finer grid of adaptive sampling.
+    pub refined_pixels: u64,
+}
+
+impl Stats {
+    /// Adds another tile's counters.
+    pub fn add(&mut self, o: &Stats) {
+        self.camera_rays += o.camera_rays;
+        self.secondary_rays += o.secondary_rays;
+        self.shadow_rays += o.shadow_rays;
+        self.refined_pixels += o.refined_pixels;
+    }
+}
+
+/// A rendered image before quantisation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Film {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Colours row by row from the top (unclamped averages of the samples).
+    pub pixels: Vec<Color>,
+    /// What it took.
+    pub stats: Stats,
+}
+
+impl Film {
+    /// The colour of pixel (x, y), y = 0 at the top.
+    pub fn get(&self, x: u32, y: u32) -> Color {
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+
+    /// Quantises to 8-bit RGB.
+    pub fn to_image(&self) -> Image {
+        let bytes = self.pixels.iter().flat_map(|c| to_bytes(*c)).collect();
+        Image::from_raw(self.width, self.height, bytes).unwrap_or_default()
+    }
+}
+
+/// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0).
+pub fn to_bytes(c: Color) -> [u8; 3] {
+    let q = |v: f64| (255.0 * v.clamp(0.0, 1.0)) as u8;
+    [q(c.x), q(c.y), q(c.z)]
+}
+
+/// Clamps each channel to [0, 1] (NaN becomes 0).
+pub fn clamp01(c: Color) -> Color {
+    let f = |v: f64| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+    DVec3::new(f(c.x), f(c.y), f(c.z))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantisation_truncates_and_clamps() {
+        assert_eq!(to_bytes(DVec3::new(1.0, 0.999, 0.5)), [255, 254, 127]);
+        assert_eq!(to_bytes(DVec3::new(7.0, -1.0, f64::NAN)), [255, 0, 0]);
+        assert_eq!(
+            clamp01(DVec3::new(2.0, -3.0, f64::NAN)),
+            DVec3::new(1.0, 0.0, 0.0)
+        );
+    }
+}

@@ -1,0 +1,154 @@
+//! The render plan: everything prepared once per render (world, camera, textures, lights, the
+//! effects the scene calls for) and shared read-only by every tile.
+
+use glam::DVec3;
+
+use super::camera::Camera;
+use super::sampler::PixelSampler;
+use super::texture::{self, Loaded};
+use crate::diag::Diagnostic;
+use crate::geometry::World;
+use crate::ir::{
+    AmbientConvention, Color, LightKind, Material, MaterialId, RenderMode, Scene, ShadingModel,
+};
+use crate::opt::Effects;
+
+/// Relative size of the offset along the normal that starts shadow, reflected and refracted rays,
+/// so they do not re-hit the surface they leave: `EPS_REL · max(|P|∞, scene extent)`. Scaling with
+/// the coordinates keeps it above the rounding error of a hit point (about 1e-16·|P|) at any scale,
+/// from millimetre scenes to the astronomical blue-earth scene (|P| ≈ 1.5e8 → 15 units).
+pub const EPS_REL: f64 = 1e-9;
+
+/// A light prepared for shading: sample positions are generated per shading point.
+#[derive(Clone, Copy, Debug)]
+pub struct LightPlan {
+    /// The IR geometry.
+    pub kind: LightKind,
+    /// RGB intensity.
+    pub color: Color,
+    /// Number of shadow/shading samples (1 for a point light).
+    pub samples: u32,
+}
+
+/// Everything a tile needs, prepared once.
+pub struct Plan<'a> {
+    /// The scene being rendered.
+    pub scene: &'a Scene,
+    /// Intersection structure.
+    pub world: World,
+    /// Primary rays.
+    pub camera: Camera,
+    /// Which costly effects are in use.
+    pub effects: Effects,
+    /// The scene's materials plus the fallback for objects that name none.
+    pub materials: Vec<Material>,
+    /// Decoded textures by `TextureId`.
+    pub textures: Vec<Loaded>,
+    /// The lights.
+    pub lights: Vec<LightPlan>,
+    /// Pixel sampling.
+    pub sampler: PixelSampler,
+    /// Image mode.
+    pub mode: RenderMode,
+    /// Scene-wide shading model.
+    pub shading: ShadingModel,
+    /// Phong ambient convention.
+    pub ambient: AmbientConvention,
+    /// Reflection/refraction bounces.
+    pub max_depth: u32,
+    /// Colour of rays that miss (shaded mode only; buffers use black).
+    pub background: Color,
+    /// Ray offset scale: `EPS_REL · scene extent`.
+    eps_floor: f64,
+}
+
+impl<'a> Plan<'a> {
+    /// Prepares a scene for rendering.
+    pub fn new(scene: &'a Scene) -> Result<Plan<'a>, Diagnostic> {
+        let s = &scene.settings;
+        let mut materials = scene.materials.clone();
+        let fallback = match s.default_material {
+            Some(id) if (id.0 as usize) < materials.len() => id,
+            _ => {
+                materials.push(Material::default());
+                MaterialId((materials.len() - 1) as u32)
+            }
+        };
+        for o in &scene.objects {
+            if let Some(id) = o
+                .material
+                .filter(|id| id.0 as usize >= scene.materials.len())
+            {
+                return Err(Diagnostic::error(
+                    "rtc::render::material",
+                    o.span,
+                    format!("this object names material #{} which does not exist", id.0),
+                )
+                .with_label("this object"));
+            }
+        }
+        for m in &scene.materials {
+            let bad_texture = |t: Option<crate::ir::TextureId>| {
+                t.is_some_and(|t| t.0 as usize >= scene.textures.len())
+            };
+            if bad_texture(m.texture) || bad_texture(m.bump.map(|b| b.texture)) {
+                return Err(Diagnostic::error(
+                    "rtc::render::texture",
+                    m.span,
+                    "this material names a texture that does not exist",
+                )
+                .with_label("this material"));
+            }
+        }
+        let world = World::build(scene, fallback)?;
+        let camera = Camera::new(&scene.camera)?;
+        let effects = Effects::of(scene);
+        let textures = if effects.textures || effects.bump {
+            texture::load_all(scene)?
+        } else {
+            Vec::new()
+        };
+        let lights = scene
+            .lights
+            .iter()
+            .map(|l| LightPlan {
+                kind: l.kind,
+                color: l.color,
+                samples: match l.kind {
+                    LightKind::Point { .. } => 1,
+                    LightKind::Area { samples, .. } => samples[0].max(1) * samples[1].max(1),
+                },
+            })
+            .collect();
+        let b = world.bounds();
+        let extent = if b.is_empty() || !b.is_finite() {
+            0.0
+        } else {
+            b.min.abs().max(b.max.abs()).max_element()
+        };
+        let extent = extent.max(scene.camera.eye.abs().max_element());
+        Ok(Plan {
+            scene,
+            world,
+            camera,
+            effects,
+            materials,
+            textures,
+            lights,
+            sampler: PixelSampler::new(s.sampling),
+            mode: s.mode,
+            shading: s.shading,
+            ambient: s.ambient,
+            max_depth: s.max_depth,
+            background: s.background,
+            eps_floor: EPS_REL * extent,
+        })
+    }
+
+    /// The offset along the normal for rays leaving point `p`.
+    pub fn eps(&self, p: DVec3) -> f64 {
+        (EPS_REL * p.abs().max_element())
+            .max(self.eps_floor)
+            .max(1e-300)
+    }
+}

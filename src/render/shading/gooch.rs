@@ -1,0 +1,36 @@
+//! Gooch cool-to-warm shading (COURSE.md §2.5): per light
+//! `kCool·(1−N·L)/2 + kWarm·(1+N·L)/2 + ks·max(0,R·V)^n·Lc` with `kCool = (0,0,b) + alpha·kd·C`,
+//! `kWarm = (y,y,0) + beta·kd·C`, no ambient term. The tone is not multiplied by the light colour
+//! (the course data cannot tell; the official light is white). A shadowed light sample shows the
+//! full cool tone and no highlight.
+
+use glam::DVec3;
+
+use super::{Ctx, Surface, highlight, light_sample, visible};
+use crate::ir::{Color, GoochParams};
+use crate::render::plan::Plan;
+
+/// The Gooch colour of a surface point.
+pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) -> Color {
+    let kd_c = s.mat.kd * s.color;
+    let cool = DVec3::new(0.0, 0.0, g.b) + g.alpha * kd_c;
+    let warm = DVec3::new(g.y, g.y, 0.0) + g.beta * kd_c;
+    let mut c = Color::ZERO;
+    for (i, light) in plan.lights.iter().enumerate() {
+        let share = 1.0 / f64::from(light.samples);
+        for k in 0..light.samples {
+            let ls = light_sample(light, i, k, s, &ctx.rng);
+            let n_dot_l = s.n.dot(ls.l);
+            let tone = cool * (1.0 - n_dot_l) / 2.0 + warm * (1.0 + n_dot_l) / 2.0;
+            if n_dot_l <= 0.0 {
+                // Facing away: the blend already leans cool; no highlight from behind.
+                c += share * tone;
+            } else if visible(plan, s, &ls, &mut ctx.stats) {
+                c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
+            } else {
+                c += share * cool;
+            }
+        }
+    }
+    c
+}

@@ -1,0 +1,113 @@
+//! Shading models: what a surface point looks like under the lights, before reflection and
+//! refraction are added by the integrator.
+
+pub mod depth;
+pub mod gooch;
+pub mod hatching;
+pub mod normal;
+pub mod phong;
+
+use glam::DVec3;
+
+use super::film::Stats;
+use super::plan::{LightPlan, Plan};
+use super::sampler::Rng;
+use crate::geometry::Ray;
+use crate::ir::{Color, LightKind, Material};
+
+/// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
+pub struct Ctx {
+    /// Random numbers of the current camera sample.
+    pub rng: Rng,
+    /// Counters of the current tile.
+    pub stats: Stats,
+}
+
+/// A surface point to shade.
+pub struct Surface<'m> {
+    /// The hit point.
+    pub p: DVec3,
+    /// Unit normal facing the incoming ray (flipped for hits from inside).
+    pub n: DVec3,
+    /// Unit vector towards the viewer (−ray direction).
+    pub v: DVec3,
+    /// Base colour (material or texture).
+    pub color: Color,
+    /// Surface coefficients.
+    pub mat: &'m Material,
+    /// Surface coordinates (for hatching).
+    pub uv: glam::DVec2,
+    /// Recursion depth of the ray that hit it (decorrelates light samples between bounces).
+    pub depth: u32,
+}
+
+/// One sample of one light as seen from a surface point.
+pub struct LightSample {
+    /// Unit vector from the surface to the sample.
+    pub l: DVec3,
+    /// Distance to the sample.
+    pub dist: f64,
+    /// The light's colour times the sample's share (1/samples).
+    pub color: Color,
+}
+
+/// The `k`-th sample of light `index` for a surface point (stratified and jittered on area lights).
+pub fn light_sample(
+    light: &LightPlan,
+    index: usize,
+    k: u32,
+    s: &Surface<'_>,
+    rng: &Rng,
+) -> LightSample {
+    let pos = match light.kind {
+        LightKind::Point { position } => position,
+        LightKind::Area {
+            corner,
+            u,
+            v,
+            samples,
+        } => {
+            let (nu, nv) = (samples[0].max(1), samples[1].max(1));
+            let stream = (s.depth.wrapping_mul(0x1000_0000))
+                ^ ((index as u32).wrapping_mul(0x0010_0000))
+                ^ k;
+            let (ju, jv) = rng.get2(stream.wrapping_add(1));
+            let a = (f64::from(k % nu) + ju) / f64::from(nu);
+            let b = (f64::from(k / nu) + jv) / f64::from(nv);
+            corner + a * u + b * v
+        }
+    };
+    let d = pos - s.p;
+    let dist = d.length();
+    LightSample {
+        l: if dist > 0.0 { d / dist } else { s.n },
+        dist,
+        color: light.color / f64::from(light.samples),
+    }
+}
+
+/// True when nothing blocks the way from the surface to the light sample (always true without
+/// shadows). The shadow ray starts `eps` along the normal on the viewer's side.
+pub fn visible(plan: &Plan<'_>, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
+    if !plan.effects.shadows {
+        return true;
+    }
+    stats.shadow_rays += 1;
+    let eps = plan.eps(s.p);
+    let ray = Ray::new(s.p + eps * s.n, ls.l);
+    !plan.world.occluded(&ray, 0.0, ls.dist - eps)
+}
+
+/// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.
+pub fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
+    if s.mat.ks == 0.0 {
+        return 0.0;
+    }
+    let r = 2.0 * n_dot_l * s.n - l;
+    let rv = r.dot(s.v);
+    if rv > 0.0 {
+        s.mat.ks * rv.powf(s.mat.n)
+    } else {
+        0.0
+    }
+}

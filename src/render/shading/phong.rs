@@ -1,0 +1,36 @@
+//! Phong shading exactly as COURSE.md §2.5 (reproduces the consensus renders):
+//! `I = Σ_lights [ka·C·Lc + kd·max(0,N·L)·C·Lc + ks·max(0,R·V)^n·Lc]`; the highlight is not tinted
+//! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
+//! is `ka·C` once, without light colour.
+
+use super::{Ctx, Surface, highlight, light_sample, visible};
+use crate::ir::{AmbientConvention, Color};
+use crate::render::plan::Plan;
+
+/// The Phong colour of a surface point.
+pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
+    let m = s.mat;
+    let mut c = Color::ZERO;
+    if plan.ambient == AmbientConvention::Once {
+        c += m.ka * s.color;
+    }
+    for (i, light) in plan.lights.iter().enumerate() {
+        if plan.ambient == AmbientConvention::PerLight {
+            c += m.ka * s.color * light.color;
+        }
+        for k in 0..light.samples {
+            let ls = light_sample(light, i, k, s, &ctx.rng);
+            let n_dot_l = s.n.dot(ls.l);
+            // Facing away: no diffuse, and the light is behind the surface, so no highlight either
+            // (a closed surface would shadow it; this also skips the shadow ray).
+            if n_dot_l <= 0.0 {
+                continue;
+            }
+            if !visible(plan, s, &ls, &mut ctx.stats) {
+                continue;
+            }
+            c += (m.kd * n_dot_l) * s.color * ls.color + highlight(s, ls.l, n_dot_l) * ls.color;
+        }
+    }
+    c
+}
