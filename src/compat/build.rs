@@ -175,7 +175,8 @@ pub fn sphere_object(
 }
 
 /// Finds an asset named in a scene: relative to the scene file's folder first, then to the current
-/// directory, then in the course data layout's sibling `textures/` and `models/` folders.
+/// directory, then by file name in `textures/` and `models/` folders beside the scene's folder or up
+/// to two levels above it (the course data layout).
 /// On failure returns every path tried.
 pub fn resolve_asset(scene: &Path, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
     let given = Path::new(name);
@@ -189,9 +190,14 @@ pub fn resolve_asset(scene: &Path, name: &str) -> Result<PathBuf, Vec<PathBuf>> 
     let dir = scene.parent().unwrap_or(Path::new(""));
     let mut tried = vec![dir.join(given), given.to_path_buf()];
     if let Some(file_name) = given.file_name() {
-        let up = dir.join("..");
-        tried.push(up.join("textures").join(file_name));
-        tried.push(up.join("models").join(file_name));
+        // The course data keeps scenes in `yaml/` (and `yaml/<group>/`) next to `textures/` and
+        // `models/`; students named assets relative to wherever their binary ran.
+        let mut up = dir.to_path_buf();
+        for _ in 0..3 {
+            up = up.join("..");
+            tried.push(up.join("textures").join(file_name));
+            tried.push(up.join("models").join(file_name));
+        }
     }
     match tried.iter().find(|p| p.is_file()) {
         Some(found) => Ok(found.clone()),
@@ -201,14 +207,23 @@ pub fn resolve_asset(scene: &Path, name: &str) -> Result<PathBuf, Vec<PathBuf>> 
 
 /// The error for an asset that [`resolve_asset`] could not find.
 pub fn missing_asset(span: Span, name: &str, kind: &str, tried: &[PathBuf]) -> Diagnostic {
-    let list: Vec<String> = tried.iter().map(|p| p.display().to_string()).collect();
+    let list: Vec<String> = tried
+        .iter()
+        .take(2)
+        .map(|p| p.display().to_string())
+        .collect();
+    let more = if tried.len() > 2 {
+        ", and in `textures/` and `models/` folders up to three levels above the scene"
+    } else {
+        ""
+    };
     Diagnostic::error(
         "rtc::compat::missing_file",
         span,
         format!("{kind} file `{name}` not found"),
     )
     .with_label("no such file")
-    .with_note(format!("looked for: {}", list.join(", ")))
+    .with_note(format!("looked for `{}`{more}", list.join("` and `")))
     .with_help("give the path relative to the scene file")
 }
 
@@ -219,6 +234,8 @@ pub struct Draft {
     pub eye: Option<(DVec3, Span)>,
     /// A full `Camera` block.
     pub camera: Option<Camera>,
+    /// A `Camera` block was written (even if it had errors), so "no eye" would be noise.
+    pub camera_written: bool,
     /// Lights in order.
     pub lights: Vec<Light>,
     /// The scene under construction (materials, textures, objects, settings).
@@ -271,6 +288,7 @@ impl Draft {
             }
             (Some(camera), None) => Some(camera),
             (None, Some((eye, span))) => Some(default_camera(eye, span)),
+            (None, None) if self.camera_written => None,
             (None, None) => {
                 diags.push(
                     Diagnostic::error("rtc::compat::no_camera", whole, "the scene has no eye")

@@ -44,6 +44,7 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
         }
     }
     if let Some(e) = top.get(&["Camera"], diags) {
+        draft.camera_written = true;
         draft.camera = camera(e.value, e.key.span.join(e.value.span), diags);
     }
     if let Some(e) = top.get(&["Lights"], diags) {
@@ -65,7 +66,11 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
     }
     settings(&mut top, &mut draft, diags);
     top.finish("the scene", TOP_KEYS, diags);
-    draft.finish(whole, "add `Eye: [200, 200, 1000]` or a `Camera:` block", diags)
+    draft.finish(
+        whole,
+        "add `Eye: [200, 200, 1000]` or a `Camera:` block",
+        diags,
+    )
 }
 
 /// The items of a list; a non-list is reported and yields nothing. An empty value (`Objects:`
@@ -73,7 +78,10 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
 fn list<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> &'n [Node] {
     match &node.kind {
         NodeKind::Seq(items) => items,
-        NodeKind::Scalar { text, quoted: false } if text.is_empty() || text == "~" || text == "null" => &[],
+        NodeKind::Scalar {
+            text,
+            quoted: false,
+        } if text.is_empty() || text == "~" || text == "null" => &[],
         _ => {
             diags.push(
                 Diagnostic::error(
@@ -98,16 +106,22 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
     let eye = eye.and_then(|e| val::triple(e.value, "`eye`", Triple::Point, diags));
     let center = center.and_then(|e| val::triple(e.value, "`center`", Triple::Point, diags));
     let up_entry = up;
-    let up = up_entry.as_ref().and_then(|e| val::triple(e.value, "`up`", Triple::Point, diags));
+    let up = up_entry
+        .as_ref()
+        .and_then(|e| val::triple(e.value, "`up`", Triple::Point, diags));
     let size = size.and_then(|e| view_size(e.value, diags));
     m.finish("`Camera`", &["eye", "center", "up", "viewSize"], diags);
     let (eye, center, up, size) = (eye?, center?, up?, size?);
     let up_span = up_entry.map_or(span, |e| e.value.span);
     if up.length() == 0.0 {
         diags.push(
-            Diagnostic::error("rtc::compat::degenerate", up_span, "`up` is the zero vector")
-                .with_label("its length is the pixel size and must be positive")
-                .with_help("write `up: [0, 1, 0]` for one world unit per pixel"),
+            Diagnostic::error(
+                "rtc::compat::degenerate",
+                up_span,
+                "`up` is the zero vector",
+            )
+            .with_label("its length is the pixel size and must be positive")
+            .with_help("write `up: [0, 1, 0]` for one world unit per pixel"),
         );
         return None;
     }
@@ -143,7 +157,10 @@ fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
             Diagnostic::error(
                 "rtc::yaml::type",
                 node.span,
-                format!("expected `[width, height]` for `viewSize`, found {}", node.describe()),
+                format!(
+                    "expected `[width, height]` for `viewSize`, found {}",
+                    node.describe()
+                ),
             )
             .with_label("not a list")
             .with_help("write `viewSize: [400, 400]`"),
@@ -169,7 +186,12 @@ fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
 
 fn light(node: &Node, diags: &mut Diagnostics) -> Option<Light> {
     let mut m = MapView::new(node, "a light", diags)?;
-    let position = m.require(&["position"], "this light", "position: [-200, 600, 1500]", diags);
+    let position = m.require(
+        &["position"],
+        "this light",
+        "position: [-200, 600, 1500]",
+        diags,
+    );
     let color = m.require(&["color"], "this light", "color: [1.0, 1.0, 1.0]", diags);
     let position = position.and_then(|e| val::triple(e.value, "`position`", Triple::Point, diags));
     let color = color.and_then(|e| val::triple(e.value, "`color`", Triple::Color, diags));
@@ -269,7 +291,9 @@ fn render_mode(node: &Node, diags: &mut Diagnostics) -> Option<Mode> {
                     format!("render mode `{text}` is a number; using phong"),
                 )
                 .with_label("the course names render modes")
-                .with_help("write `RenderMode: \"phong\"`, `\"zbuffer\"`, `\"normal\"` or `\"gooch\"`"),
+                .with_help(
+                    "write `RenderMode: \"phong\"`, `\"zbuffer\"`, `\"normal\"` or `\"gooch\"`",
+                ),
             );
             return None;
         }
@@ -321,12 +345,19 @@ fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
         .require(&["factor"], "`SuperSampling`", "factor: 4", diags)
         .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_FACTOR, diags));
     if let Some(p) = m.get(&["pattern"], diags) {
-        if !p.value.scalar().is_some_and(|t| t.trim().eq_ignore_ascii_case("grid")) {
+        if !p
+            .value
+            .scalar()
+            .is_some_and(|t| t.trim().eq_ignore_ascii_case("grid"))
+        {
             diags.push(
                 Diagnostic::warning(
                     "rtc::yaml::unknown_value",
                     p.value.span,
-                    format!("sampling pattern {} is not supported; using a grid", p.value.describe()),
+                    format!(
+                        "sampling pattern {} is not supported; using a grid",
+                        p.value.describe()
+                    ),
                 )
                 .with_label("ignored"),
             );

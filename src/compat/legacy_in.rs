@@ -35,7 +35,9 @@ impl Kind {
         match self {
             Kind::Eye => "`Eye x y z`",
             Kind::Light => "`Light x y z r g b`",
-            Kind::Material => "`Material r g b ka kd ks n`, optionally followed by `reflect refract eta`",
+            Kind::Material => {
+                "`Material r g b ka kd ks n`, optionally followed by `reflect refract eta`"
+            }
             Kind::Sphere => "`Sphere x y z radius`",
         }
     }
@@ -215,9 +217,13 @@ impl<'t> Reader<'t, '_> {
                 let span = kw.join(self.span(self.pos, self.pos));
                 if let Some((_, old)) = draft.eye {
                     self.diags.push(
-                        Diagnostic::warning("rtc::in::duplicate_eye", span, "a second `Eye` record")
-                            .with_label("this eye replaces the earlier one")
-                            .with_secondary(old, "first eye"),
+                        Diagnostic::warning(
+                            "rtc::in::duplicate_eye",
+                            span,
+                            "a second `Eye` record",
+                        )
+                        .with_label("this eye replaces the earlier one")
+                        .with_secondary(old, "first eye"),
                     );
                 }
                 draft.eye = Some((eye, span));
@@ -284,13 +290,9 @@ impl<'t> Reader<'t, '_> {
                 }
                 let Some(material) = &self.material else {
                     self.diags.push(
-                        Diagnostic::error(
-                            "rtc::in::no_material",
-                            kw,
-                            "sphere without a material",
-                        )
-                        .with_label("no `Material` record comes before this sphere")
-                        .with_help("put a record such as `Material 1 1 1 .2 .8 0 1` before it"),
+                        Diagnostic::error("rtc::in::no_material", kw, "sphere without a material")
+                            .with_label("no `Material` record comes before this sphere")
+                            .with_help("put a record such as `Material 1 1 1 .2 .8 0 1` before it"),
                     );
                     return Ok(());
                 };
@@ -395,7 +397,11 @@ impl<'t> Reader<'t, '_> {
                     format!("expected {what}, found `{word}`"),
                 )
                 .with_label("not a number")
-                .with_help(format!("a {} record is {}", kind.name(), kind.layout())),
+                .with_help(format!(
+                    "a {} record is {}",
+                    kind.name(),
+                    kind.layout()
+                )),
             );
             return Err(Failed);
         };

@@ -12,7 +12,9 @@ use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{Mapping, MaterialId, Object, Shape, Texture};
 
-const TYPES: &[&str] = &["sphere", "triangle", "plane", "box", "quad", "cylinder", "mesh", "model"];
+const TYPES: &[&str] = &[
+    "sphere", "triangle", "plane", "box", "quad", "cylinder", "mesh", "model",
+];
 const MATERIAL_KEYS: &[&str] = &[
     "color", "texture", "ka", "kd", "ks", "n", "reflect", "refract", "eta",
 ];
@@ -84,13 +86,23 @@ fn known_keys(kind: &str) -> Vec<&'static str> {
     keys
 }
 
-fn point(m: &mut MapView<'_>, names: &[&str], owner: &str, diags: &mut Diagnostics) -> Option<DVec3> {
+fn point(
+    m: &mut MapView<'_>,
+    names: &[&str],
+    owner: &str,
+    diags: &mut Diagnostics,
+) -> Option<DVec3> {
     let example = format!("{}: [0, 0, 0]", names[0]);
     let e = m.require(names, owner, &example, diags)?;
     val::triple(e.value, &format!("`{}`", names[0]), Triple::Point, diags)
 }
 
-fn direction(m: &mut MapView<'_>, names: &[&str], owner: &str, diags: &mut Diagnostics) -> Option<DVec3> {
+fn direction(
+    m: &mut MapView<'_>,
+    names: &[&str],
+    owner: &str,
+    diags: &mut Diagnostics,
+) -> Option<DVec3> {
     let example = format!("{}: [0, 1, 0]", names[0]);
     let e = m.require(names, owner, &example, diags)?;
     let v = val::triple(e.value, &format!("`{}`", names[0]), Triple::Point, diags)?;
@@ -147,9 +159,13 @@ fn sphere(
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
-    parts
-        .objects
-        .push(build::sphere_object(position, radius, orientation, material, node.span));
+    parts.objects.push(build::sphere_object(
+        position,
+        radius,
+        orientation,
+        material,
+        node.span,
+    ));
 }
 
 /// `radius: r` or `radius: [r, [x, y, z]]` (the list form also gives the texture's north pole).
@@ -179,9 +195,13 @@ fn pole_vector(node: &Node, diags: &mut Diagnostics) -> Option<DVec3> {
     let v = val::triple(node, "the pole", Triple::Point, diags)?;
     if v.length() == 0.0 {
         diags.push(
-            Diagnostic::error("rtc::compat::degenerate", node.span, "the pole is the zero vector")
-                .with_label("the north-pole direction needs a non-zero length")
-                .with_help("write a direction such as `[0, 1, 0]`"),
+            Diagnostic::error(
+                "rtc::compat::degenerate",
+                node.span,
+                "the pole is the zero vector",
+            )
+            .with_label("the north-pole direction needs a non-zero length")
+            .with_help("write a direction such as `[0, 1, 0]`"),
         );
         return None;
     }
@@ -231,9 +251,13 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
     let scale = u.length().max(v.length()).max(1.0);
     if (p1 + u + v - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
         diags.push(
-            Diagnostic::error("rtc::compat::degenerate", head, "the quad is not a parallelogram")
-                .with_label("p3 must equal p2 + p4 − p1")
-                .with_help("give the corners in order around the quad, or use two triangles"),
+            Diagnostic::error(
+                "rtc::compat::degenerate",
+                head,
+                "the quad is not a parallelogram",
+            )
+            .with_label("p3 must equal p2 + p4 − p1")
+            .with_help("give the corners in order around the quad, or use two triangles"),
         );
         return None;
     }
@@ -250,8 +274,12 @@ fn cylinder(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
     let (base, top, radius) = (base?, top?, radius?);
     if base == top {
         diags.push(
-            Diagnostic::error("rtc::compat::degenerate", head, "the cylinder has no length")
-                .with_label("its two end points are the same"),
+            Diagnostic::error(
+                "rtc::compat::degenerate",
+                head,
+                "the cylinder has no length",
+            )
+            .with_label("its two end points are the same"),
         );
         return None;
     }
@@ -304,7 +332,8 @@ fn mesh(
         m.ignore("type");
     }
     m.finish("a mesh", &known_keys("mesh"), diags);
-    let (Some(path), Some(position), Some(scale), Some(material)) = (path, position, scale, material)
+    let (Some(path), Some(position), Some(scale), Some(material)) =
+        (path, position, scale, material)
     else {
         return;
     };
@@ -323,7 +352,11 @@ fn mesh(
             smooth: false,
             use_mtl: material.is_none(),
         },
-        transform: DAffine3::from_scale_rotation_translation(scale, glam::DQuat::IDENTITY, position),
+        transform: DAffine3::from_scale_rotation_translation(
+            scale,
+            glam::DQuat::IDENTITY,
+            position,
+        ),
         material,
         span: node.span,
     });
@@ -364,18 +397,26 @@ fn material(
         (None, Some(_)) => Some(DVec3::ONE),
         (None, None) => {
             diags.push(
-                Diagnostic::error("rtc::yaml::missing_key", m.head(), "the material has no `color`")
-                    .with_label("`color` or `texture` is missing here")
-                    .with_help("add `color: [1.0, 1.0, 1.0]`"),
+                Diagnostic::error(
+                    "rtc::yaml::missing_key",
+                    m.head(),
+                    "the material has no `color`",
+                )
+                .with_label("`color` or `texture` is missing here")
+                .with_help("add `color: [1.0, 1.0, 1.0]`"),
             );
             None
         }
     };
     if let (Some(c), Some(t)) = (&color_entry, &texture) {
         diags.push(
-            Diagnostic::warning("rtc::yaml::unused", c.key.span, "`texture` replaces `color`")
-                .with_label("this colour is not used")
-                .with_secondary(t.key.span, "the texture"),
+            Diagnostic::warning(
+                "rtc::yaml::unused",
+                c.key.span,
+                "`texture` replaces `color`",
+            )
+            .with_label("this colour is not used")
+            .with_secondary(t.key.span, "the texture"),
         );
     }
     let texture = texture.and_then(|e| {
@@ -407,9 +448,13 @@ fn material(
         Some(e) => {
             if e.key.scalar() == Some("kt") {
                 diags.push(
-                    Diagnostic::warning("rtc::yaml::spelling", e.key.span, "`kt` read as `refract`")
-                        .with_label("student spelling")
-                        .with_help("write `refract`"),
+                    Diagnostic::warning(
+                        "rtc::yaml::spelling",
+                        e.key.span,
+                        "`kt` read as `refract`",
+                    )
+                    .with_label("student spelling")
+                    .with_help("write `refract`"),
                 );
             }
             val::non_negative(e.value, "`refract`", diags)
@@ -438,9 +483,13 @@ fn material(
             return None;
         }
         diags.push(
-            Diagnostic::warning("rtc::compat::out_of_range", span, format!("`eta` {text} is not positive"))
-                .with_label("ignored: the material does not refract")
-                .with_help("remove `eta` or write `eta: 1`"),
+            Diagnostic::warning(
+                "rtc::compat::out_of_range",
+                span,
+                format!("`eta` {text} is not positive"),
+            )
+            .with_label("ignored: the material does not refract")
+            .with_help("remove `eta` or write `eta: 1`"),
         );
         1.0
     };

@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use serde_saphyr::granit_parser::{Event, Parser, ScalarStyle, Span as YamlSpan};
+use serde_saphyr::granit_parser::{Event, Parser, ScalarStyle, Span as YamlSpan, StructureStyle};
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::{FileId, Span};
@@ -123,9 +123,11 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
     builder.root
 }
 
+/// A collection being built: its items, its start span, its anchor, and whether it is a flow
+/// collection (whose end event marks the closing bracket; a block one ends at its last item).
 enum Open {
-    Seq(Vec<Node>, Span, usize),
-    Map(Vec<(Node, Node)>, Option<Node>, Span, usize),
+    Seq(Vec<Node>, Span, usize, bool),
+    Map(Vec<(Node, Node)>, Option<Node>, Span, usize, bool),
 }
 
 struct Builder<'t> {
@@ -170,13 +172,22 @@ impl Builder<'_> {
                 };
                 self.finish_node(node, anchor)?;
             }
-            Event::SequenceStart(_, anchor, _) => self.stack.push(Open::Seq(Vec::new(), span, anchor)),
-            Event::MappingStart(_, anchor, _) => {
-                self.stack.push(Open::Map(Vec::new(), None, span, anchor))
+            Event::SequenceStart(style, anchor, _) => {
+                let flow = style == StructureStyle::Flow;
+                self.stack.push(Open::Seq(Vec::new(), span, anchor, flow))
+            }
+            Event::MappingStart(style, anchor, _) => {
+                let flow = style == StructureStyle::Flow;
+                self.stack
+                    .push(Open::Map(Vec::new(), None, span, anchor, flow))
             }
             Event::SequenceEnd => {
-                if let Some(Open::Seq(items, start, anchor)) = self.stack.pop() {
-                    let end = items.last().map_or(start, |n| n.span);
+                if let Some(Open::Seq(items, start, anchor, flow)) = self.stack.pop() {
+                    let end = match items.last() {
+                        _ if flow => span,
+                        Some(n) => n.span,
+                        None => start,
+                    };
                     let node = Node {
                         kind: NodeKind::Seq(items),
                         span: start.join(end),
@@ -185,8 +196,12 @@ impl Builder<'_> {
                 }
             }
             Event::MappingEnd => {
-                if let Some(Open::Map(entries, _, start, anchor)) = self.stack.pop() {
-                    let end = entries.last().map_or(start, |(_, v)| v.span);
+                if let Some(Open::Map(entries, _, start, anchor, flow)) = self.stack.pop() {
+                    let end = match entries.last() {
+                        _ if flow => span,
+                        Some((_, v)) => v.span,
+                        None => start,
+                    };
                     let node = Node {
                         kind: NodeKind::Map(entries),
                         span: start.join(end),
@@ -216,8 +231,12 @@ impl Builder<'_> {
         self.nodes += count(&node);
         if self.nodes > MAX_NODES {
             return Err(Box::new(
-                Diagnostic::error("rtc::yaml::too_large", node.span, "the YAML document is too large")
-                    .with_label("expanding this node passes a million nodes"),
+                Diagnostic::error(
+                    "rtc::yaml::too_large",
+                    node.span,
+                    "the YAML document is too large",
+                )
+                .with_label("expanding this node passes a million nodes"),
             ));
         }
         if anchor != 0 {

@@ -32,7 +32,10 @@ impl<'n> MapView<'n> {
                 Diagnostic::error(
                     "rtc::yaml::type",
                     node.span,
-                    format!("expected {what} (a map of `key: value` lines), found {}", node.describe()),
+                    format!(
+                        "expected {what} (a map of `key: value` lines), found {}",
+                        node.describe()
+                    ),
                 )
                 .with_label("not a map"),
             );
@@ -223,7 +226,13 @@ pub fn positive(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64>
 }
 
 /// A whole number in `min..=max`.
-pub fn integer(node: &Node, what: &str, min: u32, max: u32, diags: &mut Diagnostics) -> Option<u32> {
+pub fn integer(
+    node: &Node,
+    what: &str,
+    min: u32,
+    max: u32,
+    diags: &mut Diagnostics,
+) -> Option<u32> {
     let v = number(node, what, diags)?;
     let text = node.scalar().unwrap_or("").trim();
     if v.fract() != 0.0 {
@@ -261,7 +270,10 @@ pub fn boolean(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<bool>
                 Diagnostic::error(
                     "rtc::yaml::type",
                     node.span,
-                    format!("expected `true` or `false` for {what}, found {}", node.describe()),
+                    format!(
+                        "expected `true` or `false` for {what}, found {}",
+                        node.describe()
+                    ),
                 )
                 .with_label("not a boolean")
                 .with_help(format!("write `{what}: true` or `{what}: false`")),
@@ -283,12 +295,19 @@ pub enum Triple {
 /// A list of exactly three numbers.
 pub fn triple(node: &Node, what: &str, kind: Triple, diags: &mut Diagnostics) -> Option<DVec3> {
     let NodeKind::Seq(items) = &node.kind else {
-        let example = if kind == Triple::Color { "[1, 0.5, 0]" } else { "[0, 0, 0]" };
+        let example = if kind == Triple::Color {
+            "[1, 0.5, 0]"
+        } else {
+            "[0, 0, 0]"
+        };
         diags.push(
             Diagnostic::error(
                 "rtc::yaml::type",
                 node.span,
-                format!("expected a list of three numbers for {what}, found {}", node.describe()),
+                format!(
+                    "expected a list of three numbers for {what}, found {}",
+                    node.describe()
+                ),
             )
             .with_label("not a list")
             .with_help(format!("write it as `{example}`")),
