@@ -1,82 +1,85 @@
-//! Writing images: PNG or binary PPM chosen by the file extension. The image goes to a temporary
-//! file in the same directory first and is renamed into place, so a failed or interrupted write
-//! never clobbers an existing image.
+//! Writing images: PNG or PPM by extension, through a temporary file and a rename so a failed or
+//! interrupted render never clobbers an existing image.
 
-use std::fs;
-use std::io::{BufWriter, Write};
+use std::io::Write;
+
+use image::ImageEncoder;
 use std::path::{Path, PathBuf};
 
-use super::Image;
 use crate::diag::{Diagnostic, Severity};
+use crate::frontend::IO_ERROR;
 
-/// The output formats `rtc` writes.
+use super::Image;
+
+/// Image file formats rtc writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Format {
+pub enum ImageFormat {
     /// 8-bit RGB PNG.
     Png,
-    /// Binary PPM (`P6`, maxval 255).
+    /// Binary PPM (P6, maxval 255), as the legacy course framework wrote.
     Ppm,
 }
 
-impl Format {
-    /// The format for a path's extension (case-insensitive), or a diagnostic naming the choices.
-    pub fn of(path: &Path) -> Result<Format, Diagnostic> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        match ext.as_deref() {
-            Some("png") => Ok(Format::Png),
-            Some("ppm") => Ok(Format::Ppm),
-            other => Err(Diagnostic::new(
-                Severity::Error,
-                "rtc::output::format",
-                None,
-                match other {
-                    Some(e) => format!("cannot write `.{e}` images: `{}`", path.display()),
-                    None => format!("the output `{}` has no extension", path.display()),
-                },
-            )
-            .with_help("name the output `.png` or `.ppm`")),
+impl ImageFormat {
+    /// The format implied by a path's extension.
+    pub fn of(path: &Path) -> Option<ImageFormat> {
+        match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
+            "png" => Some(ImageFormat::Png),
+            "ppm" => Some(ImageFormat::Ppm),
+            _ => None,
         }
     }
 }
 
-/// Writes `image` to `path` atomically (temporary file + rename).
-pub fn write(image: &Image, path: &Path) -> Result<(), Diagnostic> {
-    let format = Format::of(path)?;
-    let tmp = temp_path(path);
-    let result = write_to(image, &tmp, format).and_then(|()| fs::rename(&tmp, path));
-    result.map_err(|e| {
-        let _ = fs::remove_file(&tmp);
-        Diagnostic::new(
-            Severity::Error,
-            "rtc::output::io",
-            None,
+fn io_error(message: String, help: &str) -> Diagnostic {
+    Diagnostic::new(Severity::Error, IO_ERROR, None, message).with_help(help)
+}
+
+/// Encodes `image` in memory in the format of `path`'s extension.
+pub fn encode(image: &Image, path: &Path) -> Result<Vec<u8>, Diagnostic> {
+    let format = ImageFormat::of(path).ok_or_else(|| {
+        io_error(
+            format!("cannot write `{}`: unknown image format", path.display()),
+            "name the output `*.png` or `*.ppm`",
+        )
+    })?;
+    let mut bytes = Vec::new();
+    match format {
+        ImageFormat::Png => {
+            image::codecs::png::PngEncoder::new(&mut bytes)
+                .write_image(
+                    image.as_raw(),
+                    image.width(),
+                    image.height(),
+                    image::ExtendedColorType::Rgb8,
+                )
+                .map_err(|e| io_error(format!("cannot encode PNG: {e}"), "report this as a bug"))?;
+        }
+        ImageFormat::Ppm => {
+            let _ = write!(bytes, "P6\n{} {}\n255\n", image.width(), image.height());
+            bytes.extend_from_slice(image.as_raw());
+        }
+    }
+    Ok(bytes)
+}
+
+/// Writes `image` to `path` atomically (temporary sibling file, then rename).
+pub fn save(image: &Image, path: &Path) -> Result<(), Diagnostic> {
+    let bytes = encode(image, path)?;
+    let tmp = temp_sibling(path);
+    let write = std::fs::write(&tmp, &bytes).and_then(|()| std::fs::rename(&tmp, path));
+    write.map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        io_error(
             format!("cannot write `{}`: {e}", path.display()),
+            "check that the directory exists and is writable, or choose another path with `-o`",
         )
     })
 }
 
-/// `dir/.NAME.PID.tmp`: same directory (so the rename stays on one file system), hidden, unique per process.
-fn temp_path(path: &Path) -> PathBuf {
+fn temp_sibling(path: &Path) -> PathBuf {
     let name = path
         .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
+        .map_or_else(|| "image".into(), |n| n.to_string_lossy().into_owned());
     path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
-}
-
-fn write_to(image: &Image, tmp: &Path, format: Format) -> std::io::Result<()> {
-    let mut out = BufWriter::new(fs::File::create(tmp)?);
-    match format {
-        Format::Png => image
-            .write_to(&mut out, image::ImageFormat::Png)
-            .map_err(std::io::Error::other)?,
-        Format::Ppm => {
-            write!(out, "P6\n{} {}\n255\n", image.width(), image.height())?;
-            out.write_all(image.as_raw())?;
-        }
-    }
-    out.into_inner().map_err(|e| e.into_error())?.sync_all()
 }
