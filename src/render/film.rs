@@ -61,12 +61,6 @@ pub fn to_bytes(c: Color) -> [u8; 3] {
     [q(c.x), q(c.y), q(c.z)]
 }
 
-/// Clamps each channel to [0, 1] (NaN becomes 0).
-pub fn clamp01(c: Color) -> Color {
-    let f = |v: f64| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
-    DVec3::new(f(c.x), f(c.y), f(c.z))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -75,9 +69,5 @@ mod tests {
     fn quantisation_truncates_and_clamps() {
         assert_eq!(to_bytes(DVec3::new(1.0, 0.999, 0.5)), [255, 254, 127]);
         assert_eq!(to_bytes(DVec3::new(7.0, -1.0, f64::NAN)), [255, 0, 0]);
-        assert_eq!(
-            clamp01(DVec3::new(2.0, -3.0, f64::NAN)),
-            DVec3::new(1.0, 0.0, 0.0)
-        );
     }
 }

@@ -24,7 +24,7 @@ use glam::DVec3;
 
 use crate::diag::Diagnostic;
 use crate::ir::{Color, DepthRange, RenderMode, Scene};
-use film::{Film, clamp01};
+use film::Film;
 use integrator::Media;
 use plan::Plan;
 use progress::Progress;
@@ -52,9 +52,9 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Image, Diagnosti
 
 /// Renders a scene to a floating-point film (with statistics).
 ///
-/// Supersampling averages samples that are each clamped to [0, 1] first (a sample brighter than
-/// white counts as white), which matches the course's 4×4 renders better than clamping the
-/// average (tested against `scene01-zoom-ss-reflect-lights-shadows.png`, see tests/golden.rs).
+/// Supersampling averages the unclamped samples; the film clamps the average when it quantises.
+/// Against the 4×4 reference `scene01-zoom-ss-reflect-lights-shadows.png` this gives a mean error
+/// of 0.054 levels, clamping each sample first 0.057 (and 6.94 vs 6.95 on the texture scene).
 pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagnostic> {
     let plan = Plan::new(scene)?;
     let pool = tiles::pool(options.threads)?;
@@ -104,7 +104,7 @@ fn pixel(plan: &Plan<'_>, x: u32, y: u32, ctx: &mut Ctx, near: f64, far: f64) ->
     average(plan, fine, first.len(), x, y, ctx, near, far, None)
 }
 
-/// The mean of the clamped samples of `grid`, optionally recording their per-channel range.
+/// The mean of the samples of `grid`, optionally recording their per-channel range.
 #[allow(clippy::too_many_arguments)]
 fn average(
     plan: &Plan<'_>,
@@ -120,7 +120,7 @@ fn average(
     let mut sum = Color::ZERO;
     for k in 0..grid.len() {
         let (sx, sy) = grid.offset(k);
-        let c = clamp01(sample(plan, x, y, sx, sy, first_index + k, ctx, near, far));
+        let c = (sample(plan, x, y, sx, sy, first_index + k, ctx, near, far));
         if let Some((lo, hi)) = range.as_mut() {
             **lo = lo.min(c);
             **hi = hi.max(c);
