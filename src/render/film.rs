@@ -1,8 +1,6 @@
 //! The film: one floating-point colour per pixel, turned into bytes by clamping each channel to
 //! [0, 1] and truncating `255·c` (COURSE.md §1.4/§2.5: trunc, not round).
 
-use glam::DVec3;
-
 use super::Image;
 use crate::ir::Color;
 
@@ -64,6 +62,7 @@ pub fn to_bytes(c: Color) -> [u8; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     #[test]
     fn quantisation_truncates_and_clamps() {

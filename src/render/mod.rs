@@ -65,9 +65,33 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
         _ => (0.0, 0.0),
     };
     let progress = Progress::new(options.progress, u64::from(h));
-    let (pixels, stats) = tiles::run(&pool, w, h, &progress, |x, y, ctx| {
-        pixel(&plan, x, y, ctx, near, far)
+    let first = plan.sampler.first;
+    let (mut pixels, mut stats) = tiles::run(&pool, w, h, &progress, |x, y, ctx| {
+        average(&plan, first, 0, x, y, ctx, near, far)
     });
+    if let Some((fine, threshold)) = plan.sampler.refine {
+        // Adaptive sampling: a pixel takes the finer grid where it differs from a 4-neighbour
+        // by more than the threshold in some channel. Both passes are pure per pixel.
+        let coarse = &pixels;
+        let at = |x: u32, y: u32| coarse[y as usize * w as usize + x as usize];
+        let hidden = Progress::new(false, 0);
+        let (refined, more) = tiles::run(&pool, w, h, &hidden, |x, y, ctx| {
+            let c = at(x, y);
+            let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
+            let edge = (x > 0 && differs(x - 1, y))
+                || (x + 1 < w && differs(x + 1, y))
+                || (y > 0 && differs(x, y - 1))
+                || (y + 1 < h && differs(x, y + 1));
+            if !edge {
+                return c;
+            }
+            ctx.stats.refined_pixels += 1;
+            // Sample numbers continue after the first grid's, so random decisions differ.
+            average(&plan, fine, first.len(), x, y, ctx, near, far)
+        });
+        pixels = refined;
+        stats.add(&more);
+    }
     progress.finish();
     Ok(Film {
         width: w,
@@ -77,34 +101,7 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
     })
 }
 
-/// The average colour of one pixel, refining to the finer grid under adaptive sampling.
-fn pixel(plan: &Plan<'_>, x: u32, y: u32, ctx: &mut Ctx, near: f64, far: f64) -> Color {
-    let first = plan.sampler.first;
-    let Some((fine, threshold)) = plan.sampler.refine else {
-        return average(plan, first, 0, x, y, ctx, near, far, None);
-    };
-    let mut lo = DVec3::INFINITY;
-    let mut hi = DVec3::NEG_INFINITY;
-    let coarse = average(
-        plan,
-        first,
-        0,
-        x,
-        y,
-        ctx,
-        near,
-        far,
-        Some((&mut lo, &mut hi)),
-    );
-    if (hi - lo).max_element() <= threshold {
-        return coarse;
-    }
-    ctx.stats.refined_pixels += 1;
-    // Sample numbers continue after the first grid's, so random decisions differ.
-    average(plan, fine, first.len(), x, y, ctx, near, far, None)
-}
-
-/// The mean of the samples of `grid`, optionally recording their per-channel range.
+/// The mean of the (unclamped) samples of `grid`.
 #[allow(clippy::too_many_arguments)]
 fn average(
     plan: &Plan<'_>,
@@ -115,17 +112,11 @@ fn average(
     ctx: &mut Ctx,
     near: f64,
     far: f64,
-    mut range: Option<(&mut DVec3, &mut DVec3)>,
 ) -> Color {
     let mut sum = Color::ZERO;
     for k in 0..grid.len() {
         let (sx, sy) = grid.offset(k);
-        let c = (sample(plan, x, y, sx, sy, first_index + k, ctx, near, far));
-        if let Some((lo, hi)) = range.as_mut() {
-            **lo = lo.min(c);
-            **hi = hi.max(c);
-        }
-        sum += c;
+        sum += sample(plan, x, y, sx, sy, first_index + k, ctx, near, far);
     }
     sum / f64::from(grid.len())
 }
