@@ -264,8 +264,10 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         "rtc::render::material"
     );
     let mut s = empty([200.0, 200.0, 1000.0]);
-    let mut m = Material::default();
-    m.texture = Some(rtc::ir::TextureId(3));
+    let m = Material {
+        texture: Some(rtc::ir::TextureId(3)),
+        ..Material::default()
+    };
     sphere(&mut s, [0.0, 0.0, 0.0], 1.0, m);
     assert_eq!(
         render(&s, &opts(1)).unwrap_err().code,
