@@ -134,7 +134,10 @@ fn sample(
     near: f64,
     far: f64,
 ) -> Color {
-    ctx.rng = Rng::new(x, y, index, plan.scene.settings.seed);
+    // Only lenses and area lights draw random numbers; skip keying them otherwise.
+    if plan.random {
+        ctx.rng = Rng::new(x, y, index, plan.scene.settings.seed);
+    }
     let lens = if plan.camera.has_lens() {
         ctx.rng.get2(0)
     } else {

@@ -58,6 +58,8 @@ pub struct Plan<'a> {
     pub max_depth: u32,
     /// Colour of rays that miss (shaded mode only; buffers use black).
     pub background: Color,
+    /// Whether anything draws random numbers (a lens or an area light).
+    pub random: bool,
     /// Ray offset scale: `EPS_REL · scene extent`.
     eps_floor: f64,
 }
@@ -142,6 +144,11 @@ impl<'a> Plan<'a> {
             max_depth: s.max_depth,
             background: s.background,
             eps_floor: EPS_REL * extent,
+            random: camera.has_lens()
+                || scene
+                    .lights
+                    .iter()
+                    .any(|l| matches!(l.kind, LightKind::Area { .. })),
         })
     }
 
