@@ -39,6 +39,7 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
     let mut draft = Draft::default();
 
     if let Some(e) = top.get(&["Eye"], diags) {
+        draft.camera_written = true;
         if let Some(eye) = val::triple(e.value, "`Eye`", Triple::Point, diags) {
             draft.eye = Some((eye, e.key.span.join(e.value.span)));
         }
@@ -111,9 +112,8 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         .and_then(|e| val::triple(e.value, "`up`", Triple::Point, diags));
     let size = size.and_then(|e| view_size(e.value, diags));
     m.finish("`Camera`", &["eye", "center", "up", "viewSize"], diags);
-    let (eye, center, up, size) = (eye?, center?, up?, size?);
     let up_span = up_entry.map_or(span, |e| e.value.span);
-    if up.length() == 0.0 {
+    if up.is_some_and(|u| u.length() == 0.0) {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -125,6 +125,7 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         );
         return None;
     }
+    let (eye, center, up, size) = (eye?, center?, up?, size?);
     let view = center - eye;
     if view.length() == 0.0 {
         diags.push(

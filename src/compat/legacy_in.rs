@@ -213,6 +213,7 @@ impl<'t> Reader<'t, '_> {
     fn record(&mut self, kind: Kind, kw: Span, draft: &mut Draft) -> Result<(), Failed> {
         match kind {
             Kind::Eye => {
+                draft.camera_written = true;
                 let (eye, _) = self.triple(kind, kw, ["eye x", "eye y", "eye z"])?;
                 let span = kw.join(self.span(self.pos, self.pos));
                 if let Some((_, old)) = draft.eye {

@@ -44,6 +44,7 @@ pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loade
         "add an eye record such as `Eye 200 200 1000`",
         &mut diags,
     );
+    sort_by_position(&mut diags);
     Loaded {
         scene,
         diagnostics: diags,
@@ -55,10 +56,18 @@ pub fn load_yaml_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loa
     let file = sources.add(path, text);
     let mut diags = Diagnostics::default();
     let scene = course_yaml::parse(text, file, path, &mut diags);
+    sort_by_position(&mut diags);
     Loaded {
         scene,
         diagnostics: diags,
     }
+}
+
+/// Source order reads best: the readers visit keys in their own order, not the file's.
+fn sort_by_position(diags: &mut Diagnostics) {
+    diags
+        .items
+        .sort_by_key(|d| d.span.map_or((0, 0), |s| (s.start, s.end)));
 }
 
 fn start_of(file: FileId) -> Span {

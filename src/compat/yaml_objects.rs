@@ -180,7 +180,7 @@ fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Opt
                 Diagnostic::error(
                     "rtc::yaml::arity",
                     node.span,
-                    format!("`radius` list has {} items, expected 2", items.len()),
+                    format!("`radius` list must have 2 items, found {}", items.len()),
                 )
                 .with_label("expected a radius and a pole direction")
                 .with_help("write `radius: 50` or `radius: [50, [0, 1, 0]]`"),

@@ -89,7 +89,16 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
                     format!("invalid YAML: {}", e.info()),
                 )
                 .with_label("the YAML parser stopped here");
-                if text.contains('\t') {
+                if let Some(open) = unclosed_bracket(text.get(..at).unwrap_or("")) {
+                    d = d
+                        .with_secondary(
+                            Span::new(file, open, open + 1),
+                            "this bracket is never closed",
+                        )
+                        .with_help(
+                            "close the list or map on the same line, e.g. `[200, 200, 1000]`",
+                        );
+                } else if text.contains('\t') {
                     d = d.with_help("YAML indentation must use spaces, not tabs");
                 }
                 diags.push(d);
@@ -125,6 +134,30 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
 
 /// A collection being built: its items, its start span, its anchor, and whether it is a flow
 /// collection (whose end event marks the closing bracket; a block one ends at its last item).
+/// The byte offset of the innermost `[` or `{` still open at the end of `text`, ignoring comments
+/// and quoted text (a best-effort hint for the most common slip in course files).
+fn unclosed_bracket(text: &str) -> Option<usize> {
+    let mut open = Vec::new();
+    let mut quote = None;
+    let mut comment = false;
+    for (i, c) in text.char_indices() {
+        match (c, quote) {
+            ('\n', _) => comment = false,
+            _ if comment => {}
+            (q, Some(open_q)) if q == open_q => quote = None,
+            (_, Some(_)) => {}
+            ('"' | '\'', None) => quote = Some(c),
+            ('#', None) => comment = true,
+            ('[' | '{', None) => open.push(i),
+            (']' | '}', None) => {
+                open.pop();
+            }
+            _ => {}
+        }
+    }
+    open.pop()
+}
+
 enum Open {
     Seq(Vec<Node>, Span, usize, bool),
     Map(Vec<(Node, Node)>, Option<Node>, Span, usize, bool),

@@ -41,9 +41,12 @@ impl<'n> MapView<'n> {
             );
             return None;
         };
+        let mut used = vec![false; entries.len()];
         for (i, (k, _)) in entries.iter().enumerate() {
             let Some(name) = k.scalar() else { continue };
             if let Some((first, _)) = entries[..i].iter().find(|(p, _)| p.scalar() == Some(name)) {
+                // Reported here; the reader uses the first occurrence.
+                used[i] = true;
                 diags.push(
                     Diagnostic::error(
                         "rtc::yaml::duplicate_key",
@@ -58,7 +61,7 @@ impl<'n> MapView<'n> {
         }
         Some(MapView {
             entries,
-            used: vec![false; entries.len()],
+            used,
             span: node.span,
         })
     }
