@@ -120,10 +120,7 @@ impl<'t> Reader<'t, '_> {
     }
 
     fn run(&mut self, draft: &mut Draft) {
-        loop {
-            let Some((start, end)) = self.peek_token() else {
-                break;
-            };
+        while let Some((start, end)) = self.peek_token() {
             let first = self.text.as_bytes()[start];
             if !first.is_ascii_alphabetic() {
                 self.stray(start, end);
