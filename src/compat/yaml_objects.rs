@@ -244,20 +244,25 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
     let head = m.head();
     let p1 = point(m, &["p1"], "this quad", diags);
     let p2 = point(m, &["p2"], "this quad", diags);
+    let p3_span = m.span_of("p3").unwrap_or(head);
     let p3 = point(m, &["p3"], "this quad", diags);
     let p4 = point(m, &["p4"], "this quad", diags);
     let (p1, p2, p3, p4) = (p1?, p2?, p3?, p4?);
     let (u, v) = (p2 - p1, p4 - p1);
     let scale = u.length().max(v.length()).max(1.0);
-    if (p1 + u + v - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
+    let expected = p1 + u + v;
+    if (expected - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
-                head,
+                p3_span,
                 "the quad is not a parallelogram",
             )
-            .with_label("p3 must equal p2 + p4 − p1")
-            .with_help("give the corners in order around the quad, or use two triangles"),
+            .with_label(format!(
+                "p3 must be p2 + p4 − p1 = [{}, {}, {}]",
+                expected.x, expected.y, expected.z
+            ))
+            .with_help("give the corners in order around a parallelogram, or use two triangles"),
         );
         return None;
     }

@@ -167,7 +167,8 @@ struct Builder<'t> {
     text: &'t str,
     file: FileId,
     stack: Vec<Open>,
-    anchors: HashMap<usize, Node>,
+    /// Anchored nodes with their subtree sizes.
+    anchors: HashMap<usize, (Node, usize)>,
     nodes: usize,
     root: Option<Node>,
 }
@@ -243,14 +244,19 @@ impl Builder<'_> {
                 }
             }
             Event::Alias(id) => {
-                let Some(target) = self.anchors.get(&id).cloned() else {
+                let Some(&(_, size)) = self.anchors.get(&id) else {
                     return Err(Box::new(
                         Diagnostic::error("rtc::yaml::syntax", span, "unknown YAML alias")
                             .with_label("no anchor of this name before it"),
                     ));
                 };
+                // Budget the whole copied subtree before copying it (an alias bomb).
+                self.spend(size.saturating_sub(1), span)?;
+                let Some((target, _)) = self.anchors.get(&id) else {
+                    return Ok(());
+                };
                 let node = Node {
-                    kind: target.kind,
+                    kind: target.kind.clone(),
                     span,
                 };
                 self.finish_node(node, 0)?;
@@ -260,20 +266,26 @@ impl Builder<'_> {
         Ok(())
     }
 
-    fn finish_node(&mut self, node: Node, anchor: usize) -> Result<(), Box<Diagnostic>> {
-        self.nodes += count(&node);
+    fn spend(&mut self, nodes: usize, span: Span) -> Result<(), Box<Diagnostic>> {
+        self.nodes = self.nodes.saturating_add(nodes);
         if self.nodes > MAX_NODES {
             return Err(Box::new(
                 Diagnostic::error(
                     "rtc::yaml::too_large",
-                    node.span,
+                    span,
                     "the YAML document is too large",
                 )
                 .with_label("expanding this node passes a million nodes"),
             ));
         }
+        Ok(())
+    }
+
+    fn finish_node(&mut self, node: Node, anchor: usize) -> Result<(), Box<Diagnostic>> {
+        self.spend(1, node.span)?;
         if anchor != 0 {
-            self.anchors.insert(anchor, node.clone());
+            self.anchors
+                .insert(anchor, (node.clone(), deep_count(&node)));
         }
         match self.stack.last_mut() {
             Some(Open::Seq(items, ..)) => items.push(node),
@@ -291,12 +303,17 @@ impl Builder<'_> {
     }
 }
 
-/// Node count of a finished subtree (1 for scalars), for the alias-expansion budget.
-fn count(node: &Node) -> usize {
+/// Number of nodes in a subtree, for the alias-expansion budget.
+fn deep_count(node: &Node) -> usize {
     match &node.kind {
         NodeKind::Scalar { .. } => 1,
-        NodeKind::Seq(items) => 1 + items.len(),
-        NodeKind::Map(entries) => 1 + 2 * entries.len(),
+        NodeKind::Seq(items) => 1 + items.iter().map(deep_count).sum::<usize>(),
+        NodeKind::Map(entries) => {
+            1 + entries
+                .iter()
+                .map(|(k, v)| deep_count(k) + deep_count(v))
+                .sum::<usize>()
+        }
     }
 }
 
@@ -331,6 +348,20 @@ mod tests {
         let (node, diags) = parse("Eye: [1, 2\nLights: x\n");
         assert!(node.is_none());
         assert_eq!(diags.items[0].code, "rtc::yaml::syntax");
+    }
+
+    #[test]
+    fn alias_bombs_hit_the_node_budget() {
+        let mut text = String::from("a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n");
+        for i in 1..9 {
+            let p = i - 1;
+            text.push_str(&format!(
+                "a{i}: &a{i} [*a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}]\n"
+            ));
+        }
+        let (node, diags) = parse(&text);
+        assert!(node.is_none());
+        assert_eq!(diags.items[0].code, "rtc::yaml::too_large");
     }
 
     #[test]

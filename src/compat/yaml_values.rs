@@ -134,6 +134,14 @@ impl<'n> MapView<'n> {
         }
     }
 
+    /// The span of a key's value (exact spelling), without marking it read.
+    pub fn span_of(&self, name: &str) -> Option<Span> {
+        self.entries
+            .iter()
+            .find(|(k, _)| k.scalar() == Some(name))
+            .map(|(_, v)| v.span)
+    }
+
     /// Marks a key as read without using it.
     pub fn ignore(&mut self, name: &str) {
         for (i, (k, _)) in self.entries.iter().enumerate() {
