@@ -95,7 +95,7 @@ pub struct CourseMaterial {
     pub color: Color,
     /// Texture replacing the colour.
     pub texture: Option<TextureId>,
-    /// Ambient, diffuse and specular coefficients and the Phong exponent.
+    /// Ambient coefficient.
     pub ka: f64,
     /// Diffuse coefficient.
     pub kd: f64,

@@ -53,13 +53,13 @@ pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Dia
         "quad" => quad(&mut m, diags),
         _ => cylinder(&mut m, diags),
     };
-    let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags, true);
+    let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags);
     m.finish(&format!("a {kind_name}"), &known_keys(kind_name), diags);
     if let (Some(shape), Some(material)) = (shape, material) {
         parts.objects.push(Object {
             shape,
             transform: DAffine3::IDENTITY,
-            material,
+            material: Some(material),
             span: node.span,
         });
     }
@@ -149,13 +149,14 @@ fn sphere(
             pole = pole_vector(e.value, diags);
         }
     }
-    let material = material_entry(&mut m, scene, Mapping::Spherical, parts, diags, true);
+    let material = material_entry(&mut m, scene, Mapping::Spherical, parts, diags);
     m.finish("a sphere", &known_keys("sphere"), diags);
     let (Some(position), Some(radius), Some(material)) = (position, radius, material) else {
         return;
     };
-    let textured = material
-        .and_then(|id| parts.materials.get(id.0 as usize))
+    let textured = parts
+        .materials
+        .get(material.0 as usize)
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
@@ -163,7 +164,7 @@ fn sphere(
         position,
         radius,
         orientation,
-        material,
+        Some(material),
         node.span,
     ));
 }
@@ -367,23 +368,17 @@ fn mesh(
     });
 }
 
-/// The required `material:` of an object. `Some(None)` never happens here; the outer option is
-/// `None` after an error.
+/// The required `material:` of an object; `None` after an error.
 fn material_entry(
     m: &mut MapView<'_>,
     scene: &Path,
     mapping: Mapping,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
-    required: bool,
-) -> Option<Option<MaterialId>> {
+) -> Option<MaterialId> {
     let example = "material: {color: [1, 1, 1], ka: 0.2, kd: 0.8, ks: 0, n: 1}";
-    let e = if required {
-        m.require(&["material"], "this object", example, diags)?
-    } else {
-        m.get(&["material"], diags)?
-    };
-    material(e.value, scene, mapping, parts, diags).map(Some)
+    let e = m.require(&["material"], "this object", example, diags)?;
+    material(e.value, scene, mapping, parts, diags)
 }
 
 /// A course material map: `color` or `texture`, `ka kd ks n`, optional `reflect refract eta`.
