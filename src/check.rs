@@ -125,8 +125,13 @@ pub fn summary(scene: &Scene) -> String {
         .join(", ");
     let objects = scene.objects.len();
     let lights = scene.lights.len();
+    let kinds = if kinds.is_empty() {
+        String::new()
+    } else {
+        format!(" ({kinds})")
+    };
     format!(
-        "{objects} object{} ({kinds}), {lights} light{}, camera {}x{}; effects: {}",
+        "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {}",
         if objects == 1 { "" } else { "s" },
         if lights == 1 { "" } else { "s" },
         scene.camera.width,
