@@ -99,6 +99,15 @@ fn invisible_bounces(scene: &Scene, out: &mut Diagnostics) {
     }
 }
 
+/// `kind` in the plural when `count` is not one ("box" → "boxes").
+fn plural(kind: &str, count: usize) -> String {
+    match count {
+        1 => kind.to_string(),
+        _ if kind.ends_with('x') || kind.ends_with('h') => format!("{kind}es"),
+        _ => format!("{kind}s"),
+    }
+}
+
 /// A one-line summary of an evaluated scene: objects by kind, lights, camera, effects.
 pub fn summary(scene: &Scene) -> String {
     let mut kinds: Vec<(&str, usize)> = Vec::new();
@@ -111,13 +120,18 @@ pub fn summary(scene: &Scene) -> String {
     }
     let kinds = kinds
         .iter()
-        .map(|(k, c)| format!("{c} {k}"))
+        .map(|(k, c)| format!("{c} {}", plural(k, *c)))
         .collect::<Vec<_>>()
         .join(", ");
     let objects = scene.objects.len();
     let lights = scene.lights.len();
+    let kinds = if kinds.is_empty() {
+        String::new()
+    } else {
+        format!(" ({kinds})")
+    };
     format!(
-        "{objects} object{} ({kinds}), {lights} light{}, camera {}x{}; effects: {}",
+        "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {}",
         if objects == 1 { "" } else { "s" },
         if lights == 1 { "" } else { "s" },
         scene.camera.width,

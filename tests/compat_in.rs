@@ -76,6 +76,33 @@ fn rt1_in_and_scene01_yaml_give_the_same_ir() {
 }
 
 #[test]
+fn rt1_in_and_scene01_yaml_render_the_same_bytes() {
+    let mut sources = SourceMap::new();
+    let a = load_in(Path::new("tests/data/course/in/rt1.in"), &mut sources);
+    let b = load_yaml(
+        Path::new("tests/data/course/yaml/scene01.yaml"),
+        &mut sources,
+    );
+    let options = rtc::render::RenderOptions::default();
+    let ra = rtc::render::render(&a.scene.expect("rt1 scene"), &options);
+    let rb = rtc::render::render(&b.scene.expect("scene01 scene"), &options);
+    match (ra, rb) {
+        (Ok(ia), Ok(ib)) => {
+            assert_eq!(ia.dimensions(), (400, 400));
+            assert!(
+                ia.as_raw() == ib.as_raw(),
+                "rt1.in and scene01.yaml render differently"
+            );
+        }
+        // Until the renderer branch is merged, `render` is the contract placeholder.
+        (Err(ea), Err(eb)) if ea.code == "rtc::unsupported" && eb.code == "rtc::unsupported" => {
+            eprintln!("skipped: the renderer is not merged into this branch yet");
+        }
+        (ra, rb) => panic!("render failed: {:?} / {:?}", ra.err(), rb.err()),
+    }
+}
+
+#[test]
 fn keywords_are_first_letters_in_any_case() {
     let plain = scene(MINIMAL);
     let odd = scene(

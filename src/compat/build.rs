@@ -55,9 +55,9 @@ pub fn out_of_range(span: Span, text: &str, what: &str, rule: &str) -> Diagnosti
     Diagnostic::error(
         "rtc::compat::out_of_range",
         span,
-        format!("{what} `{text}` is out of range"),
+        format!("{what} must be {rule}, found `{text}`"),
     )
-    .with_label(format!("{what} must be {rule}"))
+    .with_label("out of range")
 }
 
 /// The course camera (COURSE.md §2.4): image plane through `center`, `|up|` = pixel size.
@@ -95,7 +95,7 @@ pub struct CourseMaterial {
     pub color: Color,
     /// Texture replacing the colour.
     pub texture: Option<TextureId>,
-    /// Ambient, diffuse and specular coefficients and the Phong exponent.
+    /// Ambient coefficient.
     pub ka: f64,
     /// Diffuse coefficient.
     pub kd: f64,
@@ -234,7 +234,7 @@ pub struct Draft {
     pub eye: Option<(DVec3, Span)>,
     /// A full `Camera` block.
     pub camera: Option<Camera>,
-    /// A `Camera` block was written (even if it had errors), so "no eye" would be noise.
+    /// An eye or camera was written (even if it had errors), so "no eye" would be noise.
     pub camera_written: bool,
     /// Lights in order.
     pub lights: Vec<Light>,

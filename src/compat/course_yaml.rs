@@ -34,11 +34,22 @@ const MAX_FACTOR: u32 = 64;
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
 pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> Option<Scene> {
     let whole = Span::new(file, 0, 0);
-    let root = yaml_tree::parse_first_document(text, file, diags)?;
+    let errors_before = diags.error_count();
+    let Some(root) = yaml_tree::parse_first_document(text, file, diags) else {
+        if diags.error_count() == errors_before {
+            diags.push(
+                Diagnostic::error("rtc::yaml::empty", whole, "the YAML file holds no scene")
+                    .with_label("no YAML document here")
+                    .with_help("start with `Eye: [200, 200, 1000]`, then `Lights:` and `Objects:`"),
+            );
+        }
+        return None;
+    };
     let mut top = MapView::new(&root, "a scene", diags)?;
     let mut draft = Draft::default();
 
     if let Some(e) = top.get(&["Eye"], diags) {
+        draft.camera_written = true;
         if let Some(eye) = val::triple(e.value, "`Eye`", Triple::Point, diags) {
             draft.eye = Some((eye, e.key.span.join(e.value.span)));
         }
@@ -111,9 +122,8 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         .and_then(|e| val::triple(e.value, "`up`", Triple::Point, diags));
     let size = size.and_then(|e| view_size(e.value, diags));
     m.finish("`Camera`", &["eye", "center", "up", "viewSize"], diags);
-    let (eye, center, up, size) = (eye?, center?, up?, size?);
     let up_span = up_entry.map_or(span, |e| e.value.span);
-    if up.length() == 0.0 {
+    if up.is_some_and(|u| u.length() == 0.0) {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -125,6 +135,7 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         );
         return None;
     }
+    let (eye, center, up, size) = (eye?, center?, up?, size?);
     let view = center - eye;
     if view.length() == 0.0 {
         diags.push(
@@ -225,15 +236,15 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
             s.shadows = b;
         }
     }
-    if let Some(e) = top.get(&["MaxRecursionDepth"], diags) {
-        if let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, MAX_DEPTH, diags) {
-            s.max_depth = d;
-        }
+    if let Some(e) = top.get(&["MaxRecursionDepth"], diags)
+        && let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, MAX_DEPTH, diags)
+    {
+        s.max_depth = d;
     }
-    if let Some(e) = top.get(&["SuperSampling"], diags) {
-        if let Some(factor) = super_sampling(e.value, diags) {
-            s.sampling = Sampling::Grid { factor };
-        }
+    if let Some(e) = top.get(&["SuperSampling"], diags)
+        && let Some(factor) = super_sampling(e.value, diags)
+    {
+        s.sampling = Sampling::Grid { factor };
     }
     let params = top
         .get(&["GoochParameters"], diags)
@@ -344,24 +355,23 @@ fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
     let factor = m
         .require(&["factor"], "`SuperSampling`", "factor: 4", diags)
         .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_FACTOR, diags));
-    if let Some(p) = m.get(&["pattern"], diags) {
-        if !p
+    if let Some(p) = m.get(&["pattern"], diags)
+        && !p
             .value
             .scalar()
             .is_some_and(|t| t.trim().eq_ignore_ascii_case("grid"))
-        {
-            diags.push(
-                Diagnostic::warning(
-                    "rtc::yaml::unknown_value",
-                    p.value.span,
-                    format!(
-                        "sampling pattern {} is not supported; using a grid",
-                        p.value.describe()
-                    ),
-                )
-                .with_label("ignored"),
-            );
-        }
+    {
+        diags.push(
+            Diagnostic::warning(
+                "rtc::yaml::unknown_value",
+                p.value.span,
+                format!(
+                    "sampling pattern {} is not supported; using a grid",
+                    p.value.describe()
+                ),
+            )
+            .with_label("ignored"),
+        );
     }
     m.finish("`SuperSampling`", &["factor"], diags);
     factor
@@ -376,10 +386,10 @@ fn gooch(node: &Node, used: bool, diags: &mut Diagnostics) -> Option<GoochParams
         ("alpha", &mut p.alpha),
         ("beta", &mut p.beta),
     ] {
-        if let Some(e) = m.get(&[name], diags) {
-            if let Some(v) = val::non_negative(e.value, &format!("`{name}`"), diags) {
-                *slot = v;
-            }
+        if let Some(e) = m.get(&[name], diags)
+            && let Some(v) = val::non_negative(e.value, &format!("`{name}`"), diags)
+        {
+            *slot = v;
         }
     }
     m.finish("`GoochParameters`", &["b", "y", "alpha", "beta"], diags);

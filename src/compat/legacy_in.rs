@@ -120,10 +120,7 @@ impl<'t> Reader<'t, '_> {
     }
 
     fn run(&mut self, draft: &mut Draft) {
-        loop {
-            let Some((start, end)) = self.peek_token() else {
-                break;
-            };
+        while let Some((start, end)) = self.peek_token() {
             let first = self.text.as_bytes()[start];
             if !first.is_ascii_alphabetic() {
                 self.stray(start, end);
@@ -213,7 +210,12 @@ impl<'t> Reader<'t, '_> {
     fn record(&mut self, kind: Kind, kw: Span, draft: &mut Draft) -> Result<(), Failed> {
         match kind {
             Kind::Eye => {
-                let (eye, _) = self.triple(kind, kw, ["eye x", "eye y", "eye z"])?;
+                draft.camera_written = true;
+                let (eye, _) = self.triple(
+                    kind,
+                    kw,
+                    ["the x coordinate", "the y coordinate", "the z coordinate"],
+                )?;
                 let span = kw.join(self.span(self.pos, self.pos));
                 if let Some((_, old)) = draft.eye {
                     self.diags.push(
@@ -229,8 +231,20 @@ impl<'t> Reader<'t, '_> {
                 draft.eye = Some((eye, span));
             }
             Kind::Light => {
-                let (position, _) = self.triple(kind, kw, ["light x", "light y", "light z"])?;
-                let (color, c_span) = self.triple(kind, kw, ["red", "green", "blue"])?;
+                let (position, _) = self.triple(
+                    kind,
+                    kw,
+                    ["the x coordinate", "the y coordinate", "the z coordinate"],
+                )?;
+                let (color, c_span) = self.triple(
+                    kind,
+                    kw,
+                    [
+                        "the red component",
+                        "the green component",
+                        "the blue component",
+                    ],
+                )?;
                 self.non_negative_color(color, c_span, "light colour");
                 draft.lights.push(Light {
                     kind: LightKind::Point { position },
@@ -239,7 +253,15 @@ impl<'t> Reader<'t, '_> {
                 });
             }
             Kind::Material => {
-                let (color, c_span) = self.triple(kind, kw, ["red", "green", "blue"])?;
+                let (color, c_span) = self.triple(
+                    kind,
+                    kw,
+                    [
+                        "the red component",
+                        "the green component",
+                        "the blue component",
+                    ],
+                )?;
                 self.non_negative_color(color, c_span, "material colour");
                 let ka = self.coefficient(kind, kw, "ka")?;
                 let kd = self.coefficient(kind, kw, "kd")?;
@@ -280,7 +302,11 @@ impl<'t> Reader<'t, '_> {
                 });
             }
             Kind::Sphere => {
-                let (center, _) = self.triple(kind, kw, ["centre x", "centre y", "centre z"])?;
+                let (center, _) = self.triple(
+                    kind,
+                    kw,
+                    ["the x coordinate", "the y coordinate", "the z coordinate"],
+                )?;
                 let (text, r, r_span) = self.number(kind, kw, "the radius")?;
                 let span = kw.join(self.span(self.pos, self.pos));
                 if r <= 0.0 {
@@ -372,9 +398,11 @@ impl<'t> Reader<'t, '_> {
     /// One number; a missing one (end of file, or the next keyword) is a truncated record.
     fn number(&mut self, kind: Kind, kw: Span, what: &str) -> Result<(&'t str, f64, Span), Failed> {
         let text = self.text;
+        let before = self.pos;
         let Some((start, end)) = self.peek_token() else {
-            let at = self.span(text.len(), text.len());
-            self.truncated(kind, kw, at, what, "the file ends here");
+            // Point just after the last number rather than past trailing blank lines.
+            let at = self.span(before, before);
+            self.truncated(kind, kw, at, what, "the file ends after this");
             return Err(Failed);
         };
         let word = &text[start..end];

@@ -1,5 +1,16 @@
 //! Compatibility front ends for the course's legacy scene files (COURSE.md): the Magdeburg `.in`
 //! format and the Groningen course YAML. Both produce the same IR as the scene language.
+//!
+//! Mapping decisions (COURSE.md §4): the course camera ([`crate::ir::Projection::Course`]; no
+//! `Camera` means eye = `Eye`, centre (200, 200, 0), up +Y, 400×400); `reflect = ks` unless the
+//! file gives `reflect`; ambient per light; textured spheres sit at the origin with
+//! [`build::sphere_orientation`]; assets resolve next to the scene, then in the working directory.
+//!
+//! Diagnostic codes: `rtc::io` (unreadable file); `rtc::in::{unknown_record, expected_record,
+//! expected_number, extra_number, truncated, unclosed, no_material, duplicate_eye}`;
+//! `rtc::yaml::{syntax, empty, extra_document, too_large, type, arity, missing_key, duplicate_key,
+//! unknown_key, spelling, unknown_value, unknown_object, unused}`; shared `rtc::compat::{not_finite,
+//! out_of_range, degenerate, missing_file, no_camera, camera_override, encoding}`.
 
 pub mod build;
 pub mod course_yaml;
@@ -20,7 +31,10 @@ pub use spans::erase_spans;
 /// Reads a legacy `.in` file (COURSE.md §1) into the IR.
 pub fn load_in(path: &Path, sources: &mut SourceMap) -> Loaded {
     match read(path) {
-        Ok(text) => load_in_source(path, &text, sources),
+        Ok((text, latin1)) => {
+            let loaded = load_in_source(path, &text, sources);
+            with_encoding_note(loaded, latin1, sources)
+        }
         Err(loaded) => loaded,
     }
 }
@@ -28,7 +42,10 @@ pub fn load_in(path: &Path, sources: &mut SourceMap) -> Loaded {
 /// Reads a course YAML scene (COURSE.md §2) into the IR.
 pub fn load_yaml(path: &Path, sources: &mut SourceMap) -> Loaded {
     match read(path) {
-        Ok(text) => load_yaml_source(path, &text, sources),
+        Ok((text, latin1)) => {
+            let loaded = load_yaml_source(path, &text, sources);
+            with_encoding_note(loaded, latin1, sources)
+        }
         Err(loaded) => loaded,
     }
 }
@@ -44,6 +61,7 @@ pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loade
         "add an eye record such as `Eye 200 200 1000`",
         &mut diags,
     );
+    sort_by_position(&mut diags);
     Loaded {
         scene,
         diagnostics: diags,
@@ -55,18 +73,29 @@ pub fn load_yaml_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loa
     let file = sources.add(path, text);
     let mut diags = Diagnostics::default();
     let scene = course_yaml::parse(text, file, path, &mut diags);
+    sort_by_position(&mut diags);
     Loaded {
         scene,
         diagnostics: diags,
     }
 }
 
+/// Source order reads best: the readers visit keys in their own order, not the file's.
+fn sort_by_position(diags: &mut Diagnostics) {
+    diags
+        .items
+        .sort_by_key(|d| d.span.map_or((0, 0), |s| (s.start, s.end)));
+}
+
 fn start_of(file: FileId) -> Span {
     Span::new(file, 0, 0)
 }
 
-fn read(path: &Path) -> Result<String, Loaded> {
-    std::fs::read_to_string(path).map_err(|e| {
+/// The file's text, and (when it had to be decoded as Latin-1) the byte offset of the first
+/// non-UTF-8 byte in the decoded text. Old course files come from systems where Latin-1 was the
+/// default; every byte is then one character.
+fn read(path: &Path) -> Result<(String, Option<usize>), Loaded> {
+    let bytes = std::fs::read(path).map_err(|e| {
         let mut diagnostics = Diagnostics::default();
         diagnostics.push(
             Diagnostic::new(
@@ -75,11 +104,44 @@ fn read(path: &Path) -> Result<String, Loaded> {
                 None,
                 format!("cannot read `{}`: {e}", path.display()),
             )
-            .with_help("check the path and that the file is readable UTF-8 text"),
+            .with_help("check the path and that the file is readable"),
         );
         Loaded {
             scene: None,
             diagnostics,
         }
+    })?;
+    Ok(match String::from_utf8(bytes) {
+        Ok(text) => (text, None),
+        Err(e) => {
+            let bytes = e.as_bytes();
+            let valid = e.utf8_error().valid_up_to();
+            let at = bytes[..valid]
+                .iter()
+                .map(|&b| if b < 0x80 { 1 } else { 2 })
+                .sum();
+            (bytes.iter().map(|&b| char::from(b)).collect(), Some(at))
+        }
     })
+}
+
+/// Adds the Latin-1 warning to the file just loaded (the last one in `sources`).
+fn with_encoding_note(mut loaded: Loaded, latin1: Option<usize>, sources: &SourceMap) -> Loaded {
+    let (Some(at), Some(last)) = (latin1, sources.files().len().checked_sub(1)) else {
+        return loaded;
+    };
+    let file = FileId(last as u32);
+    let text = &sources.get(file).text;
+    let end = text[at..].chars().next().map_or(at, |c| at + c.len_utf8());
+    loaded.diagnostics.items.insert(
+        0,
+        Diagnostic::warning(
+            "rtc::compat::encoding",
+            Span::new(file, at, end),
+            "the file is not UTF-8; it was read as Latin-1",
+        )
+        .with_label("first byte that is not UTF-8")
+        .with_help("save the file as UTF-8"),
+    );
+    loaded
 }

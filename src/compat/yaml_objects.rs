@@ -53,13 +53,13 @@ pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Dia
         "quad" => quad(&mut m, diags),
         _ => cylinder(&mut m, diags),
     };
-    let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags, true);
+    let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags);
     m.finish(&format!("a {kind_name}"), &known_keys(kind_name), diags);
     if let (Some(shape), Some(material)) = (shape, material) {
         parts.objects.push(Object {
             shape,
             transform: DAffine3::IDENTITY,
-            material,
+            material: Some(material),
             span: node.span,
         });
     }
@@ -149,13 +149,14 @@ fn sphere(
             pole = pole_vector(e.value, diags);
         }
     }
-    let material = material_entry(&mut m, scene, Mapping::Spherical, parts, diags, true);
+    let material = material_entry(&mut m, scene, Mapping::Spherical, parts, diags);
     m.finish("a sphere", &known_keys("sphere"), diags);
     let (Some(position), Some(radius), Some(material)) = (position, radius, material) else {
         return;
     };
-    let textured = material
-        .and_then(|id| parts.materials.get(id.0 as usize))
+    let textured = parts
+        .materials
+        .get(material.0 as usize)
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
@@ -163,7 +164,7 @@ fn sphere(
         position,
         radius,
         orientation,
-        material,
+        Some(material),
         node.span,
     ));
 }
@@ -180,7 +181,7 @@ fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Opt
                 Diagnostic::error(
                     "rtc::yaml::arity",
                     node.span,
-                    format!("`radius` list has {} items, expected 2", items.len()),
+                    format!("`radius` list must have 2 items, found {}", items.len()),
                 )
                 .with_label("expected a radius and a pole direction")
                 .with_help("write `radius: 50` or `radius: [50, [0, 1, 0]]`"),
@@ -244,20 +245,25 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
     let head = m.head();
     let p1 = point(m, &["p1"], "this quad", diags);
     let p2 = point(m, &["p2"], "this quad", diags);
+    let p3_span = m.span_of("p3").unwrap_or(head);
     let p3 = point(m, &["p3"], "this quad", diags);
     let p4 = point(m, &["p4"], "this quad", diags);
     let (p1, p2, p3, p4) = (p1?, p2?, p3?, p4?);
     let (u, v) = (p2 - p1, p4 - p1);
     let scale = u.length().max(v.length()).max(1.0);
-    if (p1 + u + v - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
+    let expected = p1 + u + v;
+    if (expected - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
-                head,
+                p3_span,
                 "the quad is not a parallelogram",
             )
-            .with_label("p3 must equal p2 + p4 − p1")
-            .with_help("give the corners in order around the quad, or use two triangles"),
+            .with_label(format!(
+                "p3 must be p2 + p4 − p1 = [{}, {}, {}]",
+                expected.x, expected.y, expected.z
+            ))
+            .with_help("give the corners in order around a parallelogram, or use two triangles"),
         );
         return None;
     }
@@ -362,23 +368,17 @@ fn mesh(
     });
 }
 
-/// The required `material:` of an object. `Some(None)` never happens here; the outer option is
-/// `None` after an error.
+/// The required `material:` of an object; `None` after an error.
 fn material_entry(
     m: &mut MapView<'_>,
     scene: &Path,
     mapping: Mapping,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
-    required: bool,
-) -> Option<Option<MaterialId>> {
+) -> Option<MaterialId> {
     let example = "material: {color: [1, 1, 1], ka: 0.2, kd: 0.8, ks: 0, n: 1}";
-    let e = if required {
-        m.require(&["material"], "this object", example, diags)?
-    } else {
-        m.get(&["material"], diags)?
-    };
-    material(e.value, scene, mapping, parts, diags).map(Some)
+    let e = m.require(&["material"], "this object", example, diags)?;
+    material(e.value, scene, mapping, parts, diags)
 }
 
 /// A course material map: `color` or `texture`, `ka kd ks n`, optional `reflect refract eta`.

@@ -89,7 +89,16 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
                     format!("invalid YAML: {}", e.info()),
                 )
                 .with_label("the YAML parser stopped here");
-                if text.contains('\t') {
+                if let Some(open) = unclosed_bracket(text.get(..at).unwrap_or("")) {
+                    d = d
+                        .with_secondary(
+                            Span::new(file, open, open + 1),
+                            "this bracket is never closed",
+                        )
+                        .with_help(
+                            "close the list or map on the same line, e.g. `[200, 200, 1000]`",
+                        );
+                } else if text.contains('\t') {
                     d = d.with_help("YAML indentation must use spaces, not tabs");
                 }
                 diags.push(d);
@@ -125,6 +134,30 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
 
 /// A collection being built: its items, its start span, its anchor, and whether it is a flow
 /// collection (whose end event marks the closing bracket; a block one ends at its last item).
+/// The byte offset of the innermost `[` or `{` still open at the end of `text`, ignoring comments
+/// and quoted text (a best-effort hint for the most common slip in course files).
+fn unclosed_bracket(text: &str) -> Option<usize> {
+    let mut open = Vec::new();
+    let mut quote = None;
+    let mut comment = false;
+    for (i, c) in text.char_indices() {
+        match (c, quote) {
+            ('\n', _) => comment = false,
+            _ if comment => {}
+            (q, Some(open_q)) if q == open_q => quote = None,
+            (_, Some(_)) => {}
+            ('"' | '\'', None) => quote = Some(c),
+            ('#', None) => comment = true,
+            ('[' | '{', None) => open.push(i),
+            (']' | '}', None) => {
+                open.pop();
+            }
+            _ => {}
+        }
+    }
+    open.pop()
+}
+
 enum Open {
     Seq(Vec<Node>, Span, usize, bool),
     Map(Vec<(Node, Node)>, Option<Node>, Span, usize, bool),
@@ -134,7 +167,8 @@ struct Builder<'t> {
     text: &'t str,
     file: FileId,
     stack: Vec<Open>,
-    anchors: HashMap<usize, Node>,
+    /// Anchored nodes with their subtree sizes.
+    anchors: HashMap<usize, (Node, usize)>,
     nodes: usize,
     root: Option<Node>,
 }
@@ -210,14 +244,19 @@ impl Builder<'_> {
                 }
             }
             Event::Alias(id) => {
-                let Some(target) = self.anchors.get(&id).cloned() else {
+                let Some(&(_, size)) = self.anchors.get(&id) else {
                     return Err(Box::new(
                         Diagnostic::error("rtc::yaml::syntax", span, "unknown YAML alias")
                             .with_label("no anchor of this name before it"),
                     ));
                 };
+                // Budget the whole copied subtree before copying it (an alias bomb).
+                self.spend(size.saturating_sub(1), span)?;
+                let Some((target, _)) = self.anchors.get(&id) else {
+                    return Ok(());
+                };
                 let node = Node {
-                    kind: target.kind,
+                    kind: target.kind.clone(),
                     span,
                 };
                 self.finish_node(node, 0)?;
@@ -227,20 +266,26 @@ impl Builder<'_> {
         Ok(())
     }
 
-    fn finish_node(&mut self, node: Node, anchor: usize) -> Result<(), Box<Diagnostic>> {
-        self.nodes += count(&node);
+    fn spend(&mut self, nodes: usize, span: Span) -> Result<(), Box<Diagnostic>> {
+        self.nodes = self.nodes.saturating_add(nodes);
         if self.nodes > MAX_NODES {
             return Err(Box::new(
                 Diagnostic::error(
                     "rtc::yaml::too_large",
-                    node.span,
+                    span,
                     "the YAML document is too large",
                 )
                 .with_label("expanding this node passes a million nodes"),
             ));
         }
+        Ok(())
+    }
+
+    fn finish_node(&mut self, node: Node, anchor: usize) -> Result<(), Box<Diagnostic>> {
+        self.spend(1, node.span)?;
         if anchor != 0 {
-            self.anchors.insert(anchor, node.clone());
+            self.anchors
+                .insert(anchor, (node.clone(), deep_count(&node)));
         }
         match self.stack.last_mut() {
             Some(Open::Seq(items, ..)) => items.push(node),
@@ -258,12 +303,17 @@ impl Builder<'_> {
     }
 }
 
-/// Node count of a finished subtree (1 for scalars), for the alias-expansion budget.
-fn count(node: &Node) -> usize {
+/// Number of nodes in a subtree, for the alias-expansion budget.
+fn deep_count(node: &Node) -> usize {
     match &node.kind {
         NodeKind::Scalar { .. } => 1,
-        NodeKind::Seq(items) => 1 + items.len(),
-        NodeKind::Map(entries) => 1 + 2 * entries.len(),
+        NodeKind::Seq(items) => 1 + items.iter().map(deep_count).sum::<usize>(),
+        NodeKind::Map(entries) => {
+            1 + entries
+                .iter()
+                .map(|(k, v)| deep_count(k) + deep_count(v))
+                .sum::<usize>()
+        }
     }
 }
 
@@ -298,6 +348,20 @@ mod tests {
         let (node, diags) = parse("Eye: [1, 2\nLights: x\n");
         assert!(node.is_none());
         assert_eq!(diags.items[0].code, "rtc::yaml::syntax");
+    }
+
+    #[test]
+    fn alias_bombs_hit_the_node_budget() {
+        let mut text = String::from("a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n");
+        for i in 1..9 {
+            let p = i - 1;
+            text.push_str(&format!(
+                "a{i}: &a{i} [*a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}, *a{p}]\n"
+            ));
+        }
+        let (node, diags) = parse(&text);
+        assert!(node.is_none());
+        assert_eq!(diags.items[0].code, "rtc::yaml::too_large");
     }
 
     #[test]

@@ -41,9 +41,12 @@ impl<'n> MapView<'n> {
             );
             return None;
         };
+        let mut used = vec![false; entries.len()];
         for (i, (k, _)) in entries.iter().enumerate() {
             let Some(name) = k.scalar() else { continue };
             if let Some((first, _)) = entries[..i].iter().find(|(p, _)| p.scalar() == Some(name)) {
+                // Reported here; the reader uses the first occurrence.
+                used[i] = true;
                 diags.push(
                     Diagnostic::error(
                         "rtc::yaml::duplicate_key",
@@ -58,7 +61,7 @@ impl<'n> MapView<'n> {
         }
         Some(MapView {
             entries,
-            used: vec![false; entries.len()],
+            used,
             span: node.span,
         })
     }
@@ -129,6 +132,14 @@ impl<'n> MapView<'n> {
             Some((k, _)) => k.span,
             None => self.span,
         }
+    }
+
+    /// The span of a key's value (exact spelling), without marking it read.
+    pub fn span_of(&self, name: &str) -> Option<Span> {
+        self.entries
+            .iter()
+            .find(|(k, _)| k.scalar() == Some(name))
+            .map(|(_, v)| v.span)
     }
 
     /// Marks a key as read without using it.
