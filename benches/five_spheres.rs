@@ -47,7 +47,11 @@ fn main() {
         println!(
             "five_spheres threads={} median {:.3} s (min {:.3}, max {:.3}) over {reps} runs; \
              {} camera + {} secondary + {} shadow rays = {:.2} Mray/s",
-            if threads == 0 { "all".to_string() } else { threads.to_string() },
+            if threads == 0 {
+                "all".to_string()
+            } else {
+                threads.to_string()
+            },
             median.as_secs_f64(),
             times[0].as_secs_f64(),
             times[times.len() - 1].as_secs_f64(),

@@ -5,9 +5,6 @@
 //! [`integrator`] traces each one (Whitted recursion) with a [`shading`] model; the [`film`]
 //! averages and quantises; [`output`] writes PNG or PPM atomically.
 
-// `Diagnostic` is the contract's error type; errors are rare and cold, so its size does not matter.
-#![allow(clippy::result_large_err)]
-
 pub mod bump;
 pub mod camera;
 pub mod film;
