@@ -280,3 +280,30 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         "rtc::render::camera"
     );
 }
+
+#[test]
+fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
+    let mut s = common::scene01();
+    s.settings.shading = rtc::ir::ShadingModel::Hatching;
+    let img = render(&s, &opts(2)).unwrap();
+    let colours: Vec<[u8; 3]> = s
+        .materials
+        .iter()
+        .map(|m| rtc::render::film::to_bytes(m.color))
+        .collect();
+    // Ink per half of the red sphere (centre (290,170,150) projects to pixel (305.9, 234.8),
+    // radius ≈ 59 px): the light is up and to the left, so the lower right is darker.
+    let mut ink = [0usize; 2];
+    for (x, y, p) in img.enumerate_pixels() {
+        assert!(
+            p.0 == [0, 0, 0] || colours.contains(&p.0),
+            "{x},{y}: {:?}",
+            p.0
+        );
+        let (dx, dy) = (f64::from(x) - 305.9, f64::from(y) - 234.8);
+        if dx * dx + dy * dy < 45.0 * 45.0 {
+            ink[usize::from(dx + dy > 0.0)] += usize::from(p.0 == [0, 0, 0]);
+        }
+    }
+    assert!(ink[1] > 2 * ink[0].max(1), "{ink:?}");
+}
