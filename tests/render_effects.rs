@@ -307,3 +307,32 @@ fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
     }
     assert!(ink[1] > 2 * ink[0].max(1), "{ink:?}");
 }
+
+#[test]
+fn deep_recursion_between_mirrors_and_oversized_settings() {
+    // Two mirrors facing each other: the ray along the axis bounces the full 1000 times
+    // (curved mirrors send the off-axis rays away sooner).
+    let mut s = empty([0.0, 0.0, 0.0]);
+    s.lights.push(light([0.0, 50.0, 0.0], [1.0, 1.0, 1.0]));
+    let mirror = || Material {
+        reflect: 1.0,
+        ..mat([0.5, 0.5, 0.5], 0.01, 0.1, 0.0, 1.0)
+    };
+    sphere(&mut s, [-200.0, 0.0, 0.0], 100.0, mirror());
+    sphere(&mut s, [200.0, 0.0, 0.0], 100.0, mirror());
+    s.settings.max_depth = 1000;
+    tiny_view(&mut s, DVec3::ZERO, DVec3::X, 1e-6);
+    let film = render_film(&s, &opts(2)).unwrap();
+    assert!(film.stats.secondary_rays >= 1000, "{:?}", film.stats);
+    let code = |s: &Scene| render(s, &opts(1)).unwrap_err().code;
+    let mut deep = s.clone();
+    deep.settings.max_depth = 1001;
+    assert_eq!(code(&deep), "rtc::render::limit");
+    let mut huge = s.clone();
+    huge.camera.width = u32::MAX;
+    huge.camera.height = u32::MAX;
+    assert_eq!(code(&huge), "rtc::render::limit");
+    let mut dense = s.clone();
+    dense.settings.sampling = Sampling::Grid { factor: 100_000 };
+    assert_eq!(code(&dense), "rtc::render::limit");
+}

@@ -6,10 +6,11 @@ use glam::DVec3;
 use super::camera::Camera;
 use super::sampler::PixelSampler;
 use super::texture::{self, Loaded};
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, Severity};
 use crate::geometry::World;
 use crate::ir::{
-    AmbientConvention, Color, LightKind, Material, MaterialId, RenderMode, Scene, ShadingModel,
+    AmbientConvention, Color, LightKind, Material, MaterialId, RenderMode, Sampling, Scene,
+    ShadingModel,
 };
 use crate::opt::Effects;
 
@@ -18,6 +19,15 @@ use crate::opt::Effects;
 /// the coordinates keeps it above the rounding error of a hit point (about 1e-16·|P|) at any scale,
 /// from millimetre scenes to the astronomical blue-earth scene (|P| ≈ 1.5e8 → 15 units).
 pub const EPS_REL: f64 = 1e-9;
+
+/// Largest reflection/refraction depth (the course front end accepts up to 1000 as well); the
+/// render threads get a stack large enough for it.
+pub const MAX_DEPTH: u32 = 1000;
+/// Largest samples per axis (pixel grids and area lights): the Sobol' sampler indexes at most
+/// 2^16 samples, and beyond this a render never ends anyway.
+pub const MAX_SAMPLES_PER_AXIS: u32 = 256;
+/// Largest image, in pixels (the film holds 24 bytes per pixel).
+pub const MAX_PIXELS: u64 = 1 << 27;
 
 /// A light prepared for shading: sample positions are generated per shading point.
 #[derive(Clone, Copy, Debug)]
@@ -102,6 +112,7 @@ impl<'a> Plan<'a> {
                 .with_label("this material"));
             }
         }
+        check_limits(scene)?;
         let world = World::build(scene, fallback)?;
         let camera = Camera::new(&scene.camera)?;
         let effects = Effects::of(scene);
@@ -118,6 +129,7 @@ impl<'a> Plan<'a> {
                 color: l.color,
                 samples: match l.kind {
                     LightKind::Point { .. } => 1,
+                    // Both at most MAX_SAMPLES_PER_AXIS (check_limits), so no overflow.
                     LightKind::Area { samples, .. } => samples[0].max(1) * samples[1].max(1),
                 },
             })
@@ -158,4 +170,59 @@ impl<'a> Plan<'a> {
             .max(self.eps_floor)
             .max(1e-300)
     }
+}
+
+/// Rejects settings that would overflow counters, exhaust memory or never finish.
+fn check_limits(scene: &Scene) -> Result<(), Diagnostic> {
+    let s = &scene.settings;
+    let too_big = |what: String, help: String| {
+        Err(Diagnostic::new(Severity::Error, "rtc::render::limit", None, what).with_help(help))
+    };
+    let pixels = u64::from(scene.camera.width) * u64::from(scene.camera.height);
+    if pixels > MAX_PIXELS {
+        return Err(Diagnostic::error(
+            "rtc::render::limit",
+            scene.camera.span,
+            format!("the image has {pixels} pixels, more than the {MAX_PIXELS} rtc renders"),
+        )
+        .with_label("this camera")
+        .with_help("render a smaller image, e.g. 4096×4096"));
+    }
+    if s.max_depth > MAX_DEPTH {
+        return too_big(
+            format!(
+                "a recursion depth of {} is more than {MAX_DEPTH}",
+                s.max_depth
+            ),
+            format!("use a max_depth of at most {MAX_DEPTH}"),
+        );
+    }
+    let factor = match s.sampling {
+        Sampling::Grid { factor } => factor,
+        Sampling::Adaptive { min, max, .. } => min.max(max),
+    };
+    if factor > MAX_SAMPLES_PER_AXIS {
+        return too_big(
+            format!("{factor} samples per axis is more than {MAX_SAMPLES_PER_AXIS}"),
+            format!("use at most {MAX_SAMPLES_PER_AXIS} samples per axis"),
+        );
+    }
+    for l in &scene.lights {
+        if let LightKind::Area { samples, .. } = l.kind
+            && samples.iter().any(|n| *n > MAX_SAMPLES_PER_AXIS)
+        {
+            return Err(Diagnostic::error(
+                "rtc::render::limit",
+                l.span,
+                format!(
+                    "more than {MAX_SAMPLES_PER_AXIS} samples along an edge of this area light"
+                ),
+            )
+            .with_label("this light")
+            .with_help(format!(
+                "use at most {MAX_SAMPLES_PER_AXIS} samples per edge"
+            )));
+        }
+    }
+    Ok(())
 }

@@ -14,10 +14,15 @@ use crate::ir::Color;
 /// Rows per task: small enough to balance load over the cores, large enough to amortise scheduling.
 const BAND: usize = 4;
 
+/// Stack per render thread: Whitted recursion up to `plan::MAX_DEPTH` bounces needs more than
+/// the default 2 MiB (it is virtual memory; only what is touched is used).
+const STACK_BYTES: usize = 64 << 20;
+
 /// A thread pool with `threads` workers (0 = one per core).
 pub fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
+        .stack_size(STACK_BYTES)
         .build()
         .map_err(|e| {
             Diagnostic::new(
