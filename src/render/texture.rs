@@ -173,4 +173,46 @@ mod tests {
         assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
         assert!(Picture::new(0, 2, vec![]).is_none());
     }
+
+    fn hit_at(p: DVec3) -> SurfaceHit {
+        SurfaceHit {
+            t: 1.0,
+            point: p,
+            normal: DVec3::Y,
+            uv: DVec2::ZERO,
+            local_point: p,
+            material: crate::ir::MaterialId(0),
+            object: 0,
+        }
+    }
+
+    #[test]
+    fn checker_and_stripes_alternate_in_object_space() {
+        let (a, b) = (DVec3::X, DVec3::Z);
+        let plane = Shape::Plane {
+            point: DVec3::ZERO,
+            normal: DVec3::Y,
+        };
+        let checker = Loaded::Checker(a, b, 2.0);
+        assert_eq!(checker.color(&hit_at(DVec3::new(0.5, 0.5, 0.5)), &plane), a);
+        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 0.5, 0.5)), &plane), b);
+        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 2.5, 0.5)), &plane), a);
+        assert_eq!(
+            checker.color(&hit_at(DVec3::new(-0.5, 0.5, 0.5)), &plane),
+            b
+        );
+        let stripes = Loaded::Stripes(a, b, 1.0);
+        assert_eq!(
+            stripes.color(&hit_at(DVec3::new(0.2, 9.0, -4.0)), &plane),
+            a
+        );
+        assert_eq!(
+            stripes.color(&hit_at(DVec3::new(1.2, 9.0, -4.0)), &plane),
+            b
+        );
+        assert_eq!(
+            stripes.color(&hit_at(DVec3::new(-0.2, 0.0, 0.0)), &plane),
+            b
+        );
+    }
 }
