@@ -61,7 +61,8 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
         RenderMode::Depth(DepthRange::Auto) => hit_range(&plan, &pool),
         _ => (0.0, 0.0),
     };
-    let progress = Progress::new(options.progress, u64::from(h));
+    let passes = if plan.sampler.refine.is_some() { 2 } else { 1 };
+    let progress = Progress::new(options.progress, passes * u64::from(h));
     let first = plan.sampler.first;
     let (mut pixels, mut stats) = tiles::run(&pool, w, h, &progress, |x, y, ctx| {
         average(&plan, first, 0, x, y, ctx, near, far)
@@ -71,8 +72,7 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
         // by more than the threshold in some channel. Both passes are pure per pixel.
         let coarse = &pixels;
         let at = |x: u32, y: u32| coarse[y as usize * w as usize + x as usize];
-        let hidden = Progress::new(false, 0);
-        let (refined, more) = tiles::run(&pool, w, h, &hidden, |x, y, ctx| {
+        let (refined, more) = tiles::run(&pool, w, h, &progress, |x, y, ctx| {
             let c = at(x, y);
             let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
             let edge = (x > 0 && differs(x - 1, y))
