@@ -4,6 +4,20 @@
 //! [`tiles`] runs bands of rows on all cores; per pixel the [`sampler`] places the samples, the
 //! [`integrator`] traces each one (Whitted recursion) with a [`shading`] model; the [`film`]
 //! averages and quantises; [`output`] writes PNG or PPM atomically.
+//!
+//! Conventions (each reproduces the course references, see tests/golden.rs):
+//! - Pixel (x, y) is sampled at offsets ((i+½)/f, (j+½)/f) of an f×f grid (f = 1: the centre);
+//!   the course camera maps them as COURSE.md §2.4 ([`camera`]).
+//! - Samples are averaged unclamped; the film clamps each channel to [0, 1] and stores
+//!   `trunc(255·c)` ([`film`]).
+//! - Phong per COURSE.md §2.5 with the ambient term per light (or once, by setting); a shadowed
+//!   light keeps its ambient term; lights behind the surface (N·L ≤ 0) add nothing.
+//! - `I = local + reflect·trace(R) + refract·trace(T)`, up to `max_depth` bounces; total internal
+//!   reflection moves the refracted share to R ([`integrator`]).
+//! - Secondary and shadow rays start `plan::EPS_REL · max(|P|∞, scene extent)` along the normal.
+//! - Depth images: white at the nearest, black at the farthest hit of the image (or a fixed range).
+//! - Random numbers (lens, area lights) are keyed by (pixel, sample, seed) ([`sampler`]), so the
+//!   bytes do not depend on the thread count.
 
 pub mod bump;
 pub mod camera;
