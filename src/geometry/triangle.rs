@@ -1,0 +1,171 @@
+//! Triangles and the watertight ray/triangle test (Woop, Benthin, Wald 2013).
+//!
+//! The test shears the ray to the +z axis and evaluates the three 2-D edge functions. The edge
+//! function of an edge shared by two triangles is computed from the same products with the
+//! operands swapped, so it is the exact negation in the neighbour: a ray through a shared edge
+//! or vertex is inside at least one of the triangles (zero counts as inside). No cracks.
+
+use glam::{DVec2, DVec3, Vec3A};
+
+use super::{Aabb, Hit, Ray};
+
+/// A single triangle in object space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Triangle {
+    /// Corners, counter-clockwise seen from the front.
+    pub v: [DVec3; 3],
+    /// Unit front normal.
+    pub normal: DVec3,
+}
+
+impl Triangle {
+    /// A triangle from its corners; `None` when it has no area.
+    pub fn new(v: [DVec3; 3]) -> Option<Triangle> {
+        let n = (v[1] - v[0]).cross(v[2] - v[0]);
+        let normal = n.try_normalize()?;
+        Some(Triangle { v, normal })
+    }
+
+    /// Nearest hit in (t_min, t_max); uv are the barycentric weights of v1 and v2.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let (t, b) = watertight_f64(&self.v, ray.origin, ray.dir)?;
+        (t > t_min && t < t_max).then_some(Hit {
+            t,
+            normal: self.normal,
+            uv: DVec2::new(b[1], b[2]),
+        })
+    }
+
+    /// Object-space bounds.
+    pub fn bounds(&self) -> Aabb {
+        Aabb::new(
+            self.v[0].min(self.v[1]).min(self.v[2]),
+            self.v[0].max(self.v[1]).max(self.v[2]),
+        )
+    }
+}
+
+/// Axis permutation and shear for one ray direction.
+fn shear_axes(d: [f64; 3]) -> (usize, usize, usize) {
+    let a = [d[0].abs(), d[1].abs(), d[2].abs()];
+    let kz = if a[0] > a[1] {
+        if a[0] > a[2] { 0 } else { 2 }
+    } else if a[1] > a[2] {
+        1
+    } else {
+        2
+    };
+    let mut kx = (kz + 1) % 3;
+    let mut ky = (kx + 1) % 3;
+    if d[kz] < 0.0 {
+        std::mem::swap(&mut kx, &mut ky);
+    }
+    (kx, ky, kz)
+}
+
+/// Watertight test in f64 over the whole line: `(t, barycentrics)` or `None`.
+pub fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
+    let d = dir.to_array();
+    let (kx, ky, kz) = shear_axes(d);
+    if d[kz] == 0.0 {
+        return None;
+    }
+    let (sx, sy, sz) = (d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
+    let a = (v[0] - origin).to_array();
+    let b = (v[1] - origin).to_array();
+    let c = (v[2] - origin).to_array();
+    let (ax, ay) = (a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
+    let (bx, by) = (b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
+    let (cx, cy) = (c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
+    let u = cx * by - cy * bx;
+    let vv = ax * cy - ay * cx;
+    let w = bx * ay - by * ax;
+    finish(u, vv, w, sz * a[kz], sz * b[kz], sz * c[kz])
+}
+
+fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f64; 3])> {
+    if (u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0) {
+        return None;
+    }
+    let det = u + v + w;
+    if det == 0.0 {
+        return None;
+    }
+    let t = (u * az + v * bz + w * cz) / det;
+    Some((t, [u / det, v / det, w / det]))
+}
+
+/// A ray prepared for many f32 watertight triangle tests (meshes).
+#[derive(Clone, Copy, Debug)]
+pub struct ShearedRay {
+    origin: Vec3A,
+    origin64: DVec3,
+    kx: usize,
+    ky: usize,
+    kz: usize,
+    s: [f32; 3],
+    s64: [f64; 3],
+}
+
+impl ShearedRay {
+    /// Prepares `origin + t·dir` (in the mesh's space); `None` for a zero direction.
+    pub fn new(origin: DVec3, dir: DVec3) -> Option<ShearedRay> {
+        let d = dir.to_array();
+        let (kx, ky, kz) = shear_axes(d);
+        if d[kz] == 0.0 {
+            return None;
+        }
+        let s64 = [d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]];
+        Some(ShearedRay {
+            origin: origin.as_vec3a(),
+            origin64: origin,
+            kx,
+            ky,
+            kz,
+            s: s64.map(|x| x as f32),
+            s64,
+        })
+    }
+
+    /// Watertight test against one triangle: `(t, barycentrics)` over the whole line.
+    ///
+    /// Edge functions are evaluated in f32; when one is exactly zero (the ray passes through
+    /// an edge or vertex) they are recomputed in f64, as the paper prescribes, so the sign
+    /// decision is exact where it matters.
+    #[inline]
+    pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
+        let (kx, ky, kz) = (self.kx, self.ky, self.kz);
+        let a = v[0] - self.origin;
+        let b = v[1] - self.origin;
+        let c = v[2] - self.origin;
+        let [sx, sy, sz] = self.s;
+        let (ax, ay) = (a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
+        let (bx, by) = (b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
+        let (cx, cy) = (c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
+        let mut u = cx * by - cy * bx;
+        let mut vv = ax * cy - ay * cx;
+        let mut w = bx * ay - by * ax;
+        if u == 0.0 || vv == 0.0 || w == 0.0 {
+            let [sx, sy, _] = self.s64;
+            let o = self.origin64;
+            let p = |q: Vec3A| (q.as_dvec3() - o).to_array();
+            let (a, b, c) = (p(v[0]), p(v[1]), p(v[2]));
+            let (ax, ay) = (a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
+            let (bx, by) = (b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
+            let (cx, cy) = (c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
+            u = (cx * by - cy * bx) as f32;
+            vv = (ax * cy - ay * cx) as f32;
+            w = (bx * ay - by * ax) as f32;
+        }
+        if (u < 0.0 || vv < 0.0 || w < 0.0) && (u > 0.0 || vv > 0.0 || w > 0.0) {
+            return None;
+        }
+        let det = u + vv + w;
+        if det == 0.0 {
+            return None;
+        }
+        let t = (u * sz * a[kz] + vv * sz * b[kz] + w * sz * c[kz]) / det;
+        let inv = 1.0 / det;
+        Some((t, [u * inv, vv * inv, w * inv]))
+    }
+}
