@@ -34,7 +34,9 @@ pub fn to_f32_box(b: &Aabb) -> Option<BAabb> {
 
 /// The f32 ray for traversal, or `None` when it cannot be represented.
 pub fn to_f32_ray(origin: DVec3, dir: DVec3, t_max: f64) -> Option<BRay> {
-    let (o, d) = (origin.as_vec3a(), dir.as_vec3a());
+    // obvhs orders slabs by `dir < 0` but inverts −0.0 to −∞: a negative zero would make
+    // every box look empty, so fold it to +0.0.
+    let (o, d) = (origin.as_vec3a(), dir.as_vec3a() + Vec3A::ZERO);
     if !o.is_finite() || !d.is_finite() || d == Vec3A::ZERO {
         return None;
     }

@@ -139,14 +139,22 @@ impl MeshData {
         } else {
             Vec::new()
         };
-        let boxes: Vec<_> = tris
-            .iter()
-            .map(|t| obvhs::aabb::Aabb::from_points(t))
-            .collect();
         let bounds = tris.iter().flatten().fold(Aabb::EMPTY, |b, p| {
             let p = p.as_dvec3();
             b.union(Aabb::new(p, p))
         });
+        // Rays are traversed in f32 from near the mesh; pad every box by a few ulps of the
+        // mesh's coordinates so rounding in the slab test cannot cull a triangle the exact
+        // ray touches (a ray through a vertex at the corner of every adjacent box).
+        let reach = bounds.min.abs().max(bounds.max.abs()).max_element() + (bounds.max - bounds.min).length();
+        let pad = Vec3A::splat((4.0 * f32::EPSILON as f64 * reach) as f32);
+        let boxes: Vec<_> = tris
+            .iter()
+            .map(|t| {
+                let b = obvhs::aabb::Aabb::from_points(t);
+                obvhs::aabb::Aabb::new(b.min - pad, b.max + pad)
+            })
+            .collect();
         let bvh = Bvh::build(
             &boxes,
             (0..tris.len() as u32).collect(),
@@ -230,13 +238,12 @@ impl MeshData {
         })
     }
 
-    fn hit(&self, ray: &Ray, slot: usize, t: f32, b: [f32; 3]) -> MeshHit {
+    fn hit(&self, slot: usize, t: f32, b: [f32; 3]) -> MeshHit {
         let tri = &self.tris[slot];
         let geometric = (tri[1] - tri[0])
             .cross(tri[2] - tri[0])
             .as_dvec3()
             .normalize_or(DVec3::Y);
-        let _ = ray;
         let shading = match self.normals.get(slot) {
             Some(n) => (n[0] * b[0] + n[1] * b[1] + n[2] * b[2])
                 .as_dvec3()
@@ -261,11 +268,23 @@ impl MeshData {
         }
     }
 
+    /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
+    /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
+    fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, obvhs::ray::Ray, f32)> {
+        let (entry, exit) = self.bounds.hit_interval(ray, t_min, t_max)?;
+        let len = ray.dir.length();
+        let margin = 1e-3 * (self.bounds.max - self.bounds.min).length() / len.max(f64::MIN_POSITIVE);
+        let s = (entry - margin).max(t_min);
+        let origin = ray.at(s);
+        let sr = ShearedRay::new(origin, ray.dir)?;
+        let far = (t_max.min(exit + margin) - s).max(0.0);
+        let r = to_f32_ray(origin, ray.dir, far)?;
+        Some((s, sr, r, (t_min - s) as f32))
+    }
+
     /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<MeshHit> {
-        let sr = ShearedRay::new(ray.origin, ray.dir)?;
-        let r = to_f32_ray(ray.origin, ray.dir, t_max)?;
-        let lo = t_min as f32;
+        let (s, sr, r, lo) = self.near(ray, t_min, t_max)?;
         let mut best: Option<(usize, f32, [f32; 3])> = None;
         self.bvh.closest(r, |slot, t_far| match sr.intersect(&self.tris[slot]) {
             Some((t, b)) if t > lo && t < t_far => {
@@ -275,18 +294,17 @@ impl MeshData {
             _ => f32::INFINITY,
         });
         let (slot, t, b) = best?;
-        (f64::from(t) < t_max).then(|| self.hit(ray, slot, t, b))
+        let mut h = self.hit(slot, t, b);
+        h.t += s;
+        (h.t > t_min && h.t < t_max).then_some(h)
     }
 
     /// True when some triangle lies in (t_min, t_max) (stops at the first).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let (Some(sr), Some(r)) = (
-            ShearedRay::new(ray.origin, ray.dir),
-            to_f32_ray(ray.origin, ray.dir, t_max),
-        ) else {
+        let Some((s, sr, r, lo)) = self.near(ray, t_min, t_max) else {
             return false;
         };
-        let (lo, hi) = (t_min as f32, t_max as f32);
+        let hi = (t_max - s) as f32;
         self.bvh.any(r, |slot| {
             sr.intersect(&self.tris[slot])
                 .is_some_and(|(t, _)| t > lo && t < hi)
@@ -295,28 +313,14 @@ impl MeshData {
 
     /// Every hit along the whole line, sorted by `t`, with `entering` from the winding.
     pub fn all_hits(&self, ray: &Ray, out: &mut Vec<(MeshHit, bool)>) {
-        let Some((t0, _)) = self
-            .bounds
-            .hit_interval(ray, f64::NEG_INFINITY, f64::INFINITY)
-        else {
-            return;
-        };
-        // Start the traversal just before the box so every hit has t > 0.
-        let len = ray.dir.length();
-        let diag = (self.bounds.max - self.bounds.min).length();
-        let back = t0 - (0.01 * diag + 1e-9) / len.max(f64::MIN_POSITIVE);
-        let shifted = Ray::new(ray.at(back), ray.dir);
-        let (Some(sr), Some(r)) = (
-            ShearedRay::new(shifted.origin, shifted.dir),
-            to_f32_ray(shifted.origin, shifted.dir, f64::INFINITY),
-        ) else {
+        let Some((s, sr, r, _)) = self.near(ray, f64::NEG_INFINITY, f64::INFINITY) else {
             return;
         };
         let start = out.len();
         self.bvh.all(r, |slot| {
             if let Some((t, b)) = sr.intersect(&self.tris[slot]) {
-                let mut h = self.hit(&shifted, slot, t, b);
-                h.t += back;
+                let mut h = self.hit(slot, t, b);
+                h.t += s;
                 out.push((h, h.geometric.dot(ray.dir) < 0.0));
             }
         });
@@ -334,7 +338,7 @@ fn convert_material(m: &tobj::Material) -> Material {
     }
     if let Some(ka) = m.ambient {
         let ka = v(ka).max_element();
-        out.ka = if ka > 0.0 { ka } else { out.ka };
+        out.ka = ka;
     }
     if let Some(ks) = m.specular {
         out.ks = v(ks).max_element();

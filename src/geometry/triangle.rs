@@ -99,12 +99,10 @@ fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f6
 #[derive(Clone, Copy, Debug)]
 pub struct ShearedRay {
     origin: Vec3A,
-    origin64: DVec3,
     kx: usize,
     ky: usize,
     kz: usize,
     s: [f32; 3],
-    s64: [f64; 3],
 }
 
 impl ShearedRay {
@@ -118,20 +116,17 @@ impl ShearedRay {
         let s64 = [d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]];
         Some(ShearedRay {
             origin: origin.as_vec3a(),
-            origin64: origin,
             kx,
             ky,
             kz,
             s: s64.map(|x| x as f32),
-            s64,
         })
     }
 
     /// Watertight test against one triangle: `(t, barycentrics)` over the whole line.
     ///
     /// Edge functions are evaluated in f32; when one is exactly zero (the ray passes through
-    /// an edge or vertex) they are recomputed in f64, as the paper prescribes, so the sign
-    /// decision is exact where it matters.
+    /// an edge or vertex) they are recomputed exactly in f64, as the paper prescribes.
     #[inline]
     pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
         let (kx, ky, kz) = (self.kx, self.ky, self.kz);
@@ -146,16 +141,13 @@ impl ShearedRay {
         let mut vv = ax * cy - ay * cx;
         let mut w = bx * ay - by * ax;
         if u == 0.0 || vv == 0.0 || w == 0.0 {
-            let [sx, sy, _] = self.s64;
-            let o = self.origin64;
-            let p = |q: Vec3A| (q.as_dvec3() - o).to_array();
-            let (a, b, c) = (p(v[0]), p(v[1]), p(v[2]));
-            let (ax, ay) = (a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
-            let (bx, by) = (b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
-            let (cx, cy) = (c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
-            u = (cx * by - cy * bx) as f32;
-            vv = (ax * cy - ay * cx) as f32;
-            w = (bx * ay - by * ax) as f32;
+            // Rounding never flips the sign of a product difference, it can only reach zero;
+            // then the same sheared coordinates give the exact value in f64 (products of two
+            // f32 are exact there), so neighbours still agree on every shared edge.
+            let exact = |p: f32, q: f32, r: f32, s: f32| (p as f64 * q as f64 - r as f64 * s as f64) as f32;
+            u = exact(cx, by, cy, bx);
+            vv = exact(ax, cy, ay, cx);
+            w = exact(bx, ay, by, ax);
         }
         if (u < 0.0 || vv < 0.0 || w < 0.0) && (u > 0.0 || vv > 0.0 || w > 0.0) {
             return None;
