@@ -48,6 +48,35 @@ pub fn to_f32_ray(origin: DVec3, dir: DVec3, t_max: f64) -> Option<BRay> {
     Some(BRay::new(o, d, 0.0, t_max))
 }
 
+/// Like [`to_f32_ray`] with the f64 reciprocal direction already known (saves the divisions
+/// obvhs's constructor would repeat).
+pub fn to_f32_ray_inv(origin: DVec3, dir: DVec3, inv: DVec3, t_max: f64) -> Option<BRay> {
+    let (o, d) = (origin.as_vec3a(), dir.as_vec3a() + Vec3A::ZERO);
+    if !o.is_finite() || !d.is_finite() || d == Vec3A::ZERO {
+        return None;
+    }
+    // obvhs's safe inverse: components within f32::EPSILON of zero invert to ±1/ε.
+    let safe = |x: f32, i: f64| {
+        if x.abs() <= f32::EPSILON {
+            x.signum() / f32::EPSILON
+        } else {
+            i as f32
+        }
+    };
+    let t_max = if t_max.is_finite() {
+        (t_max as f32).next_up()
+    } else {
+        f32::INFINITY
+    };
+    Some(BRay {
+        origin: o,
+        direction: d,
+        inv_direction: Vec3A::new(safe(d.x, inv.x), safe(d.y, inv.y), safe(d.z, inv.z)),
+        tmin: 0.0,
+        tmax: t_max,
+    })
+}
+
 impl Bvh {
     /// Builds over `boxes`; `ids[i]` is reported for `boxes[i]`.
     pub fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams) -> Bvh {

@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 
-use super::bvh::{Bvh, to_f32_ray};
+use super::bvh::{Bvh, to_f32_ray_inv};
 use super::mesh_error::{MeshError, locate};
 use super::triangle::ShearedRay;
 use super::{Aabb, Ray};
@@ -36,6 +36,8 @@ pub struct MeshData {
     pub warnings: Vec<String>,
     bvh: Bvh,
     bounds: Aabb,
+    /// How far before the bounds a ray restarts (a thousandth of the diagonal).
+    margin: f64,
     closed: OnceLock<bool>,
 }
 
@@ -158,7 +160,12 @@ impl MeshData {
         let bvh = Bvh::build(
             &boxes,
             (0..tris.len() as u32).collect(),
-            BvhBuildParams::fast_build(),
+            // Better trees pay off until the build itself dominates (time to first ray).
+            if tris.len() <= 300_000 {
+                BvhBuildParams::medium_build()
+            } else {
+                BvhBuildParams::fast_build()
+            },
         );
         let reorder = |i: u32| i as usize;
         let tris2 = bvh.order.iter().map(|&i| tris[reorder(i)]).collect();
@@ -187,6 +194,7 @@ impl MeshData {
             warnings,
             bvh,
             bounds,
+            margin: 1e-3 * (bounds.max - bounds.min).length(),
             closed: OnceLock::new(),
         })
     }
@@ -271,14 +279,21 @@ impl MeshData {
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
     fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, obvhs::ray::Ray, f32)> {
-        let (entry, exit) = self.bounds.hit_interval(ray, t_min, t_max)?;
-        let len = ray.dir.length();
-        let margin = 1e-3 * (self.bounds.max - self.bounds.min).length() / len.max(f64::MIN_POSITIVE);
+        // Slab test against the mesh bounds, keeping the reciprocal for the f32 ray.
+        let inv = ray.dir.recip();
+        let t0 = (self.bounds.min - ray.origin) * inv;
+        let t1 = (self.bounds.max - ray.origin) * inv;
+        let entry = t0.min(t1).max_element().max(t_min);
+        let exit = t0.max(t1).min_element().min(t_max);
+        if entry > exit {
+            return None;
+        }
+        let margin = self.margin / ray.dir.length().max(f64::MIN_POSITIVE);
         let s = (entry - margin).max(t_min);
         let origin = ray.at(s);
         let sr = ShearedRay::new(origin, ray.dir)?;
         let far = (t_max.min(exit + margin) - s).max(0.0);
-        let r = to_f32_ray(origin, ray.dir, far)?;
+        let r = to_f32_ray_inv(origin, ray.dir, inv, far)?;
         Some((s, sr, r, (t_min - s) as f32))
     }
 

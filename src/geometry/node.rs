@@ -173,8 +173,11 @@ impl Node {
 
     /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+        // Meshes clip against their bounds themselves (and need the entry point anyway).
         if self.bounds.is_empty()
-            || (self.bounds.is_finite() && self.bounds.hit_interval(ray, t_min, t_max).is_none())
+            || (!matches!(self.geom, Geom::Mesh(_))
+                && self.bounds.is_finite()
+                && self.bounds.hit_interval(ray, t_min, t_max).is_none())
         {
             return None;
         }

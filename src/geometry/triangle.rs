@@ -5,7 +5,7 @@
 //! operands swapped, so it is the exact negation in the neighbour: a ray through a shared edge
 //! or vertex is inside at least one of the triangles (zero counts as inside). No cracks.
 
-use glam::{DVec2, DVec3, Vec3A};
+use glam::{DVec2, DVec3, Mat3A, Vec3A};
 
 use super::{Aabb, Hit, Ray};
 
@@ -96,13 +96,14 @@ fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f6
 }
 
 /// A ray prepared for many f32 watertight triangle tests (meshes).
+///
+/// The shear and axis permutation are folded into one matrix, so each vertex's sheared
+/// coordinates are `shear * (v − origin)`: no per-triangle axis indexing, and every triangle
+/// sharing a vertex computes bit-identical coordinates for it (what watertightness needs).
 #[derive(Clone, Copy, Debug)]
 pub struct ShearedRay {
     origin: Vec3A,
-    kx: usize,
-    ky: usize,
-    kz: usize,
-    s: [f32; 3],
+    shear: Mat3A,
 }
 
 impl ShearedRay {
@@ -113,13 +114,17 @@ impl ShearedRay {
         if d[kz] == 0.0 {
             return None;
         }
-        let s64 = [d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]];
+        let inv = 1.0 / d[kz];
+        let (sx, sy, sz) = ((d[kx] * inv) as f32, (d[ky] * inv) as f32, inv as f32);
+        // Columns of the matrix whose rows give x' = a[kx] − sx·a[kz], y' = a[ky] − sy·a[kz],
+        // z' = sz·a[kz].
+        let mut cols = [Vec3A::ZERO; 3];
+        cols[kx] = Vec3A::X;
+        cols[ky] = Vec3A::Y;
+        cols[kz] = Vec3A::new(-sx, -sy, sz);
         Some(ShearedRay {
             origin: origin.as_vec3a(),
-            kx,
-            ky,
-            kz,
-            s: s64.map(|x| x as f32),
+            shear: Mat3A::from_cols(cols[0], cols[1], cols[2]),
         })
     }
 
@@ -129,14 +134,10 @@ impl ShearedRay {
     /// an edge or vertex) they are recomputed exactly in f64, as the paper prescribes.
     #[inline]
     pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
-        let (kx, ky, kz) = (self.kx, self.ky, self.kz);
-        let a = v[0] - self.origin;
-        let b = v[1] - self.origin;
-        let c = v[2] - self.origin;
-        let [sx, sy, sz] = self.s;
-        let (ax, ay) = (a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
-        let (bx, by) = (b[kx] - sx * b[kz], b[ky] - sy * b[kz]);
-        let (cx, cy) = (c[kx] - sx * c[kz], c[ky] - sy * c[kz]);
+        let a = self.shear * (v[0] - self.origin);
+        let b = self.shear * (v[1] - self.origin);
+        let c = self.shear * (v[2] - self.origin);
+        let (ax, ay, bx, by, cx, cy) = (a.x, a.y, b.x, b.y, c.x, c.y);
         let mut u = cx * by - cy * bx;
         let mut vv = ax * cy - ay * cx;
         let mut w = bx * ay - by * ax;
@@ -156,7 +157,7 @@ impl ShearedRay {
         if det == 0.0 {
             return None;
         }
-        let t = (u * sz * a[kz] + vv * sz * b[kz] + w * sz * c[kz]) / det;
+        let t = (u * a.z + vv * b.z + w * c.z) / det;
         let inv = 1.0 / det;
         Some((t, [u * inv, vv * inv, w * inv]))
     }
