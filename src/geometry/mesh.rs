@@ -59,9 +59,11 @@ pub struct MeshHit {
 impl MeshData {
     /// Loads and prepares an OBJ file; `smooth` interpolates normals.
     pub fn load(path: &Path, smooth: bool) -> Result<MeshData, MeshError> {
+        // Separate index streams: `single_index` re-deduplicates every (position, uv, normal)
+        // tuple through a hash map, the largest cost of loading a million triangles.
         let opts = tobj::LoadOptions {
             triangulate: true,
-            single_index: true,
+            single_index: false,
             ..Default::default()
         };
         let (models, mtl) = tobj::load_obj(path, &opts).map_err(|e| locate(path, e))?;
@@ -106,7 +108,21 @@ impl MeshData {
                 .filter(|&i| i < materials.len())
                 .map_or(u32::MAX, |i| i as u32);
             any_mat |= mat != u32::MAX;
-            for f in m.indices.chunks_exact(3) {
+            // Attribute indices per corner: their own stream, or the position's.
+            let pick = |own: &'_ [u32], values: usize, per: usize| -> Option<Vec<u32>> {
+                if own.len() == m.indices.len() {
+                    Some(own.to_vec())
+                } else if values > 0 && values / per == m.positions.len() / 3 {
+                    Some(m.indices.clone())
+                } else {
+                    None
+                }
+            };
+            // Only what will be used: file normals for smooth shading, uvs when present.
+            let n_idx = if smooth { pick(&m.normal_indices, m.normals.len(), 3) } else { None };
+            let t_idx = pick(&m.texcoord_indices, m.texcoords.len(), 2);
+            for (k, f) in m.indices.chunks_exact(3).enumerate() {
+                let corner = |idx: &Option<Vec<u32>>, c: usize| idx.as_ref().and_then(|v| v.get(3 * k + c).copied());
                 let (Some(a), Some(b), Some(c)) = (pos(f[0]), pos(f[1]), pos(f[2])) else {
                     return Err(MeshError::new("a face refers to a missing vertex", None));
                 };
@@ -118,26 +134,54 @@ impl MeshData {
                     continue;
                 }
                 tris.push([a, b, c]);
-                file_normals.push(match (nrm(f[0]), nrm(f[1]), nrm(f[2])) {
-                    (Some(x), Some(y), Some(z)) => Some([x, y, z]),
-                    _ => None,
-                });
-                let t = [tex(f[0]), tex(f[1]), tex(f[2])];
-                any_uv |= t.iter().all(Option::is_some);
-                uvs.push(t.map(|x| x.unwrap_or(Vec2::ZERO)));
-                material_of.push(mat);
+                if smooth {
+                    let n = |c| corner(&n_idx, c).and_then(nrm);
+                    file_normals.push(match (n(0), n(1), n(2)) {
+                        (Some(x), Some(y), Some(z)) => Some([x, y, z]),
+                        _ => None,
+                    });
+                }
+                if t_idx.is_some() || any_uv {
+                    let tc = |c| corner(&t_idx, c).and_then(tex);
+                    let t = [tc(0), tc(1), tc(2)];
+                    if !any_uv && t.iter().all(Option::is_some) {
+                        // Earlier faces (in other groups) had none: pad them.
+                        uvs.resize(tris.len() - 1, [Vec2::ZERO; 3]);
+                        any_uv = true;
+                    }
+                    if any_uv {
+                        uvs.push(t.map(|x| x.unwrap_or(Vec2::ZERO)));
+                    }
+                }
+                if any_mat {
+                    if material_of.len() + 1 < tris.len() {
+                        material_of.resize(tris.len() - 1, u32::MAX);
+                    }
+                    material_of.push(mat);
+                }
             }
+        }
+        if any_uv {
+            uvs.resize(tris.len(), [Vec2::ZERO; 3]);
+        }
+        if any_mat {
+            material_of.resize(tris.len(), u32::MAX);
         }
         if tris.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
         }
+        let usable = |n: &Option<[Vec3; 3]>| n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO));
         let normals = if smooth {
-            let computed = smooth_normals(&tris);
-            file_normals
-                .iter()
-                .zip(computed)
-                .map(|(f, c)| f.filter(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO)).unwrap_or(c))
-                .collect()
+            if file_normals.iter().all(usable) {
+                file_normals.into_iter().flatten().collect()
+            } else {
+                let computed = smooth_normals(&tris);
+                file_normals
+                    .iter()
+                    .zip(computed)
+                    .map(|(f, c)| if usable(f) { f.unwrap_or(c) } else { c })
+                    .collect()
+            }
         } else {
             Vec::new()
         };
