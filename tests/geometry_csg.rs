@@ -6,8 +6,8 @@
 
 mod geometry_support;
 
-use glam::{DAffine3, DQuat, DVec2, DVec3};
 use geometry_support::{Rng, mirrored_transform, object, ray_at_box, world};
+use glam::{DAffine3, DQuat, DVec2, DVec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{CsgOp, MaterialId, Object, Shape};
 
@@ -51,20 +51,44 @@ impl Solid {
 
     fn ir_with(&self, xf: DAffine3) -> Object {
         match self {
-            Solid::Sphere(c, r) => object(Shape::Sphere { center: *c, radius: *r }, xf),
+            Solid::Sphere(c, r) => object(
+                Shape::Sphere {
+                    center: *c,
+                    radius: *r,
+                },
+                xf,
+            ),
             Solid::Box(lo, hi) => object(Shape::Box { min: *lo, max: *hi }, xf),
             Solid::CylY(h, r) => object(
-                Shape::Cylinder { base: DVec3::ZERO, top: DVec3::new(0.0, *h, 0.0), radius: *r, capped: true },
+                Shape::Cylinder {
+                    base: DVec3::ZERO,
+                    top: DVec3::new(0.0, *h, 0.0),
+                    radius: *r,
+                    capped: true,
+                },
                 xf,
             ),
             Solid::Torus(big, small) => object(
-                Shape::Torus { center: DVec3::ZERO, major_radius: *big, minor_radius: *small },
+                Shape::Torus {
+                    center: DVec3::ZERO,
+                    major_radius: *big,
+                    minor_radius: *small,
+                },
                 xf,
             ),
-            Solid::Half(q, n) => object(Shape::Plane { point: *q, normal: *n }, xf),
+            Solid::Half(q, n) => object(
+                Shape::Plane {
+                    point: *q,
+                    normal: *n,
+                },
+                xf,
+            ),
             Solid::Placed(m, s) => s.ir_with(xf * *m),
             Solid::Csg(op, c) => object(
-                Shape::Csg { op: *op, children: c.iter().map(Solid::ir).collect() },
+                Shape::Csg {
+                    op: *op,
+                    children: c.iter().map(Solid::ir).collect(),
+                },
                 xf,
             ),
         }
@@ -81,7 +105,13 @@ fn scenes() -> Vec<(&'static str, Solid)> {
     vec![
         (
             "box minus sphere",
-            Csg(CsgOp::Difference, vec![Box(DVec3::splat(-1.0), DVec3::splat(1.0)), Sphere(DVec3::new(0.5, 0.6, 0.7), 0.9)]),
+            Csg(
+                CsgOp::Difference,
+                vec![
+                    Box(DVec3::splat(-1.0), DVec3::splat(1.0)),
+                    Sphere(DVec3::new(0.5, 0.6, 0.7), 0.9),
+                ],
+            ),
         ),
         (
             "three cylinders intersected",
@@ -89,8 +119,18 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                 CsgOp::Intersection,
                 vec![
                     cyl(DAffine3::from_translation(DVec3::new(0.0, -1.5, 0.0))),
-                    cyl(rot(std::f64::consts::FRAC_PI_2, 0.0, 0.0, DVec3::new(0.0, 0.0, -1.5))),
-                    cyl(rot(0.0, 0.0, std::f64::consts::FRAC_PI_2, DVec3::new(1.5, 0.0, 0.0))),
+                    cyl(rot(
+                        std::f64::consts::FRAC_PI_2,
+                        0.0,
+                        0.0,
+                        DVec3::new(0.0, 0.0, -1.5),
+                    )),
+                    cyl(rot(
+                        0.0,
+                        0.0,
+                        std::f64::consts::FRAC_PI_2,
+                        DVec3::new(1.5, 0.0, 0.0),
+                    )),
                 ],
             ),
         ),
@@ -112,12 +152,22 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                 std::boxed::Box::new(Csg(
                     CsgOp::Difference,
                     vec![
-                        Csg(CsgOp::Intersection, vec![Sphere(DVec3::ZERO, 1.2), Box(DVec3::splat(-1.0), DVec3::splat(1.0))]),
+                        Csg(
+                            CsgOp::Intersection,
+                            vec![
+                                Sphere(DVec3::ZERO, 1.2),
+                                Box(DVec3::splat(-1.0), DVec3::splat(1.0)),
+                            ],
+                        ),
                         Csg(
                             CsgOp::Merge,
                             vec![
-                                cyl(DAffine3::from_translation(DVec3::new(0.0, -1.5, 0.0)) * DAffine3::from_scale(DVec3::new(0.5, 1.0, 0.5))),
-                                Placed(rot(1.0, 0.2, 0.0, DVec3::new(0.2, 0.1, 0.0)), std::boxed::Box::new(Torus(0.9, 0.2))),
+                                cyl(DAffine3::from_translation(DVec3::new(0.0, -1.5, 0.0))
+                                    * DAffine3::from_scale(DVec3::new(0.5, 1.0, 0.5))),
+                                Placed(
+                                    rot(1.0, 0.2, 0.0, DVec3::new(0.2, 0.1, 0.0)),
+                                    std::boxed::Box::new(Torus(0.9, 0.2)),
+                                ),
                             ],
                         ),
                     ],
@@ -126,11 +176,26 @@ fn scenes() -> Vec<(&'static str, Solid)> {
         ),
         (
             "sphere minus a half-space",
-            Csg(CsgOp::Difference, vec![Sphere(DVec3::ZERO, 1.0), Half(DVec3::new(0.0, 0.3, 0.0), DVec3::new(0.3, -1.0, 0.2).normalize())]),
+            Csg(
+                CsgOp::Difference,
+                vec![
+                    Sphere(DVec3::ZERO, 1.0),
+                    Half(
+                        DVec3::new(0.0, 0.3, 0.0),
+                        DVec3::new(0.3, -1.0, 0.2).normalize(),
+                    ),
+                ],
+            ),
         ),
         (
             "intersection with a half-space",
-            Csg(CsgOp::Intersection, vec![Torus(1.0, 0.4), Half(DVec3::ZERO, DVec3::new(0.0, 0.2, 1.0).normalize())]),
+            Csg(
+                CsgOp::Intersection,
+                vec![
+                    Torus(1.0, 0.4),
+                    Half(DVec3::ZERO, DVec3::new(0.0, 0.2, 1.0).normalize()),
+                ],
+            ),
         ),
     ]
 }
@@ -165,7 +230,10 @@ fn csg_matches_point_membership_along_every_ray() {
             for h in &hits {
                 let ctx = format!("{name} ray {i} {ray:?} t {}", h.t);
                 assert!(at(h.t - d) != at(h.t + d), "{ctx}: not a boundary");
-                assert!(!solid.inside(h.point + d * h.normal) && solid.inside(h.point - d * h.normal), "{ctx}: normal not outward");
+                assert!(
+                    !solid.inside(h.point + d * h.normal) && solid.inside(h.point - d * h.normal),
+                    "{ctx}: normal not outward"
+                );
                 assert!((h.normal.length() - 1.0).abs() < 1e-12);
             }
             // Every membership change seen by dense sampling is reported.
@@ -179,7 +247,8 @@ fn csg_matches_point_membership_along_every_ray() {
                 if now != prev {
                     transitions += 1;
                     assert!(
-                        hits.iter().any(|h| h.t > t - step - 1e-9 && h.t <= t + 1e-9),
+                        hits.iter()
+                            .any(|h| h.t > t - step - 1e-9 && h.t <= t + 1e-9),
                         "{name} ray {i} {ray:?}: membership changes in ({}, {t}] but no hit there: {:?}",
                         t - step,
                         hits.iter().map(|h| h.t).collect::<Vec<_>>()
@@ -189,22 +258,50 @@ fn csg_matches_point_membership_along_every_ray() {
             }
             // Shadow rays agree with the nearest hit.
             let first = hits.first().map(|h| h.t);
-            assert_eq!(w.occluded(&ray, 0.0, far), first.is_some(), "{name} ray {i}");
+            assert_eq!(
+                w.occluded(&ray, 0.0, far),
+                first.is_some(),
+                "{name} ray {i}"
+            );
             if let Some(t) = first {
-                assert!(!w.occluded(&ray, 0.0, t * (1.0 - 1e-9)), "{name} ray {i}: shadow hit before the first hit");
+                assert!(
+                    !w.occluded(&ray, 0.0, t * (1.0 - 1e-9)),
+                    "{name} ray {i}: shadow hit before the first hit"
+                );
             }
         }
-        assert!(transitions > 500, "{name}: only {transitions} transitions; the test is not exercising it");
+        assert!(
+            transitions > 500,
+            "{name}: only {transitions} transitions; the test is not exercising it"
+        );
     }
 }
 
 #[test]
 fn cut_faces_take_the_cutters_material() {
-    let mut cutter = object(Shape::Sphere { center: DVec3::new(0.5, 0.6, 0.7), radius: 0.9 }, DAffine3::IDENTITY);
+    let mut cutter = object(
+        Shape::Sphere {
+            center: DVec3::new(0.5, 0.6, 0.7),
+            radius: 0.9,
+        },
+        DAffine3::IDENTITY,
+    );
     cutter.material = Some(MaterialId(1));
-    let mut base = object(Shape::Box { min: DVec3::splat(-1.0), max: DVec3::splat(1.0) }, DAffine3::IDENTITY);
+    let mut base = object(
+        Shape::Box {
+            min: DVec3::splat(-1.0),
+            max: DVec3::splat(1.0),
+        },
+        DAffine3::IDENTITY,
+    );
     base.material = None;
-    let mut node = object(Shape::Csg { op: CsgOp::Difference, children: vec![base, cutter] }, DAffine3::IDENTITY);
+    let mut node = object(
+        Shape::Csg {
+            op: CsgOp::Difference,
+            children: vec![base, cutter],
+        },
+        DAffine3::IDENTITY,
+    );
     node.material = Some(MaterialId(2));
     let w = world(vec![node]);
     let mut rng = Rng(5);
@@ -220,7 +317,11 @@ fn cut_faces_take_the_cutters_material() {
                 assert!(h.normal.dot(DVec3::new(0.5, 0.6, 0.7) - h.point) > 0.0);
             } else {
                 outer += 1;
-                assert_eq!(h.material, MaterialId(2), "the base inherits the CSG node's material");
+                assert_eq!(
+                    h.material,
+                    MaterialId(2),
+                    "the base inherits the CSG node's material"
+                );
             }
         }
     }
@@ -234,15 +335,32 @@ fn union_keeps_inner_surfaces_and_merge_removes_them() {
             Shape::Csg {
                 op,
                 children: vec![
-                    object(Shape::Sphere { center: DVec3::new(-0.5, 0.0, 0.0), radius: 1.0 }, DAffine3::IDENTITY),
-                    object(Shape::Sphere { center: DVec3::new(0.5, 0.0, 0.0), radius: 1.0 }, DAffine3::IDENTITY),
+                    object(
+                        Shape::Sphere {
+                            center: DVec3::new(-0.5, 0.0, 0.0),
+                            radius: 1.0,
+                        },
+                        DAffine3::IDENTITY,
+                    ),
+                    object(
+                        Shape::Sphere {
+                            center: DVec3::new(0.5, 0.0, 0.0),
+                            radius: 1.0,
+                        },
+                        DAffine3::IDENTITY,
+                    ),
                 ],
             },
             DAffine3::IDENTITY,
         )
     };
     let ray = Ray::new(DVec3::new(-5.0, 0.1, 0.0), DVec3::X);
-    let ts = |op| all_hits(&world(vec![spheres(op)]), &ray).iter().map(|h| h.t).collect::<Vec<_>>();
+    let ts = |op| {
+        all_hits(&world(vec![spheres(op)]), &ray)
+            .iter()
+            .map(|h| h.t)
+            .collect::<Vec<_>>()
+    };
     assert_eq!(ts(CsgOp::Union).len(), 4);
     let merged = ts(CsgOp::Merge);
     assert_eq!(merged.len(), 2);
@@ -256,8 +374,20 @@ fn empty_intersection_is_never_hit_and_has_empty_bounds() {
         Shape::Csg {
             op: CsgOp::Intersection,
             children: vec![
-                object(Shape::Sphere { center: DVec3::new(-3.0, 0.0, 0.0), radius: 1.0 }, DAffine3::IDENTITY),
-                object(Shape::Sphere { center: DVec3::new(3.0, 0.0, 0.0), radius: 1.0 }, DAffine3::IDENTITY),
+                object(
+                    Shape::Sphere {
+                        center: DVec3::new(-3.0, 0.0, 0.0),
+                        radius: 1.0,
+                    },
+                    DAffine3::IDENTITY,
+                ),
+                object(
+                    Shape::Sphere {
+                        center: DVec3::new(3.0, 0.0, 0.0),
+                        radius: 1.0,
+                    },
+                    DAffine3::IDENTITY,
+                ),
             ],
         },
         DAffine3::IDENTITY,

@@ -3,8 +3,8 @@
 
 mod geometry_support;
 
-use glam::{DAffine3, DVec3};
 use geometry_support::{object, world};
+use glam::{DAffine3, DVec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{BlobComponent, Shape};
 
@@ -15,7 +15,13 @@ fn leg(a: f64, b: f64) -> f64 {
 
 /// For a family of offsets approaching tangency: hits at the expected distance, and misses
 /// just past it.
-fn sweep(w: &World, what: &str, ray_at: impl Fn(f64) -> Ray, tangent: f64, expected_t: impl Fn(f64) -> f64) {
+fn sweep(
+    w: &World,
+    what: &str,
+    ray_at: impl Fn(f64) -> Ray,
+    tangent: f64,
+    expected_t: impl Fn(f64) -> f64,
+) {
     for k in 1..=13 {
         let off = tangent * (1.0 - 10f64.powi(-k));
         let ray = ray_at(off);
@@ -25,7 +31,11 @@ fn sweep(w: &World, what: &str, ray_at: impl Fn(f64) -> Ray, tangent: f64, expec
         let want = expected_t(off);
         // Near-double roots are ill-conditioned: the error grows like √ε; 1e-6 still
         // separates a polished root from a wrong or speckled one.
-        assert!((h.t - want).abs() < 1e-6, "{what}: 1−1e-{k}: t = {} want {want}", h.t);
+        assert!(
+            (h.t - want).abs() < 1e-6,
+            "{what}: 1−1e-{k}: t = {} want {want}",
+            h.t
+        );
         assert!((h.normal.length() - 1.0).abs() < 1e-12);
         let outside = ray_at(tangent * (1.0 + 10f64.powi(-k)));
         assert!(
@@ -40,7 +50,9 @@ fn sweep(w: &World, what: &str, ray_at: impl Fn(f64) -> Ray, tangent: f64, expec
         if rel.abs() < 1e-12 {
             continue;
         }
-        let hit = w.intersect(&ray_at(tangent * (1.0 + rel)), 0.0, f64::INFINITY).is_some();
+        let hit = w
+            .intersect(&ray_at(tangent * (1.0 + rel)), 0.0, f64::INFINITY)
+            .is_some();
         assert_eq!(hit, rel < 0.0, "{what}: dense sweep at 1{rel:+e}");
     }
 }
@@ -49,7 +61,11 @@ fn sweep(w: &World, what: &str, ray_at: impl Fn(f64) -> Ray, tangent: f64, expec
 fn torus_grazing_rays_hit_at_the_analytic_distance() {
     let (big, small) = (2.0, 0.5);
     let w = world(vec![object(
-        Shape::Torus { center: DVec3::ZERO, major_radius: big, minor_radius: small },
+        Shape::Torus {
+            center: DVec3::ZERO,
+            major_radius: big,
+            minor_radius: small,
+        },
         DAffine3::IDENTITY,
     )]);
     // Along +X at height y: tangent to the top of the tube at y = r.
@@ -85,7 +101,10 @@ fn torus_grazing_rays_hit_at_the_analytic_distance() {
         let want = [10.0 - o, 10.0 - i, 10.0 + i, 10.0 + o];
         assert_eq!(ts.len(), 4, "inner graze 1−1e-{k}: {ts:?}");
         for (got, want) in ts.iter().zip(want) {
-            assert!((got - want).abs() < 1e-6, "inner graze 1−1e-{k}: {ts:?} vs {want}");
+            assert!(
+                (got - want).abs() < 1e-6,
+                "inner graze 1−1e-{k}: {ts:?} vs {want}"
+            );
         }
     }
 }
@@ -96,19 +115,29 @@ fn torus_rotated_and_far_away_stays_accurate() {
     // hit still lies on the surface to ~1e-9 of its size.
     let c = DVec3::new(1e6, -2e6, 3e5);
     let w = world(vec![object(
-        Shape::Torus { center: DVec3::ZERO, major_radius: 2.0, minor_radius: 0.5 },
+        Shape::Torus {
+            center: DVec3::ZERO,
+            major_radius: 2.0,
+            minor_radius: 0.5,
+        },
         DAffine3::from_rotation_translation(glam::DQuat::from_rotation_x(0.4), c),
     )]);
     let inv = DAffine3::from_rotation_translation(glam::DQuat::from_rotation_x(0.4), c).inverse();
     let origin = DVec3::ZERO;
     let mut hits = 0;
     for i in 0..200 {
-        let target = c + DVec3::new((i % 20) as f64 * 0.25 - 2.5, (i / 20) as f64 * 0.5 - 2.5, 0.1);
+        let target = c + DVec3::new(
+            (i % 20) as f64 * 0.25 - 2.5,
+            (i / 20) as f64 * 0.5 - 2.5,
+            0.1,
+        );
         let ray = Ray::new(origin, (target - origin).normalize());
         if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
             hits += 1;
             let q = inv.transform_point3(h.point);
-            let d = (glam::DVec2::new(glam::DVec2::new(q.x, q.z).length() - 2.0, q.y).length() - 0.5).abs();
+            let d = (glam::DVec2::new(glam::DVec2::new(q.x, q.z).length() - 2.0, q.y).length()
+                - 0.5)
+                .abs();
             // Coordinates near 2e6 carry ~4e-10 of rounding each.
             assert!(d < 1e-8, "ray {i}: {d:e} off the surface");
         }
@@ -123,7 +152,11 @@ fn blob_grazing_rays_hit_at_the_analytic_distance() {
     let rho = r * (1.0 - (t / s).sqrt()).sqrt();
     let w = world(vec![object(
         Shape::Blob {
-            components: vec![BlobComponent { center: DVec3::ZERO, radius: r, strength: s }],
+            components: vec![BlobComponent {
+                center: DVec3::ZERO,
+                radius: r,
+                strength: s,
+            }],
             threshold: t,
         },
         DAffine3::IDENTITY,
@@ -142,8 +175,16 @@ fn blob_grazing_rays_hit_at_the_analytic_distance() {
     let w2 = world(vec![object(
         Shape::Blob {
             components: vec![
-                BlobComponent { center: DVec3::new(-d, 0.0, 0.0), radius: r, strength: s },
-                BlobComponent { center: DVec3::new(d, 0.0, 0.0), radius: r, strength: s },
+                BlobComponent {
+                    center: DVec3::new(-d, 0.0, 0.0),
+                    radius: r,
+                    strength: s,
+                },
+                BlobComponent {
+                    center: DVec3::new(d, 0.0, 0.0),
+                    radius: r,
+                    strength: s,
+                },
             ],
             threshold: t,
         },
@@ -152,9 +193,17 @@ fn blob_grazing_rays_hit_at_the_analytic_distance() {
     for k in 1..=12 {
         let y = neck * (1.0 - 10f64.powi(-k));
         let h = w2
-            .intersect(&Ray::new(DVec3::new(0.0, y, -10.0), DVec3::Z), 0.0, f64::INFINITY)
+            .intersect(
+                &Ray::new(DVec3::new(0.0, y, -10.0), DVec3::Z),
+                0.0,
+                f64::INFINITY,
+            )
             .unwrap_or_else(|| panic!("neck graze 1−1e-{k} missed"));
         let want = 10.0 - leg(neck, y);
-        assert!((h.t - want).abs() < 1e-6, "neck 1−1e-{k}: {} vs {want}", h.t);
+        assert!(
+            (h.t - want).abs() < 1e-6,
+            "neck 1−1e-{k}: {} vs {want}",
+            h.t
+        );
     }
 }

@@ -6,8 +6,8 @@ mod geometry_support;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use glam::{DAffine3, DVec3, Vec3};
 use geometry_support::{Rng, object, ray_at_box, scene, world};
+use glam::{DAffine3, DVec3, Vec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{CsgOp, MaterialId, Shape};
 
@@ -21,10 +21,23 @@ fn tmp_dir(name: &str) -> PathBuf {
 /// A closed unit sphere: an octahedron subdivided `levels` times; returns the OBJ text and
 /// the vertex positions exactly as an OBJ reader sees them (f32 parsed from the text).
 fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
-    let mut v: Vec<DVec3> = vec![DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z];
+    let mut v: Vec<DVec3> = vec![
+        DVec3::X,
+        -DVec3::X,
+        DVec3::Y,
+        -DVec3::Y,
+        DVec3::Z,
+        -DVec3::Z,
+    ];
     let mut f: Vec<[usize; 3]> = vec![
-        [0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4],
-        [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5],
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
     ];
     for _ in 0..levels {
         let mut mid = std::collections::HashMap::new();
@@ -38,7 +51,12 @@ fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
                     v.len() - 1
                 });
             }
-            next.extend([[t[0], m[0], m[2]], [m[0], t[1], m[1]], [m[2], m[1], t[2]], [m[0], m[1], m[2]]]);
+            next.extend([
+                [t[0], m[0], m[2]],
+                [m[0], t[1], m[1]],
+                [m[2], m[1], t[2]],
+                [m[0], m[1], m[2]],
+            ]);
         }
         f = next;
     }
@@ -47,7 +65,11 @@ fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
     for p in &v {
         let s = [p.x, p.y, p.z].map(|c| format!("{c:.9}"));
         writeln!(text, "v {} {} {}", s[0], s[1], s[2]).unwrap();
-        exact.push(Vec3::new(s[0].parse().unwrap(), s[1].parse().unwrap(), s[2].parse().unwrap()));
+        exact.push(Vec3::new(
+            s[0].parse().unwrap(),
+            s[1].parse().unwrap(),
+            s[2].parse().unwrap(),
+        ));
     }
     for t in &f {
         writeln!(text, "f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1).unwrap();
@@ -56,7 +78,11 @@ fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
 }
 
 fn mesh(path: PathBuf, smooth: bool) -> Shape {
-    Shape::Mesh { path, smooth, use_mtl: false }
+    Shape::Mesh {
+        path,
+        smooth,
+        use_mtl: false,
+    }
 }
 
 #[test]
@@ -95,11 +121,18 @@ fn rays_through_shared_edges_and_vertices_never_pass_through() {
             rays += 1;
             let h = w.intersect(&ray, 0.0, f64::INFINITY);
             let h = h.unwrap_or_else(|| panic!("ray {ray:?} aimed at {target} passed through"));
-            assert!((h.t - len).abs() < 1e-5 * len, "ray {ray:?} entered at {} not {len}", h.t);
+            assert!(
+                (h.t - len).abs() < 1e-5 * len,
+                "ray {ray:?} entered at {} not {len}",
+                h.t
+            );
             assert!(w.occluded(&ray, 0.0, 2.0 * len));
             // Shot from the centre outwards through the same point it must leave the sphere.
             let out = Ray::new(DVec3::ZERO, target.normalize());
-            assert!(w.intersect(&out, 0.0, f64::INFINITY).is_some(), "escaped through {target}");
+            assert!(
+                w.intersect(&out, 0.0, f64::INFINITY).is_some(),
+                "escaped through {target}"
+            );
             assert!(w.occluded(&out, 0.0, 10.0));
         }
     }
@@ -127,15 +160,26 @@ fn mesh_hits_keep_the_invariants() {
         let mut err_geometric = 0.0;
         for i in 0..10_000 {
             let ray = ray_at_box(&mut rng, b.min, b.max);
-            let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else { continue };
+            let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
             hits += 1;
             let q = inv.transform_point3(h.point);
             // The tessellated unit sphere lies between radius cos(half the edge angle) and 1.
             let r = q.length();
-            assert!((0.99..=1.0 + 1e-5).contains(&r), "ray {i}: object-space radius {r}");
-            assert!((h.normal.length() - 1.0).abs() < 1e-6 && (h.geometric_normal.length() - 1.0).abs() < 1e-12);
+            assert!(
+                (0.99..=1.0 + 1e-5).contains(&r),
+                "ray {i}: object-space radius {r}"
+            );
+            assert!(
+                (h.normal.length() - 1.0).abs() < 1e-6
+                    && (h.geometric_normal.length() - 1.0).abs() < 1e-12
+            );
             let outward = (xf.matrix3.inverse().transpose() * q).normalize();
-            assert!(h.geometric_normal.dot(outward) > 0.9, "ray {i}: geometric normal inward");
+            assert!(
+                h.geometric_normal.dot(outward) > 0.9,
+                "ray {i}: geometric normal inward"
+            );
             assert!(b.contains(h.point, 1e-5), "ray {i}: outside bounds");
             if !smooth {
                 assert_eq!(h.normal, h.geometric_normal);
@@ -144,12 +188,18 @@ fn mesh_hits_keep_the_invariants() {
             err_geometric += h.geometric_normal.angle_between(outward);
             // Leaving along the normal does not re-hit the (convex) mesh.
             let again = Ray::new(h.point + 1e-4 * h.geometric_normal, h.geometric_normal);
-            assert!(w.intersect(&again, 0.0, f64::INFINITY).is_none(), "ray {i}: re-hit");
+            assert!(
+                w.intersect(&again, 0.0, f64::INFINITY).is_none(),
+                "ray {i}: re-hit"
+            );
         }
         assert!(hits > 3_000, "{hits}");
         if smooth {
             // Interpolated normals follow the true sphere far better than the facets do.
-            assert!(err_shading < 0.3 * err_geometric, "{err_shading} vs {err_geometric}");
+            assert!(
+                err_shading < 0.3 * err_geometric,
+                "{err_shading} vs {err_geometric}"
+            );
         }
     }
 }
@@ -161,7 +211,12 @@ fn one_file_placed_many_times_is_loaded_once() {
     let path = dir.join("ball.obj");
     std::fs::write(&path, text).unwrap();
     let objects = (0..5)
-        .map(|i| object(mesh(path.clone(), true), DAffine3::from_translation(DVec3::new(3.0 * i as f64, 0.0, 0.0))))
+        .map(|i| {
+            object(
+                mesh(path.clone(), true),
+                DAffine3::from_translation(DVec3::new(3.0 * i as f64, 0.0, 0.0)),
+            )
+        })
         .collect();
     let w = world(objects);
     let s = w.stats();
@@ -181,13 +236,24 @@ fn one_file_placed_many_times_is_loaded_once() {
 #[test]
 fn mtl_materials_become_rtc_materials() {
     let path = PathBuf::from("tests/data/course/models/devilduk.obj");
-    let sc = scene(vec![object(Shape::Mesh { path, smooth: true, use_mtl: true }, DAffine3::IDENTITY)]);
+    let sc = scene(vec![object(
+        Shape::Mesh {
+            path,
+            smooth: true,
+            use_mtl: true,
+        },
+        DAffine3::IDENTITY,
+    )]);
     let w = World::build(&sc, MaterialId(0)).expect("duck loads");
     assert_eq!(w.stats().unique_triangles, 3712);
     let extra = w.extra_materials();
     assert!(extra.len() >= 3, "{}", extra.len());
     // "horns": Kd 1 0 0, Ks 0.5, Ns 60 (devilduk.mtl).
-    assert!(extra.iter().any(|m| m.color == DVec3::new(1.0, 0.0, 0.0) && m.ks == 0.5 && m.n == 60.0));
+    assert!(
+        extra
+            .iter()
+            .any(|m| m.color == DVec3::new(1.0, 0.0, 0.0) && m.ks == 0.5 && m.n == 60.0)
+    );
     let b = w.bounds();
     let mut rng = Rng(9);
     let mut from_mtl = 0;
@@ -207,14 +273,30 @@ fn mtl_materials_become_rtc_materials() {
 #[test]
 fn closed_mesh_works_in_csg() {
     // The course cube (unit cube, 12 triangles) minus a sphere, checked by point membership.
-    let cube = object(mesh(PathBuf::from("tests/data/course/models/cube.obj"), false), DAffine3::IDENTITY);
+    let cube = object(
+        mesh(PathBuf::from("tests/data/course/models/cube.obj"), false),
+        DAffine3::IDENTITY,
+    );
     let (c, r) = (DVec3::new(0.9, 0.8, 0.7), 0.5);
-    let ball = object(Shape::Sphere { center: c, radius: r }, DAffine3::IDENTITY);
-    let node = object(Shape::Csg { op: CsgOp::Difference, children: vec![cube, ball] }, DAffine3::IDENTITY);
+    let ball = object(
+        Shape::Sphere {
+            center: c,
+            radius: r,
+        },
+        DAffine3::IDENTITY,
+    );
+    let node = object(
+        Shape::Csg {
+            op: CsgOp::Difference,
+            children: vec![cube, ball],
+        },
+        DAffine3::IDENTITY,
+    );
     let sc = scene(vec![node]);
     assert!(rtc::geometry::validate_scene_geometry(&sc).items.is_empty());
     let w = World::build(&sc, MaterialId(0)).unwrap();
-    let inside = |p: DVec3| p.cmpge(DVec3::ZERO).all() && p.cmple(DVec3::ONE).all() && (p - c).length() > r;
+    let inside =
+        |p: DVec3| p.cmpge(DVec3::ZERO).all() && p.cmple(DVec3::ONE).all() && (p - c).length() > r;
     let mut rng = Rng(21);
     let mut cut = 0;
     for i in 0..5_000 {
@@ -222,7 +304,11 @@ fn closed_mesh_works_in_csg() {
         let mut t = 0.0;
         while let Some(h) = w.intersect(&ray, t, f64::INFINITY) {
             let d = 1e-4;
-            assert!(inside(h.point - d * h.normal) && !inside(h.point + d * h.normal), "ray {i} t {}", h.t);
+            assert!(
+                inside(h.point - d * h.normal) && !inside(h.point + d * h.normal),
+                "ray {i} t {}",
+                h.t
+            );
             if ((h.point - c).length() - r).abs() < 1e-9 {
                 cut += 1;
             }

@@ -5,8 +5,8 @@
 
 mod geometry_support;
 
-use glam::{DAffine3, DVec2, DVec3};
 use geometry_support::{Rng, hemisphere, mirrored_transform, object, ray_at_box, world};
+use glam::{DAffine3, DVec2, DVec3};
 use rtc::geometry::Ray;
 use rtc::ir::{BlobComponent, Shape};
 
@@ -54,7 +54,10 @@ fn cases() -> Vec<Case> {
         let (c, r) = (DVec3::new(0.3, -0.2, 0.1), 1.3);
         v.push(Case {
             name: "sphere",
-            shape: Shape::Sphere { center: c, radius: r },
+            shape: Shape::Sphere {
+                center: c,
+                radius: r,
+            },
             side: Box::new(move |q| (q - c).length() - r),
             dist: Box::new(move |q| ((q - c).length() - r).abs()),
             aim: (c - r, c + r),
@@ -79,7 +82,10 @@ fn cases() -> Vec<Case> {
         let n = DVec3::new(0.2, 1.0, 0.1).normalize();
         v.push(Case {
             name: "plane",
-            shape: Shape::Plane { point: p, normal: n },
+            shape: Shape::Plane {
+                point: p,
+                normal: n,
+            },
             side: Box::new(move |q| (q - p).dot(n)),
             dist: Box::new(move |q| (q - p).dot(n).abs()),
             aim: (DVec3::splat(-2.0), DVec3::splat(2.0)),
@@ -88,7 +94,11 @@ fn cases() -> Vec<Case> {
         });
     }
     {
-        let t = [DVec3::new(-1.0, -0.8, 0.2), DVec3::new(1.2, -0.3, -0.4), DVec3::new(0.1, 1.1, 0.5)];
+        let t = [
+            DVec3::new(-1.0, -0.8, 0.2),
+            DVec3::new(1.2, -0.3, -0.4),
+            DVec3::new(0.1, 1.1, 0.5),
+        ];
         let n = (t[1] - t[0]).cross(t[2] - t[0]);
         v.push(Case {
             name: "triangle",
@@ -100,7 +110,11 @@ fn cases() -> Vec<Case> {
                 let b1 = (q - t[0]).cross(t[2] - t[0]).dot(n) / nn;
                 let b2 = (t[1] - t[0]).cross(q - t[0]).dot(n) / nn;
                 let inside = b1 >= -1e-9 && b2 >= -1e-9 && b1 + b2 <= 1.0 + 1e-9;
-                if inside { (q - t[0]).dot(n.normalize()).abs() } else { 1e9 }
+                if inside {
+                    (q - t[0]).dot(n.normalize()).abs()
+                } else {
+                    1e9
+                }
             }),
             aim: (DVec3::new(-1.0, -0.8, -0.4), DVec3::new(1.2, 1.1, 0.5)),
             size: 3.0,
@@ -108,7 +122,11 @@ fn cases() -> Vec<Case> {
         });
     }
     {
-        let (c, u, w) = (DVec3::new(-0.5, -0.5, 0.0), DVec3::new(1.4, 0.2, 0.1), DVec3::new(-0.3, 1.0, 0.6));
+        let (c, u, w) = (
+            DVec3::new(-0.5, -0.5, 0.0),
+            DVec3::new(1.4, 0.2, 0.1),
+            DVec3::new(-0.3, 1.0, 0.6),
+        );
         let n = u.cross(w);
         v.push(Case {
             name: "quad",
@@ -120,7 +138,11 @@ fn cases() -> Vec<Case> {
                 let r = u.cross(q - c).dot(n) / nn;
                 let e = 1e-9;
                 let inside = (-e..=1.0 + e).contains(&s) && (-e..=1.0 + e).contains(&r);
-                if inside { (q - c).dot(n.normalize()).abs() } else { 1e9 }
+                if inside {
+                    (q - c).dot(n.normalize()).abs()
+                } else {
+                    1e9
+                }
             }),
             aim: (DVec3::new(-0.8, -0.5, 0.0), DVec3::new(0.9, 0.7, 0.7)),
             size: 2.0,
@@ -170,15 +192,27 @@ fn cases() -> Vec<Case> {
         });
     }
     {
-        let (c, n, r) = (DVec3::new(0.1, 0.0, -0.2), DVec3::new(-0.4, 1.0, 0.3).normalize(), 0.9);
+        let (c, n, r) = (
+            DVec3::new(0.1, 0.0, -0.2),
+            DVec3::new(-0.4, 1.0, 0.3).normalize(),
+            0.9,
+        );
         v.push(Case {
             name: "disk",
-            shape: Shape::Disk { center: c, normal: n, radius: r },
+            shape: Shape::Disk {
+                center: c,
+                normal: n,
+                radius: r,
+            },
             side: Box::new(move |q| (q - c).dot(n)),
             dist: Box::new(move |q| {
                 let w = q - c;
                 let radial = (w - w.dot(n) * n).length();
-                if radial <= r * (1.0 + 1e-9) { w.dot(n).abs() } else { 1e9 }
+                if radial <= r * (1.0 + 1e-9) {
+                    w.dot(n).abs()
+                } else {
+                    1e9
+                }
             }),
             aim: (c - r, c + r),
             size: 2.0 * r,
@@ -205,12 +239,25 @@ fn cases() -> Vec<Case> {
         } else {
             Box::new(move |q| {
                 let (y, rad, h) = axial(q, b, t);
-                if (-1e-9..=h + 1e-9).contains(&y) { (rad - r).abs() } else { 1e9 }
+                if (-1e-9..=h + 1e-9).contains(&y) {
+                    (rad - r).abs()
+                } else {
+                    1e9
+                }
             })
         };
         v.push(Case {
-            name: if capped { "cylinder (capped)" } else { "cylinder (open)" },
-            shape: Shape::Cylinder { base: b, top: t, radius: r, capped },
+            name: if capped {
+                "cylinder (capped)"
+            } else {
+                "cylinder (open)"
+            },
+            shape: Shape::Cylinder {
+                base: b,
+                top: t,
+                radius: r,
+                capped,
+            },
             side,
             dist,
             aim: (DVec3::new(-0.6, -1.0, -0.6), DVec3::new(1.1, 1.0, 0.8)),
@@ -235,12 +282,20 @@ fn cases() -> Vec<Case> {
         };
         let side: Box<dyn Fn(DVec3) -> f64> = Box::new(move |q| {
             let (y, _, h, _, side) = parts(q);
-            if capped { side.max(-y).max(y - h) } else { side }
+            if capped {
+                side.max(-y).max(y - h)
+            } else {
+                side
+            }
         });
         let dist: Box<dyn Fn(DVec3) -> f64> = Box::new(move |q| {
             let (y, rad, h, _, side) = parts(q);
             let e = 1e-9;
-            let mut d = if (-e..=h + e).contains(&y) { side.abs() } else { 1e9 };
+            let mut d = if (-e..=h + e).contains(&y) {
+                side.abs()
+            } else {
+                1e9
+            };
             if capped {
                 if rad <= r0 * (1.0 + e) + e {
                     d = d.min(y.abs());
@@ -253,7 +308,13 @@ fn cases() -> Vec<Case> {
         });
         v.push(Case {
             name,
-            shape: Shape::Cone { base: b, top: t, base_radius: r0, top_radius: r1, capped },
+            shape: Shape::Cone {
+                base: b,
+                top: t,
+                base_radius: r0,
+                top_radius: r1,
+                capped,
+            },
             side,
             dist,
             aim: (DVec3::new(-1.0, -0.8, -0.8), DVec3::new(1.0, 0.9, 1.2)),
@@ -269,7 +330,11 @@ fn cases() -> Vec<Case> {
         };
         v.push(Case {
             name: "torus",
-            shape: Shape::Torus { center: c, major_radius: big, minor_radius: small },
+            shape: Shape::Torus {
+                center: c,
+                major_radius: big,
+                minor_radius: small,
+            },
             side: Box::new(sdf),
             dist: Box::new(move |q| sdf(q).abs()),
             aim: (c - DVec3::new(1.6, 0.4, 1.6), c + DVec3::new(1.6, 0.4, 1.6)),
@@ -279,9 +344,21 @@ fn cases() -> Vec<Case> {
     }
     {
         let comps = vec![
-            BlobComponent { center: DVec3::new(-0.5, 0.0, 0.0), radius: 1.0, strength: 1.0 },
-            BlobComponent { center: DVec3::new(0.6, 0.1, 0.0), radius: 0.9, strength: 1.0 },
-            BlobComponent { center: DVec3::new(0.0, 0.6, 0.2), radius: 0.5, strength: -0.8 },
+            BlobComponent {
+                center: DVec3::new(-0.5, 0.0, 0.0),
+                radius: 1.0,
+                strength: 1.0,
+            },
+            BlobComponent {
+                center: DVec3::new(0.6, 0.1, 0.0),
+                radius: 0.9,
+                strength: 1.0,
+            },
+            BlobComponent {
+                center: DVec3::new(0.0, 0.6, 0.2),
+                radius: 0.5,
+                strength: -0.8,
+            },
         ];
         let threshold = 0.3;
         let cs = comps.clone();
@@ -301,7 +378,10 @@ fn cases() -> Vec<Case> {
         let f2 = field.clone();
         v.push(Case {
             name: "blob",
-            shape: Shape::Blob { components: comps, threshold },
+            shape: Shape::Blob {
+                components: comps,
+                threshold,
+            },
             side: Box::new(move |q| threshold - field(q).0),
             dist: Box::new(move |q| {
                 let (f, g) = f2(q);
@@ -318,7 +398,12 @@ fn cases() -> Vec<Case> {
 fn check(case: &Case, xf: DAffine3, seed: u64) {
     let w = world(vec![object(case.shape.clone(), xf)]);
     let inv = xf.inverse();
-    let world_scale = case.size * xf.matrix3.x_axis.length().max(xf.matrix3.y_axis.length()).max(xf.matrix3.z_axis.length());
+    let world_scale = case.size
+        * xf.matrix3
+            .x_axis
+            .length()
+            .max(xf.matrix3.y_axis.length())
+            .max(xf.matrix3.z_axis.length());
     let aim = rtc::geometry::Aabb::new(case.aim.0, case.aim.1).transformed(&xf);
     let bounds = w.bounds();
     let mut rng = Rng(seed);
@@ -333,12 +418,19 @@ fn check(case: &Case, xf: DAffine3, seed: u64) {
         let q = inv.transform_point3(h.point);
         let d = (case.dist)(q);
         assert!(d < 1e-9 * case.size, "{ctx}: off the surface by {d:e}");
-        assert!((h.normal.length() - 1.0).abs() < 1e-12, "{ctx}: |n| = {}", h.normal.length());
+        assert!(
+            (h.normal.length() - 1.0).abs() < 1e-12,
+            "{ctx}: |n| = {}",
+            h.normal.length()
+        );
         let eps = 1e-6 * world_scale;
         let out = (case.side)(inv.transform_point3(h.point + eps * h.normal));
         assert!(out > 0.0, "{ctx}: the normal points inward (side {out:e})");
         if bounds.is_finite() {
-            assert!(bounds.contains(h.point, 1e-9 * world_scale), "{ctx}: outside the bounds {bounds:?}");
+            assert!(
+                bounds.contains(h.point, 1e-9 * world_scale),
+                "{ctx}: outside the bounds {bounds:?}"
+            );
         }
         // Leave the surface at least ~12° above its tangent plane.
         let dir = loop {

@@ -36,7 +36,9 @@ impl Blob {
         let bounds = parts
             .iter()
             .filter(|c| c.strength > 0.0)
-            .fold(Aabb::EMPTY, |b, c| b.union(sphere::bounds(c.center, c.radius)));
+            .fold(Aabb::EMPTY, |b, c| {
+                b.union(sphere::bounds(c.center, c.radius))
+            });
         (!bounds.is_empty()).then(|| Blob {
             parts: parts.to_vec(),
             threshold,

@@ -10,8 +10,16 @@ use glam::DAffine3;
 
 use super::node::{Geom, MeshRef, Node};
 use super::{
-    aabox::Cuboid, blob::Blob, cone::Cone, cylinder::Cylinder, disk::Disk, mesh::MeshData,
-    polygon::{Polygon, PolygonError}, quad::Quad, torus::Torus, triangle::Triangle,
+    aabox::Cuboid,
+    blob::Blob,
+    cone::Cone,
+    cylinder::Cylinder,
+    disk::Disk,
+    mesh::MeshData,
+    polygon::{Polygon, PolygonError},
+    quad::Quad,
+    torus::Torus,
+    triangle::Triangle,
 };
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::ir::{Material, MaterialId, Object, Scene, Shape};
@@ -58,14 +66,22 @@ impl Builder {
         let material = o.material.unwrap_or(inherited);
         let t = &o.transform;
         let det = t.matrix3.determinant();
-        let scale = t.matrix3.x_axis.length().max(t.matrix3.y_axis.length()).max(t.matrix3.z_axis.length());
+        let scale = t
+            .matrix3
+            .x_axis
+            .length()
+            .max(t.matrix3.y_axis.length())
+            .max(t.matrix3.z_axis.length());
         if !(det.is_finite() && t.translation.is_finite())
             || det.abs() <= 1e-12 * scale * scale * scale
         {
             self.error(
                 o,
                 "rtc::geometry::singular_transform",
-                format!("the transform of this {} cannot be inverted", o.shape.kind_name()),
+                format!(
+                    "the transform of this {} cannot be inverted",
+                    o.shape.kind_name()
+                ),
                 "this object is flattened to zero thickness (or has a non-finite transform)",
                 "give every scale factor a non-zero value",
             );
@@ -120,8 +136,12 @@ impl Builder {
             },
             Shape::Polygon { points } => match Polygon::new(points) {
                 Ok(p) => Geom::Polygon(p),
-                Err(PolygonError::TooFew) => return self.degenerate(o, "it needs at least 3 points"),
-                Err(PolygonError::Degenerate) => return self.degenerate(o, "its points enclose no area"),
+                Err(PolygonError::TooFew) => {
+                    return self.degenerate(o, "it needs at least 3 points");
+                }
+                Err(PolygonError::Degenerate) => {
+                    return self.degenerate(o, "its points enclose no area");
+                }
                 Err(PolygonError::NotPlanar) => {
                     self.error(
                         o,
@@ -139,7 +159,10 @@ impl Builder {
                 radius,
             } => match Disk::new(*center, *normal, *radius) {
                 Some(d) => Geom::Disk(d),
-                None => return self.degenerate(o, "its radius must be positive and its normal non-zero"),
+                None => {
+                    return self
+                        .degenerate(o, "its radius must be positive and its normal non-zero");
+                }
             },
             Shape::Cylinder {
                 base,
@@ -148,7 +171,9 @@ impl Builder {
                 capped,
             } => match Cylinder::new(*base, *top, *radius, *capped) {
                 Some(c) => Geom::Cylinder(c),
-                None => return self.degenerate(o, "its ends must differ and its radius be positive"),
+                None => {
+                    return self.degenerate(o, "its ends must differ and its radius be positive");
+                }
             },
             Shape::Cone {
                 base,
@@ -159,10 +184,7 @@ impl Builder {
             } => match Cone::new(*base, *top, *base_radius, *top_radius, *capped) {
                 Some(c) => Geom::Cone(c),
                 None => {
-                    return self.degenerate(
-                        o,
-                        "its ends must differ, radii be ≥ 0 and not both 0",
-                    );
+                    return self.degenerate(o, "its ends must differ, radii be ≥ 0 and not both 0");
                 }
             },
             Shape::Torus {
@@ -202,9 +224,15 @@ impl Builder {
                         Some(n) if !n.is_solid() => {
                             ok = false;
                             let what = match &c.shape {
-                                Shape::Mesh { path, .. } => format!("the mesh `{}` is not closed", path.display()),
-                                Shape::Cylinder { .. } | Shape::Cone { .. } => format!("this {} is open", c.shape.kind_name()),
-                                other => format!("a {} is a surface, not a solid", other.kind_name()),
+                                Shape::Mesh { path, .. } => {
+                                    format!("the mesh `{}` is not closed", path.display())
+                                }
+                                Shape::Cylinder { .. } | Shape::Cone { .. } => {
+                                    format!("this {} is open", c.shape.kind_name())
+                                }
+                                other => {
+                                    format!("a {} is a surface, not a solid", other.kind_name())
+                                }
                             };
                             self.diagnostics.push(
                                 Diagnostic::error(
@@ -329,6 +357,11 @@ pub fn validate_scene_geometry(scene: &Scene) -> Diagnostics {
 /// Whether `t` maps space onto space (for callers checking one transform).
 pub fn is_invertible(t: &DAffine3) -> bool {
     let det = t.matrix3.determinant();
-    let s = t.matrix3.x_axis.length().max(t.matrix3.y_axis.length()).max(t.matrix3.z_axis.length());
+    let s = t
+        .matrix3
+        .x_axis
+        .length()
+        .max(t.matrix3.y_axis.length())
+        .max(t.matrix3.z_axis.length());
     det.is_finite() && det.abs() > 1e-12 * s * s * s
 }

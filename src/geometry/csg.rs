@@ -50,7 +50,13 @@ pub fn crossings(op: CsgOp, children: &[Node], ray: &Ray, out: &mut Vec<NodeCros
 
 /// Nearest hit in (t_min, t_max). A union keeps its operands' inner surfaces (visible through
 /// transparent materials); merge, intersection and difference show only the result's boundary.
-pub fn intersect(op: CsgOp, children: &[Node], ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+pub fn intersect(
+    op: CsgOp,
+    children: &[Node],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<GeoHit> {
     if op == CsgOp::Union {
         let mut best: Option<GeoHit> = None;
         let mut far = t_max;

@@ -40,13 +40,19 @@ impl AxisFrame {
     pub fn uv(&self, p: DVec3) -> DVec2 {
         let w = p - self.base;
         let angle = w.dot(self.e2).atan2(w.dot(self.e1)).rem_euclid(TAU);
-        DVec2::new(angle / TAU, (w.dot(self.axis) / self.height).clamp(0.0, 1.0))
+        DVec2::new(
+            angle / TAU,
+            (w.dot(self.axis) / self.height).clamp(0.0, 1.0),
+        )
     }
 
     /// Bounds of a disk of `radius` centred on the axis at height `y`.
     pub fn disk_bounds(&self, y: f64, radius: f64) -> Aabb {
         let c = self.base + y * self.axis;
-        let ext = radius * (DVec3::ONE - self.axis * self.axis).max(DVec3::ZERO).powf(0.5);
+        let ext = radius
+            * (DVec3::ONE - self.axis * self.axis)
+                .max(DVec3::ZERO)
+                .powf(0.5);
         Aabb::new(c - ext, c + ext)
     }
 
@@ -100,7 +106,11 @@ impl Cylinder {
         let dp = ray.dir - ray.dir.dot(f.axis) * f.axis;
         let a = dp.length_squared();
         if a > 0.0
-            && let Some((t0, t1)) = quadratic(a, 2.0 * wp.dot(dp), wp.length_squared() - self.radius * self.radius)
+            && let Some((t0, t1)) = quadratic(
+                a,
+                2.0 * wp.dot(dp),
+                wp.length_squared() - self.radius * self.radius,
+            )
         {
             for (i, t) in [t0, t1].into_iter().enumerate() {
                 let p = ray.at(t);
@@ -141,7 +151,8 @@ impl Cylinder {
         let f = &self.frame;
         let w = p - f.base;
         let y = w.dot(f.axis);
-        (0.0..=f.height).contains(&y) && (w - y * f.axis).length_squared() <= self.radius * self.radius
+        (0.0..=f.height).contains(&y)
+            && (w - y * f.axis).length_squared() <= self.radius * self.radius
     }
 
     /// Object-space bounds.

@@ -60,7 +60,10 @@ impl Disk {
 
     /// Object-space bounds (tight per axis: radius·√(1 − n_i²)).
     pub fn bounds(&self) -> Aabb {
-        let ext = self.radius * (DVec3::ONE - self.normal * self.normal).max(DVec3::ZERO).powf(0.5);
+        let ext = self.radius
+            * (DVec3::ONE - self.normal * self.normal)
+                .max(DVec3::ZERO)
+                .powf(0.5);
         Aabb::new(self.center - ext, self.center + ext)
     }
 }

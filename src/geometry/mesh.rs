@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 
-use super::bvh::{Bvh, to_f32_ray_inv};
+use super::bvh::{Bvh, BvhKind, to_f32_ray_inv};
 use super::mesh_error::{MeshError, locate};
 use super::triangle::ShearedRay;
 use super::{Aabb, Ray};
@@ -16,6 +16,14 @@ use crate::ir::Material;
 
 /// Faces meeting at less than this angle share smoothed normals; sharper edges stay creased.
 pub const CREASE_ANGLE_DEG: f64 = 60.0;
+
+/// Above this many triangles a mesh's BVH is built for speed rather than quality.
+pub const LARGE_MESH: usize = 300_000;
+
+/// Above this many triangles a mesh gets a binary BVH: ~20 % less build time than the wide
+/// one (measured on 1.1M triangles) at ~1.7× the tracing time, so only where building
+/// dominates.
+pub const HUGE_MESH: usize = 4_000_000;
 
 /// A loaded mesh, shared (`Arc`) by every object that places the same file.
 #[derive(Debug)]
@@ -119,10 +127,16 @@ impl MeshData {
                 }
             };
             // Only what will be used: file normals for smooth shading, uvs when present.
-            let n_idx = if smooth { pick(&m.normal_indices, m.normals.len(), 3) } else { None };
+            let n_idx = if smooth {
+                pick(&m.normal_indices, m.normals.len(), 3)
+            } else {
+                None
+            };
             let t_idx = pick(&m.texcoord_indices, m.texcoords.len(), 2);
             for (k, f) in m.indices.chunks_exact(3).enumerate() {
-                let corner = |idx: &Option<Vec<u32>>, c: usize| idx.as_ref().and_then(|v| v.get(3 * k + c).copied());
+                let corner = |idx: &Option<Vec<u32>>, c: usize| {
+                    idx.as_ref().and_then(|v| v.get(3 * k + c).copied())
+                };
                 let (Some(a), Some(b), Some(c)) = (pos(f[0]), pos(f[1]), pos(f[2])) else {
                     return Err(MeshError::new("a face refers to a missing vertex", None));
                 };
@@ -170,7 +184,9 @@ impl MeshData {
         if tris.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
         }
-        let usable = |n: &Option<[Vec3; 3]>| n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO));
+        let usable = |n: &Option<[Vec3; 3]>| {
+            n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO))
+        };
         let normals = if smooth {
             if file_normals.iter().all(usable) {
                 file_normals.into_iter().flatten().collect()
@@ -192,7 +208,8 @@ impl MeshData {
         // Rays are traversed in f32 from near the mesh; pad every box by a few ulps of the
         // mesh's coordinates so rounding in the slab test cannot cull a triangle the exact
         // ray touches (a ray through a vertex at the corner of every adjacent box).
-        let reach = bounds.min.abs().max(bounds.max.abs()).max_element() + (bounds.max - bounds.min).length();
+        let reach = bounds.min.abs().max(bounds.max.abs()).max_element()
+            + (bounds.max - bounds.min).length();
         let pad = Vec3A::splat((4.0 * f32::EPSILON as f64 * reach) as f32);
         let boxes: Vec<_> = tris
             .iter()
@@ -205,10 +222,15 @@ impl MeshData {
             &boxes,
             (0..tris.len() as u32).collect(),
             // Better trees pay off until the build itself dominates (time to first ray).
-            if tris.len() <= 300_000 {
+            if tris.len() <= LARGE_MESH {
                 BvhBuildParams::medium_build()
             } else {
                 BvhBuildParams::fast_build()
+            },
+            if tris.len() <= HUGE_MESH {
+                BvhKind::Wide
+            } else {
+                BvhKind::Binary
             },
         );
         let reorder = |i: u32| i as usize;
@@ -322,7 +344,12 @@ impl MeshData {
 
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
-    fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, obvhs::ray::Ray, f32)> {
+    fn near(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<(f64, ShearedRay, obvhs::ray::Ray, f32)> {
         // Slab test against the mesh bounds, keeping the reciprocal for the f32 ray.
         let inv = ray.dir.recip();
         let t0 = (self.bounds.min - ray.origin) * inv;
@@ -345,13 +372,14 @@ impl MeshData {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<MeshHit> {
         let (s, sr, r, lo) = self.near(ray, t_min, t_max)?;
         let mut best: Option<(usize, f32, [f32; 3])> = None;
-        self.bvh.closest(r, |slot, t_far| match sr.intersect(&self.tris[slot]) {
-            Some((t, b)) if t > lo && t < t_far => {
-                best = Some((slot, t, b));
-                t
-            }
-            _ => f32::INFINITY,
-        });
+        self.bvh
+            .closest(r, |slot, t_far| match sr.intersect(&self.tris[slot]) {
+                Some((t, b)) if t > lo && t < t_far => {
+                    best = Some((slot, t, b));
+                    t
+                }
+                _ => f32::INFINITY,
+            });
         let (slot, t, b) = best?;
         let mut h = self.hit(slot, t, b);
         h.t += s;
@@ -424,7 +452,10 @@ fn smooth_normals(tris: &[[Vec3A; 3]]) -> Vec<[Vec3; 3]> {
     for t in tris {
         for p in t {
             let n = ids.len() as u32;
-            corner.push(*ids.entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]).or_insert(n));
+            corner.push(
+                *ids.entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+                    .or_insert(n),
+            );
         }
     }
     let nv = ids.len();

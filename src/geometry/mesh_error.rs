@@ -98,10 +98,16 @@ fn face_is_bad(args: &[&str], e: tobj::LoadError, nv: i64, nt: i64, nn: i64) -> 
             E::FaceParseError => parse_err,
             E::FaceVertexOutOfBounds => !parse_err && !in_range(parts[0], nv),
             E::FaceTexCoordOutOfBounds => {
-                !parse_err && parts.get(1).is_some_and(|p| !p.is_empty() && !in_range(p, nt))
+                !parse_err
+                    && parts
+                        .get(1)
+                        .is_some_and(|p| !p.is_empty() && !in_range(p, nt))
             }
             E::FaceNormalOutOfBounds => {
-                !parse_err && parts.get(2).is_some_and(|p| !p.is_empty() && !in_range(p, nn))
+                !parse_err
+                    && parts
+                        .get(2)
+                        .is_some_and(|p| !p.is_empty() && !in_range(p, nn))
             }
             _ => false,
         }

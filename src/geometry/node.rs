@@ -155,7 +155,8 @@ impl Node {
     fn out(&self, mut h: GeoHit) -> GeoHit {
         if let Some(p) = &self.placement {
             h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
-            h.geometric_normal = (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
+            h.geometric_normal =
+                (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
         }
         h
     }
@@ -258,7 +259,9 @@ impl Node {
                 let dn = normal.dot(r.dir);
                 dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
             }
-            Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r))),
+            Geom::Csg { op, children } => {
+                csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r)))
+            }
             _ => false,
         }
     }
@@ -291,7 +294,9 @@ impl Node {
                 simple(&|o| sphere::crossings(*center, *radius, &r, o))
             }
             Geom::Plane { point, normal } => simple(&|o| {
-                if let Some(h) = plane::intersect(*point, *normal, &r, f64::NEG_INFINITY, f64::INFINITY) {
+                if let Some(h) =
+                    plane::intersect(*point, *normal, &r, f64::NEG_INFINITY, f64::INFINITY)
+                {
                     o.push(Crossing {
                         hit: h,
                         entering: normal.dot(r.dir) < 0.0,

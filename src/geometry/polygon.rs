@@ -49,7 +49,9 @@ impl Polygon {
         let bounds = points
             .iter()
             .fold(Aabb::EMPTY, |b, &p| b.union(Aabb::new(p, p)));
-        let scale = (bounds.max - bounds.min).max_element().max(f64::MIN_POSITIVE);
+        let scale = (bounds.max - bounds.min)
+            .max_element()
+            .max(f64::MIN_POSITIVE);
         if points
             .iter()
             .any(|p| (*p - origin).dot(normal).abs() > 1e-9 * scale)

@@ -180,11 +180,7 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
         return None;
     }
     let q = -0.5 * (b + disc.sqrt().copysign(b));
-    let (t0, t1) = if q == 0.0 {
-        (0.0, 0.0)
-    } else {
-        (q / a, c / q)
-    };
+    let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
     Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
 }
 
@@ -221,7 +217,12 @@ mod tests {
             assert!((got - want).abs() < 1e-12, "{got} vs {want}");
         }
         // x⁴ leading coefficient positive: the last root rises.
-        assert!(roots_in(&c, -10.0, 10.0).iter().last().is_some_and(|r| r.rising));
+        assert!(
+            roots_in(&c, -10.0, 10.0)
+                .iter()
+                .last()
+                .is_some_and(|r| r.rising)
+        );
     }
 
     #[test]
@@ -231,8 +232,14 @@ mod tests {
         assert_eq!(r.len(), 4, "{r:?}");
         // Conditioning limits these two to ~ε·|c|/|p'| ≈ 1e-8; what matters is that both exist.
         assert!(r[0] < r[1], "{r:?}");
-        assert!((r[0] - 1.0).abs() < 5e-8 && (r[1] - 1.0 - 1e-7).abs() < 5e-8, "{r:?}");
-        assert!((r[2] - 2.0).abs() < 1e-12 && (r[3] - 5.0).abs() < 1e-12, "{r:?}");
+        assert!(
+            (r[0] - 1.0).abs() < 5e-8 && (r[1] - 1.0 - 1e-7).abs() < 5e-8,
+            "{r:?}"
+        );
+        assert!(
+            (r[2] - 2.0).abs() < 1e-12 && (r[3] - 5.0).abs() < 1e-12,
+            "{r:?}"
+        );
     }
 
     #[test]

@@ -44,7 +44,11 @@ pub struct Crossing {
 }
 
 /// The first of `candidates` with `t` in (t_min, t_max) (candidates need not be sorted).
-pub(crate) fn nearest(candidates: impl IntoIterator<Item = Hit>, t_min: f64, t_max: f64) -> Option<Hit> {
+pub(crate) fn nearest(
+    candidates: impl IntoIterator<Item = Hit>,
+    t_min: f64,
+    t_max: f64,
+) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     for h in candidates {
         if h.t > t_min && h.t < t_max && best.is_none_or(|b| h.t < b.t) {

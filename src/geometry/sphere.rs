@@ -59,13 +59,21 @@ pub fn bounds(center: DVec3, radius: f64) -> Aabb {
 pub fn crossings(center: DVec3, radius: f64, ray: &Ray, out: &mut Vec<Crossing>) {
     let oc = ray.origin - center;
     let a = ray.dir.length_squared();
-    let Some((t0, t1)) = super::quartic::quadratic(a, 2.0 * oc.dot(ray.dir), oc.length_squared() - radius * radius) else {
+    let Some((t0, t1)) = super::quartic::quadratic(
+        a,
+        2.0 * oc.dot(ray.dir),
+        oc.length_squared() - radius * radius,
+    ) else {
         return;
     };
     for (t, entering) in [(t0, true), (t1, false)] {
         let normal = (ray.at(t) - center).normalize();
         out.push(Crossing {
-            hit: Hit { t, normal, uv: uv(normal) },
+            hit: Hit {
+                t,
+                normal,
+                uv: uv(normal),
+            },
             entering,
         });
     }

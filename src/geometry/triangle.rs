@@ -145,7 +145,8 @@ impl ShearedRay {
             // Rounding never flips the sign of a product difference, it can only reach zero;
             // then the same sheared coordinates give the exact value in f64 (products of two
             // f32 are exact there), so neighbours still agree on every shared edge.
-            let exact = |p: f32, q: f32, r: f32, s: f32| (p as f64 * q as f64 - r as f64 * s as f64) as f32;
+            let exact =
+                |p: f32, q: f32, r: f32, s: f32| (p as f64 * q as f64 - r as f64 * s as f64) as f32;
             u = exact(cx, by, cy, bx);
             vv = exact(ax, cy, ay, cx);
             w = exact(bx, ay, by, ax);

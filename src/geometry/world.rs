@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
 use super::build::Builder;
-use super::bvh::{Bvh, to_f32_box, to_f32_ray};
+use super::bvh::{Bvh, BvhKind, to_f32_box, to_f32_ray};
 use super::node::{GeoHit, Geom, Node};
 use super::{Aabb, Ray};
 use crate::diag::Diagnostic;
@@ -122,7 +122,7 @@ impl World {
         }
         stats.unbounded = loose.len();
         let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
-            let bvh = Bvh::build(&boxes, ids, BvhBuildParams::medium_build());
+            let bvh = Bvh::build(&boxes, ids, BvhBuildParams::medium_build(), BvhKind::Wide);
             stats.bvh_build_time += bvh.build_time;
             stats.memory_bytes += bvh.memory();
             Some(bvh)

@@ -27,9 +27,18 @@ mod tests {
 
     #[test]
     fn intersection_is_the_overlap_and_difference_the_base() {
-        assert_eq!(csg_bounds(CsgOp::Intersection, &[b(0.0, 2.0), b(1.0, 3.0)]), b(1.0, 2.0));
-        assert_eq!(csg_bounds(CsgOp::Difference, &[b(0.0, 2.0), b(-5.0, 5.0)]), b(0.0, 2.0));
-        assert_eq!(csg_bounds(CsgOp::Union, &[b(0.0, 2.0), b(1.0, 3.0)]), b(0.0, 3.0));
+        assert_eq!(
+            csg_bounds(CsgOp::Intersection, &[b(0.0, 2.0), b(1.0, 3.0)]),
+            b(1.0, 2.0)
+        );
+        assert_eq!(
+            csg_bounds(CsgOp::Difference, &[b(0.0, 2.0), b(-5.0, 5.0)]),
+            b(0.0, 2.0)
+        );
+        assert_eq!(
+            csg_bounds(CsgOp::Union, &[b(0.0, 2.0), b(1.0, 3.0)]),
+            b(0.0, 3.0)
+        );
         assert!(csg_bounds(CsgOp::Intersection, &[b(0.0, 1.0), b(2.0, 3.0)]).is_empty());
     }
 }

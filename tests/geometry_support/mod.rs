@@ -31,7 +31,11 @@ impl Rng {
     /// Uniform on the unit sphere.
     pub fn dir(&mut self) -> DVec3 {
         loop {
-            let v = DVec3::new(self.range(-1.0, 1.0), self.range(-1.0, 1.0), self.range(-1.0, 1.0));
+            let v = DVec3::new(
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+            );
             let l = v.length_squared();
             if l > 1e-6 && l <= 1.0 {
                 return v / l.sqrt();
@@ -41,7 +45,11 @@ impl Rng {
 
     /// Uniform in a box.
     pub fn point_in(&mut self, lo: DVec3, hi: DVec3) -> DVec3 {
-        DVec3::new(self.range(lo.x, hi.x), self.range(lo.y, hi.y), self.range(lo.z, hi.z))
+        DVec3::new(
+            self.range(lo.x, hi.x),
+            self.range(lo.y, hi.y),
+            self.range(lo.z, hi.z),
+        )
     }
 }
 
@@ -68,7 +76,11 @@ pub fn scene(objects: Vec<Object>) -> Scene {
             span: Span::default(),
         },
         lights: Vec::new(),
-        materials: vec![Material::default(), Material::default(), Material::default()],
+        materials: vec![
+            Material::default(),
+            Material::default(),
+            Material::default(),
+        ],
         textures: Vec::new(),
         objects,
         settings: RenderSettings::default(),
