@@ -346,11 +346,14 @@ fn x16() {
 }
 
 fn main() {
-    // `cargo bench` passes `--bench`; a name filter picks one part.
-    let filter: Vec<String> = std::env::args()
-        .skip(1)
-        .filter(|a| !a.starts_with("--"))
-        .collect();
+    // `cargo bench` passes `--bench`; `cargo test --all-targets` does not, and must stay quick.
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if !args.iter().any(|a| a == "--bench") {
+        println!("geometry benchmarks: run `cargo bench --bench geometry [duck|bunny|ogre|x16]`");
+        return;
+    }
+    // A name filter picks one part.
+    let filter: Vec<String> = args.into_iter().filter(|a| !a.starts_with("--")).collect();
     let want = |n: &str| filter.is_empty() || filter.iter().any(|f| n.contains(f.as_str()));
     if want("duck") {
         duck();
