@@ -1,6 +1,7 @@
 //! The world the renderer queries: every object prepared for intersection in world space,
 //! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
+use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 use glam::{DVec2, DVec3};
@@ -160,13 +161,13 @@ impl World {
     }
 
     /// The material behind a hit's id: the scene's, or one converted from a mesh's MTL file.
+    /// An id from neither (not one this world produced) gives the default material.
     pub fn material<'a>(&'a self, scene: &'a Scene, id: MaterialId) -> &'a Material {
+        static DEFAULT: OnceLock<Material> = OnceLock::new();
+        let fallback = || DEFAULT.get_or_init(Material::default);
         match id.0.checked_sub(self.material_base) {
-            Some(i) => self
-                .extra_materials
-                .get(i as usize)
-                .unwrap_or(&self.extra_materials[0]),
-            None => scene.material(id),
+            Some(i) => self.extra_materials.get(i as usize).unwrap_or_else(fallback),
+            None => scene.materials.get(id.0 as usize).unwrap_or_else(fallback),
         }
     }
 
