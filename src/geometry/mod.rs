@@ -4,11 +4,29 @@
 //! object's affine transform (normals by the inverse transpose).
 
 pub mod aabb;
+#[path = "box.rs"]
+pub mod aabox;
+pub mod blob;
+pub mod build;
+pub mod bvh;
+pub mod cone;
+pub mod csg;
+pub mod cylinder;
+pub mod disk;
+pub mod mesh;
+pub mod mesh_error;
+pub mod node;
 pub mod plane;
+pub mod polygon;
+pub mod quad;
+pub mod quartic;
 pub mod ray;
 pub mod sphere;
+pub mod torus;
+pub mod triangle;
 pub mod world;
 
 pub use aabb::Aabb;
-pub use ray::{Hit, Ray};
-pub use world::{SurfaceHit, World};
+pub use build::validate_scene_geometry;
+pub use ray::{Crossing, Hit, Ray};
+pub use world::{SurfaceHit, World, WorldStats};

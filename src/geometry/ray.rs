@@ -33,3 +33,27 @@ pub struct Hit {
     /// Surface coordinates in [0, 1]².
     pub uv: DVec2,
 }
+
+/// A place where a ray crosses the boundary of a closed solid (for CSG classification).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// The surface hit.
+    pub hit: Hit,
+    /// True when the ray goes from outside to inside here.
+    pub entering: bool,
+}
+
+/// The first of `candidates` with `t` in (t_min, t_max) (candidates need not be sorted).
+pub(crate) fn nearest(
+    candidates: impl IntoIterator<Item = Hit>,
+    t_min: f64,
+    t_max: f64,
+) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    for h in candidates {
+        if h.t > t_min && h.t < t_max && best.is_none_or(|b| h.t < b.t) {
+            best = Some(h);
+        }
+    }
+    best
+}

@@ -4,7 +4,7 @@ use std::f64::consts::PI;
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray};
 
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).
 ///
@@ -31,7 +31,7 @@ pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) 
     } else {
         return None;
     };
-    let normal = (ray.at(t) - center) / radius;
+    let normal = (ray.at(t) - center).normalize();
     Some(Hit {
         t,
         normal,
@@ -53,4 +53,33 @@ pub fn uv(n: DVec3) -> DVec2 {
 /// Object-space bounds.
 pub fn bounds(center: DVec3, radius: f64) -> Aabb {
     Aabb::new(center - radius, center + radius)
+}
+
+/// Both boundary crossings along the whole line of `ray` (entering first).
+pub fn crossings(center: DVec3, radius: f64, ray: &Ray, out: &mut Vec<Crossing>) {
+    let oc = ray.origin - center;
+    let a = ray.dir.length_squared();
+    let Some((t0, t1)) = super::quartic::quadratic(
+        a,
+        2.0 * oc.dot(ray.dir),
+        oc.length_squared() - radius * radius,
+    ) else {
+        return;
+    };
+    for (t, entering) in [(t0, true), (t1, false)] {
+        let normal = (ray.at(t) - center).normalize();
+        out.push(Crossing {
+            hit: Hit {
+                t,
+                normal,
+                uv: uv(normal),
+            },
+            entering,
+        });
+    }
+}
+
+/// True when `p` is inside or on the sphere.
+pub fn contains(center: DVec3, radius: f64, p: DVec3) -> bool {
+    (p - center).length_squared() <= radius * radius
 }

@@ -1,10 +1,18 @@
-//! The world the renderer queries: every object prepared for intersection in world space.
+//! The world the renderer queries: every object prepared for intersection in world space,
+//! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
-use glam::{DAffine3, DMat3, DVec2, DVec3};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
 
-use super::{Aabb, Hit, Ray, plane, sphere};
+use glam::{DVec2, DVec3};
+use obvhs::BvhBuildParams;
+
+use super::build::Builder;
+use super::bvh::{Bvh, BvhKind, to_f32_box, to_f32_ray};
+use super::node::{GeoHit, Geom, Node};
+use super::{Aabb, Ray};
 use crate::diag::Diagnostic;
-use crate::ir::{MaterialId, Object, Scene, Shape};
+use crate::ir::{Material, MaterialId, Scene};
 
 /// A world-space hit with everything shading needs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -13,150 +21,250 @@ pub struct SurfaceHit {
     pub t: f64,
     /// World-space hit point.
     pub point: DVec3,
-    /// Unit outward normal in world space (not flipped towards the ray).
+    /// Unit outward normal in world space (not flipped towards the ray); on smooth meshes the
+    /// interpolated shading normal.
     pub normal: DVec3,
+    /// Unit outward geometric normal (the true surface's; use it for ray offsets).
+    pub geometric_normal: DVec3,
     /// Surface coordinates.
     pub uv: DVec2,
     /// Hit point in the object's own space (for solid textures).
     pub local_point: DVec3,
-    /// The material to shade with.
+    /// The material to shade with (ids past `Scene::materials` are MTL materials: see
+    /// [`World::material`]).
     pub material: MaterialId,
     /// Index of the top-level object in `Scene::objects`.
     pub object: u32,
 }
 
-/// One intersectable primitive.
-#[derive(Clone, Debug)]
-struct Primitive {
-    shape: Shape,
-    /// `None` for the identity: the ray is used as is.
-    to_object: Option<DAffine3>,
-    normal_to_world: DMat3,
-    material: MaterialId,
-    object: u32,
-    bounds: Aabb,
+/// Counters for `rtc render --stats`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WorldStats {
+    /// Top-level objects.
+    pub objects: usize,
+    /// Objects outside the BVH (unbounded).
+    pub unbounded: usize,
+    /// Distinct mesh files loaded.
+    pub meshes: usize,
+    /// Triangles stored (each loaded file once).
+    pub unique_triangles: usize,
+    /// Triangles in the scene counting every instance.
+    pub instanced_triangles: usize,
+    /// Time to prepare the world (mesh loading included).
+    pub build_time: Duration,
+    /// Time spent building BVHs (top level and meshes).
+    pub bvh_build_time: Duration,
+    /// Approximate heap bytes of the geometry and BVHs.
+    pub memory_bytes: usize,
 }
 
-/// All primitives of a scene, ready for ray queries.
+/// All objects of a scene, ready for ray queries.
 #[derive(Clone, Debug)]
 pub struct World {
-    prims: Vec<Primitive>,
+    nodes: Vec<Node>,
+    /// Scene object index of each node.
+    object_of: Vec<u32>,
+    /// Top level over the bounded nodes (`None` when a linear scan is as fast).
+    bvh: Option<Bvh>,
+    /// Nodes tested beside the BVH (all of them when there is no BVH).
+    loose: Vec<u32>,
+    extra_materials: Vec<Material>,
+    material_base: u32,
+    stats: WorldStats,
 }
 
+/// Below this many bounded objects a linear scan beats the BVH's f32 set-up.
+const MIN_BVH_OBJECTS: usize = 5;
+
 impl World {
-    /// Prepares a scene; `fallback` is the material for objects that name none.
+    /// Prepares a scene; `fallback` is the material for objects that name none. Returns the
+    /// first error; [`super::validate_scene_geometry`] lists them all.
+    #[allow(clippy::result_large_err)] // the contract's signature: a plain `Diagnostic`
     pub fn build(scene: &Scene, fallback: MaterialId) -> Result<World, Diagnostic> {
-        let mut prims = Vec::with_capacity(scene.objects.len());
+        let start = Instant::now();
+        let mut b = Builder::new(scene);
+        let mut nodes = Vec::with_capacity(scene.objects.len());
+        let mut object_of = Vec::with_capacity(scene.objects.len());
         for (i, o) in scene.objects.iter().enumerate() {
-            prims.push(prepare(o, i as u32, o.material.unwrap_or(fallback))?);
+            match b.object(o, fallback) {
+                Some(n) => {
+                    nodes.push(n);
+                    object_of.push(i as u32);
+                }
+                None => break,
+            }
         }
-        Ok(World { prims })
+        if let Some(d) = b.diagnostics.items.iter().find(|d| d.is_error()) {
+            return Err(d.clone());
+        }
+        let mut stats = WorldStats {
+            objects: nodes.len(),
+            ..WorldStats::default()
+        };
+        for m in b.meshes() {
+            stats.meshes += 1;
+            stats.unique_triangles += m.triangle_count();
+            stats.bvh_build_time += m.build_time();
+            stats.memory_bytes += m.memory();
+        }
+        stats.instanced_triangles = nodes.iter().map(instanced_triangles).sum();
+        let mut boxes = Vec::new();
+        let mut ids = Vec::new();
+        let mut loose = Vec::new();
+        for (i, n) in nodes.iter().enumerate() {
+            match to_f32_box(&n.bounds).filter(|_| n.bounds.is_finite()) {
+                Some(bx) => {
+                    boxes.push(bx);
+                    ids.push(i as u32);
+                }
+                None if n.bounds.is_empty() => {}
+                None => loose.push(i as u32),
+            }
+        }
+        stats.unbounded = loose.len();
+        let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
+            let bvh = Bvh::build(&boxes, ids, BvhBuildParams::medium_build(), BvhKind::Wide);
+            stats.bvh_build_time += bvh.build_time;
+            stats.memory_bytes += bvh.memory();
+            Some(bvh)
+        } else {
+            loose.extend(ids);
+            loose.sort_unstable();
+            None
+        };
+        stats.memory_bytes += nodes.len() * std::mem::size_of::<Node>();
+        stats.build_time = start.elapsed();
+        Ok(World {
+            nodes,
+            object_of,
+            bvh,
+            loose,
+            extra_materials: b.extra_materials,
+            material_base: scene.materials.len() as u32,
+            stats,
+        })
     }
 
-    /// Number of primitives.
+    /// Number of top-level objects.
     pub fn len(&self) -> usize {
-        self.prims.len()
+        self.nodes.len()
     }
 
     /// True when there is nothing to hit.
     pub fn is_empty(&self) -> bool {
-        self.prims.is_empty()
+        self.nodes.is_empty()
+    }
+
+    /// Build counters.
+    pub fn stats(&self) -> WorldStats {
+        self.stats
+    }
+
+    /// The material behind a hit's id: the scene's, or one converted from a mesh's MTL file.
+    /// An id from neither (not one this world produced) gives the default material.
+    pub fn material<'a>(&'a self, scene: &'a Scene, id: MaterialId) -> &'a Material {
+        static DEFAULT: OnceLock<Material> = OnceLock::new();
+        let fallback = || DEFAULT.get_or_init(Material::default);
+        match id.0.checked_sub(self.material_base) {
+            Some(i) => self.extra_materials.get(i as usize).unwrap_or_else(fallback),
+            None => scene.materials.get(id.0 as usize).unwrap_or_else(fallback),
+        }
+    }
+
+    /// Materials added from MTL files, with ids from `Scene::materials.len()` on.
+    pub fn extra_materials(&self) -> &[Material] {
+        &self.extra_materials
     }
 
     /// Bounds of everything finite.
     pub fn bounds(&self) -> Aabb {
-        self.prims
+        self.nodes
             .iter()
-            .filter(|p| p.bounds.is_finite())
-            .fold(Aabb::EMPTY, |b, p| b.union(p.bounds))
+            .filter(|n| n.bounds.is_finite())
+            .fold(Aabb::EMPTY, |b, n| b.union(n.bounds))
     }
 
     /// The nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<SurfaceHit> {
-        let mut best: Option<(Hit, &Primitive)> = None;
-        let mut t_far = t_max;
-        for p in &self.prims {
-            if let Some(h) = p.intersect(ray, t_min, t_far) {
-                t_far = h.t;
-                best = Some((h, p));
+        let mut best: Option<(GeoHit, u32)> = None;
+        let mut far = t_max;
+        for &i in &self.loose {
+            if let Some(h) = self.nodes[i as usize].intersect(ray, t_min, far) {
+                far = h.t;
+                best = Some((h, i));
             }
         }
-        best.map(|(h, p)| p.surface_hit(ray, h))
+        if let Some(bvh) = &self.bvh {
+            match to_f32_ray(ray.origin, ray.dir, far) {
+                Some(r) => bvh.closest(r, |slot, _| {
+                    let i = bvh.order[slot];
+                    match self.nodes[i as usize].intersect(ray, t_min, far) {
+                        Some(h) => {
+                            far = h.t;
+                            best = Some((h, i));
+                            (h.t as f32).next_up()
+                        }
+                        None => f32::INFINITY,
+                    }
+                }),
+                None => {
+                    for &i in &bvh.order {
+                        if let Some(h) = self.nodes[i as usize].intersect(ray, t_min, far) {
+                            far = h.t;
+                            best = Some((h, i));
+                        }
+                    }
+                }
+            }
+        }
+        best.map(|(h, i)| SurfaceHit {
+            t: h.t,
+            point: ray.at(h.t),
+            normal: h.normal,
+            geometric_normal: h.geometric_normal,
+            uv: h.uv,
+            local_point: h.local_point,
+            material: h.material,
+            object: self.object_of[i as usize],
+        })
     }
 
     /// True when anything lies in (t_min, t_max) along the ray (shadow rays: any hit ends it).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        self.prims
+        if self
+            .loose
             .iter()
-            .any(|p| p.intersect(ray, t_min, t_max).is_some())
-    }
-}
-
-fn prepare(o: &Object, index: u32, material: MaterialId) -> Result<Primitive, Diagnostic> {
-    let local = match &o.shape {
-        Shape::Sphere { center, radius } => sphere::bounds(*center, *radius),
-        Shape::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
-        other => {
-            return Err(Diagnostic::error(
-                "rtc::render::unsupported_shape",
-                o.span,
-                format!("the renderer cannot draw a {} yet", other.kind_name()),
-            )
-            .with_label("this object")
-            .with_help("use spheres and planes, or remove this object"));
+            .any(|&i| self.nodes[i as usize].occluded(ray, t_min, t_max))
+        {
+            return true;
         }
-    };
-    let identity = o.transform == DAffine3::IDENTITY;
-    let bounds = if identity {
-        local
-    } else {
-        local.transformed(&o.transform)
-    };
-    Ok(Primitive {
-        shape: o.shape.clone(),
-        to_object: (!identity).then(|| o.transform.inverse()),
-        normal_to_world: o.transform.matrix3.inverse().transpose(),
-        material,
-        object: index,
-        bounds,
-    })
-}
-
-impl Primitive {
-    fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        // Object-space rays keep an unnormalised direction, so t is the same in both spaces.
-        let local = match &self.to_object {
-            None => *ray,
-            Some(m) => Ray::new(m.transform_point3(ray.origin), m.transform_vector3(ray.dir)),
+        let Some(bvh) = &self.bvh else {
+            return false;
         };
-        match &self.shape {
-            Shape::Sphere { center, radius } => {
-                sphere::intersect(*center, *radius, &local, t_min, t_max)
-            }
-            Shape::Plane { point, normal } => {
-                plane::intersect(*point, *normal, &local, t_min, t_max)
-            }
-            _ => None,
+        match to_f32_ray(ray.origin, ray.dir, t_max) {
+            Some(r) => bvh.any(r, |slot| {
+                self.nodes[bvh.order[slot] as usize].occluded(ray, t_min, t_max)
+            }),
+            None => bvh
+                .order
+                .iter()
+                .any(|&i| self.nodes[i as usize].occluded(ray, t_min, t_max)),
         }
     }
 
-    fn surface_hit(&self, ray: &Ray, h: Hit) -> SurfaceHit {
-        let point = ray.at(h.t);
-        let (normal, local_point) = match &self.to_object {
-            None => (h.normal, point),
-            Some(m) => (
-                (self.normal_to_world * h.normal).normalize(),
-                m.transform_point3(point),
-            ),
-        };
-        SurfaceHit {
-            t: h.t,
-            point,
-            normal,
-            uv: h.uv,
-            local_point,
-            material: self.material,
-            object: self.object,
-        }
+    /// Whether a world point is inside the solid object `object` (CSG checks and tests).
+    pub fn contains(&self, object: u32, p: DVec3) -> bool {
+        self.object_of
+            .iter()
+            .position(|&o| o == object)
+            .is_some_and(|i| self.nodes[i].contains(p))
+    }
+}
+
+fn instanced_triangles(n: &Node) -> usize {
+    match &n.geom {
+        Geom::Mesh(m) => m.data.triangle_count(),
+        Geom::Csg { children, .. } => children.iter().map(instanced_triangles).sum(),
+        _ => 0,
     }
 }

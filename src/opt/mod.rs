@@ -1,5 +1,6 @@
 //! Scene analysis and optimisation between the IR and the renderer.
 
+pub mod bounds;
 pub mod effects;
 
 pub use effects::Effects;

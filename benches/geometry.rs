@@ -1,0 +1,370 @@
+//! Geometry benchmarks (run: `cargo bench --bench geometry`, or `benches/meshes.sh`).
+//!
+//! Scene B of ../shared/peers (same camera and light as tools/meshcam.py: 35° fov from +z at
+//! the bounding-box centre, 800×800 pixel centres, one primary + one shadow ray per hit), the
+//! devil duck at 400×400 with 3×3 supersampling, and the 1.1M-triangle bunny-x16 (time to
+//! first ray). Rays go through `World` directly with a pinhole camera written here; shading
+//! is a plain Phong evaluation so the duck figure approximates a whole render.
+//! Large models are looked up in /work/shared/models and the peers' work directory (or
+//! `RTC_MODELS`); a missing one is skipped with a message.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use glam::{DAffine3, DVec3};
+use rayon::prelude::*;
+use rtc::geometry::{Ray, World};
+use rtc::ir::{Camera, Material, MaterialId, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::source::Span;
+
+const REPS: usize = 5;
+
+fn find(name: &str) -> Option<PathBuf> {
+    let mut dirs: Vec<PathBuf> = Vec::new();
+    if let Ok(d) = std::env::var("RTC_MODELS") {
+        dirs.push(d.into());
+    }
+    dirs.extend(
+        [
+            "/work/shared/models",
+            "/work/shared/peers/work",
+            "tests/data/course/models",
+        ]
+        .map(PathBuf::from),
+    );
+    dirs.into_iter().map(|d| d.join(name)).find(|p| p.exists())
+}
+
+fn scene_of(path: &Path, smooth: bool) -> Scene {
+    Scene {
+        camera: Camera {
+            eye: DVec3::Z,
+            center: DVec3::ZERO,
+            up: DVec3::Y,
+            width: 1,
+            height: 1,
+            projection: Projection::Perspective { fov_y: 0.6 },
+            aperture: 0.0,
+            focus_distance: 1.0,
+            span: Span::default(),
+        },
+        lights: Vec::new(),
+        materials: vec![Material::default()],
+        textures: Vec::new(),
+        objects: vec![Object {
+            shape: Shape::Mesh {
+                path: path.to_path_buf(),
+                smooth,
+                use_mtl: true,
+            },
+            transform: DAffine3::IDENTITY,
+            material: None,
+            span: Span::default(),
+        }],
+        settings: RenderSettings::default(),
+    }
+}
+
+/// meshcam.py's camera and light for a world's bounds.
+struct Cam {
+    eye: DVec3,
+    right: DVec3,
+    up: DVec3,
+    forward: DVec3,
+    tan: f64,
+    light: DVec3,
+    scale: f64,
+}
+
+fn camera(w: &World) -> Cam {
+    let b = w.bounds();
+    let c = b.center();
+    let half = 0.5 * (b.max - b.min);
+    let s = half.x.max(half.y);
+    let fov = 35f64.to_radians();
+    let d = half.z + 1.15 * s / (fov / 2.0).tan();
+    Cam {
+        eye: c + DVec3::new(0.0, 0.0, d),
+        right: DVec3::X,
+        up: DVec3::Y,
+        forward: -DVec3::Z,
+        tan: (fov / 2.0).tan(),
+        light: c + DVec3::new(-0.6 * d, 0.8 * d, 0.9 * d),
+        scale: (b.max - b.min).length(),
+    }
+}
+
+impl Cam {
+    fn ray(&self, x: f64, y: f64, w: u32, h: u32) -> Ray {
+        let sx = (2.0 * x / w as f64 - 1.0) * self.tan;
+        let sy = (1.0 - 2.0 * y / h as f64) * self.tan;
+        Ray::new(
+            self.eye,
+            (self.forward + sx * self.right + sy * self.up).normalize(),
+        )
+    }
+}
+
+#[derive(Default, Clone, Copy)]
+struct Count {
+    primary: u64,
+    hits: u64,
+    shadow: u64,
+    lit: u64,
+    shade: f64,
+}
+
+impl std::ops::Add for Count {
+    type Output = Count;
+    fn add(self, o: Count) -> Count {
+        Count {
+            primary: self.primary + o.primary,
+            hits: self.hits + o.hits,
+            shadow: self.shadow + o.shadow,
+            lit: self.lit + o.lit,
+            shade: self.shade + o.shade,
+        }
+    }
+}
+
+/// Traces one row: `ss×ss` pixel samples, a shadow ray per hit, Phong shading.
+fn row(w: &World, cam: &Cam, y: u32, width: u32, height: u32, ss: u32, shadows: bool) -> Count {
+    let mut c = Count::default();
+    for x in 0..width {
+        for j in 0..ss {
+            for i in 0..ss {
+                let fx = x as f64 + (i as f64 + 0.5) / ss as f64;
+                let fy = y as f64 + (j as f64 + 0.5) / ss as f64;
+                let ray = cam.ray(fx, fy, width, height);
+                c.primary += 1;
+                let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
+                    continue;
+                };
+                c.hits += 1;
+                let to_light = cam.light - h.point;
+                let dist = to_light.length();
+                let l = to_light / dist;
+                let n = if h.normal.dot(ray.dir) > 0.0 {
+                    -h.normal
+                } else {
+                    h.normal
+                };
+                let ng = if h.geometric_normal.dot(ray.dir) > 0.0 {
+                    -h.geometric_normal
+                } else {
+                    h.geometric_normal
+                };
+                let mut v = 0.2;
+                if shadows {
+                    c.shadow += 1;
+                    let origin = h.point + 1e-4 * cam.scale * ng;
+                    if w.occluded(&Ray::new(origin, l), 0.0, dist) {
+                        c.shade += v;
+                        continue;
+                    }
+                    c.lit += 1;
+                }
+                let ndl = n.dot(l).max(0.0);
+                let r = 2.0 * ndl * n - l;
+                v += 0.7 * ndl + 0.3 * r.dot(-ray.dir).max(0.0).powf(32.0);
+                c.shade += v;
+            }
+        }
+    }
+    c
+}
+
+fn trace(
+    w: &World,
+    cam: &Cam,
+    size: u32,
+    ss: u32,
+    shadows: bool,
+    threads: usize,
+) -> (Duration, Count) {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("pool");
+    let start = Instant::now();
+    let c = pool.install(|| {
+        (0..size)
+            .into_par_iter()
+            .map(|y| row(w, cam, y, size, size, ss, shadows))
+            .reduce(Count::default, |a, b| a + b)
+    });
+    (start.elapsed(), c)
+}
+
+/// Process CPU time (user + system) from /proc/self/stat, in seconds (USER_HZ = 100 assumed).
+/// On this shared machine wall time depends on everyone else's load; CPU time much less.
+fn cpu_time() -> f64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let rest = stat.rsplit_once(')').map_or("", |(_, r)| r);
+    let f: Vec<f64> = rest
+        .split_whitespace()
+        .map(|x| x.parse().unwrap_or(0.0))
+        .collect();
+    (f.get(11).copied().unwrap_or(0.0) + f.get(12).copied().unwrap_or(0.0)) / 100.0
+}
+
+fn median(mut v: Vec<Duration>) -> Duration {
+    v.sort();
+    v[v.len() / 2]
+}
+
+fn build(path: &Path, smooth: bool) -> (Duration, World) {
+    let start = Instant::now();
+    let w = World::build(&scene_of(path, smooth), MaterialId(0)).expect("model loads");
+    (start.elapsed(), w)
+}
+
+fn report_world(name: &str, load: Duration, w: &World) {
+    let s = w.stats();
+    println!(
+        "{name}: {} triangles; load+build {:.3} s (BVH build {:.3} s); geometry memory ≈ {:.1} MB",
+        s.unique_triangles,
+        load.as_secs_f64(),
+        s.bvh_build_time.as_secs_f64(),
+        s.memory_bytes as f64 / 1e6
+    );
+}
+
+fn scene_b(name: &str, file: &str) {
+    let Some(path) = find(file) else {
+        println!("{name}: skipped ({file} not found; see benches/meshes.sh)");
+        return;
+    };
+    let mut loads = Vec::new();
+    let mut world = None;
+    for _ in 0..REPS.min(3) {
+        let (t, w) = build(&path, false);
+        loads.push(t);
+        world = Some(w);
+    }
+    let w = world.expect("built");
+    report_world(name, median(loads), &w);
+    let cam = camera(&w);
+    for threads in [1, 2] {
+        let mut tp = Vec::new();
+        let mut tb = Vec::new();
+        let mut last = Count::default();
+        let mut cpu_p = Vec::new();
+        for _ in 0..REPS {
+            let c0 = cpu_time();
+            let (t, _) = trace(&w, &cam, 800, 1, false, threads);
+            cpu_p.push(Duration::from_secs_f64(cpu_time() - c0));
+            tp.push(t);
+            let (t, c) = trace(&w, &cam, 800, 1, true, threads);
+            tb.push(t);
+            last = c;
+        }
+        let cpu_p = median(cpu_p).as_secs_f64().max(0.01);
+        println!(
+            "  {threads} thread(s): primary rays per CPU-second {:.2} M ({:.2} CPU-s per frame)",
+            last.primary as f64 / cpu_p / 1e6,
+            cpu_p
+        );
+        let (tp, tb) = (median(tp), median(tb));
+        let shadow_time = tb.saturating_sub(tp).as_secs_f64().max(1e-9);
+        println!(
+            "  {threads} thread(s): primary {:.3} s = {:.2} Mray/s; primary+shadow {:.3} s = {:.2} Mray/s ({} primary, {} hits = {:.3}, {} shadow rays ≈ {:.2} Mray/s)",
+            tp.as_secs_f64(),
+            last.primary as f64 / tp.as_secs_f64() / 1e6,
+            tb.as_secs_f64(),
+            (last.primary + last.shadow) as f64 / tb.as_secs_f64() / 1e6,
+            last.primary,
+            last.hits,
+            last.hits as f64 / last.primary as f64,
+            last.shadow,
+            last.shadow as f64 / shadow_time / 1e6,
+        );
+    }
+}
+
+fn duck() {
+    let Some(path) = find("devilduk.obj") else {
+        println!("duck: skipped (devilduk.obj not found)");
+        return;
+    };
+    for threads in [1, 2] {
+        let mut totals = Vec::new();
+        let mut last = None;
+        for _ in 0..REPS {
+            let start = Instant::now();
+            let (load, w) = build(&path, true);
+            let cam = camera(&w);
+            let (_, c) = trace(&w, &cam, 400, 3, true, threads);
+            totals.push(start.elapsed());
+            last = Some((load, c, w));
+        }
+        let (load, c, w) = last.expect("ran");
+        if threads == 1 {
+            report_world("duck", load, &w);
+        }
+        println!(
+            "  duck 400×400 3×3 ss + shadows + Phong, {threads} thread(s): {:.3} s wall (load+build+trace; {} primary, {} shadow rays)",
+            median(totals).as_secs_f64(),
+            c.primary,
+            c.shadow
+        );
+    }
+}
+
+fn x16() {
+    let Some(path) = find("bunny-x16.obj") else {
+        println!("bunny-x16: skipped (bunny-x16.obj not found; benches/meshes.sh makes it)");
+        return;
+    };
+    let mut firsts = Vec::new();
+    let mut last = None;
+    let mut cpus = Vec::new();
+    for _ in 0..3 {
+        let start = Instant::now();
+        let c0 = cpu_time();
+        let (_, w) = build(&path, false);
+        cpus.push(Duration::from_secs_f64(cpu_time() - c0));
+        let cam = camera(&w);
+        let first = w.intersect(&cam.ray(400.0, 400.0, 800, 800), 0.0, f64::INFINITY);
+        firsts.push(start.elapsed());
+        last = Some((w, first.is_some()));
+    }
+    let (w, hit) = last.expect("ran");
+    report_world("bunny-x16", median(firsts.clone()), &w);
+    println!(
+        "  time to first ray (load + build + one ray; centre ray hit: {hit}): {:.3} s wall, {:.2} CPU-s for load + build",
+        median(firsts).as_secs_f64(),
+        median(cpus).as_secs_f64()
+    );
+    let cam = camera(&w);
+    let (t, c) = trace(&w, &cam, 800, 1, true, 2);
+    println!(
+        "  800×800 primary+shadow, 2 threads: {:.3} s = {:.2} Mray/s",
+        t.as_secs_f64(),
+        (c.primary + c.shadow) as f64 / t.as_secs_f64() / 1e6
+    );
+}
+
+fn main() {
+    // `cargo bench` passes `--bench`; `cargo test --all-targets` does not, and must stay quick.
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if !args.iter().any(|a| a == "--bench") {
+        println!("geometry benchmarks: run `cargo bench --bench geometry [duck|bunny|ogre|x16]`");
+        return;
+    }
+    // A name filter picks one part.
+    let filter: Vec<String> = args.into_iter().filter(|a| !a.starts_with("--")).collect();
+    let want = |n: &str| filter.is_empty() || filter.iter().any(|f| n.contains(f.as_str()));
+    if want("duck") {
+        duck();
+    }
+    if want("bunny") {
+        scene_b("stanford-bunny", "stanford-bunny.obj");
+    }
+    if want("ogre") {
+        scene_b("ogre", "ogre.obj");
+    }
+    if want("x16") {
+        x16();
+    }
+}

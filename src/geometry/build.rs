@@ -1,0 +1,367 @@
+//! IR objects → prepared [`Node`]s: shape checks, transforms, materials, mesh loading with
+//! instancing (one `Arc` per file and smoothing), and diagnostics for everything that cannot
+//! be drawn.
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use glam::DAffine3;
+
+use super::node::{Geom, MeshRef, Node};
+use super::{
+    aabox::Cuboid,
+    blob::Blob,
+    cone::Cone,
+    cylinder::Cylinder,
+    disk::Disk,
+    mesh::MeshData,
+    polygon::{Polygon, PolygonError},
+    quad::Quad,
+    torus::Torus,
+    triangle::Triangle,
+};
+use crate::diag::{Diagnostic, Diagnostics, Severity};
+use crate::ir::{Material, MaterialId, Object, Scene, Shape};
+
+/// Prepares objects, collecting every problem instead of stopping at the first.
+pub struct Builder {
+    /// Number of materials in the scene; MTL materials get ids from here on.
+    base: u32,
+    /// MTL materials added by meshes, in id order after the scene's.
+    pub extra_materials: Vec<Material>,
+    cache: HashMap<(PathBuf, bool), Arc<MeshData>>,
+    mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
+    /// Findings so far.
+    pub diagnostics: Diagnostics,
+}
+
+impl Builder {
+    /// A builder for `scene`.
+    pub fn new(scene: &Scene) -> Builder {
+        Builder {
+            base: scene.materials.len() as u32,
+            extra_materials: Vec::new(),
+            cache: HashMap::new(),
+            mtl_ids: HashMap::new(),
+            diagnostics: Diagnostics::default(),
+        }
+    }
+
+    /// Distinct meshes loaded so far.
+    pub fn meshes(&self) -> impl Iterator<Item = &Arc<MeshData>> {
+        self.cache.values()
+    }
+
+    fn error(&mut self, o: &Object, code: &'static str, msg: String, label: &str, help: &str) {
+        let mut d = Diagnostic::error(code, o.span, msg).with_label(label);
+        if !help.is_empty() {
+            d = d.with_help(help);
+        }
+        self.diagnostics.push(d);
+    }
+
+    /// Prepares one object (and its CSG children); `None` after recording an error.
+    pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Node> {
+        let material = o.material.unwrap_or(inherited);
+        let t = &o.transform;
+        let det = t.matrix3.determinant();
+        let scale = t
+            .matrix3
+            .x_axis
+            .length()
+            .max(t.matrix3.y_axis.length())
+            .max(t.matrix3.z_axis.length());
+        if !(det.is_finite() && t.translation.is_finite())
+            || det.abs() <= 1e-12 * scale * scale * scale
+        {
+            self.error(
+                o,
+                "rtc::geometry::singular_transform",
+                format!(
+                    "the transform of this {} cannot be inverted",
+                    o.shape.kind_name()
+                ),
+                "this object is flattened to zero thickness (or has a non-finite transform)",
+                "give every scale factor a non-zero value",
+            );
+            return None;
+        }
+        let geom = self.geom(o, material)?;
+        Some(Node::new(geom, *t, material))
+    }
+
+    fn degenerate(&mut self, o: &Object, why: &str) -> Option<Geom> {
+        self.error(
+            o,
+            "rtc::geometry::degenerate",
+            format!("this {} has no surface: {why}", o.shape.kind_name()),
+            "degenerate shape",
+            "",
+        );
+        None
+    }
+
+    fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {
+        let g = match &o.shape {
+            Shape::Sphere { center, radius } => {
+                if !(*radius > 0.0 && radius.is_finite() && center.is_finite()) {
+                    return self.degenerate(o, "its radius must be positive");
+                }
+                Geom::Sphere {
+                    center: *center,
+                    radius: *radius,
+                }
+            }
+            Shape::Plane { point, normal } => match normal.try_normalize() {
+                Some(n) if point.is_finite() => Geom::Plane {
+                    point: *point,
+                    normal: n,
+                },
+                _ => return self.degenerate(o, "its normal is zero"),
+            },
+            Shape::Box { min, max } => {
+                if !(min.is_finite() && max.is_finite()) || min.cmpeq(*max).any() {
+                    return self.degenerate(o, "two of its corners coincide on some axis");
+                }
+                Geom::Box(Cuboid::new(*min, *max))
+            }
+            Shape::Triangle { vertices } => match Triangle::new(*vertices) {
+                Some(t) => Geom::Triangle(t),
+                None => return self.degenerate(o, "its corners are collinear"),
+            },
+            Shape::Quad { corner, u, v } => match Quad::new(*corner, *u, *v) {
+                Some(q) => Geom::Quad(q),
+                None => return self.degenerate(o, "its edges are parallel"),
+            },
+            Shape::Polygon { points } => match Polygon::new(points) {
+                Ok(p) => Geom::Polygon(p),
+                Err(PolygonError::TooFew) => {
+                    return self.degenerate(o, "it needs at least 3 points");
+                }
+                Err(PolygonError::Degenerate) => {
+                    return self.degenerate(o, "its points enclose no area");
+                }
+                Err(PolygonError::NotPlanar) => {
+                    self.error(
+                        o,
+                        "rtc::geometry::polygon_not_planar",
+                        "the points of this polygon do not lie in one plane".into(),
+                        "non-planar polygon",
+                        "split it into triangles, or move the points onto one plane",
+                    );
+                    return None;
+                }
+            },
+            Shape::Disk {
+                center,
+                normal,
+                radius,
+            } => match Disk::new(*center, *normal, *radius) {
+                Some(d) => Geom::Disk(d),
+                None => {
+                    return self
+                        .degenerate(o, "its radius must be positive and its normal non-zero");
+                }
+            },
+            Shape::Cylinder {
+                base,
+                top,
+                radius,
+                capped,
+            } => match Cylinder::new(*base, *top, *radius, *capped) {
+                Some(c) => Geom::Cylinder(c),
+                None => {
+                    return self.degenerate(o, "its ends must differ and its radius be positive");
+                }
+            },
+            Shape::Cone {
+                base,
+                top,
+                base_radius,
+                top_radius,
+                capped,
+            } => match Cone::new(*base, *top, *base_radius, *top_radius, *capped) {
+                Some(c) => Geom::Cone(c),
+                None => {
+                    return self.degenerate(o, "its ends must differ, radii be ≥ 0 and not both 0");
+                }
+            },
+            Shape::Torus {
+                center,
+                major_radius,
+                minor_radius,
+            } => match Torus::new(*center, *major_radius, *minor_radius) {
+                Some(t) => Geom::Torus(t),
+                None => return self.degenerate(o, "both radii must be positive"),
+            },
+            Shape::Blob {
+                components,
+                threshold,
+            } => match Blob::new(components, *threshold) {
+                Some(b) => Geom::Blob(b),
+                None => {
+                    return self.degenerate(
+                        o,
+                        "it needs a positive threshold, positive radii and a positive component",
+                    );
+                }
+            },
+            Shape::Mesh {
+                path,
+                smooth,
+                use_mtl,
+            } => {
+                let data = self.mesh(o, path, *smooth)?;
+                let mtl = (*use_mtl && !data.materials.is_empty()).then(|| self.mtl(&data));
+                Geom::Mesh(MeshRef { data, mtl })
+            }
+            Shape::Csg { op, children } => {
+                let mut nodes = Vec::with_capacity(children.len());
+                let mut ok = true;
+                for c in children {
+                    match self.object(c, material) {
+                        Some(n) if !n.is_solid() => {
+                            ok = false;
+                            let what = match &c.shape {
+                                Shape::Mesh { path, .. } => {
+                                    format!("the mesh `{}` is not closed", path.display())
+                                }
+                                Shape::Cylinder { .. } | Shape::Cone { .. } => {
+                                    format!("this {} is open", c.shape.kind_name())
+                                }
+                                other => {
+                                    format!("a {} is a surface, not a solid", other.kind_name())
+                                }
+                            };
+                            self.diagnostics.push(
+                                Diagnostic::error(
+                                    "rtc::csg::open_operand",
+                                    c.span,
+                                    "CSG needs closed solids",
+                                )
+                                .with_label(what)
+                                .with_secondary(o.span, "in this CSG operation")
+                                .with_help(match &c.shape {
+                                    Shape::Cylinder { .. } | Shape::Cone { .. } => "set `capped: true`",
+                                    Shape::Mesh { .. } => "use a watertight mesh (every edge shared by two faces)",
+                                    _ => "use a closed solid such as a box, sphere or capped cylinder",
+                                }),
+                            );
+                        }
+                        Some(n) => nodes.push(n),
+                        None => ok = false,
+                    }
+                }
+                if children.len() < 2 {
+                    self.error(
+                        o,
+                        "rtc::csg::too_few_operands",
+                        "a CSG operation needs at least two operands".into(),
+                        "only one operand",
+                        "",
+                    );
+                    return None;
+                }
+                if !ok {
+                    return None;
+                }
+                Geom::Csg {
+                    op: *op,
+                    children: nodes,
+                }
+            }
+        };
+        Some(g)
+    }
+
+    fn mesh(&mut self, o: &Object, path: &std::path::Path, smooth: bool) -> Option<Arc<MeshData>> {
+        let key = (path.to_path_buf(), smooth);
+        if let Some(m) = self.cache.get(&key) {
+            return Some(m.clone());
+        }
+        match MeshData::load(path, smooth) {
+            Ok(m) => {
+                for w in &m.warnings {
+                    self.diagnostics.push(
+                        Diagnostic::warning(
+                            "rtc::mesh::missing_mtl",
+                            o.span,
+                            format!("the mesh `{}` loads, but {w}", path.display()),
+                        )
+                        .with_label("drawn with the object's material"),
+                    );
+                }
+                let m = Arc::new(m);
+                self.cache.insert(key, m.clone());
+                Some(m)
+            }
+            Err(e) if e.missing => {
+                self.error(
+                    o,
+                    "rtc::mesh::not_found",
+                    format!("cannot read the mesh file `{}`", path.display()),
+                    "this mesh",
+                    "check the path; it is resolved relative to the scene file",
+                );
+                None
+            }
+            Err(e) => {
+                let at = e.line.map(|l| format!(" at line {l}")).unwrap_or_default();
+                let mut d = Diagnostic::new(
+                    Severity::Error,
+                    "rtc::mesh::malformed",
+                    Some(o.span),
+                    format!("the mesh file `{}` is malformed{at}", path.display()),
+                )
+                .with_label("this mesh")
+                .with_note(e.message.clone());
+                if let Some(l) = e.line {
+                    d = d.with_note(format!("{}:{l}", path.display()));
+                }
+                self.diagnostics.push(d);
+                None
+            }
+        }
+    }
+
+    fn mtl(&mut self, data: &MeshData) -> Vec<MaterialId> {
+        if let Some(ids) = self.mtl_ids.get(&data.path) {
+            return ids.clone();
+        }
+        let ids: Vec<MaterialId> = data
+            .materials
+            .iter()
+            .map(|m| {
+                self.extra_materials.push(m.clone());
+                MaterialId(self.base + self.extra_materials.len() as u32 - 1)
+            })
+            .collect();
+        self.mtl_ids.insert(data.path.clone(), ids.clone());
+        ids
+    }
+}
+
+/// Checks a scene's geometry before any ray is traced: CSG operands are closed solids, meshes
+/// load (missing or malformed OBJ files, with the line), transforms are invertible, shapes are
+/// not degenerate.
+pub fn validate_scene_geometry(scene: &Scene) -> Diagnostics {
+    let mut b = Builder::new(scene);
+    let fallback = scene.settings.default_material.unwrap_or(MaterialId(0));
+    for o in &scene.objects {
+        b.object(o, fallback);
+    }
+    b.diagnostics
+}
+
+/// Whether `t` maps space onto space (for callers checking one transform).
+pub fn is_invertible(t: &DAffine3) -> bool {
+    let det = t.matrix3.determinant();
+    let s = t
+        .matrix3
+        .x_axis
+        .length()
+        .max(t.matrix3.y_axis.length())
+        .max(t.matrix3.z_axis.length());
+    det.is_finite() && det.abs() > 1e-12 * s * s * s
+}

@@ -1,0 +1,106 @@
+//! Cones and frustums between two points, open or capped.
+
+use glam::DVec3;
+
+use super::cylinder::{AxisFrame, convex_crossings};
+use super::quartic::quadratic;
+use super::{Aabb, Crossing, Hit, Ray};
+
+/// A cone or frustum in object space: the radius goes linearly from `r0` at the base to `r1`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cone {
+    frame: AxisFrame,
+    r0: f64,
+    r1: f64,
+    /// Radius change per unit height.
+    k: f64,
+    capped: bool,
+}
+
+impl Cone {
+    /// A cone; `None` for coincident ends, a negative radius or both radii zero.
+    pub fn new(base: DVec3, top: DVec3, r0: f64, r1: f64, capped: bool) -> Option<Cone> {
+        let frame = AxisFrame::new(base, top)?;
+        let ok = r0 >= 0.0 && r1 >= 0.0 && r0.max(r1) > 0.0 && r0.is_finite() && r1.is_finite();
+        ok.then_some(Cone {
+            frame,
+            r0,
+            r1,
+            k: (r1 - r0) / frame.height,
+            capped,
+        })
+    }
+
+    /// Whether the ends are closed (a solid).
+    pub fn is_closed(&self) -> bool {
+        self.capped
+    }
+
+    fn candidates(&self, ray: &Ray) -> [Option<Hit>; 4] {
+        let f = &self.frame;
+        let mut out = [None; 4];
+        let w = ray.origin - f.base;
+        let (wa, da) = (w.dot(f.axis), ray.dir.dot(f.axis));
+        let wp = w - wa * f.axis;
+        let dp = ray.dir - da * f.axis;
+        let rho0 = self.r0 + self.k * wa;
+        let a = dp.length_squared() - self.k * self.k * da * da;
+        let b = 2.0 * (wp.dot(dp) - self.k * rho0 * da);
+        let c = wp.length_squared() - rho0 * rho0;
+        if let Some((t0, t1)) = quadratic(a, b, c) {
+            for (i, t) in [t0, t1].into_iter().enumerate() {
+                let p = ray.at(t);
+                let y = (p - f.base).dot(f.axis);
+                if !(0.0..=f.height).contains(&y) {
+                    continue;
+                }
+                let radial = (p - f.base) - y * f.axis;
+                let rho = self.r0 + self.k * y;
+                // Gradient of |radial|² − ρ(y)²; zero only at an apex.
+                let normal = (radial - rho * self.k * f.axis)
+                    .try_normalize()
+                    .unwrap_or(if self.r0 == 0.0 { -f.axis } else { f.axis });
+                out[i] = Some(Hit {
+                    t,
+                    normal,
+                    uv: f.uv(p),
+                });
+            }
+        }
+        if self.capped {
+            if self.r0 > 0.0 {
+                out[2] = f.cap(ray, 0.0, self.r0, -f.axis);
+            }
+            if self.r1 > 0.0 {
+                out[3] = f.cap(ray, f.height, self.r1, f.axis);
+            }
+        }
+        out
+    }
+
+    /// Nearest hit in (t_min, t_max).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        super::ray::nearest(self.candidates(ray).into_iter().flatten(), t_min, t_max)
+    }
+
+    /// Entry and exit along the whole line (capped cones are convex).
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+        convex_crossings(self.candidates(ray).into_iter().flatten(), out);
+    }
+
+    /// True when `p` is inside or on the solid.
+    pub fn contains(&self, p: DVec3) -> bool {
+        let f = &self.frame;
+        let w = p - f.base;
+        let y = w.dot(f.axis);
+        let rho = self.r0 + self.k * y;
+        (0.0..=f.height).contains(&y) && (w - y * f.axis).length_squared() <= rho * rho
+    }
+
+    /// Object-space bounds.
+    pub fn bounds(&self) -> Aabb {
+        let f = &self.frame;
+        f.disk_bounds(0.0, self.r0)
+            .union(f.disk_bounds(f.height, self.r1))
+    }
+}

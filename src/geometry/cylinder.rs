@@ -1,0 +1,189 @@
+//! Cylinders between two points, open or capped, and the axis frame cones share.
+
+use std::f64::consts::TAU;
+
+use glam::{DVec2, DVec3};
+
+use super::quartic::quadratic;
+use super::{Aabb, Crossing, Hit, Ray};
+
+/// An orthonormal frame along a segment: `base`, unit `axis`, length `height`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AxisFrame {
+    /// Start of the axis.
+    pub base: DVec3,
+    /// Unit axis direction.
+    pub axis: DVec3,
+    /// Length of the axis.
+    pub height: f64,
+    e1: DVec3,
+    e2: DVec3,
+}
+
+impl AxisFrame {
+    /// A frame from `base` to `top`; `None` when they coincide.
+    pub fn new(base: DVec3, top: DVec3) -> Option<AxisFrame> {
+        let d = top - base;
+        let height = d.length();
+        let axis = d.try_normalize()?;
+        let e1 = axis.any_orthonormal_vector();
+        Some(AxisFrame {
+            base,
+            axis,
+            height,
+            e1,
+            e2: axis.cross(e1),
+        })
+    }
+
+    /// (angle / 2π, height fraction) of a point.
+    pub fn uv(&self, p: DVec3) -> DVec2 {
+        let w = p - self.base;
+        let angle = w.dot(self.e2).atan2(w.dot(self.e1)).rem_euclid(TAU);
+        DVec2::new(
+            angle / TAU,
+            (w.dot(self.axis) / self.height).clamp(0.0, 1.0),
+        )
+    }
+
+    /// Bounds of a disk of `radius` centred on the axis at height `y`.
+    pub fn disk_bounds(&self, y: f64, radius: f64) -> Aabb {
+        let c = self.base + y * self.axis;
+        let ext = radius
+            * (DVec3::ONE - self.axis * self.axis)
+                .max(DVec3::ZERO)
+                .powf(0.5);
+        Aabb::new(c - ext, c + ext)
+    }
+
+    /// Hit on the cap at height `y` with radius `radius`, whose outward normal is `normal`.
+    pub fn cap(&self, ray: &Ray, y: f64, radius: f64, normal: DVec3) -> Option<Hit> {
+        let da = ray.dir.dot(self.axis);
+        if da == 0.0 {
+            return None;
+        }
+        let t = (y - (ray.origin - self.base).dot(self.axis)) / da;
+        let w = ray.at(t) - self.base;
+        let radial = w - w.dot(self.axis) * self.axis;
+        (radial.length_squared() <= radius * radius && t.is_finite()).then(|| Hit {
+            t,
+            normal,
+            uv: self.uv(ray.at(t)),
+        })
+    }
+}
+
+/// A cylinder in object space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cylinder {
+    frame: AxisFrame,
+    radius: f64,
+    capped: bool,
+}
+
+impl Cylinder {
+    /// A cylinder; `None` for coincident ends or a non-positive radius.
+    pub fn new(base: DVec3, top: DVec3, radius: f64, capped: bool) -> Option<Cylinder> {
+        let frame = AxisFrame::new(base, top)?;
+        (radius > 0.0 && radius.is_finite()).then_some(Cylinder {
+            frame,
+            radius,
+            capped,
+        })
+    }
+
+    /// Whether the ends are closed (a solid).
+    pub fn is_closed(&self) -> bool {
+        self.capped
+    }
+
+    /// Every surface hit along the whole line, unsorted (at most four).
+    fn candidates(&self, ray: &Ray) -> ([Option<Hit>; 4], usize) {
+        let f = &self.frame;
+        let mut out = [None; 4];
+        let w = ray.origin - f.base;
+        let wp = w - w.dot(f.axis) * f.axis;
+        let dp = ray.dir - ray.dir.dot(f.axis) * f.axis;
+        let a = dp.length_squared();
+        if a > 0.0
+            && let Some((t0, t1)) = quadratic(
+                a,
+                2.0 * wp.dot(dp),
+                wp.length_squared() - self.radius * self.radius,
+            )
+        {
+            for (i, t) in [t0, t1].into_iter().enumerate() {
+                let p = ray.at(t);
+                let y = (p - f.base).dot(f.axis);
+                if (0.0..=f.height).contains(&y) {
+                    let radial = (p - f.base) - y * f.axis;
+                    if let Some(normal) = radial.try_normalize() {
+                        out[i] = Some(Hit {
+                            t,
+                            normal,
+                            uv: f.uv(p),
+                        });
+                    }
+                }
+            }
+        }
+        if self.capped {
+            out[2] = f.cap(ray, 0.0, self.radius, -f.axis);
+            out[3] = f.cap(ray, f.height, self.radius, f.axis);
+        }
+        (out, 4)
+    }
+
+    /// Nearest hit in (t_min, t_max).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let (c, n) = self.candidates(ray);
+        super::ray::nearest(c[..n].iter().flatten().copied(), t_min, t_max)
+    }
+
+    /// Entry and exit along the whole line (capped cylinders are convex).
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+        let (c, n) = self.candidates(ray);
+        convex_crossings(c[..n].iter().flatten().copied(), out);
+    }
+
+    /// True when `p` is inside or on the solid.
+    pub fn contains(&self, p: DVec3) -> bool {
+        let f = &self.frame;
+        let w = p - f.base;
+        let y = w.dot(f.axis);
+        (0.0..=f.height).contains(&y)
+            && (w - y * f.axis).length_squared() <= self.radius * self.radius
+    }
+
+    /// Object-space bounds.
+    pub fn bounds(&self) -> Aabb {
+        let f = &self.frame;
+        f.disk_bounds(0.0, self.radius)
+            .union(f.disk_bounds(f.height, self.radius))
+    }
+}
+
+/// For a convex solid, the first hit enters and the last leaves, whatever duplicates a rim
+/// hit produced in between.
+pub fn convex_crossings(hits: impl Iterator<Item = Hit>, out: &mut Vec<Crossing>) {
+    let mut first: Option<Hit> = None;
+    let mut last: Option<Hit> = None;
+    for h in hits {
+        if first.is_none_or(|f| h.t < f.t) {
+            first = Some(h);
+        }
+        if last.is_none_or(|l| h.t > l.t) {
+            last = Some(h);
+        }
+    }
+    if let (Some(f), Some(l)) = (first, last) {
+        out.push(Crossing {
+            hit: f,
+            entering: true,
+        });
+        out.push(Crossing {
+            hit: l,
+            entering: false,
+        });
+    }
+}

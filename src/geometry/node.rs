@@ -1,0 +1,385 @@
+//! A prepared object: its geometry in object space, its transform, its material, its bounds.
+//! Nodes nest for CSG; every level moves rays in and hits out through its own transform.
+
+use std::sync::Arc;
+
+use glam::{DAffine3, DMat3, DVec2, DVec3};
+
+use super::{
+    Aabb, Crossing, Hit, Ray, aabox::Cuboid, blob::Blob, cone::Cone, csg, cylinder::Cylinder,
+    disk::Disk, mesh::MeshData, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
+    triangle::Triangle,
+};
+use crate::ir::{CsgOp, MaterialId};
+
+/// A hit with everything shading needs, in the space of the ray that was given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GeoHit {
+    /// Ray parameter.
+    pub t: f64,
+    /// Unit shading normal (interpolated on smooth meshes), outward.
+    pub normal: DVec3,
+    /// Unit geometric normal, outward.
+    pub geometric_normal: DVec3,
+    /// Surface coordinates.
+    pub uv: DVec2,
+    /// The hit point in the leaf object's own space.
+    pub local_point: DVec3,
+    /// The material to shade with.
+    pub material: MaterialId,
+}
+
+/// A boundary crossing of a solid node (for CSG).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NodeCrossing {
+    /// The hit.
+    pub hit: GeoHit,
+    /// Outside → inside.
+    pub entering: bool,
+}
+
+/// A mesh placed by an object.
+#[derive(Clone, Debug)]
+pub struct MeshRef {
+    /// The shared data (instanced by path and smoothing).
+    pub data: Arc<MeshData>,
+    /// Material id of each of the file's MTL materials, when the object uses them.
+    pub mtl: Option<Vec<MaterialId>>,
+}
+
+/// Geometry of one node, in object space.
+#[derive(Clone, Debug)]
+pub enum Geom {
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius.
+        radius: f64,
+    },
+    /// A half-space bounded by a plane.
+    Plane {
+        /// A point on it.
+        point: DVec3,
+        /// Unit outward normal.
+        normal: DVec3,
+    },
+    /// A box.
+    Box(Cuboid),
+    /// A triangle.
+    Triangle(Triangle),
+    /// A parallelogram.
+    Quad(Quad),
+    /// A planar polygon.
+    Polygon(Polygon),
+    /// A disk.
+    Disk(Disk),
+    /// A cylinder.
+    Cylinder(Cylinder),
+    /// A cone or frustum.
+    Cone(Cone),
+    /// A torus.
+    Torus(Torus),
+    /// Metaballs.
+    Blob(Blob),
+    /// A triangle mesh.
+    Mesh(MeshRef),
+    /// A CSG node.
+    Csg {
+        /// The operation.
+        op: CsgOp,
+        /// Operands.
+        children: Vec<Node>,
+    },
+}
+
+/// Object-to-parent placement.
+#[derive(Clone, Debug)]
+pub struct Placement {
+    /// Parent → object.
+    pub to_object: DAffine3,
+    /// Object → parent.
+    pub to_parent: DAffine3,
+    /// Normal matrix (inverse transpose of the linear part of `to_parent`).
+    pub normal_matrix: DMat3,
+}
+
+/// A prepared object.
+#[derive(Clone, Debug)]
+pub struct Node {
+    /// Geometry in object space.
+    pub geom: Geom,
+    /// `None` for the identity.
+    pub placement: Option<Placement>,
+    /// Material of this node (inherited by CSG children that name none).
+    pub material: MaterialId,
+    /// Bounds in the parent's space (infinite for unbounded geometry).
+    pub bounds: Aabb,
+}
+
+impl Node {
+    /// Wraps geometry with a transform (which must be invertible) and a material.
+    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Node {
+        let local = geom.bounds();
+        let placement = (transform != DAffine3::IDENTITY).then(|| Placement {
+            to_object: transform.inverse(),
+            to_parent: transform,
+            normal_matrix: transform.matrix3.inverse().transpose(),
+        });
+        let bounds = match &placement {
+            None => local,
+            Some(p) => local.transformed(&p.to_parent),
+        };
+        Node {
+            geom,
+            placement,
+            material,
+            bounds,
+        }
+    }
+
+    /// The ray in object space (same `t`).
+    #[inline]
+    fn local(&self, ray: &Ray) -> Ray {
+        match &self.placement {
+            None => *ray,
+            Some(p) => Ray::new(
+                p.to_object.transform_point3(ray.origin),
+                p.to_object.transform_vector3(ray.dir),
+            ),
+        }
+    }
+
+    /// Moves a hit from object space to the parent's space.
+    #[inline]
+    fn out(&self, mut h: GeoHit) -> GeoHit {
+        if let Some(p) = &self.placement {
+            h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
+            h.geometric_normal =
+                (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
+        }
+        h
+    }
+
+    fn leaf(&self, ray: &Ray, h: Hit) -> GeoHit {
+        GeoHit {
+            t: h.t,
+            normal: h.normal,
+            geometric_normal: h.normal,
+            uv: h.uv,
+            local_point: ray.at(h.t),
+            material: self.material,
+        }
+    }
+
+    /// Nearest hit in (t_min, t_max).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+        // Meshes clip against their bounds themselves (and need the entry point anyway).
+        if self.bounds.is_empty()
+            || (!matches!(self.geom, Geom::Mesh(_))
+                && self.bounds.is_finite()
+                && self.bounds.hit_interval(ray, t_min, t_max).is_none())
+        {
+            return None;
+        }
+        let r = self.local(ray);
+        let simple = |h: Option<Hit>| h.map(|h| self.out(self.leaf(&r, h)));
+        match &self.geom {
+            Geom::Sphere { center, radius } => {
+                simple(sphere::intersect(*center, *radius, &r, t_min, t_max))
+            }
+            Geom::Plane { point, normal } => {
+                simple(plane::intersect(*point, *normal, &r, t_min, t_max))
+            }
+            Geom::Box(b) => simple(b.intersect(&r, t_min, t_max)),
+            Geom::Triangle(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Quad(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Polygon(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Disk(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Cylinder(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Cone(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Torus(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Blob(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Mesh(m) => m
+                .data
+                .intersect(&r, t_min, t_max)
+                .map(|h| self.out(self.mesh_hit(&r, m, h))),
+            Geom::Csg { op, children } => {
+                csg::intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
+            }
+        }
+    }
+
+    /// True when anything of this node lies in (t_min, t_max).
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match &self.geom {
+            Geom::Mesh(m) => {
+                if self.bounds.hit_interval(ray, t_min, t_max).is_none() {
+                    return false;
+                }
+                m.data.occluded(&self.local(ray), t_min, t_max)
+            }
+            _ => self.intersect(ray, t_min, t_max).is_some(),
+        }
+    }
+
+    fn mesh_hit(&self, r: &Ray, m: &MeshRef, h: super::mesh::MeshHit) -> GeoHit {
+        let material = match (&m.mtl, h.material) {
+            (Some(ids), Some(i)) => ids.get(i as usize).copied().unwrap_or(self.material),
+            _ => self.material,
+        };
+        GeoHit {
+            t: h.t,
+            normal: h.shading,
+            geometric_normal: h.geometric,
+            uv: h.uv,
+            local_point: r.at(h.t),
+            material,
+        }
+    }
+
+    /// Whether the node is a closed solid (or a half-space), so CSG can classify against it.
+    pub fn is_solid(&self) -> bool {
+        match &self.geom {
+            Geom::Sphere { .. } | Geom::Plane { .. } | Geom::Box(_) => true,
+            Geom::Torus(_) | Geom::Blob(_) => true,
+            Geom::Cylinder(c) => c.is_closed(),
+            Geom::Cone(c) => c.is_closed(),
+            Geom::Mesh(m) => m.data.is_closed(),
+            Geom::Csg { children, .. } => children.iter().all(Node::is_solid),
+            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
+        }
+    }
+
+    /// Whether the ray's line starts (at t → −∞) inside this solid.
+    pub fn inside_at_start(&self, ray: &Ray) -> bool {
+        let r = self.local(ray);
+        match &self.geom {
+            Geom::Plane { point, normal } => {
+                let dn = normal.dot(r.dir);
+                dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
+            }
+            Geom::Csg { op, children } => {
+                csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r)))
+            }
+            _ => false,
+        }
+    }
+
+    /// Every boundary crossing along the whole line of `ray`, sorted by `t` (solids only).
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<NodeCrossing>) {
+        if self.bounds.is_empty()
+            || (self.bounds.is_finite()
+                && self
+                    .bounds
+                    .hit_interval(ray, f64::NEG_INFINITY, f64::INFINITY)
+                    .is_none())
+        {
+            return;
+        }
+        let r = self.local(ray);
+        let start = out.len();
+        let mut simple = |f: &dyn Fn(&mut Vec<Crossing>)| {
+            let mut tmp = Vec::new();
+            f(&mut tmp);
+            for c in tmp {
+                out.push(NodeCrossing {
+                    hit: self.out(self.leaf(&r, c.hit)),
+                    entering: c.entering,
+                });
+            }
+        };
+        match &self.geom {
+            Geom::Sphere { center, radius } => {
+                simple(&|o| sphere::crossings(*center, *radius, &r, o))
+            }
+            Geom::Plane { point, normal } => simple(&|o| {
+                if let Some(h) =
+                    plane::intersect(*point, *normal, &r, f64::NEG_INFINITY, f64::INFINITY)
+                {
+                    o.push(Crossing {
+                        hit: h,
+                        entering: normal.dot(r.dir) < 0.0,
+                    });
+                }
+            }),
+            Geom::Box(b) => simple(&|o| b.crossings(&r, o)),
+            Geom::Cylinder(x) => simple(&|o| x.crossings(&r, o)),
+            Geom::Cone(x) => simple(&|o| x.crossings(&r, o)),
+            Geom::Torus(x) => simple(&|o| x.crossings(&r, o)),
+            Geom::Blob(x) => simple(&|o| x.crossings(&r, o)),
+            Geom::Mesh(m) => {
+                let mut hits = Vec::new();
+                m.data.all_hits(&r, &mut hits);
+                for (h, entering) in hits {
+                    out.push(NodeCrossing {
+                        hit: self.out(self.mesh_hit(&r, m, h)),
+                        entering,
+                    });
+                }
+            }
+            Geom::Csg { op, children } => {
+                let mut tmp = Vec::new();
+                csg::crossings(*op, children, &r, &mut tmp);
+                out.extend(tmp.into_iter().map(|c| NodeCrossing {
+                    hit: self.out(c.hit),
+                    entering: c.entering,
+                }));
+            }
+            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => {}
+        }
+        out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
+    }
+
+    /// Point membership (closed solids; surfaces contain nothing), in the parent's space.
+    pub fn contains(&self, p: DVec3) -> bool {
+        let q = match &self.placement {
+            None => p,
+            Some(pl) => pl.to_object.transform_point3(p),
+        };
+        match &self.geom {
+            Geom::Sphere { center, radius } => sphere::contains(*center, *radius, q),
+            Geom::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
+            Geom::Box(b) => b.contains(q),
+            Geom::Cylinder(c) => c.is_closed() && c.contains(q),
+            Geom::Cone(c) => c.is_closed() && c.contains(q),
+            Geom::Torus(t) => t.contains(q),
+            Geom::Blob(b) => b.contains(q),
+            Geom::Mesh(m) => mesh_contains(&m.data, q),
+            Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
+            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
+        }
+    }
+}
+
+/// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
+fn mesh_contains(m: &MeshData, p: DVec3) -> bool {
+    let dir = DVec3::new(0.5773, 0.5774, 0.5771);
+    let mut hits = Vec::new();
+    m.all_hits(&Ray::new(p, dir), &mut hits);
+    hits.iter().filter(|(h, _)| h.t > 0.0).count() % 2 == 1
+}
+
+impl Geom {
+    /// Object-space bounds (infinite for planes; CSG per its operation).
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Geom::Sphere { center, radius } => sphere::bounds(*center, *radius),
+            Geom::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
+            Geom::Box(b) => b.bounds(),
+            Geom::Triangle(x) => x.bounds(),
+            Geom::Quad(x) => x.bounds(),
+            Geom::Polygon(x) => x.bounds(),
+            Geom::Disk(x) => x.bounds(),
+            Geom::Cylinder(x) => x.bounds(),
+            Geom::Cone(x) => x.bounds(),
+            Geom::Torus(x) => x.bounds(),
+            Geom::Blob(x) => x.bounds(),
+            Geom::Mesh(m) => m.data.bounds(),
+            Geom::Csg { op, children } => {
+                let b: Vec<Aabb> = children.iter().map(|c| c.bounds).collect();
+                crate::opt::bounds::csg_bounds(*op, &b)
+            }
+        }
+    }
+}

@@ -1,0 +1,263 @@
+//! Real roots of polynomials up to degree 4 on an interval, in f64.
+//!
+//! Closed-form quartic formulas lose most of their digits on grazing rays (two nearly equal
+//! roots), which shows as speckle. Instead the roots are isolated by the critical points of the
+//! polynomial (the roots of its derivative, found the same way, recursively): between two
+//! neighbouring critical points the polynomial is monotone, so a sign change brackets exactly one
+//! root, which safeguarded Newton steps then polish to full precision.
+
+/// Maximum degree handled.
+pub const MAX_DEGREE: usize = 4;
+
+/// A root where the polynomial changes sign; `rising` is true when it goes from − to +.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Root {
+    /// Location.
+    pub t: f64,
+    /// Sign of the polynomial just after the root is positive.
+    pub rising: bool,
+}
+
+/// A small fixed-capacity list of roots (at most `MAX_DEGREE`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Roots {
+    items: [f64; MAX_DEGREE],
+    rising: [bool; MAX_DEGREE],
+    len: usize,
+}
+
+impl Roots {
+    fn push(&mut self, t: f64, rising: bool) {
+        if self.len < MAX_DEGREE {
+            self.items[self.len] = t;
+            self.rising[self.len] = rising;
+            self.len += 1;
+        }
+    }
+
+    /// Number of roots.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True when there are none.
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The roots in increasing order.
+    pub fn iter(&self) -> impl Iterator<Item = Root> + '_ {
+        (0..self.len).map(|i| Root {
+            t: self.items[i],
+            rising: self.rising[i],
+        })
+    }
+}
+
+/// Evaluates `c[0] + c[1]·x + … + c[deg]·x^deg` (Horner).
+pub fn eval(c: &[f64], x: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, &k| acc * x + k)
+}
+
+/// Value and derivative at `x`.
+fn eval_d(c: &[f64], x: f64) -> (f64, f64) {
+    let mut p = 0.0;
+    let mut d = 0.0;
+    for &k in c.iter().rev() {
+        d = d * x + p;
+        p = p * x + k;
+    }
+    (p, d)
+}
+
+/// The sign-changing real roots of the polynomial with coefficients `c` (lowest degree first,
+/// at most degree 4) strictly inside `(a, b)`, in increasing order. Roots of even multiplicity
+/// (a ray touching a surface) do not change the sign and are not reported.
+pub fn roots_in(c: &[f64], a: f64, b: f64) -> Roots {
+    let mut deg = c.len().min(MAX_DEGREE + 1);
+    while deg > 0 && c[deg - 1] == 0.0 {
+        deg -= 1;
+    }
+    let c = &c[..deg];
+    let mut out = Roots::default();
+    if deg < 2 || a >= b || !a.is_finite() || !b.is_finite() {
+        return out;
+    }
+    // Critical points split (a, b) into monotone pieces.
+    let mut d = [0.0; MAX_DEGREE];
+    for i in 1..deg {
+        d[i - 1] = c[i] * i as f64;
+    }
+    let mut knots = [0.0; MAX_DEGREE + 1];
+    let mut n = 0;
+    knots[n] = a;
+    n += 1;
+    if deg > 2 {
+        for r in critical_points(&d[..deg - 1], a, b) {
+            if r > knots[n - 1] && r < b && n < knots.len() - 1 {
+                knots[n] = r;
+                n += 1;
+            }
+        }
+    }
+    knots[n] = b;
+    n += 1;
+    let mut prev = eval(c, knots[0]);
+    for w in 1..n {
+        let (x0, x1) = (knots[w - 1], knots[w]);
+        let f1 = eval(c, x1);
+        if (prev < 0.0 && f1 > 0.0) || (prev > 0.0 && f1 < 0.0) {
+            out.push(polish(c, x0, x1, prev), f1 > 0.0);
+        } else if f1 == 0.0 && w + 1 < n {
+            // An exact zero at a critical point: a root when the sign differs on both sides.
+            let next = eval(c, knots[w + 1]);
+            if (prev < 0.0 && next > 0.0) || (prev > 0.0 && next < 0.0) {
+                out.push(x1, next > 0.0);
+            }
+            continue;
+        }
+        if f1 != 0.0 {
+            prev = f1;
+        }
+    }
+    out
+}
+
+/// All critical points of a polynomial given its derivative coefficients `d`: the points
+/// where the derivative changes sign, plus its double roots (exact zeros of both).
+fn critical_points(d: &[f64], a: f64, b: f64) -> impl Iterator<Item = f64> {
+    let mut pts = [0.0; MAX_DEGREE];
+    let mut n = 0;
+    for r in roots_in(d, a, b).iter() {
+        pts[n] = r.t;
+        n += 1;
+    }
+    // Where the derivative only touches zero (an inflection with a flat tangent), the
+    // polynomial is still monotone, so those points need no split.
+    pts.into_iter().take(n)
+}
+
+/// The unique root of a polynomial monotone on `[lo, hi]` with a sign change, to full precision.
+fn polish(c: &[f64], mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
+    let lo_negative = f_lo < 0.0;
+    let mut x = 0.5 * (lo + hi);
+    for _ in 0..200 {
+        let (f, df) = eval_d(c, x);
+        if f == 0.0 {
+            return x;
+        }
+        if (f < 0.0) == lo_negative {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let newton = x - f / df;
+        let next = if newton > lo && newton < hi && newton.is_finite() {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if next == x || hi - lo <= f64::EPSILON * lo.abs().max(hi.abs()) {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// Both real roots of `a·t² + b·t + c` in increasing order (equal for a double root), using the
+/// cancellation-free form; a linear equation gives its one root twice.
+pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
+    if a == 0.0 {
+        if b == 0.0 {
+            return None;
+        }
+        let t = -c / b;
+        return Some((t, t));
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 || !disc.is_finite() {
+        return None;
+    }
+    let q = -0.5 * (b + disc.sqrt().copysign(b));
+    let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+    Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn quadratic_is_stable_for_tiny_roots() {
+        let (t0, t1) = super::quadratic(1.0, -1e8, 1.0).unwrap();
+        assert!((t0 - 1e-8).abs() < 1e-20 && (t1 - 1e8).abs() < 1e-6);
+    }
+
+    use super::*;
+
+    fn from_roots(r: &[f64]) -> Vec<f64> {
+        // Multiply out (x − r_i).
+        let mut c = vec![1.0];
+        for &ri in r {
+            let mut next = vec![0.0; c.len() + 1];
+            for (i, &k) in c.iter().enumerate() {
+                next[i + 1] += k;
+                next[i] -= ri * k;
+            }
+            c = next;
+        }
+        c
+    }
+
+    #[test]
+    fn finds_all_four_distinct_roots_in_order() {
+        let c = from_roots(&[-3.0, -0.5, 1.25, 7.0]);
+        let r: Vec<_> = roots_in(&c, -10.0, 10.0).iter().map(|r| r.t).collect();
+        assert_eq!(r.len(), 4);
+        for (got, want) in r.iter().zip([-3.0, -0.5, 1.25, 7.0]) {
+            assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+        }
+        // x⁴ leading coefficient positive: the last root rises.
+        assert!(
+            roots_in(&c, -10.0, 10.0)
+                .iter()
+                .last()
+                .is_some_and(|r| r.rising)
+        );
+    }
+
+    #[test]
+    fn separates_nearly_equal_roots() {
+        let c = from_roots(&[1.0, 1.0 + 1e-7, 2.0, 5.0]);
+        let r: Vec<_> = roots_in(&c, 0.0, 10.0).iter().map(|r| r.t).collect();
+        assert_eq!(r.len(), 4, "{r:?}");
+        // Conditioning limits these two to ~ε·|c|/|p'| ≈ 1e-8; what matters is that both exist.
+        assert!(r[0] < r[1], "{r:?}");
+        assert!(
+            (r[0] - 1.0).abs() < 5e-8 && (r[1] - 1.0 - 1e-7).abs() < 5e-8,
+            "{r:?}"
+        );
+        assert!(
+            (r[2] - 2.0).abs() < 1e-12 && (r[3] - 5.0).abs() < 1e-12,
+            "{r:?}"
+        );
+    }
+
+    #[test]
+    fn double_root_is_not_a_crossing_and_interval_is_respected() {
+        let c = from_roots(&[2.0, 2.0, 3.0, 4.0]);
+        let r: Vec<_> = roots_in(&c, 0.0, 3.5).iter().map(|r| r.t).collect();
+        assert_eq!(r.len(), 1, "{r:?}");
+        assert!((r[0] - 3.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn quadratic_and_cubic() {
+        let r: Vec<_> = roots_in(&from_roots(&[-1.0, 2.0]), -5.0, 5.0)
+            .iter()
+            .map(|r| r.t)
+            .collect();
+        assert_eq!(r, vec![-1.0, 2.0]);
+        let r = roots_in(&from_roots(&[0.1, 0.2, 0.3]), 0.0, 1.0);
+        assert_eq!(r.len(), 3);
+    }
+}

@@ -1,0 +1,116 @@
+//! Shared helpers for the geometry tests: scenes of one object, a deterministic RNG, rays.
+#![allow(dead_code)]
+
+use glam::{DAffine3, DQuat, DVec3};
+use rtc::geometry::{Ray, World};
+use rtc::ir::{Camera, Material, MaterialId, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::source::Span;
+
+/// SplitMix64: tiny, deterministic, good enough for test rays.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn f(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.f()
+    }
+
+    /// Uniform on the unit sphere.
+    pub fn dir(&mut self) -> DVec3 {
+        loop {
+            let v = DVec3::new(
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+            );
+            let l = v.length_squared();
+            if l > 1e-6 && l <= 1.0 {
+                return v / l.sqrt();
+            }
+        }
+    }
+
+    /// Uniform in a box.
+    pub fn point_in(&mut self, lo: DVec3, hi: DVec3) -> DVec3 {
+        DVec3::new(
+            self.range(lo.x, hi.x),
+            self.range(lo.y, hi.y),
+            self.range(lo.z, hi.z),
+        )
+    }
+}
+
+pub fn object(shape: Shape, transform: DAffine3) -> Object {
+    Object {
+        shape,
+        transform,
+        material: None,
+        span: Span::default(),
+    }
+}
+
+pub fn scene(objects: Vec<Object>) -> Scene {
+    Scene {
+        camera: Camera {
+            eye: DVec3::new(0.0, 0.0, 10.0),
+            center: DVec3::ZERO,
+            up: DVec3::Y,
+            width: 8,
+            height: 8,
+            projection: Projection::Perspective { fov_y: 0.7 },
+            aperture: 0.0,
+            focus_distance: 1.0,
+            span: Span::default(),
+        },
+        lights: Vec::new(),
+        materials: vec![
+            Material::default(),
+            Material::default(),
+            Material::default(),
+        ],
+        textures: Vec::new(),
+        objects,
+        settings: RenderSettings::default(),
+    }
+}
+
+pub fn world(objects: Vec<Object>) -> World {
+    World::build(&scene(objects), MaterialId(0)).expect("world builds")
+}
+
+/// A skewed, mirrored (negative determinant) placement.
+pub fn mirrored_transform() -> DAffine3 {
+    DAffine3::from_scale_rotation_translation(
+        DVec3::new(1.5, -0.7, 2.0),
+        DQuat::from_euler(glam::EulerRot::XYZ, 0.3, -0.8, 1.1),
+        DVec3::new(0.4, -1.2, 2.5),
+    )
+}
+
+/// A ray from far outside the box through a random point inside it (unit direction).
+pub fn ray_at_box(rng: &mut Rng, lo: DVec3, hi: DVec3) -> Ray {
+    let c = 0.5 * (lo + hi);
+    let r = (hi - lo).length().max(1e-9);
+    let target = rng.point_in(lo, hi);
+    let origin = c + rng.dir() * (2.0 * r);
+    Ray::new(origin, (target - origin).normalize())
+}
+
+/// A direction in the hemisphere around `n`.
+pub fn hemisphere(rng: &mut Rng, n: DVec3) -> DVec3 {
+    let d = rng.dir();
+    if d.dot(n) < 0.0 { -d } else { d }
+}
