@@ -1,6 +1,202 @@
-//! The `rtc` command line: `rtc check FILE`, `rtc render FILE`.
+//! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it.
+//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems.
 #![forbid(unsafe_code)]
+// Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
+#![allow(clippy::result_large_err)]
 
-fn main() {
-    println!("rtc {}", env!("CARGO_PKG_VERSION"));
+mod cli;
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use rtc::diag::{Diagnostic, Diagnostics};
+use rtc::eval::EvalOptions;
+use rtc::frontend::{IO_ERROR, Loaded};
+use rtc::ir::Scene;
+use rtc::source::SourceMap;
+
+use cli::report::{self, Format};
+
+/// rtc: a scene-language compiler and ray tracer.
+#[derive(Parser, Debug)]
+#[command(name = "rtc", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Parse, evaluate and lint a scene without rendering it.
+    Check {
+        /// The scene file (`.rtc`, `.in` or `.yaml`).
+        file: PathBuf,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+        /// Treat warnings as errors (`--deny warnings`).
+        #[arg(long, value_name = "warnings")]
+        deny: Option<DenyLevel>,
+    },
+    /// Render a scene to an image (PNG or PPM).
+    Render {
+        /// The scene file (`.rtc`, `.in` or `.yaml`).
+        file: PathBuf,
+        /// Output image; defaults to the scene's `output`, else the input name with `.png`.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Worker threads (0 = all cores).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum DenyLevel {
+    /// Fail on warnings too.
+    Warnings,
+}
+
+/// How a command ended.
+enum Outcome {
+    Ok,
+    SceneErrors,
+    IoOrUsage,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let outcome = match cli.command {
+        Command::Check { file, format, deny } => check(&file, format, deny.is_some()),
+        Command::Render {
+            file,
+            output,
+            threads,
+            format,
+        } => render(&file, output, threads, format),
+    };
+    match outcome {
+        Outcome::Ok => ExitCode::SUCCESS,
+        Outcome::SceneErrors => ExitCode::from(1),
+        Outcome::IoOrUsage => ExitCode::from(2),
+    }
+}
+
+/// Loads a scene and runs the scene lints on it.
+fn load(file: &Path, sources: &mut SourceMap) -> Loaded {
+    let mut loaded = rtc::frontend::load(file, sources, &EvalOptions::default());
+    if let Some(scene) = &loaded.scene {
+        loaded.diagnostics.extend(rtc::check::lint(scene));
+    }
+    loaded
+}
+
+fn outcome_of(diags: &Diagnostics, deny_warnings: bool) -> Outcome {
+    if diags.items.iter().any(|d| d.code == IO_ERROR) {
+        Outcome::IoOrUsage
+    } else if diags.has_errors() || (deny_warnings && diags.warning_count() > 0) {
+        Outcome::SceneErrors
+    } else {
+        Outcome::Ok
+    }
+}
+
+fn count_line(diags: &Diagnostics) -> String {
+    let (e, w) = (diags.error_count(), diags.warning_count());
+    format!(
+        "{e} error{}, {w} warning{}",
+        if e == 1 { "" } else { "s" },
+        if w == 1 { "" } else { "s" }
+    )
+}
+
+fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
+    let subject = file.display().to_string();
+    let mut sources = SourceMap::new();
+    let loaded = load(file, &mut sources);
+    let diags = &loaded.diagnostics;
+    let outcome = outcome_of(diags, deny_warnings);
+    let color = format == Format::Human && std::io::stdout().is_terminal();
+    let summary = match (&outcome, &loaded.scene) {
+        (Outcome::Ok, Some(scene)) => {
+            format!("{}: ok: {}", file.display(), rtc::check::summary(scene))
+        }
+        _ => count_line(diags),
+    };
+    if format == Format::Json {
+        let mut doc: serde_json::Value = serde_json::from_str(&report::render(
+            &diags.items,
+            &sources,
+            &subject,
+            format,
+            false,
+        ))
+        .unwrap_or_default();
+        doc["summary"] = serde_json::Value::String(summary);
+        doc["ok"] = serde_json::Value::Bool(matches!(outcome, Outcome::Ok));
+        println!("{doc}");
+    } else {
+        let text = report::render(&diags.items, &sources, &subject, format, color);
+        if !text.is_empty() {
+            println!("{}", text.trim_end());
+            if format == Format::Short {
+                println!();
+            }
+        }
+        println!("{summary}");
+    }
+    outcome
+}
+
+fn render(file: &Path, output: Option<PathBuf>, threads: usize, format: Format) -> Outcome {
+    let subject = file.display().to_string();
+    let mut sources = SourceMap::new();
+    let loaded = load(file, &mut sources);
+    let color = format == Format::Human && std::io::stderr().is_terminal();
+    let print = |diags: &[Diagnostic], sources: &SourceMap| {
+        let text = report::render(diags, sources, &subject, format, color);
+        if !text.is_empty() {
+            eprintln!("{}", text.trim_end());
+        }
+    };
+    print(&loaded.diagnostics.items, &sources);
+    let outcome = outcome_of(&loaded.diagnostics, false);
+    let (Outcome::Ok, Some(scene)) = (&outcome, loaded.scene) else {
+        eprintln!("{}", count_line(&loaded.diagnostics));
+        return outcome;
+    };
+    let path = output_path(file, output, &scene);
+    let options = rtc::render::RenderOptions {
+        threads,
+        progress: std::io::stderr().is_terminal(),
+    };
+    let result = rtc::render::render(&scene, &options)
+        .and_then(|image| rtc::render::output::save(&image, &path));
+    match result {
+        Ok(()) => {
+            eprintln!("wrote {}", path.display());
+            Outcome::Ok
+        }
+        Err(d) => {
+            let io = d.code == IO_ERROR;
+            print(std::slice::from_ref(&d), &sources);
+            if io {
+                Outcome::IoOrUsage
+            } else {
+                Outcome::SceneErrors
+            }
+        }
+    }
+}
+
+/// `-o` wins, then the scene's own `output`, then the input name with `.png`.
+fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene) -> PathBuf {
+    output
+        .or_else(|| scene.settings.output.clone())
+        .unwrap_or_else(|| file.with_extension("png"))
 }

@@ -1,5 +1,7 @@
 //! The renderer: IR scene → image. (Contract placeholder: the renderer branch replaces it.)
 
+pub mod output;
+
 use crate::diag::Diagnostic;
 use crate::ir::Scene;
 

@@ -1,0 +1,136 @@
+//! Scene lints: findings that need the evaluated scene (lights that light nothing, camera inside an
+//! object, effects that cannot show). They never change the scene.
+
+use glam::DVec3;
+
+use crate::diag::{Diagnostic, Diagnostics};
+use crate::ir::{LightKind, Object, RenderMode, Scene, Shape};
+use crate::opt::Effects;
+
+/// Runs every scene lint.
+pub fn lint(scene: &Scene) -> Diagnostics {
+    let mut out = Diagnostics::default();
+    no_lights(scene, &mut out);
+    enclosed_points(scene, &mut out);
+    invisible_bounces(scene, &mut out);
+    out
+}
+
+fn no_lights(scene: &Scene, out: &mut Diagnostics) {
+    let shaded = scene.settings.mode == RenderMode::Shaded;
+    if shaded && scene.lights.is_empty() && !scene.objects.is_empty() {
+        out.push(
+            Diagnostic::warning(
+                "rtc::scene::no_lights",
+                scene.camera.span,
+                "the scene has no lights",
+            )
+            .with_label("this camera will see only black and ambient-free objects")
+            .with_help("add a light, e.g. `point_light { position: [5, 8, 5] }`"),
+        );
+    }
+}
+
+/// The world-space sphere of an opaque object that is a plain (possibly similarity-transformed) sphere.
+fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
+    let Shape::Sphere { center, radius } = o.shape else {
+        return None;
+    };
+    let transparent = o.material.is_some_and(|m| scene.material(m).refract > 0.0);
+    if transparent {
+        return None;
+    }
+    let m = o.transform.matrix3;
+    let scales = [m.x_axis.length(), m.y_axis.length(), m.z_axis.length()];
+    let uniform = (scales[0] - scales[1]).abs() < 1e-9 * scales[0]
+        && (scales[0] - scales[2]).abs() < 1e-9 * scales[0];
+    uniform.then(|| (o.transform.transform_point3(center), radius * scales[0]))
+}
+
+fn enclosed_points(scene: &Scene, out: &mut Diagnostics) {
+    for o in &scene.objects {
+        let Some((c, r)) = opaque_sphere(scene, o) else {
+            continue;
+        };
+        for l in &scene.lights {
+            let p = l.kind.center();
+            if matches!(l.kind, LightKind::Point { .. }) && p.distance(c) < r {
+                out.push(
+                    Diagnostic::warning(
+                        "rtc::scene::light_enclosed",
+                        l.span,
+                        format!("the light at {p} is inside an opaque sphere; it lights nothing outside it"),
+                    )
+                    .with_label("this light")
+                    .with_secondary(o.span, "encloses the light")
+                    .with_help("move the light outside the sphere, or make the sphere refractive"),
+                );
+            }
+        }
+        if scene.camera.eye.distance(c) < r {
+            out.push(
+                Diagnostic::warning(
+                    "rtc::scene::camera_enclosed",
+                    scene.camera.span,
+                    "the camera is inside an opaque sphere; the image will show only its inside",
+                )
+                .with_label("this camera")
+                .with_secondary(o.span, "encloses the eye")
+                .with_help("move `eye` outside the sphere"),
+            );
+        }
+    }
+}
+
+fn invisible_bounces(scene: &Scene, out: &mut Diagnostics) {
+    if scene.settings.mode != RenderMode::Shaded || scene.settings.max_depth > 0 {
+        return;
+    }
+    if let Some(m) = scene.materials.iter().find(|m| m.refract > 0.0) {
+        out.push(
+            Diagnostic::warning(
+                "rtc::scene::refraction_unseen",
+                m.span,
+                "this material refracts, but `max_depth` is 0, so no refracted ray is traced",
+            )
+            .with_label("refract > 0 here")
+            .with_help("set `max_depth` to at least 2 in `render { ... }` (a glass sphere needs two bounces)"),
+        );
+    }
+}
+
+/// `kind` in the plural when `count` is not one ("box" → "boxes").
+fn plural(kind: &str, count: usize) -> String {
+    match count {
+        1 => kind.to_string(),
+        _ if kind.ends_with('x') || kind.ends_with('h') => format!("{kind}es"),
+        _ => format!("{kind}s"),
+    }
+}
+
+/// A one-line summary of an evaluated scene: objects by kind, lights, camera, effects.
+pub fn summary(scene: &Scene) -> String {
+    let mut kinds: Vec<(&str, usize)> = Vec::new();
+    for o in &scene.objects {
+        let k = o.shape.kind_name();
+        match kinds.iter_mut().find(|(n, _)| *n == k) {
+            Some((_, c)) => *c += 1,
+            None => kinds.push((k, 1)),
+        }
+    }
+    let kinds = kinds
+        .iter()
+        .map(|(k, c)| format!("{c} {}", plural(k, *c)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let objects = scene.objects.len();
+    let lights = scene.lights.len();
+    format!(
+        "{objects} object{} ({kinds}), {lights} light{}, camera {}x{}; effects: {}",
+        if objects == 1 { "" } else { "s" },
+        if lights == 1 { "" } else { "s" },
+        scene.camera.width,
+        scene.camera.height,
+        Effects::of(scene)
+    )
+}
