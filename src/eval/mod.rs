@@ -57,7 +57,7 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
         Err(e) => {
             let mut loaded = Loaded::default();
             loaded.diagnostics.push(
-                Diagnostic::new(Severity::Error, "rtc::io::read", None, format!("cannot read `{}`: {e}", path.display()))
+                Diagnostic::new(Severity::Error, crate::frontend::IO_ERROR, None, format!("cannot read `{}`: {e}", path.display()))
                     .with_help("check the path and the file's permissions"),
             );
             loaded
