@@ -67,7 +67,7 @@ impl Interp<'_> {
             other => Err(error(
                 "rtc::type::not_callable",
                 callee_span,
-                format!("a `{}` is not a function", other.type_name()),
+                format!("{} is not a function", super::value::a_type(other.type_name())),
             )
             .with_label("called here")
             .with_help("remove the parentheses to use the value itself")

@@ -321,7 +321,7 @@ impl<'a> Interp<'a> {
                         last = v;
                     } else if !matches!(v, Value::Unit) {
                         return Err(error("rtc::value::discarded", e.span, "this value is discarded")
-                            .with_label(format!("a `{}` that goes nowhere", v.type_name()))
+                            .with_label(format!("{} that goes nowhere", super::value::a_type(v.type_name())))
                             .with_help("only the last expression of a block is its value; collect several values in a list `[a, b]`")
                             .into());
                     }
@@ -400,7 +400,7 @@ impl<'a> Interp<'a> {
                 }
             }
             other => {
-                let d = error("rtc::type::mismatch", g.iter.span, format!("cannot loop over a `{}`", other.type_name()))
+                let d = error("rtc::type::mismatch", g.iter.span, format!("cannot loop over {}", super::value::a_type(other.type_name())))
                     .with_label("not a range or a list");
                 let d = if matches!(other, Value::Int(_)) {
                     d.with_help(format!("write a range: `0..{}`", self.snippet(g.iter.span)))

@@ -64,7 +64,7 @@ impl Lowerer {
             }
             Value::Unit => {}
             other => {
-                return Err(Diagnostic::error("rtc::value::discarded", span, format!("a `{}` cannot be part of the scene", other.type_name()))
+                return Err(Diagnostic::error("rtc::value::discarded", span, format!("{} cannot be part of the scene", super::value::a_type(other.type_name())))
                     .with_label("this value goes nowhere")
                     .with_help("bind it with `let name = ...`, or remove it"))
             }

@@ -101,11 +101,11 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
         return Ok(x);
     }
     let known = members_of(&v);
-    let d = error("rtc::field::unknown", name.span, format!("a `{}` has no member `{n}`", v.type_name()))
+    let d = error("rtc::field::unknown", name.span, format!("{} has no member `{n}`", super::value::a_type(v.type_name())))
         .with_label("unknown member");
     let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
         if known.is_empty() {
-            format!("a `{}` has no members", v.type_name())
+            format!("{} has no members", super::value::a_type(v.type_name()))
         } else {
             format!("its members are: {}", known.join(", "))
         }
@@ -125,7 +125,7 @@ pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
         Value::List(l) => l.len(),
         Value::Vec3(_) => 3,
         other => {
-            return Err(error("rtc::type::mismatch", ispan, format!("a `{}` cannot be indexed", other.type_name()))
+            return Err(error("rtc::type::mismatch", ispan, format!("{} cannot be indexed", super::value::a_type(other.type_name())))
                 .with_label("indexed here")
                 .with_help("only lists and vectors can be indexed")
                 .into())

@@ -66,11 +66,11 @@ pub fn call_method(it: &mut Interp, recv: Value, name: Name, args: Vec<ArgVal>, 
         Value::List(_) => &["map", "filter"],
         _ => &[],
     };
-    let d = error("rtc::field::unknown", name.span, format!("a `{}` has no method `{n}`", recv.type_name()))
+    let d = error("rtc::field::unknown", name.span, format!("{} has no method `{n}`", super::value::a_type(recv.type_name())))
         .with_label("unknown method");
     let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
         if known.is_empty() {
-            format!("a `{}` has no methods", recv.type_name())
+            format!("{} has no methods", super::value::a_type(recv.type_name()))
         } else {
             format!("its methods are: {}", known.join(", "))
         }

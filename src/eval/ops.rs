@@ -20,8 +20,8 @@ pub fn unary(op: UnOp, v: Value, span: Span) -> R<Value> {
         (UnOp::Not, Value::Bool(b)) => Value::Bool(!b),
         (op, v) => {
             let sym = if op == UnOp::Neg { "-" } else { "!" };
-            return Err(error("rtc::type::operator", span, format!("cannot apply `{sym}` to a `{}`", v.type_name()))
-                .with_label(format!("this is a `{}`", v.type_name()))
+            return Err(error("rtc::type::operator", span, format!("cannot apply `{sym}` to {}", super::value::a_type(v.type_name())))
+                .with_label(format!("this is {}", super::value::a_type(v.type_name())))
                 .with_help(if op == UnOp::Neg { "negate a number, angle or vector" } else { "`!` needs a `Bool`" })
                 .into());
         }
@@ -146,8 +146,8 @@ fn op_error(it: &Interp, op: BinOp, l: &Value, r: &Value, ls: Span, rs: Span) ->
         rs,
         format!("cannot apply `{}` to `{lt}` and `{rt}`", op.as_str()),
     )
-    .with_label(format!("this is a `{rt}`"))
-    .with_secondary(ls, format!("this is a `{lt}`"));
+    .with_label(format!("this is {}", super::value::a_type(rt)))
+    .with_secondary(ls, format!("this is {}", super::value::a_type(lt)));
     let snippet = it.snippet(rs).trim().to_owned();
     let lsnip = it.snippet(ls).trim().to_owned();
     match (l, r) {

@@ -86,7 +86,7 @@ impl Interp<'_> {
                         None if emittable(&v) => {
                             let name = self.scope.name.clone();
                             self.diags.push(
-                                error("rtc::module::emits", e.span, format!("the library module `{name}` emits a `{}`", v.type_name()))
+                                error("rtc::module::emits", e.span, format!("the library module `{name}` emits {}", super::value::a_type(v.type_name())))
                                     .with_label("imported files may not add to the scene")
                                     .with_help("wrap it in a function, e.g. `pub fn make() { ... }`, and call that from the scene"),
                             );

@@ -334,11 +334,13 @@ pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
         _ => false,
     };
     if open {
-        return Err(error("rtc::csg::open_operand", span, format!("a {} has no inside, so it cannot take part in CSG", obj_kind(o)))
+        let mut d = error("rtc::csg::open_operand", span, format!("a {} has no inside, so it cannot take part in CSG", obj_kind(o)))
             .with_label("an open surface")
-            .with_secondary(o.span, "made here")
-            .with_help("use a closed solid (sphere, box, capped cylinder, torus, ...), or a `group` instead of CSG")
-            .into());
+            .with_help("use a closed solid (sphere, box, capped cylinder, torus, ...), or a `group` instead of CSG");
+        if o.span != span {
+            d = d.with_secondary(o.span, "made here");
+        }
+        return Err(d.into());
     }
     Ok(())
 }

@@ -42,10 +42,13 @@ pub fn mismatch(it: &Interp, expected: &str, found: &Value, span: Span) -> Diagn
         ("Int", Value::Float(_)) => d
             .with_label("a fractional number")
             .with_help(format!("round it: `round({snippet})`")),
+        ("Bool", Value::Int(_) | Value::Float(_)) => d
+            .with_label(format!("this is {}", super::value::a_type(found.type_name())))
+            .with_help(format!("compare it, e.g. `{snippet} != 0`")),
         ("Material", Value::Color(_)) => d
             .with_label("a colour is not a material")
             .with_help(format!("write `material {{ color: {snippet} }}`")),
-        _ => d.with_label(format!("this is a `{}`", found.type_name())),
+        _ => d.with_label(format!("this is {}", super::value::a_type(found.type_name()))),
     }
 }
 
@@ -83,9 +86,9 @@ pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value>
         let en = elem.name.sym.as_str();
         if let Some(bad) = items.iter().find(|x| !has_type(en, x)) {
             let d = error("rtc::type::mismatch", span, format!("expected `List<{en}>`, found an element of type `{}`", bad.type_name()))
-                .with_label(format!("not every element is a `{en}`"))
+                .with_label(format!("not every element is {}", super::value::a_type(en)))
                 .with_secondary(t.span, "declared here")
-                .with_help(format!("make every element a `{en}`, or declare `List<Any>`"));
+                .with_help(format!("make every element {}, or declare `List<Any>`", super::value::a_type(en)));
             return Err(d.into());
         }
     }

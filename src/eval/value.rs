@@ -305,3 +305,9 @@ pub fn fmt_f(f: f64) -> String {
         s.trim_end_matches('0').trim_end_matches('.').to_owned()
     }
 }
+
+/// "an `Int`", "a `Float`": a type name with its article, for messages.
+pub fn a_type(t: &str) -> String {
+    let vowel = t.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} `{t}`", if vowel { "an" } else { "a" })
+}

@@ -42,8 +42,8 @@ pub fn with(it: &mut Interp, base: Value, bspan: Span, upd: Vec<(Name, Value, Sp
             }
             Ok(Value::Record(Rc::new(r2)))
         }
-        other => Err(error("rtc::type::mismatch", bspan, format!("`with` cannot copy a `{}`", other.type_name()))
-            .with_label(format!("this is a `{}`", other.type_name()))
+        other => Err(error("rtc::type::mismatch", bspan, format!("`with` cannot copy {}", super::value::a_type(other.type_name())))
+            .with_label(format!("this is {}", super::value::a_type(other.type_name())))
             .with_help("`with` works on materials and records")
             .into()),
     }

@@ -212,10 +212,14 @@ impl Params {
 
 /// Range check: `name` must satisfy `ok`, described as `rule` (e.g. "> 0").
 pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
-    if ok && v.is_finite() {
+    check_shown(ok && v.is_finite(), name, rule, &super::value::fmt_f(v), span)
+}
+
+/// Range check with the offending value already formatted (e.g. with its unit).
+pub fn check_shown(ok: bool, name: &str, rule: &str, shown: &str, span: Span) -> R<()> {
+    if ok {
         return Ok(());
     }
-    let shown = super::value::fmt_f(v);
     Err(error("rtc::param::out_of_range", span, format!("`{name}` must be {rule}, but it is {shown}"))
         .with_label(format!("evaluates to {shown}"))
         .with_help(format!("use a value that is {rule}"))

@@ -52,7 +52,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let up_arg = p.get("up");
     let (fov, fs) = p.angle_or(it, "fov", 40f64.to_radians())?;
-    check(fov > 0.0 && fov < std::f64::consts::PI, "fov", "in (0deg, 180deg)", fov.to_degrees(), fs)?;
+    let shown = format!("{}deg", crate::eval::value::fmt_f(fov.to_degrees()));
+    super::check_shown(fov > 0.0 && fov < std::f64::consts::PI, "fov", "in (0deg, 180deg)", &shown, fs)?;
     let (width, height) = match p.get("resolution") {
         None => (640, 480),
         Some((v, sp)) => match &v {
