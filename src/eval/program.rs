@@ -167,7 +167,7 @@ impl Interp<'_> {
             Some(t) => t,
             None => std::fs::read_to_string(&key).map_err(|e| {
                 error("rtc::module::not_found", span, format!("cannot read module `{display}`"))
-                    .with_label(format!("{e}"))
+                    .with_label(if e.kind() == std::io::ErrorKind::NotFound { "no such file".to_owned() } else { e.to_string() })
                     .with_help(format!("check the path; it is relative to `{}`", self.sources.get(self.scope.file).path.display()))
             })?,
         };
