@@ -99,6 +99,15 @@ fn invisible_bounces(scene: &Scene, out: &mut Diagnostics) {
     }
 }
 
+/// `kind` in the plural when `count` is not one ("box" → "boxes").
+fn plural(kind: &str, count: usize) -> String {
+    match count {
+        1 => kind.to_string(),
+        _ if kind.ends_with('x') || kind.ends_with('h') => format!("{kind}es"),
+        _ => format!("{kind}s"),
+    }
+}
+
 /// A one-line summary of an evaluated scene: objects by kind, lights, camera, effects.
 pub fn summary(scene: &Scene) -> String {
     let mut kinds: Vec<(&str, usize)> = Vec::new();
@@ -111,7 +120,7 @@ pub fn summary(scene: &Scene) -> String {
     }
     let kinds = kinds
         .iter()
-        .map(|(k, c)| format!("{c} {k}"))
+        .map(|(k, c)| format!("{c} {}", plural(k, *c)))
         .collect::<Vec<_>>()
         .join(", ");
     let objects = scene.objects.len();

@@ -117,7 +117,10 @@ fn human(diags: &[Diagnostic], sources: &SourceMap, color: bool) -> String {
         .with_width(100)
         .with_links(false);
     let mut out = String::new();
-    for d in diags {
+    for (i, d) in diags.iter().enumerate() {
+        if i > 0 {
+            out.push('\n');
+        }
         let report = Report::build(d, sources);
         let _ = handler.render_report(&mut out, &report);
     }

@@ -126,17 +126,30 @@ impl Range {
     }
 }
 
-/// A record: ordered fields, each with the span of its value.
+/// One field of a record value.
+#[derive(Clone, Debug)]
+pub struct FieldVal {
+    /// Its name.
+    pub name: Sym,
+    /// Its value.
+    pub value: Value,
+    /// Span of the value.
+    pub span: Span,
+    /// Span of the name.
+    pub name_span: Span,
+}
+
+/// A record: ordered fields.
 #[derive(Clone, Debug, Default)]
 pub struct Record {
     /// The fields in written order.
-    pub fields: Vec<(Sym, Value, Span)>,
+    pub fields: Vec<FieldVal>,
 }
 
 impl Record {
     /// Looks a field up.
     pub fn get(&self, name: Sym) -> Option<&Value> {
-        self.fields.iter().find(|f| f.0 == name).map(|f| &f.1)
+        self.fields.iter().find(|f| f.name == name).map(|f| &f.value)
     }
 }
 
@@ -198,6 +211,8 @@ pub struct Tex {
 pub struct RenderVal {
     /// The settings (material id filled later).
     pub s: ir::RenderSettings,
+    /// The default material for objects without one.
+    pub material: Option<Rc<Mat>>,
     /// Where it was made.
     pub span: Span,
 }
@@ -263,7 +278,7 @@ impl Value {
             Value::Range(r) => format!("{}..{}", fmt_f(r.start), fmt_f(r.end)),
             Value::Record(r) => {
                 let items: Vec<String> =
-                    r.fields.iter().map(|(k, v, _)| format!("{k}: {}", v.show())).collect();
+                    r.fields.iter().map(|f| format!("{}: {}", f.name, f.value.show())).collect();
                 format!("{{ {} }}", items.join(", "))
             }
             Value::Object(o) => format!("<{}>", obj_kind(o)),
@@ -289,4 +304,10 @@ pub fn fmt_f(f: f64) -> String {
         let s = format!("{f:.6}");
         s.trim_end_matches('0').trim_end_matches('.').to_owned()
     }
+}
+
+/// "an `Int`", "a `Float`": a type name with its article, for messages.
+pub fn a_type(t: &str) -> String {
+    let vowel = t.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} `{t}`", if vowel { "an" } else { "a" })
 }

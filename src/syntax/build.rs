@@ -235,7 +235,7 @@ impl Builder<'_> {
         let start = self.expr(it.next().expect("grammar: operand"));
         let Some(op) = it.next() else { return start };
         let end = self.expr(it.next().expect("grammar: range end"));
-        let step = it.next().map(|s| Box::new(self.expr(s)));
+        let step = it.find(|s| s.as_rule() != Rule::step_kw).map(|s| Box::new(self.expr(s)));
         Expr {
             kind: ExprKind::Range {
                 start: Box::new(start),

@@ -95,6 +95,11 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
         push(&mut words, "the end of the line".into());
     }
     let (found, len) = found_at(text, pos);
+    if found == "`;`" {
+        return Diagnostic::error("rtc::syntax::semicolon", Span::new(file, pos, pos + 1), "unexpected `;`")
+            .with_label("statements end at the end of the line")
+            .with_help("remove the `;`");
+    }
     let expected = join_or(&words);
     let span = Span::new(file, pos, pos + len);
     let mut d = Diagnostic::error(
@@ -185,14 +190,16 @@ fn help_for(text: &str, pos: usize, found: &str, expected: &[String]) -> Option<
     if found == "`=`" && has("`:`") {
         return Some("write `:` instead of `=` for fields and named arguments".into());
     }
-    if found == "`;`" {
-        return Some("remove the `;`: statements end at the end of the line".into());
+    if let [only] = expected {
+        if matches!(only.as_str(), "`)`" | "`]`" | "`}`") {
+            return Some(format!("add the missing {only}"));
+        }
     }
     if found == "`=`" && text.get(..pos).is_some_and(|t| t.trim_end().ends_with("let")) {
         return None;
     }
     if has("an expression") && (found == "end of line" || found == "end of file") {
-        return Some("complete the expression on this line, or end the line with an operator".into());
+        return Some("write the rest of the expression on this line".into());
     }
     None
 }
