@@ -13,7 +13,14 @@ use super::value::Value;
 
 /// The embedded standard library: `std.NAME` is the text of `stdlib/NAME.rtc`. Adding a module
 /// is one line here.
-pub const STDLIB: &[(&str, &str)] = &[("prelude", include_str!("../../stdlib/prelude.rtc"))];
+pub const STDLIB: &[(&str, &str)] = &[
+    ("prelude", include_str!("../../stdlib/prelude.rtc")),
+    ("math", include_str!("../../stdlib/math.rtc")),
+    ("color", include_str!("../../stdlib/color.rtc")),
+    ("materials", include_str!("../../stdlib/materials.rtc")),
+    ("textures", include_str!("../../stdlib/textures.rtc")),
+    ("layout", include_str!("../../stdlib/layout.rtc")),
+];
 
 /// A name bound at module level.
 #[derive(Clone, Debug)]
