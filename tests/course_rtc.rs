@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use rtc::compat::{erase_spans, load_yaml};
-use rtc::eval::{load_file, EvalOptions};
+use rtc::eval::{EvalOptions, load_file};
 use rtc::ir::{Projection, Scene};
 use rtc::source::SourceMap;
 
@@ -23,7 +23,9 @@ fn scene_of(loaded: rtc::frontend::Loaded, path: &Path) -> Scene {
         .map(|d| format!("{}: {}", d.code, d.message))
         .collect();
     assert!(errors.is_empty(), "{}: {errors:?}", path.display());
-    loaded.scene.unwrap_or_else(|| panic!("{}: no scene", path.display()))
+    loaded
+        .scene
+        .unwrap_or_else(|| panic!("{}: no scene", path.display()))
 }
 
 /// The course camera (|up| = pixel size at `center`, COURSE.md §2.4) as the equivalent
@@ -33,7 +35,9 @@ fn as_perspective(mut s: Scene) -> Scene {
         let c = &mut s.camera;
         let size = c.up.length();
         let d = (c.center - c.eye).length();
-        c.projection = Projection::Perspective { fov_y: 2.0 * (f64::from(c.height) * size / 2.0 / d).atan() };
+        c.projection = Projection::Perspective {
+            fov_y: 2.0 * (f64::from(c.height) * size / 2.0 / d).atan(),
+        };
         c.up /= size;
     }
     s
@@ -41,11 +45,20 @@ fn as_perspective(mut s: Scene) -> Scene {
 
 fn compare(name: &str) {
     let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
-    let yaml_path = root().join("tests/data/course/yaml").join(format!("{name}.yaml"));
+    let yaml_path = root()
+        .join("tests/data/course/yaml")
+        .join(format!("{name}.yaml"));
     let mut sources = SourceMap::default();
-    let from_rtc = scene_of(load_file(&rtc_path, &mut sources, &EvalOptions::default()), &rtc_path);
+    let from_rtc = scene_of(
+        load_file(&rtc_path, &mut sources, &EvalOptions::default()),
+        &rtc_path,
+    );
     let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
-    assert_eq!(from_yaml.camera.projection, Projection::Course, "{name}: the YAML camera is the course camera");
+    assert_eq!(
+        from_yaml.camera.projection,
+        Projection::Course,
+        "{name}: the YAML camera is the course camera"
+    );
     let a = erase_spans(&from_rtc);
     let b = erase_spans(&as_perspective(from_yaml));
     assert_eq!(a.camera, b.camera, "{name}: camera");

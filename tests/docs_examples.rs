@@ -9,7 +9,7 @@
 use std::path::PathBuf;
 
 use rtc::diag::Severity;
-use rtc::eval::{load_source, EvalOptions};
+use rtc::eval::{EvalOptions, load_source};
 use rtc::source::SourceMap;
 
 struct Block {
@@ -27,9 +27,23 @@ fn blocks(doc: &str) -> Vec<Block> {
             None => {
                 let info = l.trim_end().strip_prefix("```");
                 match info {
-                    Some("rtc") => current = Some(Block { line: i + 1, error: false, text: String::new() }),
-                    Some("rtc,error") => current = Some(Block { line: i + 1, error: true, text: String::new() }),
-                    Some(other) if other.starts_with("rtc") => panic!("line {}: unknown fence `{l}`", i + 1),
+                    Some("rtc") => {
+                        current = Some(Block {
+                            line: i + 1,
+                            error: false,
+                            text: String::new(),
+                        })
+                    }
+                    Some("rtc,error") => {
+                        current = Some(Block {
+                            line: i + 1,
+                            error: true,
+                            text: String::new(),
+                        })
+                    }
+                    Some(other) if other.starts_with("rtc") => {
+                        panic!("line {}: unknown fence `{l}`", i + 1)
+                    }
                     _ => {}
                 }
             }
@@ -52,7 +66,9 @@ fn blocks(doc: &str) -> Vec<Block> {
 fn expectations(text: &str) -> Vec<(usize, Severity, String)> {
     let mut out = Vec::new();
     for (i, l) in text.lines().enumerate() {
-        let Some(comment) = l.find("//").map(|c| &l[c..]) else { continue };
+        let Some(comment) = l.find("//").map(|c| &l[c..]) else {
+            continue;
+        };
         for (tag, sev) in [("error[", Severity::Error), ("warning[", Severity::Warning)] {
             let mut rest = comment;
             while let Some(p) = rest.find(tag) {
@@ -83,7 +99,10 @@ fn every_example_in_the_language_reference_behaves_as_documented() {
     let doc = std::fs::read_to_string(root.join("docs/language.md")).expect("docs/language.md");
     let all = blocks(&doc);
     assert!(all.len() >= 40, "only {} rtc blocks found", all.len());
-    assert!(all.iter().filter(|b| b.error).count() >= 15, "too few error examples");
+    assert!(
+        all.iter().filter(|b| b.error).count() >= 15,
+        "too few error examples"
+    );
     let mut failures = Vec::new();
     for b in &all {
         let header = !has_header(&b.text);
@@ -96,14 +115,22 @@ fn every_example_in_the_language_reference_behaves_as_documented() {
             src.push_str("camera { eye: [0, 0, 10] }\n");
         }
         let offset = usize::from(header);
-        let path = root.join("docs").join(format!("language.md.line{}.rtc", b.line));
+        let path = root
+            .join("docs")
+            .join(format!("language.md.line{}.rtc", b.line));
         let mut sources = SourceMap::default();
         let loaded = load_source(&path, &src, &mut sources, &EvalOptions::default());
         let found: Vec<(usize, Severity, &str)> = loaded
             .diagnostics
             .items
             .iter()
-            .map(|d| (d.span.map_or(0, |s| line_of(&src, s.start as usize)), d.severity, d.code))
+            .map(|d| {
+                (
+                    d.span.map_or(0, |s| line_of(&src, s.start as usize)),
+                    d.severity,
+                    d.code,
+                )
+            })
             .collect();
         let shown = || format!("{found:?}");
         let errors = found.iter().filter(|f| f.1 == Severity::Error).count();
@@ -114,15 +141,23 @@ fn every_example_in_the_language_reference_behaves_as_documented() {
                 failures.push(format!("{where_}: expected an error, got {}", shown()));
             }
             if !expected.iter().any(|e| e.1 == Severity::Error) {
-                failures.push(format!("{where_}: an error block must name its error with `// error[CODE]`"));
+                failures.push(format!(
+                    "{where_}: an error block must name its error with `// error[CODE]`"
+                ));
             }
         } else if errors > 0 {
             failures.push(format!("{where_}: unexpected errors {}", shown()));
         }
         for (line, sev, code) in &expected {
             let at = line + offset;
-            if !found.iter().any(|f| f.0 == at && f.1 == *sev && f.2 == code) {
-                failures.push(format!("{where_}: no {sev:?} `{code}` on block line {line}; got {}", shown()));
+            if !found
+                .iter()
+                .any(|f| f.0 == at && f.1 == *sev && f.2 == code)
+            {
+                failures.push(format!(
+                    "{where_}: no {sev:?} `{code}` on block line {line}; got {}",
+                    shown()
+                ));
             }
         }
         if b.error {
@@ -134,7 +169,12 @@ fn every_example_in_the_language_reference_behaves_as_documented() {
             }
         }
     }
-    assert!(failures.is_empty(), "{} failing examples:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} failing examples:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 #[test]
@@ -144,6 +184,9 @@ fn the_block_reader_sees_fences_and_annotations() {
     assert_eq!(b.len(), 2);
     assert!(!b[0].error && b[1].error);
     assert_eq!(b[1].line, 5);
-    assert_eq!(expectations(&b[1].text), vec![(1, Severity::Error, "rtc::name::unknown".to_owned())]);
+    assert_eq!(
+        expectations(&b[1].text),
+        vec![(1, Severity::Error, "rtc::name::unknown".to_owned())]
+    );
     assert!(has_header("// c\nrtc 1\n") && !has_header("let a = 1\nrtc 1\n"));
 }

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use rtc::eval::{load_source, EvalOptions};
+use rtc::eval::{EvalOptions, load_source};
 use rtc::source::SourceMap;
 
 fn root() -> PathBuf {
@@ -31,7 +31,10 @@ fn rtc_files(dir: &Path, out: &mut Vec<PathBuf>) {
 fn every_scene_passes_check() {
     let mut files = Vec::new();
     rtc_files(&root().join("scenes"), &mut files);
-    assert!(files.len() >= 12, "expected the example scenes, found {files:?}");
+    assert!(
+        files.len() >= 12,
+        "expected the example scenes, found {files:?}"
+    );
     let mut failures = Vec::new();
     for f in &files {
         let rel = f.strip_prefix(root()).expect("inside the crate");
@@ -44,7 +47,11 @@ fn every_scene_passes_check() {
         let stdout = String::from_utf8_lossy(&out.stdout);
         let last = stdout.lines().last().unwrap_or("");
         if !out.status.success() || !last.contains(": ok: ") {
-            failures.push(format!("{}: exit {:?}\n{stdout}", rel.display(), out.status.code()));
+            failures.push(format!(
+                "{}: exit {:?}\n{stdout}",
+                rel.display(),
+                out.status.code()
+            ));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -55,10 +62,18 @@ fn every_stdlib_module_imports_cleanly() {
     let mut files = Vec::new();
     rtc_files(&root().join("stdlib"), &mut files);
     for name in ["math", "color", "materials", "textures", "layout"] {
-        assert!(files.iter().any(|f| f.file_stem().is_some_and(|s| s == name)), "stdlib/{name}.rtc is missing");
+        assert!(
+            files
+                .iter()
+                .any(|f| f.file_stem().is_some_and(|s| s == name)),
+            "stdlib/{name}.rtc is missing"
+        );
     }
     for f in &files {
-        let name = f.file_stem().and_then(|s| s.to_str()).expect("utf-8 file name");
+        let name = f
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .expect("utf-8 file name");
         let on_disk = std::fs::read_to_string(f).expect("read stdlib file");
         assert_eq!(
             rtc::eval::modules::stdlib(name),
@@ -68,10 +83,22 @@ fn every_stdlib_module_imports_cleanly() {
         // Imported as a library: any emission, error or warning inside it is reported here.
         let scene = format!("rtc 1\nimport std.{name} as lib\ncamera {{ eye: [0, 0, 10] }}\n");
         let mut sources = SourceMap::default();
-        let loaded = load_source(&root().join("probe.rtc"), &scene, &mut sources, &EvalOptions::default());
-        let found: Vec<String> =
-            loaded.diagnostics.items.iter().map(|d| format!("{:?} {}: {}", d.severity, d.code, d.message)).collect();
+        let loaded = load_source(
+            &root().join("probe.rtc"),
+            &scene,
+            &mut sources,
+            &EvalOptions::default(),
+        );
+        let found: Vec<String> = loaded
+            .diagnostics
+            .items
+            .iter()
+            .map(|d| format!("{:?} {}: {}", d.severity, d.code, d.message))
+            .collect();
         assert!(found.is_empty(), "std.{name}: {found:?}");
-        assert!(loaded.scene.is_some_and(|s| s.objects.is_empty()), "std.{name} must not emit");
+        assert!(
+            loaded.scene.is_some_and(|s| s.objects.is_empty()),
+            "std.{name} must not emit"
+        );
     }
 }

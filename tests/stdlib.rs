@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use rtc::eval::{load_source, EvalOptions};
+use rtc::eval::{EvalOptions, load_source};
 use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
@@ -18,7 +18,9 @@ fn eval(body: &str) -> Scene {
         .iter()
         .filter(|d| d.severity != rtc::diag::Severity::Note)
         .map(|d| {
-            let line = d.span.map_or(0, |s| src[..s.start as usize].matches('\n').count() + 1);
+            let line = d
+                .span
+                .map_or(0, |s| src[..s.start as usize].matches('\n').count() + 1);
             format!("line {line}: {} {}", d.code, d.message)
         })
         .collect();
@@ -121,13 +123,23 @@ point_light { position: [0, 5, 5] }
 "#,
     );
     let m = |i: usize| &s.materials[s.objects[i].material.expect("a material").0 as usize];
-    assert_eq!((m(0).ks, m(0).reflect, m(0).n, m(0).kd, m(0).ka), (0.4, 0.4, 64.0, 0.5, 0.2));
+    assert_eq!(
+        (m(0).ks, m(0).reflect, m(0).n, m(0).kd, m(0).ka),
+        (0.4, 0.4, 64.0, 0.5, 0.2)
+    );
     assert_eq!((m(1).eta, m(1).refract), (1.333, 0.9));
     assert_eq!(m(2).eta, 1.77);
     let t = m(3).texture.expect("a texture").0 as usize;
     assert_eq!(
         s.textures[t],
-        rtc::ir::Texture::Checker { a: glam::DVec3::splat(0.9), b: glam::DVec3::splat(0.15), size: 2.0 }
+        rtc::ir::Texture::Checker {
+            a: glam::DVec3::splat(0.9),
+            b: glam::DVec3::splat(0.15),
+            size: 2.0
+        }
     );
-    assert!(matches!(m(4).shading, Some(rtc::ir::ShadingModel::Gooch(_))));
+    assert!(matches!(
+        m(4).shading,
+        Some(rtc::ir::ShadingModel::Gooch(_))
+    ));
 }
