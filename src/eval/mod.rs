@@ -68,6 +68,25 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
 /// Parses and evaluates `text` as the scene file `path` (relative paths resolve against its
 /// directory).
 pub fn load_source(path: &Path, text: &str, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
+    // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
+    // nesting; a dedicated thread with a large stack keeps that independent of the caller's
+    // thread (test harness and rayon threads have small stacks).
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .name("rtc-eval".into())
+            .stack_size(EVAL_STACK_BYTES)
+            .spawn_scoped(s, || load_source_here(path, text, sources, options))
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .unwrap_or_else(|_| {
+                Loaded::failure(crate::frontend::IO_ERROR, "cannot start the evaluation thread", "free some memory and retry")
+            })
+    })
+}
+
+/// Stack of the evaluation thread (reserved address space; pages are touched only as needed).
+const EVAL_STACK_BYTES: usize = 256 << 20;
+
+fn load_source_here(path: &Path, text: &str, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
     let file = sources.add(path, text);
     let mut loaded = Loaded::default();
     let (ast, diags) = crate::syntax::parse(file, text);

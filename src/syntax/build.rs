@@ -32,6 +32,9 @@ pub struct Builder<'a> {
 
 type P<'i> = Pair<'i, Rule>;
 
+/// Longest operator chain in one expression: evaluation recurses once per operator.
+const MAX_CHAIN: usize = 10_000;
+
 impl Builder<'_> {
     fn span(&self, p: &P) -> Span {
         let s = p.as_span();
@@ -200,7 +203,20 @@ impl Builder<'_> {
         }
     }
 
+    fn too_long(&mut self, span: Span) {
+        self.diags.push(
+            Diagnostic::error("rtc::budget::nesting", span, "expression is too long")
+                .with_label(format!("more than {MAX_CHAIN} operators in one expression"))
+                .with_help("split it into several `let` bindings"),
+        );
+    }
+
     fn binary(&mut self, p: P) -> Expr {
+        let span = self.span(&p);
+        if p.clone().into_inner().count() > 2 * MAX_CHAIN {
+            self.too_long(span);
+            return Expr { kind: ExprKind::Int(0), span };
+        }
         let mut it = p.into_inner();
         let mut lhs = self.expr(it.next().expect("grammar: operand"));
         while let Some(op) = it.next() {
@@ -248,7 +264,12 @@ impl Builder<'_> {
     }
 
     fn unary(&mut self, p: P) -> Expr {
+        let span = self.span(&p);
         let pairs: Vec<P> = p.into_inner().collect();
+        if pairs.len() > MAX_CHAIN {
+            self.too_long(span);
+            return Expr { kind: ExprKind::Int(0), span };
+        }
         let mut iter = pairs.into_iter().rev();
         let mut e = self.expr(iter.next().expect("grammar: operand"));
         for op in iter {

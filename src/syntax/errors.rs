@@ -46,7 +46,7 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
     } + base;
-    let pos = back_over_newlines(text, pos);
+    let pos = back_over_newlines(text, pos).max(base);
     let mut words: Vec<String> = Vec::new();
     let mut tokens: Vec<String> = Vec::new();
     if let Some(attempts) = err.parse_attempts() {

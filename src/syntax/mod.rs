@@ -96,7 +96,7 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
                 let d = errors::convert(file, text, pos, &e);
                 let at = d.span.map_or(pos, |s| s.start as usize);
                 diags.push(d);
-                match scan.top_level_lines.iter().find(|&&l| l > at && starts_statement(text, l)) {
+                match scan.top_level_lines.iter().find(|&&l| l > at.max(pos) && starts_statement(text, l)) {
                     Some(&next) => pos = next,
                     None => break,
                 }
