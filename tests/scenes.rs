@@ -61,7 +61,7 @@ fn every_scene_passes_check() {
 fn every_stdlib_module_imports_cleanly() {
     let mut files = Vec::new();
     rtc_files(&root().join("stdlib"), &mut files);
-    for name in ["math", "color", "materials", "textures", "layout"] {
+    for name in ["math", "color", "materials", "textures", "layout", "shapes"] {
         assert!(
             files
                 .iter()

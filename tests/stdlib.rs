@@ -143,3 +143,30 @@ point_light { position: [0, 5, 5] }
         Some(rtc::ir::ShadingModel::Gooch(_))
     ));
 }
+
+#[test]
+fn shapes() {
+    let s = eval(
+        r#"
+import std.shapes as sh
+let c = sh.capsule([0, 0, 0], [0, 2, 0], 0.5)
+assert(c.bounds.min == [-0.5, -0.5, -0.5] && c.bounds.max == [0.5, 2.5, 0.5])
+let t = sh.tube(1, 0.1, 2)
+assert(t.bounds.min == [-1, 0, -1] && t.bounds.max == [1, 2, 1])
+let rb = sh.rounded_box([0, 0, 0], [2, 1, 3], 0.2)
+assert(rb.bounds.min == [0, 0, 0] && rb.bounds.max == [2, 1, 3])
+let ar = sh.arrow([0, 0, 0], [0, 2, 0], 0.1)
+assert(abs(ar.bounds.max.y - 2) < 1e-12 && abs(ar.bounds.max.x - 0.2) < 1e-12)
+assert(len(sh.axes()) == 3)
+let st = sh.stairs(4, rise: 0.25)
+assert(len(st) == 4 && st[3].bounds.max.y == 1 && st[3].bounds.max.z == 1.2)
+assert(sh.pedestal(r: 0.5, height: 1).bounds.max == [0.625, 1, 0.625])
+c
+sh.axes()
+"#,
+    );
+    // The capsule is one union of three; the axes are three arrows, each a union of two.
+    assert_eq!(s.objects.len(), 4);
+    assert!(s.objects.iter().all(|o| o.shape.kind_name() == "csg"));
+    assert_eq!(s.materials.len(), 3, "each axis arrow has its own colour");
+}

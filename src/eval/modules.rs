@@ -20,6 +20,7 @@ pub const STDLIB: &[(&str, &str)] = &[
     ("materials", include_str!("../../stdlib/materials.rtc")),
     ("textures", include_str!("../../stdlib/textures.rtc")),
     ("layout", include_str!("../../stdlib/layout.rtc")),
+    ("shapes", include_str!("../../stdlib/shapes.rtc")),
 ];
 
 /// A name bound at module level.
