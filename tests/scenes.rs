@@ -45,8 +45,9 @@ fn every_scene_passes_check() {
             .output()
             .expect("run rtc");
         let stdout = String::from_utf8_lossy(&out.stdout);
-        let last = stdout.lines().last().unwrap_or("");
-        if !out.status.success() || !last.contains(": ok: ") {
+        // Exit status 0 means no errors (warnings are allowed); `: error[` is the short format's
+        // error line, checked as well so a wrong exit code cannot hide one.
+        if !out.status.success() || stdout.contains(": error[") {
             failures.push(format!(
                 "{}: exit {:?}\n{stdout}",
                 rel.display(),
