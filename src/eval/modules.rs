@@ -44,7 +44,12 @@ pub struct Scope {
 impl Scope {
     /// An empty scope for a file.
     pub fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
-        Scope { items: RefCell::new(HashMap::new()), dir, file, name }
+        Scope {
+            items: RefCell::new(HashMap::new()),
+            dir,
+            file,
+            name,
+        }
     }
 }
 
@@ -69,8 +74,14 @@ impl Module {
 
     /// Names of all exports, sorted (for did-you-mean).
     pub fn export_names(&self) -> Vec<&'static str> {
-        let mut v: Vec<&'static str> =
-            self.scope.items.borrow().iter().filter(|(_, b)| b.public).map(|(k, _)| k.as_str()).collect();
+        let mut v: Vec<&'static str> = self
+            .scope
+            .items
+            .borrow()
+            .iter()
+            .filter(|(_, b)| b.public)
+            .map(|(k, _)| k.as_str())
+            .collect();
         v.sort_unstable();
         v
     }
