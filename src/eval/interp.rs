@@ -164,7 +164,8 @@ impl<'a> Interp<'a> {
             }
             ExprKind::For(gens, filter, body) => {
                 let mut out = Vec::new();
-                self.for_level(gens, 0, filter.as_deref(), body, e.span, &mut out)?;
+                let header = self.header_span(e.span, body.span);
+                self.for_level(gens, 0, filter.as_deref(), body, header, &mut out)?;
                 Value::List(Rc::new(out))
             }
             ExprKind::Lambda(def) => Value::Fn(Rc::new(Closure {
@@ -174,6 +175,20 @@ impl<'a> Interp<'a> {
             })),
             ExprKind::Block(b) => self.block(b)?,
         })
+    }
+
+    /// `for i in 0..5` without its body: what traces and budget errors point at.
+    fn header_span(&self, whole: Span, body: Span) -> Span {
+        let text = self.sources.get(whole.file).text.as_bytes();
+        let mut end = body.start.max(whole.start);
+        while end > whole.start
+            && text
+                .get(end as usize - 1)
+                .is_some_and(|c| c.is_ascii_whitespace())
+        {
+            end -= 1;
+        }
+        Span { end, ..whole }
     }
 
     fn string(&mut self, parts: &[StrPart]) -> R<Value> {
