@@ -117,6 +117,7 @@ impl<'a> Interp<'a> {
             ExprKind::Bool(b) => Value::Bool(*b),
             ExprKind::Color(c) => Value::Color((*c).into()),
             ExprKind::Str(parts) => self.string(parts)?,
+            ExprKind::StrLit(s) => Value::Str(s.clone()),
             ExprKind::Ident(s) => self.lookup(*s, e.span)?,
             ExprKind::List(items) => self.list(items, e.span)?,
             ExprKind::Record(fields) => self.record(fields)?,
@@ -223,22 +224,15 @@ impl<'a> Interp<'a> {
     }
 
     fn list(&mut self, items: &[Expr], span: Span) -> R<Value> {
-        if items.len() == 3 {
-            let mut v = [0.0; 3];
-            let mut all_numbers = true;
-            let mut vals = Vec::with_capacity(3);
-            for (k, it) in items.iter().enumerate() {
-                let x = self.eval(it)?;
-                match x.as_f64() {
-                    Some(f) if all_numbers => v[k] = f,
-                    _ => all_numbers = false,
-                }
-                vals.push(x);
+        if let [a, b, c] = items {
+            // `[x, y, z]` of numbers is a Vec3; evaluate without a heap list first.
+            let vals = [self.eval(a)?, self.eval(b)?, self.eval(c)?];
+            if let (Some(x), Some(y), Some(z)) =
+                (vals[0].as_f64(), vals[1].as_f64(), vals[2].as_f64())
+            {
+                return Ok(Value::Vec3(glam::DVec3::new(x, y, z)));
             }
-            if all_numbers {
-                return Ok(Value::Vec3(v.into()));
-            }
-            return Ok(Value::List(Rc::new(vals)));
+            return Ok(Value::List(Rc::new(vals.into())));
         }
         let mut out = Vec::with_capacity(items.len());
         for it in items {

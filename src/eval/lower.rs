@@ -2,7 +2,6 @@
 //! textures (shared by identity, so one material used by a million objects is stored once),
 //! lights, the camera and render settings.
 
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use glam::DAffine3;
@@ -26,8 +25,8 @@ pub struct Lowerer {
     pub renders: Vec<Rc<RenderVal>>,
     materials: Vec<ir::Material>,
     textures: Vec<ir::Texture>,
-    mat_ids: HashMap<*const Mat, ir::MaterialId>,
-    tex_ids: HashMap<*const Tex, ir::TextureId>,
+    mat_ids: super::fxhash::FxHashMap<*const Mat, ir::MaterialId>,
+    tex_ids: super::fxhash::FxHashMap<*const Tex, ir::TextureId>,
     /// Keeps every lowered material alive so its address is never reused by another.
     keep: Vec<Rc<Mat>>,
     keep_tex: Vec<Rc<Tex>>,

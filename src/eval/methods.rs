@@ -42,7 +42,7 @@ pub fn call_method(
         }
         Value::Transform(a) if is_t => {
             let t = super::transform::method_transform(it, n, site, args)?;
-            return Ok(Value::Transform(t * *a));
+            return Ok(Value::Transform(Rc::new(t * **a)));
         }
         Value::Rng(seed) if super::rng::METHODS.contains(&n) => {
             return super::rng::method(it, *seed, n, site, args);

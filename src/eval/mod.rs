@@ -5,6 +5,7 @@ pub mod bounds;
 pub mod builtins;
 pub mod call;
 pub mod error;
+pub mod fxhash;
 pub mod interp;
 pub mod lower;
 pub mod members;

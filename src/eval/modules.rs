@@ -2,7 +2,6 @@
 //! cycle detection.
 
 use std::cell::RefCell;
-use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -32,7 +31,7 @@ pub struct Binding {
 #[derive(Debug)]
 pub struct Scope {
     /// Module-level bindings.
-    pub items: RefCell<HashMap<Sym, Binding>>,
+    pub items: RefCell<super::fxhash::FxHashMap<Sym, Binding>>,
     /// Directory that relative paths in this file resolve against.
     pub dir: PathBuf,
     /// The file.
@@ -45,7 +44,7 @@ impl Scope {
     /// An empty scope for a file.
     pub fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
         Scope {
-            items: RefCell::new(HashMap::new()),
+            items: RefCell::new(Default::default()),
             dir,
             file,
             name,

@@ -103,7 +103,7 @@ pub fn binary(
             it.check_list_len(a.len() + b.len(), span)?;
             List(Rc::new(a.iter().chain(b.iter()).cloned().collect()))
         }
-        (Then, Transform(a), Transform(b)) => Transform(*b * *a),
+        (Then, Transform(a), Transform(b)) => Transform(Rc::new(**b * **a)),
         (Union, Object(_), Object(_)) => csg(it, CsgOp::Union, &l, &r, ls, rs, span)?,
         (Inter, Object(_), Object(_)) => csg(it, CsgOp::Intersection, &l, &r, ls, rs, span)?,
         (Sub, Object(_), Object(_)) => csg(it, CsgOp::Difference, &l, &r, ls, rs, span)?,

@@ -32,7 +32,7 @@ pub const METHODS: &[&str] = &[
 ];
 
 fn t(a: DAffine3) -> Value {
-    Value::Transform(a)
+    Value::Transform(std::rc::Rc::new(a))
 }
 
 /// Errors if `a` is singular (it would flatten space) or not finite.
@@ -140,7 +140,7 @@ fn around(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         return Err(types::mismatch(it, "Transform", &tv, ts).into());
     };
     Ok(t(DAffine3::from_translation(pivot)
-        * inner
+        * *inner
         * DAffine3::from_translation(-pivot)))
 }
 
@@ -172,7 +172,7 @@ pub fn method_transform(
         }
     };
     match v {
-        Value::Transform(a) => Ok(a),
+        Value::Transform(a) => Ok(*a),
         _ => unreachable!("transform constructors return transforms"),
     }
 }

@@ -30,7 +30,7 @@ pub enum Value {
     /// A linear RGB colour.
     Color(DVec3),
     /// An affine transform.
-    Transform(DAffine3),
+    Transform(Rc<DAffine3>),
     /// A list.
     List(Rc<Vec<Value>>),
     /// `a..b step s`.

@@ -463,7 +463,11 @@ impl Builder<'_> {
                         }
                     }
                 }
-                ExprKind::Str(parts)
+                match parts.as_slice() {
+                    [] => ExprKind::StrLit(Rc::from("")),
+                    [StrPart::Text(t)] => ExprKind::StrLit(Rc::from(t.as_str())),
+                    _ => ExprKind::Str(parts),
+                }
             }
             Rule::ident => ExprKind::Ident(Sym::new(p.as_str())),
             Rule::list => ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect()),

@@ -7,7 +7,6 @@ mod scene;
 
 pub use looks::{mat_warnings, set_mat_field};
 
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use glam::DVec3;
@@ -43,7 +42,7 @@ fn table() -> Vec<(&'static str, Value)> {
 }
 
 thread_local! {
-    static GLOBALS: HashMap<Sym, Value> = table().into_iter().map(|(k, v)| (Sym::new(k), v)).collect();
+    static GLOBALS: super::fxhash::FxHashMap<Sym, Value> = table().into_iter().map(|(k, v)| (Sym::new(k), v)).collect();
 }
 
 /// A built-in by name.
