@@ -28,14 +28,22 @@ fn time(name: &str, src: &str, expect: usize, reps: u32) {
     for _ in 0..reps {
         let mut sm = SourceMap::new();
         let t = Instant::now();
-        let loaded = load_source(Path::new("bench.rtc"), src, &mut sm, &EvalOptions::default());
+        let loaded = load_source(
+            Path::new("bench.rtc"),
+            src,
+            &mut sm,
+            &EvalOptions::default(),
+        );
         let dt = t.elapsed();
         let n = loaded.scene.as_ref().map_or(0, |s| s.objects.len());
         assert_eq!(n, expect, "{:#?}", loaded.diagnostics.items.first());
         drop(loaded);
         best = best.min(dt);
     }
-    println!("{name}: {expect} objects, best of {reps}: {:.3} s", best.as_secs_f64());
+    println!(
+        "{name}: {expect} objects, best of {reps}: {:.3} s",
+        best.as_secs_f64()
+    );
 }
 
 fn main() {

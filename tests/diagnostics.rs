@@ -25,7 +25,10 @@ fn run(name: &str) -> (String, i32) {
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .expect("run rtc");
-    (String::from_utf8_lossy(&out.stdout).into_owned(), out.status.code().unwrap_or(-1))
+    (
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        out.status.code().unwrap_or(-1),
+    )
 }
 
 #[test]
@@ -45,7 +48,12 @@ fn corpus_matches_expected_output() {
             failures.push(format!("{name}: exit code {code}, expected {want_code}"));
         }
     }
-    assert!(failures.is_empty(), "{} corpus mismatches:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} corpus mismatches:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }
 
 #[test]
@@ -54,24 +62,41 @@ fn corpus_is_large_and_covers_several_errors_per_file() {
     let names = cases();
     assert!(names.len() >= 40, "only {} cases", names.len());
     for n in &names {
-        assert!(Path::new(&format!("tests/diagnostics/{n}.expected")).exists(), "{n} has no .expected");
+        assert!(
+            Path::new(&format!("tests/diagnostics/{n}.expected")).exists(),
+            "{n} has no .expected"
+        );
     }
     let multi = names
         .iter()
         .filter(|n| {
-            let t = std::fs::read_to_string(format!("tests/diagnostics/{n}.expected")).unwrap_or_default();
+            let t = std::fs::read_to_string(format!("tests/diagnostics/{n}.expected"))
+                .unwrap_or_default();
             t.matches(": error[").count() >= 3
         })
         .count();
-    assert!(multi >= 2, "want at least two cases with three or more errors, found {multi}");
+    assert!(
+        multi >= 2,
+        "want at least two cases with three or more errors, found {multi}"
+    );
 }
 
 #[test]
 fn no_message_mentions_a_grammar_rule() {
     std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let rules = ["or_expr", "postfix", "stmt_line", "call_args", "record_arg", "unary_expr", "EOI", "ident"];
+    let rules = [
+        "or_expr",
+        "postfix",
+        "stmt_line",
+        "call_args",
+        "record_arg",
+        "unary_expr",
+        "EOI",
+        "ident",
+    ];
     for name in cases() {
-        let t = std::fs::read_to_string(format!("tests/diagnostics/{name}.expected")).unwrap_or_default();
+        let t = std::fs::read_to_string(format!("tests/diagnostics/{name}.expected"))
+            .unwrap_or_default();
         for r in rules {
             assert!(!t.contains(r), "{name} mentions grammar rule {r}");
         }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use crate::source::Span;
 
-use super::error::{error, R};
+use super::error::{R, error};
 use super::interp::Interp;
 
 /// Resolves `rel` against the current module's directory; errors if no such file exists.
@@ -16,8 +16,12 @@ pub fn existing(it: &Interp, rel: &str, span: Span, what: &str) -> R<PathBuf> {
     }
     let shown = path.display().to_string();
     let file = it.sources.get(it.scope.file).path.display().to_string();
-    Err(error("rtc::asset::missing", span, format!("{what} file not found: `{shown}`"))
-        .with_label(format!("resolved to `{shown}`"))
-        .with_help(format!("check the path; it is relative to `{file}`"))
-        .into())
+    Err(error(
+        "rtc::asset::missing",
+        span,
+        format!("{what} file not found: `{shown}`"),
+    )
+    .with_label(format!("resolved to `{shown}`"))
+    .with_help(format!("check the path; it is relative to `{file}`"))
+    .into())
 }

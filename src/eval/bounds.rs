@@ -6,7 +6,7 @@ use glam::{DAffine3, DVec3};
 use crate::ir::{CsgOp, Shape};
 use crate::source::Span;
 
-use super::error::{error, R};
+use super::error::{R, error};
 use super::interp::Interp;
 use super::value::{Obj, ObjShape, Value};
 
@@ -27,7 +27,10 @@ fn transformed(t: DAffine3, (lo, hi): Bb) -> Bb {
 }
 
 fn of_points(pts: impl IntoIterator<Item = DVec3>) -> Bb {
-    pts.into_iter().fold((DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)), |b, p| (b.0.min(p), b.1.max(p)))
+    pts.into_iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |b, p| (b.0.min(p), b.1.max(p)),
+    )
 }
 
 fn disk_extent(normal: DVec3, r: f64) -> DVec3 {
@@ -36,30 +39,49 @@ fn disk_extent(normal: DVec3, r: f64) -> DVec3 {
 }
 
 fn mesh_bounds(path: &std::path::Path, span: Span) -> R<Bb> {
-    let opts = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
+    let opts = tobj::LoadOptions {
+        triangulate: true,
+        single_index: true,
+        ..Default::default()
+    };
     let (models, _) = tobj::load_obj(path, &opts).map_err(|e| {
-        error("rtc::asset::invalid", span, format!("cannot read mesh `{}`: {e}", path.display()))
-            .with_label("this OBJ file could not be loaded")
-            .with_help("check that the file is a valid Wavefront OBJ")
+        error(
+            "rtc::asset::invalid",
+            span,
+            format!("cannot read mesh `{}`: {e}", path.display()),
+        )
+        .with_label("this OBJ file could not be loaded")
+        .with_help("check that the file is a valid Wavefront OBJ")
     })?;
     let pts = models.iter().flat_map(|m| {
-        m.mesh.positions.chunks_exact(3).map(|c| DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64))
+        m.mesh
+            .positions
+            .chunks_exact(3)
+            .map(|c| DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64))
     });
     let b = of_points(pts);
     if !b.0.is_finite() {
-        return Err(error("rtc::asset::invalid", span, format!("mesh `{}` has no vertices", path.display()))
-            .with_label("empty mesh")
-            .with_help("use an OBJ file with at least one face")
-            .into());
+        return Err(error(
+            "rtc::asset::invalid",
+            span,
+            format!("mesh `{}` has no vertices", path.display()),
+        )
+        .with_label("empty mesh")
+        .with_help("use an OBJ file with at least one face")
+        .into());
     }
     Ok(b)
 }
 
 fn unbounded(span: Span) -> super::error::EvalError {
-    error("rtc::value::unbounded", span, "this object has no finite bounds")
-        .with_label("it contains an infinite plane")
-        .with_help("ask for the bounds of a finite part instead")
-        .into()
+    error(
+        "rtc::value::unbounded",
+        span,
+        "this object has no finite bounds",
+    )
+    .with_label("it contains an infinite plane")
+    .with_help("ask for the bounds of a finite part instead")
+    .into()
 }
 
 /// Bounds in the space the object's own transform maps into, composed with `parent`.
@@ -71,29 +93,52 @@ fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Bb> {
             Shape::Plane { .. } => return Err(unbounded(span)),
             Shape::Box { min, max } => (*min, *max),
             Shape::Triangle { vertices } => of_points(vertices.iter().copied()),
-            Shape::Quad { corner, u, v } => of_points([*corner, *corner + *u, *corner + *v, *corner + *u + *v]),
+            Shape::Quad { corner, u, v } => {
+                of_points([*corner, *corner + *u, *corner + *v, *corner + *u + *v])
+            }
             Shape::Polygon { points } => of_points(points.iter().copied()),
-            Shape::Disk { center, normal, radius } => {
+            Shape::Disk {
+                center,
+                normal,
+                radius,
+            } => {
                 let e = disk_extent(*normal, *radius);
                 (*center - e, *center + e)
             }
-            Shape::Cylinder { base, top, radius, .. } => {
+            Shape::Cylinder {
+                base, top, radius, ..
+            } => {
                 let n = (*top - *base).normalize_or_zero();
                 let e = disk_extent(n, *radius);
                 of_points([*base - e, *base + e, *top - e, *top + e])
             }
-            Shape::Cone { base, top, base_radius, top_radius, .. } => {
+            Shape::Cone {
+                base,
+                top,
+                base_radius,
+                top_radius,
+                ..
+            } => {
                 let n = (*top - *base).normalize_or_zero();
                 let (eb, et) = (disk_extent(n, *base_radius), disk_extent(n, *top_radius));
                 of_points([*base - eb, *base + eb, *top - et, *top + et])
             }
-            Shape::Torus { center, major_radius, minor_radius } => {
+            Shape::Torus {
+                center,
+                major_radius,
+                minor_radius,
+            } => {
                 let r = major_radius + minor_radius;
-                (*center - DVec3::new(r, *minor_radius, r), *center + DVec3::new(r, *minor_radius, r))
+                (
+                    *center - DVec3::new(r, *minor_radius, r),
+                    *center + DVec3::new(r, *minor_radius, r),
+                )
             }
-            Shape::Blob { components, .. } => {
-                of_points(components.iter().flat_map(|c| [c.center - c.radius, c.center + c.radius]))
-            }
+            Shape::Blob { components, .. } => of_points(
+                components
+                    .iter()
+                    .flat_map(|c| [c.center - c.radius, c.center + c.radius]),
+            ),
             Shape::Mesh { path, .. } => mesh_bounds(path, span)?,
             Shape::Csg { .. } => unreachable!("CSG values use ObjShape::Csg"),
         },

@@ -5,7 +5,7 @@ use std::rc::Rc;
 use crate::source::Span;
 use crate::syntax::ast::{Arg, Expr, ExprKind, Name};
 
-use super::error::{error, suggest, EvalError, R};
+use super::error::{EvalError, R, error, suggest};
 use super::interp::Interp;
 use super::value::{Closure, Value};
 
@@ -33,7 +33,11 @@ impl Interp<'_> {
     fn eval_args(&mut self, args: &[Arg]) -> R<Vec<ArgVal>> {
         let mut out = Vec::with_capacity(args.len());
         for a in args {
-            out.push(ArgVal { name: a.name, value: self.eval(&a.value)?, span: a.value.span });
+            out.push(ArgVal {
+                name: a.name,
+                value: self.eval(&a.value)?,
+                span: a.value.span,
+            });
         }
         Ok(out)
     }
@@ -60,14 +64,23 @@ impl Interp<'_> {
     }
 
     /// Calls a function value with evaluated arguments.
-    pub fn call_value(&mut self, f: Value, args: Vec<ArgVal>, span: Span, callee_span: Span) -> R<Value> {
+    pub fn call_value(
+        &mut self,
+        f: Value,
+        args: Vec<ArgVal>,
+        span: Span,
+        callee_span: Span,
+    ) -> R<Value> {
         match f {
             Value::Fn(c) => self.call_closure(&c, args, span),
             Value::Builtin(b) => (b.f)(self, CallSite { span, name: b.name }, args),
             other => Err(error(
                 "rtc::type::not_callable",
                 callee_span,
-                format!("{} is not a function", super::value::a_type(other.type_name())),
+                format!(
+                    "{} is not a function",
+                    super::value::a_type(other.type_name())
+                ),
             )
             .with_label("called here")
             .with_help("remove the parentheses to use the value itself")
@@ -80,12 +93,17 @@ impl Interp<'_> {
         let def = &c.def;
         let fname = def.name.sym;
         if self.depth >= self.opts.max_recursion_depth {
-            return Err(error("rtc::budget::recursion", span, format!("calls nested deeper than {}", self.opts.max_recursion_depth))
-                .with_label(format!("this call to `{fname}` exceeds the depth budget"))
-                .with_help("make sure the recursion reaches a base case")
-                .into());
+            return Err(error(
+                "rtc::budget::recursion",
+                span,
+                format!("calls nested deeper than {}", self.opts.max_recursion_depth),
+            )
+            .with_label(format!("this call to `{fname}` exceeds the depth budget"))
+            .with_help("make sure the recursion reaches a base case")
+            .into());
         }
-        let mut slots: Vec<Option<(crate::syntax::intern::Sym, Value, Span)>> = vec![None; def.params.len()];
+        let mut slots: Vec<Option<(crate::syntax::intern::Sym, Value, Span)>> =
+            vec![None; def.params.len()];
         let mut next_pos = 0;
         let mut seen_named: Option<Span> = None;
         for a in args {
@@ -94,10 +112,15 @@ impl Interp<'_> {
                     seen_named.get_or_insert(n.span);
                     let Some(i) = def.params.iter().position(|p| p.name.sym == n.sym) else {
                         let names = def.params.iter().map(|p| p.name.sym.as_str());
-                        let d = error("rtc::arg::unknown", n.span, format!("`{fname}` has no parameter named `{}`", n.sym))
-                            .with_label("unknown argument")
-                            .with_secondary(def.name.span, format!("`{fname}` is defined here"));
-                        let list: Vec<&str> = def.params.iter().map(|p| p.name.sym.as_str()).collect();
+                        let d = error(
+                            "rtc::arg::unknown",
+                            n.span,
+                            format!("`{fname}` has no parameter named `{}`", n.sym),
+                        )
+                        .with_label("unknown argument")
+                        .with_secondary(def.name.span, format!("`{fname}` is defined here"));
+                        let list: Vec<&str> =
+                            def.params.iter().map(|p| p.name.sym.as_str()).collect();
                         let help = suggest(n.sym.as_str(), names)
                             .unwrap_or_else(|| format!("its parameters are: {}", list.join(", ")));
                         return Err(d.with_help(help).into());
@@ -106,18 +129,26 @@ impl Interp<'_> {
                 }
                 None => {
                     if let Some(ns) = seen_named {
-                        return Err(error("rtc::arg::positional_after_named", a.span, "positional argument after a named one")
-                            .with_label("positional")
-                            .with_secondary(ns, "named argument before it")
-                            .with_help("put positional arguments first, or name this one too")
-                            .into());
+                        return Err(error(
+                            "rtc::arg::positional_after_named",
+                            a.span,
+                            "positional argument after a named one",
+                        )
+                        .with_label("positional")
+                        .with_secondary(ns, "named argument before it")
+                        .with_help("put positional arguments first, or name this one too")
+                        .into());
                     }
                     next_pos += 1;
                     if next_pos > def.params.len() {
                         return Err(error(
                             "rtc::arg::too_many",
                             a.span,
-                            format!("`{fname}` takes {} argument{} but more were given", def.params.len(), if def.params.len() == 1 { "" } else { "s" }),
+                            format!(
+                                "`{fname}` takes {} argument{} but more were given",
+                                def.params.len(),
+                                if def.params.len() == 1 { "" } else { "s" }
+                            ),
                         )
                         .with_label("unexpected argument")
                         .with_secondary(def.name.span, format!("`{fname}` is defined here"))
@@ -128,10 +159,14 @@ impl Interp<'_> {
                 }
             };
             if slots[idx].is_some() {
-                return Err(error("rtc::arg::duplicate", a.span, format!("parameter `{}` is given twice", def.params[idx].name.sym))
-                    .with_label("second value")
-                    .with_help("remove one of the two arguments")
-                    .into());
+                return Err(error(
+                    "rtc::arg::duplicate",
+                    a.span,
+                    format!("parameter `{}` is given twice", def.params[idx].name.sym),
+                )
+                .with_label("second value")
+                .with_help("remove one of the two arguments")
+                .into());
             }
             slots[idx] = Some((def.params[idx].name.sym, a.value, a.span));
         }
@@ -166,10 +201,14 @@ impl Interp<'_> {
                     Some(d) => (self.eval(d)?, d.span),
                     None => {
                         return Err(EvalError::from(
-                            error("rtc::arg::missing", span, format!("missing argument `{}` in call of `{fname}`", p.name.sym))
-                                .with_label(format!("`{}` is required", p.name.sym))
-                                .with_secondary(p.name.span, "declared here without a default")
-                                .with_help(format!("add `{}: ...` to the call", p.name.sym)),
+                            error(
+                                "rtc::arg::missing",
+                                span,
+                                format!("missing argument `{}` in call of `{fname}`", p.name.sym),
+                            )
+                            .with_label(format!("`{}` is required", p.name.sym))
+                            .with_secondary(p.name.span, "declared here without a default")
+                            .with_help(format!("add `{}: ...` to the call", p.name.sym)),
                         ));
                     }
                 },

@@ -31,7 +31,10 @@ impl EvalError {
             EvalError::Diag(mut d) => {
                 let msg = message();
                 // Recursion repeats one frame; show it once.
-                let repeat = d.trace.last().is_some_and(|f| f.span == span && f.message == msg);
+                let repeat = d
+                    .trace
+                    .last()
+                    .is_some_and(|f| f.span == span && f.message == msg);
                 if !repeat && d.trace.len() < MAX_FRAMES {
                     d.trace.push(crate::diag::TraceFrame { span, message: msg });
                 }
@@ -51,7 +54,9 @@ pub fn error(code: &'static str, span: Span, message: impl Into<String>) -> Diag
 /// A single transposition or edit (`fvo` for `fov`) counts as close even for short names.
 pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<String> {
     let cands: Vec<&str> = candidates.into_iter().collect();
-    let near = cands.iter().find(|c| name.len() >= 2 && strsim::osa_distance(name, c) == 1);
+    let near = cands
+        .iter()
+        .find(|c| name.len() >= 2 && strsim::osa_distance(name, c) == 1);
     near.copied()
         .or_else(|| crate::diag::did_you_mean(name, cands.iter().copied()))
         .map(|c| format!("a similar name exists: `{c}`"))

@@ -10,7 +10,7 @@ use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
 
 use super::EvalOptions;
-use super::error::{error, suggest, EvalError, R};
+use super::error::{EvalError, R, error, suggest};
 use super::modules::{Module, Scope};
 use super::value::{Closure, Record, Value};
 
@@ -59,7 +59,9 @@ impl<'a> Interp<'a> {
 
     /// Records a warning once per (code, span), however often a loop reaches it.
     pub fn warn(&mut self, d: Diagnostic) {
-        let Some(span) = d.span else { return self.diags.push(d) };
+        let Some(span) = d.span else {
+            return self.diags.push(d);
+        };
         if self.warned.insert((d.code, span)) {
             self.diags.push(d);
         }
@@ -78,7 +80,11 @@ impl<'a> Interp<'a> {
             }
         }
         if let Some(b) = self.scope.items.borrow().get(&sym) {
-            return if b.poisoned { Err(EvalError::Poisoned) } else { Ok(b.value.clone()) };
+            return if b.poisoned {
+                Err(EvalError::Poisoned)
+            } else {
+                Ok(b.value.clone())
+            };
         }
         if let Some(v) = super::builtins::global(sym) {
             return Ok(v);
@@ -87,8 +93,10 @@ impl<'a> Interp<'a> {
     }
 
     fn unknown_name(&self, sym: Sym, span: Span) -> Diagnostic {
-        let mut names: Vec<&'static str> =
-            self.locals[self.frame_base..].iter().map(|(k, _)| k.as_str()).collect();
+        let mut names: Vec<&'static str> = self.locals[self.frame_base..]
+            .iter()
+            .map(|(k, _)| k.as_str())
+            .collect();
         names.extend(self.scope.items.borrow().keys().map(|k| k.as_str()));
         names.extend(super::builtins::global_names());
         names.sort_unstable();
@@ -109,6 +117,7 @@ impl<'a> Interp<'a> {
             ExprKind::Bool(b) => Value::Bool(*b),
             ExprKind::Color(c) => Value::Color((*c).into()),
             ExprKind::Str(parts) => self.string(parts)?,
+            ExprKind::StrLit(s) => Value::Str(s.clone()),
             ExprKind::Ident(s) => self.lookup(*s, e.span)?,
             ExprKind::List(items) => self.list(items, e.span)?,
             ExprKind::Record(fields) => self.record(fields)?,
@@ -117,9 +126,12 @@ impl<'a> Interp<'a> {
                 super::ops::unary(*op, v, e.span)?
             }
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e.span)?,
-            ExprKind::Range { start, end, inclusive, step } => {
-                self.range(start, end, *inclusive, step.as_deref(), e.span)?
-            }
+            ExprKind::Range {
+                start,
+                end,
+                inclusive,
+                step,
+            } => self.range(start, end, *inclusive, step.as_deref(), e.span)?,
             ExprKind::Call(callee, args) => self.call_expr(callee, args, e.span)?,
             ExprKind::Member(obj, name) => {
                 let v = self.eval(obj)?;
@@ -146,12 +158,15 @@ impl<'a> Interp<'a> {
                         Some(e) => self.eval(e)?,
                         None => Value::List(Rc::new(Vec::new())),
                     },
-                    other => return Err(super::types::mismatch(self, "Bool", &other, cond.span).into()),
+                    other => {
+                        return Err(super::types::mismatch(self, "Bool", &other, cond.span).into());
+                    }
                 }
             }
             ExprKind::For(gens, filter, body) => {
                 let mut out = Vec::new();
-                self.for_level(gens, 0, filter.as_deref(), body, e.span, &mut out)?;
+                let header = self.header_span(e.span, body.span);
+                self.for_level(gens, 0, filter.as_deref(), body, header, &mut out)?;
                 Value::List(Rc::new(out))
             }
             ExprKind::Lambda(def) => Value::Fn(Rc::new(Closure {
@@ -161,6 +176,20 @@ impl<'a> Interp<'a> {
             })),
             ExprKind::Block(b) => self.block(b)?,
         })
+    }
+
+    /// `for i in 0..5` without its body: what traces and budget errors point at.
+    fn header_span(&self, whole: Span, body: Span) -> Span {
+        let text = self.sources.get(whole.file).text.as_bytes();
+        let mut end = body.start.max(whole.start);
+        while end > whole.start
+            && text
+                .get(end as usize - 1)
+                .is_some_and(|c| c.is_ascii_whitespace())
+        {
+            end -= 1;
+        }
+        Span { end, ..whole }
     }
 
     fn string(&mut self, parts: &[StrPart]) -> R<Value> {
@@ -184,7 +213,10 @@ impl<'a> Interp<'a> {
     pub fn check_list_len(&self, len: usize, span: Span) -> R<()> {
         if len as u64 > self.opts.max_list_len {
             return Err(error("rtc::budget::list", span, "list is too long")
-                .with_label(format!("this list grows past {} elements", self.opts.max_list_len))
+                .with_label(format!(
+                    "this list grows past {} elements",
+                    self.opts.max_list_len
+                ))
                 .with_help("build fewer elements, e.g. with a coarser `step`")
                 .into());
         }
@@ -192,22 +224,15 @@ impl<'a> Interp<'a> {
     }
 
     fn list(&mut self, items: &[Expr], span: Span) -> R<Value> {
-        if items.len() == 3 {
-            let mut v = [0.0; 3];
-            let mut all_numbers = true;
-            let mut vals = Vec::with_capacity(3);
-            for (k, it) in items.iter().enumerate() {
-                let x = self.eval(it)?;
-                match x.as_f64() {
-                    Some(f) if all_numbers => v[k] = f,
-                    _ => all_numbers = false,
-                }
-                vals.push(x);
+        if let [a, b, c] = items {
+            // `[x, y, z]` of numbers is a Vec3; evaluate without a heap list first.
+            let vals = [self.eval(a)?, self.eval(b)?, self.eval(c)?];
+            if let (Some(x), Some(y), Some(z)) =
+                (vals[0].as_f64(), vals[1].as_f64(), vals[2].as_f64())
+            {
+                return Ok(Value::Vec3(glam::DVec3::new(x, y, z)));
             }
-            if all_numbers {
-                return Ok(Value::Vec3(v.into()));
-            }
-            return Ok(Value::List(Rc::new(vals)));
+            return Ok(Value::List(Rc::new(vals.into())));
         }
         let mut out = Vec::with_capacity(items.len());
         for it in items {
@@ -221,14 +246,23 @@ impl<'a> Interp<'a> {
         let mut r = Record::default();
         for f in fields {
             if let Some(prev) = r.fields.iter().find(|x| x.name == f.name.sym) {
-                return Err(error("rtc::field::duplicate", f.name.span, format!("field `{}` is given twice", f.name.sym))
-                    .with_label("second value")
-                    .with_secondary(prev.name_span, "first value")
-                    .with_help("remove one of them")
-                    .into());
+                return Err(error(
+                    "rtc::field::duplicate",
+                    f.name.span,
+                    format!("field `{}` is given twice", f.name.sym),
+                )
+                .with_label("second value")
+                .with_secondary(prev.name_span, "first value")
+                .with_help("remove one of them")
+                .into());
             }
             let v = self.eval(&f.value)?;
-            r.fields.push(super::value::FieldVal { name: f.name.sym, value: v, span: f.value.span, name_span: f.name.span });
+            r.fields.push(super::value::FieldVal {
+                name: f.name.sym,
+                value: v,
+                span: f.value.span,
+                name_span: f.name.span,
+            });
         }
         Ok(Value::Record(Rc::new(r)))
     }
@@ -253,7 +287,14 @@ impl<'a> Interp<'a> {
         super::ops::binary(self, op, l, r, a.span, b.span, span)
     }
 
-    fn range(&mut self, s: &Expr, e: &Expr, inclusive: bool, step: Option<&Expr>, span: Span) -> R<Value> {
+    fn range(
+        &mut self,
+        s: &Expr,
+        e: &Expr,
+        inclusive: bool,
+        step: Option<&Expr>,
+        span: Span,
+    ) -> R<Value> {
         let sv = self.eval(s)?;
         let ev = self.eval(e)?;
         let stv = match step {
@@ -261,7 +302,8 @@ impl<'a> Interp<'a> {
             None => None,
         };
         let num = |me: &Self, v: &Value, sp: Span| -> R<f64> {
-            v.as_f64().ok_or_else(|| super::types::mismatch(me, "Int", v, sp).into())
+            v.as_f64()
+                .ok_or_else(|| super::types::mismatch(me, "Int", v, sp).into())
         };
         let start = num(self, &sv, s.span)?;
         let end = num(self, &ev, e.span)?;
@@ -271,13 +313,23 @@ impl<'a> Interp<'a> {
         };
         if step == 0.0 || !step.is_finite() || !start.is_finite() || !end.is_finite() {
             let sp = stv.as_ref().map_or(span, |x| x.1);
-            return Err(error("rtc::value::range_step", sp, "a range needs a finite, non-zero step")
-                .with_label("this range would never end")
-                .with_help("use a positive `step`, e.g. `step 0.1`")
-                .into());
+            return Err(error(
+                "rtc::value::range_step",
+                sp,
+                "a range needs a finite, non-zero step",
+            )
+            .with_label("this range would never end")
+            .with_help("use a positive `step`, e.g. `step 0.1`")
+            .into());
         }
         let ints = matches!(sv, Value::Int(_)) && matches!(ev, Value::Int(_)) && step_int;
-        Ok(Value::Range(super::value::Range { start, end, step, inclusive, ints }))
+        Ok(Value::Range(super::value::Range {
+            start,
+            end,
+            step,
+            inclusive,
+            ints,
+        }))
     }
 
     /// Evaluates a block in a new scope; its value is its last expression (`Unit` if none).
@@ -310,10 +362,14 @@ impl<'a> Interp<'a> {
                     self.bind_local(def.name, Value::Fn(Rc::new(c)), mark)?;
                 }
                 Stmt::Import(im) => {
-                    return Err(error("rtc::module::import_position", im.span, "`import` inside a block")
-                        .with_label("imports belong at the top of a file")
-                        .with_help("move this `import` to the top level of the file")
-                        .into());
+                    return Err(error(
+                        "rtc::module::import_position",
+                        im.span,
+                        "`import` inside a block",
+                    )
+                    .with_label("imports belong at the top of a file")
+                    .with_help("move this `import` to the top level of the file")
+                    .into());
                 }
                 Stmt::Expr(e) => {
                     let v = self.eval(e)?;
@@ -333,18 +389,34 @@ impl<'a> Interp<'a> {
 
     fn bind_local(&mut self, name: Name, v: Value, mark: usize) -> R<()> {
         if self.locals[mark..].iter().any(|(k, _)| *k == name.sym) {
-            return Err(error("rtc::name::duplicate", name.span, format!("`{}` is already defined in this block", name.sym))
-                .with_label("second definition")
-                .with_help(format!("choose another name, or remove the earlier `let {}`", name.sym))
-                .into());
+            return Err(error(
+                "rtc::name::duplicate",
+                name.span,
+                format!("`{}` is already defined in this block", name.sym),
+            )
+            .with_label("second definition")
+            .with_help(format!(
+                "choose another name, or remove the earlier `let {}`",
+                name.sym
+            ))
+            .into());
         }
-        let outer = self.locals[self.frame_base..mark].iter().any(|(k, _)| *k == name.sym)
+        let outer = self.locals[self.frame_base..mark]
+            .iter()
+            .any(|(k, _)| *k == name.sym)
             || self.scope.items.borrow().contains_key(&name.sym);
         if outer && !name.sym.as_str().starts_with('_') {
             self.warn(
-                Diagnostic::warning("rtc::name::shadowed", name.span, format!("`{}` shadows an outer binding", name.sym))
-                    .with_label("this hides the outer value in this block")
-                    .with_help(format!("rename it, or write `_{}` if the shadowing is intended", name.sym)),
+                Diagnostic::warning(
+                    "rtc::name::shadowed",
+                    name.span,
+                    format!("`{}` shadows an outer binding", name.sym),
+                )
+                .with_label("this hides the outer value in this block")
+                .with_help(format!(
+                    "rename it, or write `_{}` if the shadowing is intended",
+                    name.sym
+                )),
             );
         }
         self.locals.push((name.sym, v));
@@ -364,8 +436,13 @@ impl<'a> Interp<'a> {
             let r = self.for_body(filter, body, out, span);
             return r.map_err(|e| {
                 let vars = &self.locals[self.locals.len() - gens.len()..];
-                let desc: Vec<String> = vars.iter().map(|(k, v)| format!("{k} = {}", v.show())).collect();
-                e.frame(span, || format!("in iteration {} of this `for`", desc.join(", ")))
+                let desc: Vec<String> = vars
+                    .iter()
+                    .map(|(k, v)| format!("{k} = {}", v.show()))
+                    .collect();
+                e.frame(span, || {
+                    format!("in iteration {} of this `for`", desc.join(", "))
+                })
             });
         }
         let g = &gens[level];
@@ -374,7 +451,10 @@ impl<'a> Interp<'a> {
             me.loop_iters += 1;
             if me.loop_iters > me.opts.max_loop_iterations {
                 return Err(error("rtc::budget::loop", span, "loop budget exhausted")
-                    .with_label(format!("the scene's loops ran more than {} iterations in total", me.opts.max_loop_iterations))
+                    .with_label(format!(
+                        "the scene's loops ran more than {} iterations in total",
+                        me.opts.max_loop_iterations
+                    ))
                     .with_help("reduce the ranges of the loops")
                     .into());
             }
@@ -400,8 +480,15 @@ impl<'a> Interp<'a> {
                 }
             }
             other => {
-                let d = error("rtc::type::mismatch", g.iter.span, format!("cannot loop over {}", super::value::a_type(other.type_name())))
-                    .with_label("not a range or a list");
+                let d = error(
+                    "rtc::type::mismatch",
+                    g.iter.span,
+                    format!(
+                        "cannot loop over {}",
+                        super::value::a_type(other.type_name())
+                    ),
+                )
+                .with_label("not a range or a list");
                 let d = if matches!(other, Value::Int(_)) {
                     d.with_help(format!("write a range: `0..{}`", self.snippet(g.iter.span)))
                 } else {
@@ -413,7 +500,13 @@ impl<'a> Interp<'a> {
         Ok(())
     }
 
-    fn for_body(&mut self, filter: Option<&Expr>, body: &Block, out: &mut Vec<Value>, span: Span) -> R<()> {
+    fn for_body(
+        &mut self,
+        filter: Option<&Expr>,
+        body: &Block,
+        out: &mut Vec<Value>,
+        span: Span,
+    ) -> R<()> {
         if let Some(f) = filter {
             match self.eval(f)? {
                 Value::Bool(true) => {}

@@ -2,7 +2,6 @@
 //! textures (shared by identity, so one material used by a million objects is stored once),
 //! lights, the camera and render settings.
 
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use glam::DAffine3;
@@ -26,8 +25,8 @@ pub struct Lowerer {
     pub renders: Vec<Rc<RenderVal>>,
     materials: Vec<ir::Material>,
     textures: Vec<ir::Texture>,
-    mat_ids: HashMap<*const Mat, ir::MaterialId>,
-    tex_ids: HashMap<*const Tex, ir::TextureId>,
+    mat_ids: super::fxhash::FxHashMap<*const Mat, ir::MaterialId>,
+    tex_ids: super::fxhash::FxHashMap<*const Tex, ir::TextureId>,
     /// Keeps every lowered material alive so its address is never reused by another.
     keep: Vec<Rc<Mat>>,
     keep_tex: Vec<Rc<Tex>>,
@@ -37,7 +36,11 @@ pub struct Lowerer {
 pub fn emittable(v: &Value) -> bool {
     match v {
         Value::Object(_) | Value::Light(_) | Value::Camera(_) | Value::Render(_) => true,
-        Value::List(l) => !l.is_empty() && l.iter().all(|x| emittable(x) || matches!(x, Value::List(_))),
+        Value::List(l) => {
+            !l.is_empty()
+                && l.iter()
+                    .all(|x| emittable(x) || matches!(x, Value::List(_)))
+        }
         _ => false,
     }
 }
@@ -49,9 +52,13 @@ impl Lowerer {
             Value::Object(o) => {
                 self.object(o, DAffine3::IDENTITY, None);
                 if self.objects.len() as u64 > max_objects {
-                    return Err(Diagnostic::error("rtc::budget::objects", span, "too many objects")
-                        .with_label(format!("the scene passes {max_objects} objects here"))
-                        .with_help("emit fewer objects, e.g. with a coarser loop `step`"));
+                    return Err(Diagnostic::error(
+                        "rtc::budget::objects",
+                        span,
+                        "too many objects",
+                    )
+                    .with_label(format!("the scene passes {max_objects} objects here"))
+                    .with_help("emit fewer objects, e.g. with a coarser loop `step`"));
                 }
             }
             Value::Light(l) => self.lights.push((**l).clone()),
@@ -64,9 +71,16 @@ impl Lowerer {
             }
             Value::Unit => {}
             other => {
-                return Err(Diagnostic::error("rtc::value::discarded", span, format!("{} cannot be part of the scene", super::value::a_type(other.type_name())))
-                    .with_label("this value goes nowhere")
-                    .with_help("bind it with `let name = ...`, or remove it"))
+                return Err(Diagnostic::error(
+                    "rtc::value::discarded",
+                    span,
+                    format!(
+                        "{} cannot be part of the scene",
+                        super::value::a_type(other.type_name())
+                    ),
+                )
+                .with_label("this value goes nowhere")
+                .with_help("bind it with `let name = ...`, or remove it"));
             }
         }
         Ok(())
@@ -90,7 +104,10 @@ impl Lowerer {
         }
         let mut im = m.m.clone();
         im.texture = m.texture.as_ref().map(|t| self.texture(t));
-        im.bump = m.bump.as_ref().map(|(t, s)| ir::Bump { texture: self.texture(t), scale: *s });
+        im.bump = m.bump.as_ref().map(|(t, s)| ir::Bump {
+            texture: self.texture(t),
+            scale: *s,
+        });
         self.materials.push(im);
         let id = ir::MaterialId((self.materials.len() - 1) as u32);
         self.mat_ids.insert(Rc::as_ptr(m), id);
@@ -104,14 +121,25 @@ impl Lowerer {
         self.objects = out;
     }
 
-    fn lower_into(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>, out: &mut Vec<ir::Object>) {
+    fn lower_into(
+        &mut self,
+        o: &Obj,
+        parent: DAffine3,
+        inherited: Option<ir::MaterialId>,
+        out: &mut Vec<ir::Object>,
+    ) {
         let t = parent * o.transform;
         let mat = match &o.material {
             Some(m) => Some(self.material(m)),
             None => inherited,
         };
         match &o.shape {
-            ObjShape::Prim(s) => out.push(ir::Object { shape: s.clone(), transform: t, material: mat, span: o.span }),
+            ObjShape::Prim(s) => out.push(ir::Object {
+                shape: s.clone(),
+                transform: t,
+                material: mat,
+                span: o.span,
+            }),
             ObjShape::Group(ch) => {
                 for c in ch.iter() {
                     self.lower_into(c, t, mat, out);
@@ -129,7 +157,10 @@ impl Lowerer {
                                 self.lower_into(x, DAffine3::IDENTITY, None, &mut sub);
                             }
                             kids.push(ir::Object {
-                                shape: ir::Shape::Csg { op: ir::CsgOp::Union, children: sub },
+                                shape: ir::Shape::Csg {
+                                    op: ir::CsgOp::Union,
+                                    children: sub,
+                                },
                                 transform: c.transform,
                                 material: cm,
                                 span: c.span,
@@ -138,7 +169,15 @@ impl Lowerer {
                         _ => self.lower_into(c, DAffine3::IDENTITY, None, &mut kids),
                     }
                 }
-                out.push(ir::Object { shape: ir::Shape::Csg { op: *op, children: kids }, transform: t, material: mat, span: o.span });
+                out.push(ir::Object {
+                    shape: ir::Shape::Csg {
+                        op: *op,
+                        children: kids,
+                    },
+                    transform: t,
+                    material: mat,
+                    span: o.span,
+                });
             }
         }
     }
@@ -148,24 +187,37 @@ impl Lowerer {
         let mut errs = Vec::new();
         if self.cameras.len() > 1 {
             errs.push(
-                Diagnostic::error("rtc::camera::duplicate", self.cameras[1].span, "the scene has two cameras")
-                    .with_label("second camera")
-                    .with_secondary(self.cameras[0].span, "first camera")
-                    .with_help("remove one of them, or bind the spare one with `let`"),
+                Diagnostic::error(
+                    "rtc::camera::duplicate",
+                    self.cameras[1].span,
+                    "the scene has two cameras",
+                )
+                .with_label("second camera")
+                .with_secondary(self.cameras[0].span, "first camera")
+                .with_help("remove one of them, or bind the spare one with `let`"),
             );
         }
         if self.renders.len() > 1 {
             errs.push(
-                Diagnostic::error("rtc::render::duplicate", self.renders[1].span, "the scene has two `render` blocks")
-                    .with_label("second `render`")
-                    .with_secondary(self.renders[0].span, "first `render`")
-                    .with_help("merge them into one `render { ... }`"),
+                Diagnostic::error(
+                    "rtc::render::duplicate",
+                    self.renders[1].span,
+                    "the scene has two `render` blocks",
+                )
+                .with_label("second `render`")
+                .with_secondary(self.renders[0].span, "first `render`")
+                .with_help("merge them into one `render { ... }`"),
             );
         }
         let Some(camera) = self.cameras.first().map(|c| (**c).clone()) else {
             errs.push(
-                Diagnostic::new(crate::diag::Severity::Error, "rtc::camera::missing", None, "the scene has no camera")
-                    .with_help("add one, e.g. `camera { eye: [0, 2, 8], center: [0, 0, 0] }`"),
+                Diagnostic::new(
+                    crate::diag::Severity::Error,
+                    "rtc::camera::missing",
+                    None,
+                    "the scene has no camera",
+                )
+                .with_help("add one, e.g. `camera { eye: [0, 2, 8], center: [0, 0, 0] }`"),
             );
             return Err(errs);
         };
@@ -178,7 +230,11 @@ impl Lowerer {
                 s.default_material = r.material.as_ref().map(|m| self.material(m));
                 s
             }
-            None => ir::RenderSettings { shadows: true, max_depth: 5, ..ir::RenderSettings::default() },
+            None => ir::RenderSettings {
+                shadows: true,
+                max_depth: 5,
+                ..ir::RenderSettings::default()
+            },
         };
         Ok(ir::Scene {
             camera,

@@ -6,7 +6,7 @@ use crate::source::Span;
 use crate::syntax::ast::Name;
 use crate::syntax::intern::Sym;
 
-use super::error::{error, suggest, R};
+use super::error::{R, error, suggest};
 use super::interp::Interp;
 use super::value::{FieldVal, Record, Value};
 
@@ -16,7 +16,16 @@ fn members_of(v: &Value) -> &'static [&'static str] {
         Value::Vec3(_) => &["x", "y", "z", "xy", "xz", "yz", "xyz", "zyx"],
         Value::Color(_) => &["r", "g", "b"],
         Value::Angle(_) => &["deg", "rad", "turn"],
-        Value::Object(_) => &["bounds", "material", "translate", "scale", "rotate", "matrix", "around", "transform"],
+        Value::Object(_) => &[
+            "bounds",
+            "material",
+            "translate",
+            "scale",
+            "rotate",
+            "matrix",
+            "around",
+            "transform",
+        ],
         Value::Camera(_) => &["eye", "center", "up"],
         _ => &[],
     }
@@ -30,15 +39,24 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
             return match m.export(name.sym) {
                 Ok(b) if b.poisoned => Err(super::error::EvalError::Poisoned),
                 Ok(b) => Ok(b.value),
-                Err(true) => Err(error("rtc::module::private", name.span, format!("`{n}` is not public in module `{}`", m.name))
-                    .with_label("private item")
-                    .with_help(format!("mark it `pub` in `{}`", m.name))
-                    .into()),
+                Err(true) => Err(error(
+                    "rtc::module::private",
+                    name.span,
+                    format!("`{n}` is not public in module `{}`", m.name),
+                )
+                .with_label("private item")
+                .with_help(format!("mark it `pub` in `{}`", m.name))
+                .into()),
                 Err(false) => {
-                    let d = error("rtc::name::unknown", name.span, format!("no item named `{n}` in module `{}`", m.name))
-                        .with_label(format!("not found in `{}`", m.name));
-                    let help = suggest(n, m.export_names())
-                        .unwrap_or_else(|| format!("`{}` exports: {}", m.name, m.export_names().join(", ")));
+                    let d = error(
+                        "rtc::name::unknown",
+                        name.span,
+                        format!("no item named `{n}` in module `{}`", m.name),
+                    )
+                    .with_label(format!("not found in `{}`", m.name));
+                    let help = suggest(n, m.export_names()).unwrap_or_else(|| {
+                        format!("`{}` exports: {}", m.name, m.export_names().join(", "))
+                    });
                     Err(d.with_help(help).into())
                 }
             };
@@ -48,16 +66,27 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
                 return Ok(x.clone());
             }
             let names: Vec<&str> = r.fields.iter().map(|f| f.name.as_str()).collect();
-            let d = error("rtc::field::unknown", name.span, format!("the record has no field `{n}`")).with_label("unknown field");
-            let help = suggest(n, names.iter().copied()).unwrap_or_else(|| format!("its fields are: {}", names.join(", ")));
+            let d = error(
+                "rtc::field::unknown",
+                name.span,
+                format!("the record has no field `{n}`"),
+            )
+            .with_label("unknown field");
+            let help = suggest(n, names.iter().copied())
+                .unwrap_or_else(|| format!("its fields are: {}", names.join(", ")));
             return Err(d.with_help(help).into());
         }
-        Value::Vec3(x) if !n.is_empty() && n.len() <= 3 && n.chars().all(|c| matches!(c, 'x' | 'y' | 'z')) => {
-            let comps: Vec<f64> = n.chars().map(|c| match c {
-                'x' => x.x,
-                'y' => x.y,
-                _ => x.z,
-            }).collect();
+        Value::Vec3(x)
+            if !n.is_empty() && n.len() <= 3 && n.chars().all(|c| matches!(c, 'x' | 'y' | 'z')) =>
+        {
+            let comps: Vec<f64> = n
+                .chars()
+                .map(|c| match c {
+                    'x' => x.x,
+                    'y' => x.y,
+                    _ => x.z,
+                })
+                .collect();
             Some(match comps.as_slice() {
                 [a] => Value::Float(*a),
                 [a, b, c] => Value::Vec3(glam::DVec3::new(*a, *b, *c)),
@@ -81,10 +110,14 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
             "material" => Some(match &o.material {
                 Some(m) => Value::Material(m.clone()),
                 None => {
-                    return Err(error("rtc::value::no_material", name.span, "this object has no material yet")
-                        .with_label("nothing to read")
-                        .with_help("give it one with `.material(m)` first")
-                        .into())
+                    return Err(error(
+                        "rtc::value::no_material",
+                        name.span,
+                        "this object has no material yet",
+                    )
+                    .with_label("nothing to read")
+                    .with_help("give it one with `.material(m)` first")
+                    .into());
                 }
             }),
             _ => None,
@@ -101,8 +134,15 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
         return Ok(x);
     }
     let known = members_of(&v);
-    let d = error("rtc::field::unknown", name.span, format!("{} has no member `{n}`", super::value::a_type(v.type_name())))
-        .with_label("unknown member");
+    let d = error(
+        "rtc::field::unknown",
+        name.span,
+        format!(
+            "{} has no member `{n}`",
+            super::value::a_type(v.type_name())
+        ),
+    )
+    .with_label("unknown member");
     let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
         if known.is_empty() {
             format!("{} has no members", super::value::a_type(v.type_name()))
@@ -116,26 +156,45 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
 /// `v[i]`.
 pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
     let Value::Int(k) = i else {
-        return Err(error("rtc::type::mismatch", ispan, format!("expected `Int`, found `{}`", i.type_name()))
-            .with_label("an index must be an integer")
-            .with_help("use `round(...)` or `floor(...)` to get an `Int`")
-            .into());
+        return Err(error(
+            "rtc::type::mismatch",
+            ispan,
+            format!("expected `Int`, found `{}`", i.type_name()),
+        )
+        .with_label("an index must be an integer")
+        .with_help("use `round(...)` or `floor(...)` to get an `Int`")
+        .into());
     };
     let len = match &v {
         Value::List(l) => l.len(),
         Value::Vec3(_) => 3,
         other => {
-            return Err(error("rtc::type::mismatch", ispan, format!("{} cannot be indexed", super::value::a_type(other.type_name())))
-                .with_label("indexed here")
-                .with_help("only lists and vectors can be indexed")
-                .into())
+            return Err(error(
+                "rtc::type::mismatch",
+                ispan,
+                format!(
+                    "{} cannot be indexed",
+                    super::value::a_type(other.type_name())
+                ),
+            )
+            .with_label("indexed here")
+            .with_help("only lists and vectors can be indexed")
+            .into());
         }
     };
     if k < 0 || k as usize >= len {
-        return Err(error("rtc::value::index", ispan, format!("index {k} is out of range for {len} elements"))
-            .with_label(format!("evaluates to {k}"))
-            .with_help(if len == 0 { "the list is empty".to_owned() } else { format!("use an index from 0 to {}", len - 1) })
-            .into());
+        return Err(error(
+            "rtc::value::index",
+            ispan,
+            format!("index {k} is out of range for {len} elements"),
+        )
+        .with_label(format!("evaluates to {k}"))
+        .with_help(if len == 0 {
+            "the list is empty".to_owned()
+        } else {
+            format!("use an index from 0 to {}", len - 1)
+        })
+        .into());
     }
     Ok(match v {
         Value::List(l) => l[k as usize].clone(),
@@ -149,7 +208,12 @@ pub fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
     Value::Record(Rc::new(Record {
         fields: fields
             .iter()
-            .map(|(k, v)| FieldVal { name: Sym::new(k), value: v.clone(), span, name_span: span })
+            .map(|(k, v)| FieldVal {
+                name: Sym::new(k),
+                value: v.clone(),
+                span,
+                name_span: span,
+            })
             .collect(),
     }))
 }

@@ -5,6 +5,7 @@ pub mod bounds;
 pub mod builtins;
 pub mod call;
 pub mod error;
+pub mod fxhash;
 pub mod interp;
 pub mod lower;
 pub mod members;
@@ -57,8 +58,13 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
         Err(e) => {
             let mut loaded = Loaded::default();
             loaded.diagnostics.push(
-                Diagnostic::new(Severity::Error, crate::frontend::IO_ERROR, None, format!("cannot read `{}`: {e}", path.display()))
-                    .with_help("check the path and the file's permissions"),
+                Diagnostic::new(
+                    Severity::Error,
+                    crate::frontend::IO_ERROR,
+                    None,
+                    format!("cannot read `{}`: {e}", path.display()),
+                )
+                .with_help("check the path and the file's permissions"),
             );
             loaded
         }
@@ -67,7 +73,12 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
 
 /// Parses and evaluates `text` as the scene file `path` (relative paths resolve against its
 /// directory).
-pub fn load_source(path: &Path, text: &str, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
+pub fn load_source(
+    path: &Path,
+    text: &str,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+) -> Loaded {
     // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
     // nesting; a dedicated thread with a large stack keeps that independent of the caller's
     // thread (test harness and rayon threads have small stacks).
@@ -78,7 +89,11 @@ pub fn load_source(path: &Path, text: &str, sources: &mut SourceMap, options: &E
             .spawn_scoped(s, || load_source_here(path, text, sources, options))
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
             .unwrap_or_else(|_| {
-                Loaded::failure(crate::frontend::IO_ERROR, "cannot start the evaluation thread", "free some memory and retry")
+                Loaded::failure(
+                    crate::frontend::IO_ERROR,
+                    "cannot start the evaluation thread",
+                    "free some memory and retry",
+                )
             })
     })
 }
@@ -86,7 +101,12 @@ pub fn load_source(path: &Path, text: &str, sources: &mut SourceMap, options: &E
 /// Stack of the evaluation thread (reserved address space; pages are touched only as needed).
 const EVAL_STACK_BYTES: usize = 256 << 20;
 
-fn load_source_here(path: &Path, text: &str, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
+fn load_source_here(
+    path: &Path,
+    text: &str,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+) -> Loaded {
     let file = sources.add(path, text);
     let mut loaded = Loaded::default();
     let (ast, diags) = crate::syntax::parse(file, text);
@@ -97,11 +117,15 @@ fn load_source_here(path: &Path, text: &str, sources: &mut SourceMap, options: &
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let scope = Rc::new(modules::Scope::new(file, dir, path.display().to_string()));
     let mut it = interp::Interp::new(options, sources, scope);
-    it.loading.push((path.to_path_buf(), crate::source::Span::default()));
+    it.loading
+        .push((path.to_path_buf(), crate::source::Span::default()));
     let mut lowerer = lower::Lowerer::default();
     it.run_module(&ast, Some(&mut lowerer));
     let had_errors = it.diags.iter().any(Diagnostic::is_error);
-    loaded.diagnostics.items.extend(std::mem::take(&mut it.diags));
+    loaded
+        .diagnostics
+        .items
+        .extend(std::mem::take(&mut it.diags));
     if had_errors {
         return loaded;
     }

@@ -2,7 +2,6 @@
 //! cycle detection.
 
 use std::cell::RefCell;
-use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -40,7 +39,7 @@ pub struct Binding {
 #[derive(Debug)]
 pub struct Scope {
     /// Module-level bindings.
-    pub items: RefCell<HashMap<Sym, Binding>>,
+    pub items: RefCell<super::fxhash::FxHashMap<Sym, Binding>>,
     /// Directory that relative paths in this file resolve against.
     pub dir: PathBuf,
     /// The file.
@@ -52,7 +51,12 @@ pub struct Scope {
 impl Scope {
     /// An empty scope for a file.
     pub fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
-        Scope { items: RefCell::new(HashMap::new()), dir, file, name }
+        Scope {
+            items: RefCell::new(Default::default()),
+            dir,
+            file,
+            name,
+        }
     }
 }
 
@@ -77,8 +81,14 @@ impl Module {
 
     /// Names of all exports, sorted (for did-you-mean).
     pub fn export_names(&self) -> Vec<&'static str> {
-        let mut v: Vec<&'static str> =
-            self.scope.items.borrow().iter().filter(|(_, b)| b.public).map(|(k, _)| k.as_str()).collect();
+        let mut v: Vec<&'static str> = self
+            .scope
+            .items
+            .borrow()
+            .iter()
+            .filter(|(_, b)| b.public)
+            .map(|(k, _)| k.as_str())
+            .collect();
         v.sort_unstable();
         v
     }

@@ -6,7 +6,7 @@ use crate::ir::CsgOp;
 use crate::source::Span;
 use crate::syntax::ast::{BinOp, UnOp};
 
-use super::error::{error, R};
+use super::error::{R, error};
 use super::interp::Interp;
 use super::value::{Obj, ObjShape, Value};
 
@@ -20,10 +20,21 @@ pub fn unary(op: UnOp, v: Value, span: Span) -> R<Value> {
         (UnOp::Not, Value::Bool(b)) => Value::Bool(!b),
         (op, v) => {
             let sym = if op == UnOp::Neg { "-" } else { "!" };
-            return Err(error("rtc::type::operator", span, format!("cannot apply `{sym}` to {}", super::value::a_type(v.type_name())))
-                .with_label(format!("this is {}", super::value::a_type(v.type_name())))
-                .with_help(if op == UnOp::Neg { "negate a number, angle or vector" } else { "`!` needs a `Bool`" })
-                .into());
+            return Err(error(
+                "rtc::type::operator",
+                span,
+                format!(
+                    "cannot apply `{sym}` to {}",
+                    super::value::a_type(v.type_name())
+                ),
+            )
+            .with_label(format!("this is {}", super::value::a_type(v.type_name())))
+            .with_help(if op == UnOp::Neg {
+                "negate a number, angle or vector"
+            } else {
+                "`!` needs a `Bool`"
+            })
+            .into());
         }
     })
 }
@@ -36,7 +47,15 @@ fn overflow(span: Span) -> crate::diag::Diagnostic {
 
 /// `a op b` for every operator except the short-circuit `&&` and `||`.
 #[allow(clippy::too_many_arguments)]
-pub fn binary(it: &mut Interp, op: BinOp, l: Value, r: Value, ls: Span, rs: Span, span: Span) -> R<Value> {
+pub fn binary(
+    it: &mut Interp,
+    op: BinOp,
+    l: Value,
+    r: Value,
+    ls: Span,
+    rs: Span,
+    span: Span,
+) -> R<Value> {
     use BinOp::*;
     use Value::*;
     let v = match (op, &l, &r) {
@@ -84,7 +103,7 @@ pub fn binary(it: &mut Interp, op: BinOp, l: Value, r: Value, ls: Span, rs: Span
             it.check_list_len(a.len() + b.len(), span)?;
             List(Rc::new(a.iter().chain(b.iter()).cloned().collect()))
         }
-        (Then, Transform(a), Transform(b)) => Transform(*b * *a),
+        (Then, Transform(a), Transform(b)) => Transform(Rc::new(**b * **a)),
         (Union, Object(_), Object(_)) => csg(it, CsgOp::Union, &l, &r, ls, rs, span)?,
         (Inter, Object(_), Object(_)) => csg(it, CsgOp::Intersection, &l, &r, ls, rs, span)?,
         (Sub, Object(_), Object(_)) => csg(it, CsgOp::Difference, &l, &r, ls, rs, span)?,
@@ -139,7 +158,14 @@ fn equal(a: &Value, b: &Value) -> Option<bool> {
     })
 }
 
-fn op_error(it: &Interp, op: BinOp, l: &Value, r: &Value, ls: Span, rs: Span) -> crate::diag::Diagnostic {
+fn op_error(
+    it: &Interp,
+    op: BinOp,
+    l: &Value,
+    r: &Value,
+    ls: Span,
+    rs: Span,
+) -> crate::diag::Diagnostic {
     let (lt, rt) = (l.type_name(), r.type_name());
     let d = error(
         "rtc::type::operator",
@@ -151,13 +177,19 @@ fn op_error(it: &Interp, op: BinOp, l: &Value, r: &Value, ls: Span, rs: Span) ->
     let snippet = it.snippet(rs).trim().to_owned();
     let lsnip = it.snippet(ls).trim().to_owned();
     match (l, r) {
-        (Value::Angle(_), Value::Int(_) | Value::Float(_)) if matches!(op, BinOp::Add | BinOp::Sub) => {
+        (Value::Angle(_), Value::Int(_) | Value::Float(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
             d.with_help(format!("give the number a unit: `{snippet}deg`"))
         }
-        (Value::Int(_) | Value::Float(_), Value::Angle(_)) if matches!(op, BinOp::Add | BinOp::Sub) => {
+        (Value::Int(_) | Value::Float(_), Value::Angle(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
             d.with_help(format!("give the number a unit: `{lsnip}deg`"))
         }
-        (Value::Vec3(_), Value::Int(_) | Value::Float(_)) if matches!(op, BinOp::Add | BinOp::Sub) => {
+        (Value::Vec3(_), Value::Int(_) | Value::Float(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
             d.with_help(format!("add a vector: `[{snippet}, {snippet}, {snippet}]`"))
         }
         (Value::Str(_), _) | (_, Value::Str(_)) if op == BinOp::Add => {
@@ -169,14 +201,26 @@ fn op_error(it: &Interp, op: BinOp, l: &Value, r: &Value, ls: Span, rs: Span) ->
         (Value::Object(_), _) | (_, Value::Object(_)) => {
             d.with_help("CSG operators `|`, `&` and `-` need an object on both sides")
         }
-        _ => d.with_help(format!("convert one side so both are the same type, e.g. `{lt}`")),
+        _ => d.with_help(format!(
+            "convert one side so both are the same type, e.g. `{lt}`"
+        )),
     }
 }
 
 /// Builds a CSG node; nested nodes of the same operation (without their own transform or
 /// material) are flattened so `a | b | c` is one union of three.
-fn csg(it: &mut Interp, op: CsgOp, l: &Value, r: &Value, ls: Span, rs: Span, span: Span) -> R<Value> {
-    let (Value::Object(a), Value::Object(b)) = (l, r) else { unreachable!("csg on objects") };
+fn csg(
+    it: &mut Interp,
+    op: CsgOp,
+    l: &Value,
+    r: &Value,
+    ls: Span,
+    rs: Span,
+    span: Span,
+) -> R<Value> {
+    let (Value::Object(a), Value::Object(b)) = (l, r) else {
+        unreachable!("csg on objects")
+    };
     for (o, s) in [(a, ls), (b, rs)] {
         super::shapes::require_closed(it, o, s)?;
     }
@@ -201,4 +245,3 @@ fn csg(it: &mut Interp, op: CsgOp, l: &Value, r: &Value, ls: Span, rs: Span, spa
         span,
     })))
 }
-

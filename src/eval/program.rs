@@ -8,10 +8,10 @@ use crate::diag::Diagnostic;
 
 use crate::syntax::ast::{File, Import, ImportSource, Name, Stmt};
 
-use super::error::{error, suggest, EvalError, R};
+use super::error::{EvalError, R, error, suggest};
 use super::interp::Interp;
-use super::lower::{emittable, Lowerer};
-use super::modules::{resolve, stdlib, Binding, Module, Scope, STDLIB};
+use super::lower::{Lowerer, emittable};
+use super::modules::{Binding, Module, STDLIB, Scope, resolve, stdlib};
 use super::value::{Closure, Value};
 
 impl Interp<'_> {
@@ -25,15 +25,30 @@ impl Interp<'_> {
     fn bind_module(&mut self, name: Name, value: Value, public: bool, poisoned: bool) {
         let mut items = self.scope.items.borrow_mut();
         if let Some(prev) = items.get(&name.sym) {
-            let d = error("rtc::name::duplicate", name.span, format!("`{}` is already defined", name.sym))
-                .with_label("second definition")
-                .with_secondary(prev.span, "first definition")
-                .with_help(format!("rename one of them; names cannot be rebound (`let {}` is immutable)", name.sym));
+            let d = error(
+                "rtc::name::duplicate",
+                name.span,
+                format!("`{}` is already defined", name.sym),
+            )
+            .with_label("second definition")
+            .with_secondary(prev.span, "first definition")
+            .with_help(format!(
+                "rename one of them; names cannot be rebound (`let {}` is immutable)",
+                name.sym
+            ));
             drop(items);
             self.diags.push(d);
             return;
         }
-        items.insert(name.sym, Binding { value, public, span: name.span, poisoned });
+        items.insert(
+            name.sym,
+            Binding {
+                value,
+                public,
+                span: name.span,
+                poisoned,
+            },
+        );
     }
 
     /// Evaluates a module's statements. `scene` receives emitted values; `None` for libraries,
@@ -41,7 +56,11 @@ impl Interp<'_> {
     pub fn run_module(&mut self, file: &File, mut scene: Option<&mut Lowerer>) {
         for st in &file.stmts {
             if let Stmt::Fn(def) = st {
-                let c = Closure { def: def.clone(), captured: Vec::new(), module: self.scope.clone() };
+                let c = Closure {
+                    def: def.clone(),
+                    captured: Vec::new(),
+                    module: self.scope.clone(),
+                };
                 self.bind_module(def.name, Value::Fn(Rc::new(c)), def.public, false);
             }
         }
@@ -93,9 +112,13 @@ impl Interp<'_> {
                         }
                         None if matches!(v, Value::Unit) => {}
                         None => self.diags.push(
-                            error("rtc::value::discarded", e.span, format!("this `{}` is discarded", v.type_name()))
-                                .with_label("this value goes nowhere")
-                                .with_help("bind it with `pub let name = ...`, or remove it"),
+                            error(
+                                "rtc::value::discarded",
+                                e.span,
+                                format!("this `{}` is discarded", v.type_name()),
+                            )
+                            .with_label("this value goes nowhere")
+                            .with_help("bind it with `pub let name = ...`, or remove it"),
                         ),
                     }
                 }
@@ -107,9 +130,16 @@ impl Interp<'_> {
         let module = self.load_module(im)?;
         if im.names.is_empty() {
             let alias = im.alias.unwrap_or_else(|| {
-                let last = module.name.rsplit(['.', '/']).next().unwrap_or(&module.name);
+                let last = module
+                    .name
+                    .rsplit(['.', '/'])
+                    .next()
+                    .unwrap_or(&module.name);
                 let last = last.trim_end_matches(".rtc");
-                Name { sym: crate::syntax::intern::Sym::new(last), span: im.source_span }
+                Name {
+                    sym: crate::syntax::intern::Sym::new(last),
+                    span: im.source_span,
+                }
             });
             self.bind_module(alias, Value::Module(module), false, false);
             return Ok(());
@@ -137,15 +167,24 @@ impl Interp<'_> {
                         .into());
                 };
                 let Some(text) = stdlib(name) else {
-                    let names: Vec<String> = STDLIB.iter().map(|(n, _)| format!("std.{n}")).collect();
+                    let names: Vec<String> =
+                        STDLIB.iter().map(|(n, _)| format!("std.{n}")).collect();
                     let help = suggest(path, names.iter().map(String::as_str))
                         .unwrap_or_else(|| format!("available: {}", names.join(", ")));
-                    return Err(error("rtc::module::unknown", span, format!("unknown module `{path}`"))
-                        .with_label("no such standard module")
-                        .with_help(help)
-                        .into());
+                    return Err(error(
+                        "rtc::module::unknown",
+                        span,
+                        format!("unknown module `{path}`"),
+                    )
+                    .with_label("no such standard module")
+                    .with_help(help)
+                    .into());
                 };
-                (PathBuf::from(format!("<std>/{name}")), path.clone(), Some(text.to_owned()))
+                (
+                    PathBuf::from(format!("<std>/{name}")),
+                    path.clone(),
+                    Some(text.to_owned()),
+                )
             }
             ImportSource::File(rel) => {
                 let p = resolve(&self.scope.dir, rel);
@@ -153,11 +192,17 @@ impl Interp<'_> {
             }
         };
         if let Some(pos) = self.loading.iter().position(|(k, _)| *k == key) {
-            let mut chain: Vec<String> = self.loading[pos..].iter().map(|(k, _)| short(k)).collect();
+            let mut chain: Vec<String> =
+                self.loading[pos..].iter().map(|(k, _)| short(k)).collect();
             chain.push(short(&key));
             return Err(error("rtc::module::cycle", span, "import cycle")
-                .with_label(format!("this import closes the cycle {}", chain.join(" → ")))
-                .with_help("move what both files need into a third module that neither imports back")
+                .with_label(format!(
+                    "this import closes the cycle {}",
+                    chain.join(" → ")
+                ))
+                .with_help(
+                    "move what both files need into a third module that neither imports back",
+                )
                 .into());
         }
         if let Some(m) = self.modules.get(&key) {
@@ -166,16 +211,36 @@ impl Interp<'_> {
         let text = match text {
             Some(t) => t,
             None => std::fs::read_to_string(&key).map_err(|e| {
-                error("rtc::module::not_found", span, format!("cannot read module `{display}`"))
-                    .with_label(if e.kind() == std::io::ErrorKind::NotFound { "no such file".to_owned() } else { e.to_string() })
-                    .with_help(format!("check the path; it is relative to `{}`", self.sources.get(self.scope.file).path.display()))
+                error(
+                    "rtc::module::not_found",
+                    span,
+                    format!("cannot read module `{display}`"),
+                )
+                .with_label(if e.kind() == std::io::ErrorKind::NotFound {
+                    "no such file".to_owned()
+                } else {
+                    e.to_string()
+                })
+                .with_help(format!(
+                    "check the path; it is relative to `{}`",
+                    self.sources.get(self.scope.file).path.display()
+                ))
             })?,
         };
-        let file = self.sources.add(if key.starts_with("<std>") { PathBuf::from(format!("std/{}.rtc", &display[4..])) } else { key.clone() }, text);
+        let file = self.sources.add(
+            if key.starts_with("<std>") {
+                PathBuf::from(format!("std/{}.rtc", &display[4..]))
+            } else {
+                key.clone()
+            },
+            text,
+        );
         let (ast, diags) = crate::syntax::parse(file, &self.sources.get(file).text.clone());
         let had_errors = diags.iter().any(Diagnostic::is_error);
         self.diags.extend(diags);
-        let Some(ast) = ast.filter(|_| !had_errors) else { return Err(EvalError::Poisoned) };
+        let Some(ast) = ast.filter(|_| !had_errors) else {
+            return Err(EvalError::Poisoned);
+        };
         let dir = key.parent().map(PathBuf::from).unwrap_or_default();
         let scope = Rc::new(Scope::new(file, dir, display.clone()));
         self.loading.push((key.clone(), span));
@@ -187,13 +252,18 @@ impl Interp<'_> {
         self.locals = saved_locals;
         self.frame_base = saved_base;
         self.loading.pop();
-        let m = Rc::new(Module { name: display, scope });
+        let m = Rc::new(Module {
+            name: display,
+            scope,
+        });
         self.modules.insert(key, m.clone());
         Ok(m)
     }
 }
 
 fn short(p: &std::path::Path) -> String {
-    p.file_name().map_or_else(|| p.display().to_string(), |f| f.to_string_lossy().into_owned())
+    p.file_name().map_or_else(
+        || p.display().to_string(),
+        |f| f.to_string_lossy().into_owned(),
+    )
 }
-

@@ -67,7 +67,11 @@ pub fn normal(seed: u64, key: &str, i: i64) -> f64 {
 pub fn sphere_point(seed: u64, key: &str, i: i64, solid: bool) -> DVec3 {
     let z = 1.0 - 2.0 * unit(seed, key, i, 0);
     let phi = std::f64::consts::TAU * unit(seed, key, i, 1);
-    let r = if solid { unit(seed, key, i, 2).cbrt() } else { 1.0 };
+    let r = if solid {
+        unit(seed, key, i, 2).cbrt()
+    } else {
+        1.0
+    };
     let s = (1.0 - z * z).max(0.0).sqrt();
     r * DVec3::new(s * phi.cos(), s * phi.sin(), z)
 }
@@ -81,9 +85,18 @@ fn random(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// `rng.uniform(key, i)`, `rng.normal(key, i)`, `rng.in_sphere(key, i)`, `rng.on_sphere(key, i)`,
 /// `rng.range(key, i, lo, hi)`.
-pub fn method(it: &mut Interp, seed: u64, name: &'static str, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
-    let names: &'static [&'static str] =
-        if name == "range" { &["key", "index", "lo", "hi"] } else { &["key", "index"] };
+pub fn method(
+    it: &mut Interp,
+    seed: u64,
+    name: &'static str,
+    site: CallSite,
+    args: Vec<ArgVal>,
+) -> R<Value> {
+    let names: &'static [&'static str] = if name == "range" {
+        &["key", "index", "lo", "hi"]
+    } else {
+        &["key", "index"]
+    };
     let mut p = Params::new(site, names, args)?;
     let (kv, ks) = p.req("key")?;
     let key = types::string(it, &kv, ks)?;

@@ -4,12 +4,12 @@ use std::rc::Rc;
 
 use glam::{DAffine3, DVec3};
 
-use super::builtins::{check, positive, BuiltinFn, Params};
+use super::builtins::{BuiltinFn, Params, check, positive};
 use super::call::{ArgVal, CallSite};
-use super::error::{error, R};
+use super::error::{R, error};
 use super::interp::Interp;
 use super::types;
-use super::value::{obj_kind, Obj, ObjShape, Value};
+use super::value::{Obj, ObjShape, Value, obj_kind};
 use crate::ir::{BlobComponent, CsgOp, Shape};
 use crate::source::Span;
 
@@ -34,7 +34,12 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
 ];
 
 fn prim(shape: Shape, span: Span) -> Value {
-    Value::Object(Rc::new(Obj { shape: ObjShape::Prim(shape), transform: DAffine3::IDENTITY, material: None, span }))
+    Value::Object(Rc::new(Obj {
+        shape: ObjShape::Prim(shape),
+        transform: DAffine3::IDENTITY,
+        material: None,
+        span,
+    }))
 }
 
 fn unit_dir(it: &Interp, p: &mut Params, name: &str, default: DVec3) -> R<DVec3> {
@@ -43,10 +48,14 @@ fn unit_dir(it: &Interp, p: &mut Params, name: &str, default: DVec3) -> R<DVec3>
         Some((v, sp)) => {
             let d = types::vec3(it, &v, sp)?;
             if d.length_squared() == 0.0 || !d.is_finite() {
-                return Err(error("rtc::param::out_of_range", sp, format!("`{name}` must be a non-zero vector"))
-                    .with_label("this vector has length 0")
-                    .with_help(format!("give a direction, e.g. `{name}: Y`"))
-                    .into());
+                return Err(error(
+                    "rtc::param::out_of_range",
+                    sp,
+                    format!("`{name}` must be a non-zero vector"),
+                )
+                .with_label("this vector has length 0")
+                .with_help(format!("give a direction, e.g. `{name}: Y`"))
+                .into());
             }
             Ok(d.normalize())
         }
@@ -76,10 +85,18 @@ fn box_(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         None => (DVec3::splat(0.5), s.span),
     };
     if !max.cmpgt(min).all() {
-        return Err(error("rtc::param::out_of_range", ms, "`max` must be greater than `min` on every axis")
-            .with_label(format!("max = {} but min = {}", Value::Vec3(max).show(), Value::Vec3(min).show()))
-            .with_help("swap the corners or fix the smaller coordinate")
-            .into());
+        return Err(error(
+            "rtc::param::out_of_range",
+            ms,
+            "`max` must be greater than `min` on every axis",
+        )
+        .with_label(format!(
+            "max = {} but min = {}",
+            Value::Vec3(max).show(),
+            Value::Vec3(min).show()
+        ))
+        .with_help("swap the corners or fix the smaller coordinate")
+        .into());
     }
     Ok(prim(Shape::Box { min, max }, s.span))
 }
@@ -90,12 +107,19 @@ fn triangle(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (vb, _) = p.vec3(it, "b")?;
     let (vc, cs) = p.vec3(it, "c")?;
     if (vb - va).cross(vc - va).length_squared() == 0.0 {
-        return Err(error("rtc::param::degenerate", cs, "the triangle has zero area")
-            .with_label("its corners lie on one line")
-            .with_help("move one corner off the line through the other two")
-            .into());
+        return Err(
+            error("rtc::param::degenerate", cs, "the triangle has zero area")
+                .with_label("its corners lie on one line")
+                .with_help("move one corner off the line through the other two")
+                .into(),
+        );
     }
-    Ok(prim(Shape::Triangle { vertices: [va, vb, vc] }, s.span))
+    Ok(prim(
+        Shape::Triangle {
+            vertices: [va, vb, vc],
+        },
+        s.span,
+    ))
 }
 
 fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -104,10 +128,12 @@ fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (u, _) = p.vec3(it, "u")?;
     let (v, vs) = p.vec3(it, "v")?;
     if u.cross(v).length_squared() == 0.0 {
-        return Err(error("rtc::param::degenerate", vs, "the quad has zero area")
-            .with_label("`u` and `v` are parallel or zero")
-            .with_help("use two edges that span a parallelogram")
-            .into());
+        return Err(
+            error("rtc::param::degenerate", vs, "the quad has zero area")
+                .with_label("`u` and `v` are parallel or zero")
+                .with_help("use two edges that span a parallelogram")
+                .into(),
+        );
     }
     Ok(prim(Shape::Quad { corner, u, v }, s.span))
 }
@@ -120,10 +146,14 @@ fn polygon(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         other => return Err(types::mismatch(it, "List", other, sp).into()),
     };
     if items.len() < 3 {
-        return Err(error("rtc::param::out_of_range", sp, format!("a polygon needs at least 3 points, found {}", items.len()))
-            .with_label("too few points")
-            .with_help("list three or more corners")
-            .into());
+        return Err(error(
+            "rtc::param::out_of_range",
+            sp,
+            format!("a polygon needs at least 3 points, found {}", items.len()),
+        )
+        .with_label("too few points")
+        .with_help("list three or more corners")
+        .into());
     }
     let mut points = Vec::with_capacity(items.len());
     for x in &items {
@@ -138,7 +168,14 @@ fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
     positive("radius", radius, rs)?;
-    Ok(prim(Shape::Disk { center, normal, radius }, s.span))
+    Ok(prim(
+        Shape::Disk {
+            center,
+            normal,
+            radius,
+        },
+        s.span,
+    ))
 }
 
 /// Reads `base`/`top`, or `center`/`axis`/`height` (centred on `center` along `axis`).
@@ -168,34 +205,77 @@ fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3)> {
             let t = types::vec3(it, &t, ts)?;
             (t - axis * height, t)
         }
-        (None, None) => (center - axis * (height / 2.0), center + axis * (height / 2.0)),
+        (None, None) => (
+            center - axis * (height / 2.0),
+            center + axis * (height / 2.0),
+        ),
     })
 }
 
 fn cylinder(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["radius", "base", "top", "center", "axis", "height", "capped"], a)?;
+    let mut p = Params::new(
+        s,
+        &[
+            "radius", "base", "top", "center", "axis", "height", "capped",
+        ],
+        a,
+    )?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
     positive("radius", radius, rs)?;
     let (base, top) = ends(it, &mut p)?;
     let capped = p.bool_or(it, "capped", true)?;
-    Ok(prim(Shape::Cylinder { base, top, radius, capped }, s.span))
+    Ok(prim(
+        Shape::Cylinder {
+            base,
+            top,
+            radius,
+            capped,
+        },
+        s.span,
+    ))
 }
 
 fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["base_radius", "top_radius", "base", "top", "center", "axis", "height", "capped"], a)?;
+    let mut p = Params::new(
+        s,
+        &[
+            "base_radius",
+            "top_radius",
+            "base",
+            "top",
+            "center",
+            "axis",
+            "height",
+            "capped",
+        ],
+        a,
+    )?;
     let (br, bs) = p.num_or(it, "base_radius", 1.0)?;
     let (tr, ts) = p.num_or(it, "top_radius", 0.0)?;
     check(br >= 0.0, "base_radius", ">= 0", br, bs)?;
     check(tr >= 0.0, "top_radius", ">= 0", tr, ts)?;
     if br == 0.0 && tr == 0.0 {
-        return Err(error("rtc::param::degenerate", bs, "a cone needs a non-zero radius at one end")
-            .with_label("both radii are 0")
-            .with_help("set `base_radius` greater than 0")
-            .into());
+        return Err(error(
+            "rtc::param::degenerate",
+            bs,
+            "a cone needs a non-zero radius at one end",
+        )
+        .with_label("both radii are 0")
+        .with_help("set `base_radius` greater than 0")
+        .into());
     }
     let (base, top) = ends(it, &mut p)?;
     let capped = p.bool_or(it, "capped", true)?;
-    Ok(prim(Shape::Cone { base, top, base_radius: br, top_radius: tr, capped }, s.span))
+    Ok(prim(
+        Shape::Cone {
+            base,
+            top,
+            base_radius: br,
+            top_radius: tr,
+            capped,
+        },
+        s.span,
+    ))
 }
 
 fn torus(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -204,35 +284,71 @@ fn torus(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (minor, ns) = p.num(it, "minor_radius")?;
     positive("major_radius", major, ms)?;
     positive("minor_radius", minor, ns)?;
-    check(minor < major, "minor_radius", &format!("< major_radius ({})", super::value::fmt_f(major)), minor, ns)?;
+    check(
+        minor < major,
+        "minor_radius",
+        &format!("< major_radius ({})", super::value::fmt_f(major)),
+        minor,
+        ns,
+    )?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    Ok(prim(Shape::Torus { center, major_radius: major, minor_radius: minor }, s.span))
+    Ok(prim(
+        Shape::Torus {
+            center,
+            major_radius: major,
+            minor_radius: minor,
+        },
+        s.span,
+    ))
 }
 
 fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["components", "threshold"], a)?;
     let (v, sp) = p.req("components")?;
-    let Value::List(items) = &v else { return Err(types::mismatch(it, "List", &v, sp).into()) };
+    let Value::List(items) = &v else {
+        return Err(types::mismatch(it, "List", &v, sp).into());
+    };
     if items.is_empty() {
-        return Err(error("rtc::param::out_of_range", sp, "a blob needs at least one component")
-            .with_label("empty list")
-            .with_help("add `{ center: [0, 0, 0], radius: 1, strength: 1 }`")
-            .into());
+        return Err(error(
+            "rtc::param::out_of_range",
+            sp,
+            "a blob needs at least one component",
+        )
+        .with_label("empty list")
+        .with_help("add `{ center: [0, 0, 0], radius: 1, strength: 1 }`")
+        .into());
     }
     let mut components = Vec::with_capacity(items.len());
     for c in items.iter() {
-        let site = CallSite { span: sp, name: "blob component" };
-        let arg = ArgVal { name: None, value: c.clone(), span: sp };
+        let site = CallSite {
+            span: sp,
+            name: "blob component",
+        };
+        let arg = ArgVal {
+            name: None,
+            value: c.clone(),
+            span: sp,
+        };
         let mut cp = Params::new(site, &["center", "radius", "strength"], vec![arg])?;
         let center = cp.vec3_or(it, "center", DVec3::ZERO)?;
         let (radius, rs) = cp.num_or(it, "radius", 1.0)?;
         positive("radius", radius, rs)?;
         let (strength, _) = cp.num_or(it, "strength", 1.0)?;
-        components.push(BlobComponent { center, radius, strength });
+        components.push(BlobComponent {
+            center,
+            radius,
+            strength,
+        });
     }
     let (threshold, ts) = p.num_or(it, "threshold", 0.5)?;
     positive("threshold", threshold, ts)?;
-    Ok(prim(Shape::Blob { components, threshold }, s.span))
+    Ok(prim(
+        Shape::Blob {
+            components,
+            threshold,
+        },
+        s.span,
+    ))
 }
 
 fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -242,7 +358,14 @@ fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let path = super::assets::existing(it, &rel, ps, "mesh")?;
     let smooth = p.bool_or(it, "smooth", false)?;
     let use_mtl = p.bool_or(it, "use_mtl", false)?;
-    Ok(prim(Shape::Mesh { path, smooth, use_mtl }, s.span))
+    Ok(prim(
+        Shape::Mesh {
+            path,
+            smooth,
+            use_mtl,
+        },
+        s.span,
+    ))
 }
 
 /// Flattens nested lists of objects (as `for` produces) into `out`.
@@ -280,10 +403,18 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
     if children.len() < 2 {
-        return Err(error("rtc::csg::operands", sp, format!("`{}` needs at least two objects, found {}", s.name, children.len()))
-            .with_label("too few operands")
-            .with_help("pass a list of two or more objects")
-            .into());
+        return Err(error(
+            "rtc::csg::operands",
+            sp,
+            format!(
+                "`{}` needs at least two objects, found {}",
+                s.name,
+                children.len()
+            ),
+        )
+        .with_label("too few operands")
+        .with_help("pass a list of two or more objects")
+        .into());
     }
     for c in &children {
         require_closed(it, c, sp)?;
@@ -299,7 +430,11 @@ fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -
 fn union(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["objects", "merge"], a)?;
     let (children, sp) = object_list(it, &mut p, "objects")?;
-    let op = if p.bool_or(it, "merge", false)? { CsgOp::Merge } else { CsgOp::Union };
+    let op = if p.bool_or(it, "merge", false)? {
+        CsgOp::Merge
+    } else {
+        CsgOp::Union
+    };
     csg_node(it, op, children, sp, s)
 }
 
@@ -312,7 +447,9 @@ fn intersection(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["base", "cutters"], a)?;
     let (bv, bs) = p.req("base")?;
-    let Value::Object(base) = &bv else { return Err(types::mismatch(it, "Object", &bv, bs).into()) };
+    let Value::Object(base) = &bv else {
+        return Err(types::mismatch(it, "Object", &bv, bs).into());
+    };
     let (cutters, sp) = object_list(it, &mut p, "cutters")?;
     let mut children = vec![(**base).clone()];
     children.extend(cutters);
@@ -323,7 +460,12 @@ fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {
-        ObjShape::Prim(Shape::Triangle { .. } | Shape::Quad { .. } | Shape::Polygon { .. } | Shape::Disk { .. }) => true,
+        ObjShape::Prim(
+            Shape::Triangle { .. }
+            | Shape::Quad { .. }
+            | Shape::Polygon { .. }
+            | Shape::Disk { .. },
+        ) => true,
         ObjShape::Prim(Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. }) => !capped,
         ObjShape::Group(ch) => {
             for c in ch.iter() {

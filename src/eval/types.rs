@@ -6,49 +6,82 @@ use crate::diag::Diagnostic;
 use crate::source::Span;
 use crate::syntax::ast::TypeAnn;
 
-use super::error::{error, suggest, R};
+use super::error::{R, error, suggest};
 use super::interp::Interp;
 use super::value::Value;
 
 /// Every type name an annotation may use.
 pub const TYPE_NAMES: &[&str] = &[
-    "Any", "Int", "Float", "Bool", "String", "Angle", "Vec3", "Color", "Transform", "Object",
-    "Material", "Texture", "Light", "Camera", "Render", "List", "Range", "Record", "Fn", "Rng",
+    "Any",
+    "Int",
+    "Float",
+    "Bool",
+    "String",
+    "Angle",
+    "Vec3",
+    "Color",
+    "Transform",
+    "Object",
+    "Material",
+    "Texture",
+    "Light",
+    "Camera",
+    "Render",
+    "List",
+    "Range",
+    "Record",
+    "Fn",
+    "Rng",
 ];
 
 /// "expected `T`, found `U`" at `span`, with a label and a concrete help where one is known.
 pub fn mismatch(it: &Interp, expected: &str, found: &Value, span: Span) -> Diagnostic {
     let snippet = it.snippet(span).trim();
-    let d = error("rtc::type::mismatch", span, format!("expected `{expected}`, found `{}`", found.type_name()));
+    let d = error(
+        "rtc::type::mismatch",
+        span,
+        format!("expected `{expected}`, found `{}`", found.type_name()),
+    );
     let is_literal = snippet.parse::<f64>().is_ok();
     match (expected, found) {
         ("Angle", Value::Int(_) | Value::Float(_)) => {
             let help = if is_literal {
-                format!("write `{snippet}deg` (or `{snippet}rad`); angles always carry a unit in rtc")
+                format!(
+                    "write `{snippet}deg` (or `{snippet}rad`); angles always carry a unit in rtc"
+                )
             } else {
                 format!("multiply by a unit: `({snippet}) * 1deg`")
             };
             d.with_label("a plain number has no unit").with_help(help)
         }
-        ("Float" | "Int", Value::Angle(_)) => d
-            .with_label("this is an angle")
-            .with_help(format!("take its size in a unit: `({snippet}).deg` or `({snippet}).rad`")),
-        ("Color", Value::Vec3(v)) => d
-            .with_label("a vector is not a colour")
-            .with_help(format!("write `rgb({}, {}, {})`", fmt(v.x), fmt(v.y), fmt(v.z))),
-        ("Vec3", Value::Int(_) | Value::Float(_)) => d
-            .with_label("a single number")
-            .with_help(format!("write a vector: `[{snippet}, {snippet}, {snippet}]`")),
+        ("Float" | "Int", Value::Angle(_)) => d.with_label("this is an angle").with_help(format!(
+            "take its size in a unit: `({snippet}).deg` or `({snippet}).rad`"
+        )),
+        ("Color", Value::Vec3(v)) => d.with_label("a vector is not a colour").with_help(format!(
+            "write `rgb({}, {}, {})`",
+            fmt(v.x),
+            fmt(v.y),
+            fmt(v.z)
+        )),
+        ("Vec3", Value::Int(_) | Value::Float(_)) => d.with_label("a single number").with_help(
+            format!("write a vector: `[{snippet}, {snippet}, {snippet}]`"),
+        ),
         ("Int", Value::Float(_)) => d
             .with_label("a fractional number")
             .with_help(format!("round it: `round({snippet})`")),
         ("Bool", Value::Int(_) | Value::Float(_)) => d
-            .with_label(format!("this is {}", super::value::a_type(found.type_name())))
+            .with_label(format!(
+                "this is {}",
+                super::value::a_type(found.type_name())
+            ))
             .with_help(format!("compare it, e.g. `{snippet} != 0`")),
         ("Material", Value::Color(_)) => d
             .with_label("a colour is not a material")
             .with_help(format!("write `material {{ color: {snippet} }}`")),
-        _ => d.with_label(format!("this is {}", super::value::a_type(found.type_name()))),
+        _ => d.with_label(format!(
+            "this is {}",
+            super::value::a_type(found.type_name())
+        )),
     }
 }
 
@@ -71,7 +104,12 @@ pub fn has_type(name: &str, v: &Value) -> bool {
 pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value> {
     let name = t.name.sym.as_str();
     if !TYPE_NAMES.contains(&name) {
-        let d = error("rtc::type::unknown", t.name.span, format!("unknown type `{name}`")).with_label("not a type");
+        let d = error(
+            "rtc::type::unknown",
+            t.name.span,
+            format!("unknown type `{name}`"),
+        )
+        .with_label("not a type");
         let d = match suggest(name, TYPE_NAMES.iter().copied()) {
             Some(h) => d.with_help(h),
             None => d.with_help(format!("use one of: {}", TYPE_NAMES.join(", "))),
@@ -79,16 +117,27 @@ pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value>
         return Err(d.into());
     }
     if !has_type(name, &v) {
-        let d = mismatch(it, name, &v, span).with_secondary(t.span, format!("declared as `{name}` here"));
+        let d = mismatch(it, name, &v, span)
+            .with_secondary(t.span, format!("declared as `{name}` here"));
         return Err(d.into());
     }
     if let (Some(elem), Value::List(items)) = (&t.arg, &v) {
         let en = elem.name.sym.as_str();
         if let Some(bad) = items.iter().find(|x| !has_type(en, x)) {
-            let d = error("rtc::type::mismatch", span, format!("expected `List<{en}>`, found an element of type `{}`", bad.type_name()))
-                .with_label(format!("not every element is {}", super::value::a_type(en)))
-                .with_secondary(t.span, "declared here")
-                .with_help(format!("make every element {}, or declare `List<Any>`", super::value::a_type(en)));
+            let d = error(
+                "rtc::type::mismatch",
+                span,
+                format!(
+                    "expected `List<{en}>`, found an element of type `{}`",
+                    bad.type_name()
+                ),
+            )
+            .with_label(format!("not every element is {}", super::value::a_type(en)))
+            .with_secondary(t.span, "declared here")
+            .with_help(format!(
+                "make every element {}, or declare `List<Any>`",
+                super::value::a_type(en)
+            ));
             return Err(d.into());
         }
     }
@@ -100,7 +149,8 @@ pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value>
 
 /// A number (Int or Float) as f64.
 pub fn num(it: &Interp, v: &Value, span: Span) -> R<f64> {
-    v.as_f64().ok_or_else(|| mismatch(it, "Float", v, span).into())
+    v.as_f64()
+        .ok_or_else(|| mismatch(it, "Float", v, span).into())
 }
 
 /// An Int.

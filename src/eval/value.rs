@@ -30,7 +30,7 @@ pub enum Value {
     /// A linear RGB colour.
     Color(DVec3),
     /// An affine transform.
-    Transform(DAffine3),
+    Transform(Rc<DAffine3>),
     /// A list.
     List(Rc<Vec<Value>>),
     /// `a..b step s`.
@@ -113,7 +113,16 @@ impl Range {
         } else {
             (span - eps).ceil().max(0.0)
         };
-        if n > u64::MAX as f64 { u64::MAX } else { n as u64 }
+        if n > u64::MAX as f64 {
+            u64::MAX
+        } else {
+            n as u64
+        }
+    }
+
+    /// True when the range has no elements.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
     }
 
     /// The `i`th element.
@@ -149,7 +158,10 @@ pub struct Record {
 impl Record {
     /// Looks a field up.
     pub fn get(&self, name: Sym) -> Option<&Value> {
-        self.fields.iter().find(|f| f.name == name).map(|f| &f.value)
+        self.fields
+            .iter()
+            .find(|f| f.name == name)
+            .map(|f| &f.value)
     }
 }
 
@@ -277,8 +289,11 @@ impl Value {
             }
             Value::Range(r) => format!("{}..{}", fmt_f(r.start), fmt_f(r.end)),
             Value::Record(r) => {
-                let items: Vec<String> =
-                    r.fields.iter().map(|f| format!("{}: {}", f.name, f.value.show())).collect();
+                let items: Vec<String> = r
+                    .fields
+                    .iter()
+                    .map(|f| format!("{}: {}", f.name, f.value.show()))
+                    .collect();
                 format!("{{ {} }}", items.join(", "))
             }
             Value::Object(o) => format!("<{}>", obj_kind(o)),

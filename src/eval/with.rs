@@ -5,7 +5,7 @@ use std::rc::Rc;
 use crate::source::Span;
 use crate::syntax::ast::Name;
 
-use super::error::{error, suggest, R};
+use super::error::{R, error, suggest};
 use super::interp::Interp;
 use super::value::Value;
 
@@ -32,19 +32,38 @@ pub fn with(it: &mut Interp, base: Value, bspan: Span, upd: Vec<(Name, Value, Sp
                     None => {
                         let names: Vec<&str> = r2.fields.iter().map(|f| f.name.as_str()).collect();
                         let help = suggest(name.sym.as_str(), names.iter().copied())
-                            .unwrap_or_else(|| format!("`with` only replaces existing fields: {}", names.join(", ")));
-                        return Err(error("rtc::field::unknown", name.span, format!("the record has no field `{}`", name.sym))
-                            .with_label("unknown field")
-                            .with_help(help)
-                            .into());
+                            .unwrap_or_else(|| {
+                                format!(
+                                    "`with` only replaces existing fields: {}",
+                                    names.join(", ")
+                                )
+                            });
+                        return Err(error(
+                            "rtc::field::unknown",
+                            name.span,
+                            format!("the record has no field `{}`", name.sym),
+                        )
+                        .with_label("unknown field")
+                        .with_help(help)
+                        .into());
                     }
                 }
             }
             Ok(Value::Record(Rc::new(r2)))
         }
-        other => Err(error("rtc::type::mismatch", bspan, format!("`with` cannot copy {}", super::value::a_type(other.type_name())))
-            .with_label(format!("this is {}", super::value::a_type(other.type_name())))
-            .with_help("`with` works on materials and records")
-            .into()),
+        other => Err(error(
+            "rtc::type::mismatch",
+            bspan,
+            format!(
+                "`with` cannot copy {}",
+                super::value::a_type(other.type_name())
+            ),
+        )
+        .with_label(format!(
+            "this is {}",
+            super::value::a_type(other.type_name())
+        ))
+        .with_help("`with` works on materials and records")
+        .into()),
     }
 }

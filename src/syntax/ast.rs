@@ -255,6 +255,8 @@ pub enum ExprKind {
     Color([f64; 3]),
     /// `"a {x} b"`
     Str(Vec<StrPart>),
+    /// A string without interpolation, shared so evaluating it never allocates.
+    StrLit(Rc<str>),
     /// A name.
     Ident(Sym),
     /// `[a, b]`

@@ -7,9 +7,9 @@ use pest::iterators::Pair;
 
 use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
+use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
-use crate::syntax::Rule;
 
 /// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve).
 pub fn srgb_to_linear(c: f64) -> f64 {
@@ -42,7 +42,10 @@ impl Builder<'_> {
     }
 
     fn name(&self, p: &P) -> Name {
-        Name { sym: Sym::new(p.as_str()), span: self.span(p) }
+        Name {
+            sym: Sym::new(p.as_str()),
+            span: self.span(p),
+        }
     }
 
     /// A statement pair (`import_stmt`, `let_stmt`, `fn_def` or `expr`).
@@ -73,7 +76,13 @@ impl Builder<'_> {
                 _ => names = q.into_inner().map(|n| self.name(&n)).collect(),
             }
         }
-        Import { source, source_span, alias, names, span }
+        Import {
+            source,
+            source_span,
+            alias,
+            names,
+            span,
+        }
     }
 
     fn plain_string(&mut self, p: P) -> String {
@@ -85,9 +94,13 @@ impl Builder<'_> {
                 _ => {
                     let s = self.span(&part);
                     self.diags.push(
-                        Diagnostic::error("rtc::syntax::unexpected", s, "interpolation is not allowed in an import path")
-                            .with_label("not a fixed path")
-                            .with_help("write the path as plain text"),
+                        Diagnostic::error(
+                            "rtc::syntax::unexpected",
+                            s,
+                            "interpolation is not allowed in an import path",
+                        )
+                        .with_label("not a fixed path")
+                        .with_help("write the path as plain text"),
                     );
                 }
             }
@@ -130,7 +143,12 @@ impl Builder<'_> {
                 _ => optional = true,
             }
         }
-        TypeAnn { name, arg, optional, span }
+        TypeAnn {
+            name,
+            arg,
+            optional,
+            span,
+        }
     }
 
     fn fn_def(&mut self, p: P) -> FnDef {
@@ -199,7 +217,10 @@ impl Builder<'_> {
             Rule::range_expr => self.range(p),
             Rule::unary_expr => self.unary(p),
             Rule::postfix => self.postfix(p),
-            _ => Expr { kind: self.primary(p), span },
+            _ => Expr {
+                kind: self.primary(p),
+                span,
+            },
         }
     }
 
@@ -215,7 +236,10 @@ impl Builder<'_> {
         let span = self.span(&p);
         if p.clone().into_inner().count() > 2 * MAX_CHAIN {
             self.too_long(span);
-            return Expr { kind: ExprKind::Int(0), span };
+            return Expr {
+                kind: ExprKind::Int(0),
+                span,
+            };
         }
         let mut it = p.into_inner();
         let mut lhs = self.expr(it.next().expect("grammar: operand"));
@@ -240,7 +264,10 @@ impl Builder<'_> {
                 _ => BinOp::Rem,
             };
             let span = lhs.span.join(rhs.span);
-            lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span };
+            lhs = Expr {
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+                span,
+            };
         }
         lhs
     }
@@ -251,7 +278,9 @@ impl Builder<'_> {
         let start = self.expr(it.next().expect("grammar: operand"));
         let Some(op) = it.next() else { return start };
         let end = self.expr(it.next().expect("grammar: range end"));
-        let step = it.find(|s| s.as_rule() != Rule::step_kw).map(|s| Box::new(self.expr(s)));
+        let step = it
+            .find(|s| s.as_rule() != Rule::step_kw)
+            .map(|s| Box::new(self.expr(s)));
         Expr {
             kind: ExprKind::Range {
                 start: Box::new(start),
@@ -268,14 +297,24 @@ impl Builder<'_> {
         let pairs: Vec<P> = p.into_inner().collect();
         if pairs.len() > MAX_CHAIN {
             self.too_long(span);
-            return Expr { kind: ExprKind::Int(0), span };
+            return Expr {
+                kind: ExprKind::Int(0),
+                span,
+            };
         }
         let mut iter = pairs.into_iter().rev();
         let mut e = self.expr(iter.next().expect("grammar: operand"));
         for op in iter {
             let s = self.span(&op).join(e.span);
-            let op = if op.as_str() == "-" { UnOp::Neg } else { UnOp::Not };
-            e = Expr { kind: ExprKind::Unary(op, Box::new(e)), span: s };
+            let op = if op.as_str() == "-" {
+                UnOp::Neg
+            } else {
+                UnOp::Not
+            };
+            e = Expr {
+                kind: ExprKind::Unary(op, Box::new(e)),
+                span: s,
+            };
         }
         e
     }
@@ -302,7 +341,10 @@ impl Builder<'_> {
                     let r = s.into_inner().next().expect("grammar: record");
                     let rspan = self.span(&r);
                     let fields = self.fields(r);
-                    let value = Expr { kind: ExprKind::Record(fields), span: rspan };
+                    let value = Expr {
+                        kind: ExprKind::Record(fields),
+                        span: rspan,
+                    };
                     ExprKind::Call(Box::new(e), vec![Arg { name: None, value }])
                 }
                 _ => {
@@ -334,7 +376,10 @@ impl Builder<'_> {
                 _ => value = Some(self.expr(q)),
             }
         }
-        Arg { name, value: value.expect("grammar: argument value") }
+        Arg {
+            name,
+            value: value.expect("grammar: argument value"),
+        }
     }
 
     fn fields(&mut self, record: P) -> Vec<Field> {
@@ -394,7 +439,11 @@ impl Builder<'_> {
                 let rgb = if digits.len() == 3 {
                     [digits[0] * 17, digits[1] * 17, digits[2] * 17]
                 } else {
-                    [digits[0] * 16 + digits[1], digits[2] * 16 + digits[3], digits[4] * 16 + digits[5]]
+                    [
+                        digits[0] * 16 + digits[1],
+                        digits[2] * 16 + digits[3],
+                        digits[4] * 16 + digits[5],
+                    ]
                 };
                 ExprKind::Color(rgb.map(|c| srgb_to_linear(c as f64 / 255.0)))
             }
@@ -403,7 +452,9 @@ impl Builder<'_> {
                 for q in p.into_inner() {
                     match q.as_rule() {
                         Rule::str_text => push_text(&mut parts, q.as_str()),
-                        Rule::str_escape => push_text(&mut parts, &unescape(q.as_str()).to_string()),
+                        Rule::str_escape => {
+                            push_text(&mut parts, &unescape(q.as_str()).to_string())
+                        }
                         _ => {
                             let mut it = q.into_inner();
                             let e = self.expr(it.next().expect("grammar: interpolation"));
@@ -412,7 +463,11 @@ impl Builder<'_> {
                         }
                     }
                 }
-                ExprKind::Str(parts)
+                match parts.as_slice() {
+                    [] => ExprKind::StrLit(Rc::from("")),
+                    [StrPart::Text(t)] => ExprKind::StrLit(Rc::from(t.as_str())),
+                    _ => ExprKind::Str(parts),
+                }
             }
             Rule::ident => ExprKind::Ident(Sym::new(p.as_str())),
             Rule::list => ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect()),
@@ -465,11 +520,17 @@ impl Builder<'_> {
                         Rule::block => body = Some(self.block(q)),
                         _ => {
                             let e = self.expr(q);
-                            body = Some(Block { span: e.span, stmts: vec![Stmt::Expr(e)] });
+                            body = Some(Block {
+                                span: e.span,
+                                stmts: vec![Stmt::Expr(e)],
+                            });
                         }
                     }
                 }
-                let name = Name { sym: Sym::new("<fn>"), span };
+                let name = Name {
+                    sym: Sym::new("<fn>"),
+                    span,
+                };
                 ExprKind::Lambda(Rc::new(FnDef {
                     public: false,
                     name,

@@ -50,9 +50,13 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                 }
                 if i >= b.len() {
                     errors.push(
-                        Diagnostic::error("rtc::syntax::unclosed", sp(start, start + 2), "unclosed comment")
-                            .with_label("this comment is never closed")
-                            .with_help("end it with `*/`"),
+                        Diagnostic::error(
+                            "rtc::syntax::unclosed",
+                            sp(start, start + 2),
+                            "unclosed comment",
+                        )
+                        .with_label("this comment is never closed")
+                        .with_help("end it with `*/`"),
                     );
                     break;
                 }
@@ -66,11 +70,18 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                 }
                 if i >= b.len() || b[i] == b'\n' {
                     errors.push(
-                        Diagnostic::error("rtc::syntax::unclosed", sp(start, start + 1), "unterminated string")
-                            .with_label("this string is never closed")
-                            .with_help("close it with `\"` on the same line"),
+                        Diagnostic::error(
+                            "rtc::syntax::unclosed",
+                            sp(start, start + 1),
+                            "unterminated string",
+                        )
+                        .with_label("this string is never closed")
+                        .with_help("close it with `\"` on the same line"),
                     );
-                    return Scan { errors, top_level_lines };
+                    return Scan {
+                        errors,
+                        top_level_lines,
+                    };
                 }
                 i += 1;
             }
@@ -90,7 +101,10 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                             .with_label("nothing is open here")
                             .with_help(format!("remove this `{}`", c as char)),
                         );
-                        return Scan { errors, top_level_lines };
+                        return Scan {
+                            errors,
+                            top_level_lines,
+                        };
                     }
                     Some((open, at)) if closer_of(open) != c => {
                         errors.push(
@@ -100,14 +114,20 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                                 format!("mismatched `{}`", c as char),
                             )
                             .with_label(format!("expected `{}` here", closer_of(open) as char))
-                            .with_secondary(sp(at, at + 1), format!("to close this `{}`", open as char))
+                            .with_secondary(
+                                sp(at, at + 1),
+                                format!("to close this `{}`", open as char),
+                            )
                             .with_help(format!(
                                 "write `{}` to close the `{}` first",
                                 closer_of(open) as char,
                                 open as char
                             )),
                         );
-                        return Scan { errors, top_level_lines };
+                        return Scan {
+                            errors,
+                            top_level_lines,
+                        };
                     }
                     Some(_) => {}
                 }
@@ -127,12 +147,18 @@ pub fn scan(file: FileId, text: &str) -> Scan {
         if let Some(line) = dedented_line_after(text, at) {
             d = d.with_secondary(
                 sp(line, line + 1),
-                format!("perhaps the `{}` belongs before this line", closer_of(open) as char),
+                format!(
+                    "perhaps the `{}` belongs before this line",
+                    closer_of(open) as char
+                ),
             );
         }
         errors.push(d);
     }
-    Scan { errors, top_level_lines }
+    Scan {
+        errors,
+        top_level_lines,
+    }
 }
 
 fn indent_of(line: &str) -> usize {

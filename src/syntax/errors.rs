@@ -87,7 +87,11 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
                 }
             }
         }
-        for t in tokens.iter().filter(|t| t.chars().all(|c| c.is_alphabetic())).take(3) {
+        for t in tokens
+            .iter()
+            .filter(|t| t.chars().all(|c| c.is_alphabetic()))
+            .take(3)
+        {
             push(&mut words, format!("`{t}`"));
         }
     }
@@ -96,9 +100,13 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
     }
     let (found, len) = found_at(text, pos);
     if found == "`;`" {
-        return Diagnostic::error("rtc::syntax::semicolon", Span::new(file, pos, pos + 1), "unexpected `;`")
-            .with_label("statements end at the end of the line")
-            .with_help("remove the `;`");
+        return Diagnostic::error(
+            "rtc::syntax::semicolon",
+            Span::new(file, pos, pos + 1),
+            "unexpected `;`",
+        )
+        .with_label("statements end at the end of the line")
+        .with_help("remove the `;`");
     }
     let expected = join_or(&words);
     let span = Span::new(file, pos, pos + len);
@@ -184,18 +192,28 @@ fn help_for(text: &str, pos: usize, found: &str, expected: &[String]) -> Option<
         return Some(format!("{} is reserved; choose another name", &found[8..]));
     }
     if has("`,`") && !found.starts_with("`=") && !found.ends_with("of file") {
-        let what = if has("`)`") { "arguments" } else if has("`]`") { "list items" } else { "fields" };
+        let what = if has("`)`") {
+            "arguments"
+        } else if has("`]`") {
+            "list items"
+        } else {
+            "fields"
+        };
         return Some(format!("separate {what} with `,`"));
     }
     if found == "`=`" && has("`:`") {
         return Some("write `:` instead of `=` for fields and named arguments".into());
     }
-    if let [only] = expected {
-        if matches!(only.as_str(), "`)`" | "`]`" | "`}`") {
-            return Some(format!("add the missing {only}"));
-        }
+    if let [only] = expected
+        && matches!(only.as_str(), "`)`" | "`]`" | "`}`")
+    {
+        return Some(format!("add the missing {only}"));
     }
-    if found == "`=`" && text.get(..pos).is_some_and(|t| t.trim_end().ends_with("let")) {
+    if found == "`=`"
+        && text
+            .get(..pos)
+            .is_some_and(|t| t.trim_end().ends_with("let"))
+    {
         return None;
     }
     if has("an expression") && (found == "end of line" || found == "end of file") {

@@ -66,9 +66,13 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
         Err(_) => {
             let first = first_token(text);
             diags.push(
-                Diagnostic::error("rtc::syntax::header", Span::new(file, first, first), "missing `rtc 1` header")
-                    .with_label("the file must start with its language version")
-                    .with_help("add `rtc 1` as the first line"),
+                Diagnostic::error(
+                    "rtc::syntax::header",
+                    Span::new(file, first, first),
+                    "missing `rtc 1` header",
+                )
+                .with_label("the file must start with its language version")
+                .with_help("add `rtc 1` as the first line"),
             );
         }
     }
@@ -78,7 +82,11 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
             Ok(mut pairs) => {
                 let line = pairs.next().expect("grammar: stmt_line");
                 let end = line.as_span().end();
-                let mut b = build::Builder { file, base: pos, diags: &mut diags };
+                let mut b = build::Builder {
+                    file,
+                    base: pos,
+                    diags: &mut diags,
+                };
                 let mut done = false;
                 for p in line.into_inner() {
                     if p.as_rule() == Rule::EOI {
@@ -96,7 +104,11 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
                 let d = errors::convert(file, text, pos, &e);
                 let at = d.span.map_or(pos, |s| s.start as usize);
                 diags.push(d);
-                match scan.top_level_lines.iter().find(|&&l| l > at.max(pos) && starts_statement(text, l)) {
+                match scan
+                    .top_level_lines
+                    .iter()
+                    .find(|&&l| l > at.max(pos) && starts_statement(text, l))
+                {
                     Some(&next) => pos = next,
                     None => break,
                 }
@@ -135,9 +147,13 @@ fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
                 depth += 1;
                 if depth > MAX_NESTING {
                     return Some(
-                        Diagnostic::error("rtc::budget::nesting", Span::new(file, i, i + 1), "brackets nested too deeply")
-                            .with_label(format!("more than {MAX_NESTING} levels deep"))
-                            .with_help("move inner parts into `let` bindings or functions"),
+                        Diagnostic::error(
+                            "rtc::budget::nesting",
+                            Span::new(file, i, i + 1),
+                            "brackets nested too deeply",
+                        )
+                        .with_label(format!("more than {MAX_NESTING} levels deep"))
+                        .with_help("move inner parts into `let` bindings or functions"),
                     );
                 }
             }

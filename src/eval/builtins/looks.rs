@@ -4,10 +4,10 @@ use std::rc::Rc;
 
 use glam::DVec3;
 
-use super::{check, positive, unit_interval, BuiltinFn, Params};
+use super::{BuiltinFn, Params, check, positive, unit_interval};
 use crate::diag::Diagnostic;
 use crate::eval::call::{ArgVal, CallSite};
-use crate::eval::error::{error, suggest, R};
+use crate::eval::error::{R, error, suggest};
 use crate::eval::interp::Interp;
 use crate::eval::types;
 use crate::eval::value::{Mat, Tex, Value};
@@ -27,11 +27,11 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
 ];
 
 fn channels(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<[f64; 3]> {
-    if let [one] = a.as_slice() {
-        if let Some(g) = one.value.as_f64() {
-            check(g >= 0.0, "value", ">= 0", g, one.span)?;
-            return Ok([g; 3]);
-        }
+    if let [one] = a.as_slice()
+        && let Some(g) = one.value.as_f64()
+    {
+        check(g >= 0.0, "value", ">= 0", g, one.span)?;
+        return Ok([g; 3]);
     }
     let mut p = Params::new(s, &["r", "g", "b"], a)?;
     let mut out = [0.0; 3];
@@ -74,15 +74,35 @@ fn hsv(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         _ => (c, 0.0, x),
     };
     let m = val - c;
-    Ok(Value::Color([r + m, g + m, b + m].map(srgb_to_linear).into()))
+    Ok(Value::Color(
+        [r + m, g + m, b + m].map(srgb_to_linear).into(),
+    ))
 }
 
 /// Every material field, in positional order.
-pub const MAT_FIELDS: &[&str] =
-    &["color", "ka", "kd", "ks", "n", "reflect", "refract", "eta", "texture", "bump", "bump_scale", "shading"];
+pub const MAT_FIELDS: &[&str] = &[
+    "color",
+    "ka",
+    "kd",
+    "ks",
+    "n",
+    "reflect",
+    "refract",
+    "eta",
+    "texture",
+    "bump",
+    "bump_scale",
+    "shading",
+];
 
 /// Sets one material field with type and range checks (shared by `material` and `with`).
-pub fn set_mat_field(it: &Interp, m: &mut Mat, name: crate::syntax::ast::Name, v: &Value, span: Span) -> R<()> {
+pub fn set_mat_field(
+    it: &Interp,
+    m: &mut Mat,
+    name: crate::syntax::ast::Name,
+    v: &Value,
+    span: Span,
+) -> R<()> {
     let field = name.sym.as_str();
     let unit = |m: &mut f64| -> R<()> {
         let x = types::num(it, v, span)?;
@@ -121,25 +141,35 @@ pub fn set_mat_field(it: &Interp, m: &mut Mat, name: crate::syntax::ast::Name, v
             match &mut m.bump {
                 Some(b) => b.1 = x,
                 None => {
-                    return Err(error("rtc::param::needs", span, "`bump_scale` without a `bump` texture")
-                        .with_label("nothing to scale")
-                        .with_help("add `bump: ...` with a texture, or remove `bump_scale`")
-                        .into())
+                    return Err(error(
+                        "rtc::param::needs",
+                        span,
+                        "`bump_scale` without a `bump` texture",
+                    )
+                    .with_label("nothing to scale")
+                    .with_help("add `bump: ...` with a texture, or remove `bump_scale`")
+                    .into());
                 }
             }
         }
         "shading" => match v {
             Value::Shading(s) => m.m.shading = Some(*s),
-            Value::Builtin(b) if b.name == "gooch" => m.m.shading = Some(ir::ShadingModel::Gooch(ir::GoochParams::default())),
+            Value::Builtin(b) if b.name == "gooch" => {
+                m.m.shading = Some(ir::ShadingModel::Gooch(ir::GoochParams::default()))
+            }
             other => return Err(types::mismatch(it, "Shading", other, span).into()),
         },
         other => {
             let help = suggest(other, MAT_FIELDS.iter().copied())
                 .unwrap_or_else(|| format!("materials have: {}", MAT_FIELDS.join(", ")));
-            return Err(error("rtc::field::unknown", name.span, format!("materials have no field `{other}`"))
-                .with_label("unknown field")
-                .with_help(help)
-                .into());
+            return Err(error(
+                "rtc::field::unknown",
+                name.span,
+                format!("materials have no field `{other}`"),
+            )
+            .with_label("unknown field")
+            .with_help(help)
+            .into());
         }
     }
     Ok(())
@@ -156,19 +186,36 @@ pub fn mat_warnings(it: &mut Interp, m: &Mat, span: Span) {
     }
     if m.m.reflect + m.m.refract > 1.0 + 1e-9 {
         it.warn(
-            Diagnostic::warning("rtc::material::energy", span, "`reflect + refract` is greater than 1")
-                .with_label(format!("reflect + refract = {}", crate::eval::value::fmt_f(m.m.reflect + m.m.refract)))
-                .with_help("lower `reflect` or `refract` so their sum is at most 1"),
+            Diagnostic::warning(
+                "rtc::material::energy",
+                span,
+                "`reflect + refract` is greater than 1",
+            )
+            .with_label(format!(
+                "reflect + refract = {}",
+                crate::eval::value::fmt_f(m.m.reflect + m.m.refract)
+            ))
+            .with_help("lower `reflect` or `refract` so their sum is at most 1"),
         );
     }
 }
 
 fn material(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, MAT_FIELDS, a)?;
-    let mut m = Mat { m: ir::Material { span: s.span, ..ir::Material::default() }, texture: None, bump: None };
+    let mut m = Mat {
+        m: ir::Material {
+            span: s.span,
+            ..ir::Material::default()
+        },
+        texture: None,
+        bump: None,
+    };
     for f in MAT_FIELDS {
         if let Some((v, sp)) = p.get(f) {
-            let name = crate::syntax::ast::Name { sym: crate::syntax::intern::Sym::new(f), span: sp };
+            let name = crate::syntax::ast::Name {
+                sym: crate::syntax::intern::Sym::new(f),
+                span: sp,
+            };
             set_mat_field(it, &mut m, name, &v, sp)?;
         }
     }
@@ -187,12 +234,16 @@ fn pattern(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3, f64)> {
 
 fn checker(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
-    Ok(Value::Texture(Rc::new(Tex { t: ir::Texture::Checker { a, b, size } })))
+    Ok(Value::Texture(Rc::new(Tex {
+        t: ir::Texture::Checker { a, b, size },
+    })))
 }
 
 fn stripes(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
-    Ok(Value::Texture(Rc::new(Tex { t: ir::Texture::Stripes { a, b, size } })))
+    Ok(Value::Texture(Rc::new(Tex {
+        t: ir::Texture::Stripes { a, b, size },
+    })))
 }
 
 fn image(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -205,5 +256,11 @@ fn image(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Some((Value::Mapping(m), _)) => m,
         Some((other, sp)) => return Err(types::mismatch(it, "Mapping", &other, sp).into()),
     };
-    Ok(Value::Texture(Rc::new(Tex { t: ir::Texture::Image { path, mapping, span: ps } })))
+    Ok(Value::Texture(Rc::new(Tex {
+        t: ir::Texture::Image {
+            path,
+            mapping,
+            span: ps,
+        },
+    })))
 }

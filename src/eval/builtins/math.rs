@@ -7,7 +7,7 @@ use glam::DVec3;
 use super::{BuiltinFn, Params};
 use crate::diag::{Diagnostic, Severity};
 use crate::eval::call::{ArgVal, CallSite};
-use crate::eval::error::{error, R};
+use crate::eval::error::{R, error};
 use crate::eval::interp::Interp;
 use crate::eval::types;
 use crate::eval::value::Value;
@@ -113,10 +113,14 @@ fn abs(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 fn to_int(x: f64, sp: crate::source::Span) -> R<Value> {
     if !x.is_finite() || x.abs() > 9.0e18 {
-        return Err(error("rtc::value::overflow", sp, "number does not fit in an `Int`")
-            .with_label(format!("evaluates to {x}"))
-            .with_help("keep integers below 9e18")
-            .into());
+        return Err(error(
+            "rtc::value::overflow",
+            sp,
+            "number does not fit in an `Int`",
+        )
+        .with_label(format!("evaluates to {x}"))
+        .with_help("keep integers below 9e18")
+        .into());
     }
     Ok(Value::Int(x as i64))
 }
@@ -146,10 +150,12 @@ fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (e, sp) = p.num(it, "exponent")?;
     let v = b.powf(e);
     if !v.is_finite() {
-        return Err(error("rtc::value::nan", sp, "`pow` has no finite result here")
-            .with_label(format!("{b} to the power {e}"))
-            .with_help("use a non-negative base for fractional exponents")
-            .into());
+        return Err(
+            error("rtc::value::nan", sp, "`pow` has no finite result here")
+                .with_label(format!("{b} to the power {e}"))
+                .with_help("use a non-negative base for fractional exponents")
+                .into(),
+        );
     }
     Ok(Value::Float(v))
 }
@@ -183,10 +189,14 @@ fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value>
         }
     }
     best.ok_or_else(|| {
-        error("rtc::arg::missing", s.span, format!("`{}` needs at least one value", s.name))
-            .with_label("nothing to compare")
-            .with_help(format!("write `{}(a, b)`", s.name))
-            .into()
+        error(
+            "rtc::arg::missing",
+            s.span,
+            format!("`{}` needs at least one value", s.name),
+        )
+        .with_label("nothing to compare")
+        .with_help(format!("write `{}(a, b)`", s.name))
+        .into()
     })
 }
 fn min(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -220,10 +230,12 @@ fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["v"], a)?;
     let (v, sp) = p.vec3(it, "v")?;
     if v.length_squared() == 0.0 || !v.is_finite() {
-        return Err(error("rtc::value::nan", sp, "cannot normalize a zero vector")
-            .with_label("this vector has length 0")
-            .with_help("check the vector is not `[0, 0, 0]` before normalizing")
-            .into());
+        return Err(
+            error("rtc::value::nan", sp, "cannot normalize a zero vector")
+                .with_label("this vector has length 0")
+                .with_help("check the vector is not `[0, 0, 0]` before normalizing")
+                .into(),
+        );
     }
     Ok(Value::Vec3(v.normalize()))
 }
@@ -241,10 +253,20 @@ fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (v, sp) = p.req("list")?;
-    let Value::List(l) = v else { return Err(types::mismatch(it, "List", &v, sp).into()) };
+    let Value::List(l) = v else {
+        return Err(types::mismatch(it, "List", &v, sp).into());
+    };
     let mut acc = Value::Int(0);
     for x in l.iter() {
-        acc = crate::eval::ops::binary(it, crate::syntax::ast::BinOp::Add, acc, x.clone(), sp, sp, sp)?;
+        acc = crate::eval::ops::binary(
+            it,
+            crate::syntax::ast::BinOp::Add,
+            acc,
+            x.clone(),
+            sp,
+            sp,
+            sp,
+        )?;
     }
     Ok(acc)
 }
@@ -263,7 +285,12 @@ fn str_(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 fn print(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let text: Vec<String> = a.iter().map(|x| x.value.show()).collect();
-    it.diags.push(Diagnostic::new(Severity::Note, "rtc::print", Some(s.span), text.join(" ")));
+    it.diags.push(Diagnostic::new(
+        Severity::Note,
+        "rtc::print",
+        Some(s.span),
+        text.join(" "),
+    ));
     Ok(Value::Unit)
 }
 
@@ -278,8 +305,12 @@ fn assert(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Some((m, ms)) => types::string(it, &m, ms)?.to_string(),
         None => format!("`{}` is false", it.snippet(sp).trim()),
     };
-    Err(error("rtc::assert::failed", sp, format!("assertion failed: {msg}"))
-        .with_label("this condition is false")
-        .with_help("fix the values it checks, or the assertion")
-        .into())
+    Err(error(
+        "rtc::assert::failed",
+        sp,
+        format!("assertion failed: {msg}"),
+    )
+    .with_label("this condition is false")
+    .with_help("fix the values it checks, or the assertion")
+    .into())
 }

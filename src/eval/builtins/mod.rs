@@ -7,7 +7,6 @@ mod scene;
 
 pub use looks::{mat_warnings, set_mat_field};
 
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use glam::DVec3;
@@ -16,7 +15,7 @@ use crate::source::Span;
 use crate::syntax::intern::Sym;
 
 use super::call::{ArgVal, CallSite};
-use super::error::{error, suggest, R};
+use super::error::{R, error, suggest};
 use super::interp::Interp;
 use super::value::{Builtin, Value};
 
@@ -43,7 +42,7 @@ fn table() -> Vec<(&'static str, Value)> {
 }
 
 thread_local! {
-    static GLOBALS: HashMap<Sym, Value> = table().into_iter().map(|(k, v)| (Sym::new(k), v)).collect();
+    static GLOBALS: super::fxhash::FxHashMap<Sym, Value> = table().into_iter().map(|(k, v)| (Sym::new(k), v)).collect();
 }
 
 /// A built-in by name.
@@ -68,22 +67,24 @@ impl Params {
     /// argument (`f { a: 1 }`) supplies named arguments.
     pub fn new(site: CallSite, names: &'static [&'static str], mut args: Vec<ArgVal>) -> R<Params> {
         let mut from_record = false;
-        if args.len() == 1 && args[0].name.is_none() {
-            if let Value::Record(r) = &args[0].value {
-                if !(names.len() == 1 && names[0] == "record") {
-                    from_record = true;
-                    let r = r.clone();
-                    args = r
-                        .fields
-                        .iter()
-                        .map(|f| ArgVal {
-                            name: Some(crate::syntax::ast::Name { sym: f.name, span: f.name_span }),
-                            value: f.value.clone(),
-                            span: f.span,
-                        })
-                        .collect();
-                }
-            }
+        if args.len() == 1
+            && args[0].name.is_none()
+            && let Value::Record(r) = &args[0].value
+        {
+            from_record = true;
+            let r = r.clone();
+            args = r
+                .fields
+                .iter()
+                .map(|f| ArgVal {
+                    name: Some(crate::syntax::ast::Name {
+                        sym: f.name,
+                        span: f.name_span,
+                    }),
+                    value: f.value.clone(),
+                    span: f.span,
+                })
+                .collect();
         }
         let mut vals: Vec<Option<(Value, Span)>> = vec![None; names.len()];
         let mut pos = 0;
@@ -100,10 +101,14 @@ impl Params {
                         };
                         let help = suggest(n.sym.as_str(), names.iter().copied())
                             .unwrap_or_else(|| format!("`{name}` takes: {}", names.join(", ")));
-                        return Err(error(code, n.span, format!("`{name}` has no {what} named `{}`", n.sym))
-                            .with_label(format!("unknown {what}"))
-                            .with_help(help)
-                            .into());
+                        return Err(error(
+                            code,
+                            n.span,
+                            format!("`{name}` has no {what} named `{}`", n.sym),
+                        )
+                        .with_label(format!("unknown {what}"))
+                        .with_help(help)
+                        .into());
                     }
                 },
                 None => {
@@ -112,7 +117,11 @@ impl Params {
                         return Err(error(
                             "rtc::arg::too_many",
                             a.span,
-                            format!("`{name}` takes at most {} argument{}", names.len(), if names.len() == 1 { "" } else { "s" }),
+                            format!(
+                                "`{name}` takes at most {} argument{}",
+                                names.len(),
+                                if names.len() == 1 { "" } else { "s" }
+                            ),
                         )
                         .with_label("unexpected argument")
                         .with_help(format!("its parameters are: {}", names.join(", ")))
@@ -122,10 +131,14 @@ impl Params {
                 }
             };
             if vals[idx].is_some() {
-                return Err(error("rtc::arg::duplicate", a.span, format!("`{}` is given twice", names[idx]))
-                    .with_label("second value")
-                    .with_help("remove one of the two")
-                    .into());
+                return Err(error(
+                    "rtc::arg::duplicate",
+                    a.span,
+                    format!("`{}` is given twice", names[idx]),
+                )
+                .with_label("second value")
+                .with_help("remove one of the two")
+                .into());
             }
             vals[idx] = Some((a.value, a.span));
         }
@@ -133,7 +146,10 @@ impl Params {
     }
 
     fn idx(&self, name: &str) -> usize {
-        self.names.iter().position(|n| *n == name).unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
+        self.names
+            .iter()
+            .position(|n| *n == name)
+            .unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
     }
 
     /// The call site.
@@ -150,10 +166,14 @@ impl Params {
     /// A required argument.
     pub fn req(&mut self, name: &str) -> R<(Value, Span)> {
         self.get(name).ok_or_else(|| {
-            error("rtc::arg::missing", self.site.span, format!("missing argument `{name}` in call of `{}`", self.site.name))
-                .with_label(format!("`{name}` is required"))
-                .with_help(format!("add `{name}: ...`"))
-                .into()
+            error(
+                "rtc::arg::missing",
+                self.site.span,
+                format!("missing argument `{name}` in call of `{}`", self.site.name),
+            )
+            .with_label(format!("`{name}` is required"))
+            .with_help(format!("add `{name}: ...`"))
+            .into()
         })
     }
 
@@ -212,7 +232,13 @@ impl Params {
 
 /// Range check: `name` must satisfy `ok`, described as `rule` (e.g. "> 0").
 pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
-    check_shown(ok && v.is_finite(), name, rule, &super::value::fmt_f(v), span)
+    check_shown(
+        ok && v.is_finite(),
+        name,
+        rule,
+        &super::value::fmt_f(v),
+        span,
+    )
 }
 
 /// Range check with the offending value already formatted (e.g. with its unit).
@@ -220,10 +246,14 @@ pub fn check_shown(ok: bool, name: &str, rule: &str, shown: &str, span: Span) ->
     if ok {
         return Ok(());
     }
-    Err(error("rtc::param::out_of_range", span, format!("`{name}` must be {rule}, but it is {shown}"))
-        .with_label(format!("evaluates to {shown}"))
-        .with_help(format!("use a value that is {rule}"))
-        .into())
+    Err(error(
+        "rtc::param::out_of_range",
+        span,
+        format!("`{name}` must be {rule}, but it is {shown}"),
+    )
+    .with_label(format!("evaluates to {shown}"))
+    .with_help(format!("use a value that is {rule}"))
+    .into())
 }
 
 /// `v > 0`.
