@@ -18,3 +18,4 @@ pub mod ir;
 pub mod opt;
 pub mod render;
 pub mod source;
+pub mod syntax;

@@ -1,8 +1,29 @@
-//! Evaluation of `.rtc` files to the IR. (Contract placeholder: the language branch replaces it.)
+//! Evaluation of `.rtc` files to the IR: names, types, loops, functions, modules, budgets.
+
+pub mod assets;
+pub mod bounds;
+pub mod builtins;
+pub mod call;
+pub mod error;
+pub mod fxhash;
+pub mod interp;
+pub mod lower;
+pub mod members;
+pub mod methods;
+pub mod modules;
+pub mod ops;
+pub mod program;
+pub mod rng;
+pub mod shapes;
+pub mod transform;
+pub mod types;
+pub mod value;
+pub mod with;
 
 use std::path::Path;
+use std::rc::Rc;
 
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, Severity};
 use crate::frontend::Loaded;
 use crate::source::SourceMap;
 
@@ -30,15 +51,87 @@ impl Default for EvalOptions {
     }
 }
 
-/// Parses and evaluates the scene file at `path` (already read into `sources` by the caller or not).
-pub fn load_file(path: &Path, sources: &mut SourceMap, _options: &EvalOptions) -> Loaded {
-    let _ = (path, sources);
+/// Parses and evaluates the scene file at `path`, reading it from disk.
+pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
+    match std::fs::read_to_string(path) {
+        Ok(text) => load_source(path, &text, sources, options),
+        Err(e) => {
+            let mut loaded = Loaded::default();
+            loaded.diagnostics.push(
+                Diagnostic::new(
+                    Severity::Error,
+                    crate::frontend::IO_ERROR,
+                    None,
+                    format!("cannot read `{}`: {e}", path.display()),
+                )
+                .with_help("check the path and the file's permissions"),
+            );
+            loaded
+        }
+    }
+}
+
+/// Parses and evaluates `text` as the scene file `path` (relative paths resolve against its
+/// directory).
+pub fn load_source(
+    path: &Path,
+    text: &str,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+) -> Loaded {
+    // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
+    // nesting; a dedicated thread with a large stack keeps that independent of the caller's
+    // thread (test harness and rayon threads have small stacks).
+    std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .name("rtc-eval".into())
+            .stack_size(EVAL_STACK_BYTES)
+            .spawn_scoped(s, || load_source_here(path, text, sources, options))
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .unwrap_or_else(|_| {
+                Loaded::failure(
+                    crate::frontend::IO_ERROR,
+                    "cannot start the evaluation thread",
+                    "free some memory and retry",
+                )
+            })
+    })
+}
+
+/// Stack of the evaluation thread (reserved address space; pages are touched only as needed).
+const EVAL_STACK_BYTES: usize = 256 << 20;
+
+fn load_source_here(
+    path: &Path,
+    text: &str,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+) -> Loaded {
+    let file = sources.add(path, text);
     let mut loaded = Loaded::default();
-    loaded.diagnostics.push(Diagnostic::new(
-        crate::diag::Severity::Error,
-        "rtc::unsupported",
-        None,
-        "the scene language is not built yet",
-    ));
+    let (ast, diags) = crate::syntax::parse(file, text);
+    for d in diags {
+        loaded.diagnostics.push(d);
+    }
+    let Some(ast) = ast else { return loaded };
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let scope = Rc::new(modules::Scope::new(file, dir, path.display().to_string()));
+    let mut it = interp::Interp::new(options, sources, scope);
+    it.loading
+        .push((path.to_path_buf(), crate::source::Span::default()));
+    let mut lowerer = lower::Lowerer::default();
+    it.run_module(&ast, Some(&mut lowerer));
+    let had_errors = it.diags.iter().any(Diagnostic::is_error);
+    loaded
+        .diagnostics
+        .items
+        .extend(std::mem::take(&mut it.diags));
+    if had_errors {
+        return loaded;
+    }
+    match lowerer.finish() {
+        Ok(scene) => loaded.scene = Some(scene),
+        Err(errs) => loaded.diagnostics.items.extend(errs),
+    }
     loaded
 }

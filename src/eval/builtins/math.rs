@@ -1,0 +1,316 @@
+//! Math built-ins: trig on `Angle`, scalar functions, vector helpers, conversions, `print`, `assert`.
+
+use std::rc::Rc;
+
+use glam::DVec3;
+
+use super::{BuiltinFn, Params};
+use crate::diag::{Diagnostic, Severity};
+use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::error::{R, error};
+use crate::eval::interp::Interp;
+use crate::eval::types;
+use crate::eval::value::Value;
+
+/// Math functions by name.
+pub const FNS: &[(&str, BuiltinFn)] = &[
+    ("sin", sin),
+    ("cos", cos),
+    ("tan", tan),
+    ("asin", asin),
+    ("acos", acos),
+    ("atan", atan),
+    ("atan2", atan2),
+    ("sqrt", sqrt),
+    ("abs", abs),
+    ("floor", floor),
+    ("ceil", ceil),
+    ("round", round),
+    ("exp", exp),
+    ("ln", ln),
+    ("pow", pow),
+    ("min", min),
+    ("max", max),
+    ("dot", dot),
+    ("cross", cross),
+    ("normalize", normalize),
+    ("length", length),
+    ("distance", distance),
+    ("len", len),
+    ("sum", sum),
+    ("float", float),
+    ("int", int),
+    ("str", str_),
+    ("print", print),
+    ("assert", assert),
+];
+
+/// Constants: axes and circle numbers.
+pub fn constants() -> Vec<(&'static str, Value)> {
+    vec![
+        ("X", Value::Vec3(DVec3::X)),
+        ("Y", Value::Vec3(DVec3::Y)),
+        ("Z", Value::Vec3(DVec3::Z)),
+        ("pi", Value::Float(std::f64::consts::PI)),
+        ("tau", Value::Float(std::f64::consts::TAU)),
+    ]
+}
+
+fn one(it: &Interp, site: CallSite, args: Vec<ArgVal>) -> R<(f64, crate::source::Span)> {
+    let mut p = Params::new(site, &["x"], args)?;
+    p.num(it, "x")
+}
+
+fn one_angle(it: &Interp, site: CallSite, args: Vec<ArgVal>) -> R<f64> {
+    let mut p = Params::new(site, &["angle"], args)?;
+    let (v, s) = p.req("angle")?;
+    types::angle(it, &v, s)
+}
+
+fn sin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Float(one_angle(it, s, a)?.sin()))
+}
+fn cos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Float(one_angle(it, s, a)?.cos()))
+}
+fn tan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Float(one_angle(it, s, a)?.tan()))
+}
+
+fn unit_arg(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<f64> {
+    let (x, sp) = one(it, s, a)?;
+    super::check((-1.0..=1.0).contains(&x), "x", "in [-1, 1]", x, sp)?;
+    Ok(x)
+}
+fn asin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Angle(unit_arg(it, s, a)?.asin()))
+}
+fn acos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Angle(unit_arg(it, s, a)?.acos()))
+}
+fn atan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Angle(one(it, s, a)?.0.atan()))
+}
+fn atan2(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["y", "x"], a)?;
+    let (y, _) = p.num(it, "y")?;
+    let (x, _) = p.num(it, "x")?;
+    Ok(Value::Angle(y.atan2(x)))
+}
+fn sqrt(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    super::check(x >= 0.0, "x", ">= 0", x, sp)?;
+    Ok(Value::Float(x.sqrt()))
+}
+fn abs(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["x"], a)?;
+    let (v, sp) = p.req("x")?;
+    Ok(match v {
+        Value::Int(i) => Value::Int(i.saturating_abs()),
+        Value::Angle(x) => Value::Angle(x.abs()),
+        other => Value::Float(types::num(it, &other, sp)?.abs()),
+    })
+}
+fn to_int(x: f64, sp: crate::source::Span) -> R<Value> {
+    if !x.is_finite() || x.abs() > 9.0e18 {
+        return Err(error(
+            "rtc::value::overflow",
+            sp,
+            "number does not fit in an `Int`",
+        )
+        .with_label(format!("evaluates to {x}"))
+        .with_help("keep integers below 9e18")
+        .into());
+    }
+    Ok(Value::Int(x as i64))
+}
+fn floor(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    to_int(x.floor(), sp)
+}
+fn ceil(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    to_int(x.ceil(), sp)
+}
+fn round(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    to_int(x.round(), sp)
+}
+fn exp(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Float(one(it, s, a)?.0.exp()))
+}
+fn ln(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    super::positive("x", x, sp)?;
+    Ok(Value::Float(x.ln()))
+}
+fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["base", "exponent"], a)?;
+    let (b, _) = p.num(it, "base")?;
+    let (e, sp) = p.num(it, "exponent")?;
+    let v = b.powf(e);
+    if !v.is_finite() {
+        return Err(
+            error("rtc::value::nan", sp, "`pow` has no finite result here")
+                .with_label(format!("{b} to the power {e}"))
+                .with_help("use a non-negative base for fractional exponents")
+                .into(),
+        );
+    }
+    Ok(Value::Float(v))
+}
+
+fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value> {
+    let items: Vec<(Value, crate::source::Span)> = match a.as_slice() {
+        [one] => match &one.value {
+            Value::List(l) => l.iter().map(|v| (v.clone(), one.span)).collect(),
+            _ => vec![(one.value.clone(), one.span)],
+        },
+        _ => a.into_iter().map(|x| (x.value, x.span)).collect(),
+    };
+    let mut best: Option<Value> = None;
+    for (v, sp) in items {
+        let key = match &v {
+            Value::Angle(x) => *x,
+            other => types::num(it, other, sp)?,
+        };
+        let better = match &best {
+            None => true,
+            Some(b) => {
+                let bk = match b {
+                    Value::Angle(x) => *x,
+                    o => o.as_f64().unwrap_or(0.0),
+                };
+                if want_min { key < bk } else { key > bk }
+            }
+        };
+        if better {
+            best = Some(v);
+        }
+    }
+    best.ok_or_else(|| {
+        error(
+            "rtc::arg::missing",
+            s.span,
+            format!("`{}` needs at least one value", s.name),
+        )
+        .with_label("nothing to compare")
+        .with_help(format!("write `{}(a, b)`", s.name))
+        .into()
+    })
+}
+fn min(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    min_max(it, s, a, true)
+}
+fn max(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    min_max(it, s, a, false)
+}
+
+fn two_vecs(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3)> {
+    let mut p = Params::new(s, &["a", "b"], a)?;
+    Ok((p.vec3(it, "a")?.0, p.vec3(it, "b")?.0))
+}
+fn dot(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, y) = two_vecs(it, s, a)?;
+    Ok(Value::Float(x.dot(y)))
+}
+fn cross(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, y) = two_vecs(it, s, a)?;
+    Ok(Value::Vec3(x.cross(y)))
+}
+fn distance(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, y) = two_vecs(it, s, a)?;
+    Ok(Value::Float(x.distance(y)))
+}
+fn length(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["v"], a)?;
+    Ok(Value::Float(p.vec3(it, "v")?.0.length()))
+}
+fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["v"], a)?;
+    let (v, sp) = p.vec3(it, "v")?;
+    if v.length_squared() == 0.0 || !v.is_finite() {
+        return Err(
+            error("rtc::value::nan", sp, "cannot normalize a zero vector")
+                .with_label("this vector has length 0")
+                .with_help("check the vector is not `[0, 0, 0]` before normalizing")
+                .into(),
+        );
+    }
+    Ok(Value::Vec3(v.normalize()))
+}
+fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (v, sp) = p.req("list")?;
+    Ok(Value::Int(match v {
+        Value::List(l) => l.len() as i64,
+        Value::Vec3(_) => 3,
+        Value::Str(s) => s.chars().count() as i64,
+        Value::Range(r) => r.len().min(i64::MAX as u64) as i64,
+        other => return Err(types::mismatch(it, "List", &other, sp).into()),
+    }))
+}
+fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (v, sp) = p.req("list")?;
+    let Value::List(l) = v else {
+        return Err(types::mismatch(it, "List", &v, sp).into());
+    };
+    let mut acc = Value::Int(0);
+    for x in l.iter() {
+        acc = crate::eval::ops::binary(
+            it,
+            crate::syntax::ast::BinOp::Add,
+            acc,
+            x.clone(),
+            sp,
+            sp,
+            sp,
+        )?;
+    }
+    Ok(acc)
+}
+fn float(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    Ok(Value::Float(one(it, s, a)?.0))
+}
+fn int(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let (x, sp) = one(it, s, a)?;
+    to_int(x.trunc(), sp)
+}
+fn str_(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["value"], a)?;
+    let (v, _) = p.req("value")?;
+    Ok(Value::Str(Rc::from(v.show())))
+}
+
+fn print(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let text: Vec<String> = a.iter().map(|x| x.value.show()).collect();
+    it.diags.push(Diagnostic::new(
+        Severity::Note,
+        "rtc::print",
+        Some(s.span),
+        text.join(" "),
+    ));
+    Ok(Value::Unit)
+}
+
+fn assert(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["condition", "message"], a)?;
+    let (c, sp) = p.req("condition")?;
+    let ok = types::boolean(it, &c, sp)?;
+    if ok {
+        return Ok(Value::Unit);
+    }
+    let msg = match p.get("message") {
+        Some((m, ms)) => types::string(it, &m, ms)?.to_string(),
+        None => format!("`{}` is false", it.snippet(sp).trim()),
+    };
+    Err(error(
+        "rtc::assert::failed",
+        sp,
+        format!("assertion failed: {msg}"),
+    )
+    .with_label("this condition is false")
+    .with_help("fix the values it checks, or the assertion")
+    .into())
+}

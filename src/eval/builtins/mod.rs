@@ -1,0 +1,272 @@
+//! Built-in functions and constants, and [`Params`], the schema-checked argument reader every
+//! built-in uses (unknown names with did-you-mean, arity, missing values, types and ranges).
+
+mod looks;
+mod math;
+mod scene;
+
+pub use looks::{mat_warnings, set_mat_field};
+
+use std::rc::Rc;
+
+use glam::DVec3;
+
+use crate::source::Span;
+use crate::syntax::intern::Sym;
+
+use super::call::{ArgVal, CallSite};
+use super::error::{R, error, suggest};
+use super::interp::Interp;
+use super::value::{Builtin, Value};
+
+/// The signature of every built-in function.
+pub type BuiltinFn = fn(&mut Interp, CallSite, Vec<ArgVal>) -> R<Value>;
+
+fn table() -> Vec<(&'static str, Value)> {
+    let mut t: Vec<(&'static str, Value)> = Vec::new();
+    let fns: Vec<(&'static str, BuiltinFn)> = [
+        math::FNS,
+        looks::FNS,
+        scene::FNS,
+        super::shapes::FNS,
+        super::transform::FNS,
+        super::rng::FNS,
+    ]
+    .concat();
+    for (name, f) in fns {
+        t.push((name, Value::Builtin(Builtin { name, f })));
+    }
+    t.extend(math::constants());
+    t.extend(scene::constants());
+    t
+}
+
+thread_local! {
+    static GLOBALS: super::fxhash::FxHashMap<Sym, Value> = table().into_iter().map(|(k, v)| (Sym::new(k), v)).collect();
+}
+
+/// A built-in by name.
+pub fn global(sym: Sym) -> Option<Value> {
+    GLOBALS.with(|g| g.get(&sym).cloned())
+}
+
+/// Every built-in name (for did-you-mean).
+pub fn global_names() -> Vec<&'static str> {
+    GLOBALS.with(|g| g.keys().map(|k| k.as_str()).collect())
+}
+
+/// Schema-checked arguments of one built-in call.
+pub struct Params {
+    site: CallSite,
+    names: &'static [&'static str],
+    vals: Vec<Option<(Value, Span)>>,
+}
+
+impl Params {
+    /// Matches `args` to the parameter `names`: positional first, then named; a single record
+    /// argument (`f { a: 1 }`) supplies named arguments.
+    pub fn new(site: CallSite, names: &'static [&'static str], mut args: Vec<ArgVal>) -> R<Params> {
+        let mut from_record = false;
+        if args.len() == 1
+            && args[0].name.is_none()
+            && let Value::Record(r) = &args[0].value
+        {
+            from_record = true;
+            let r = r.clone();
+            args = r
+                .fields
+                .iter()
+                .map(|f| ArgVal {
+                    name: Some(crate::syntax::ast::Name {
+                        sym: f.name,
+                        span: f.name_span,
+                    }),
+                    value: f.value.clone(),
+                    span: f.span,
+                })
+                .collect();
+        }
+        let mut vals: Vec<Option<(Value, Span)>> = vec![None; names.len()];
+        let mut pos = 0;
+        let name = site.name;
+        for a in args {
+            let idx = match a.name {
+                Some(n) => match names.iter().position(|x| *x == n.sym.as_str()) {
+                    Some(i) => i,
+                    None => {
+                        let (code, what) = if from_record {
+                            ("rtc::field::unknown", "field")
+                        } else {
+                            ("rtc::arg::unknown", "parameter")
+                        };
+                        let help = suggest(n.sym.as_str(), names.iter().copied())
+                            .unwrap_or_else(|| format!("`{name}` takes: {}", names.join(", ")));
+                        return Err(error(
+                            code,
+                            n.span,
+                            format!("`{name}` has no {what} named `{}`", n.sym),
+                        )
+                        .with_label(format!("unknown {what}"))
+                        .with_help(help)
+                        .into());
+                    }
+                },
+                None => {
+                    pos += 1;
+                    if pos > names.len() {
+                        return Err(error(
+                            "rtc::arg::too_many",
+                            a.span,
+                            format!(
+                                "`{name}` takes at most {} argument{}",
+                                names.len(),
+                                if names.len() == 1 { "" } else { "s" }
+                            ),
+                        )
+                        .with_label("unexpected argument")
+                        .with_help(format!("its parameters are: {}", names.join(", ")))
+                        .into());
+                    }
+                    pos - 1
+                }
+            };
+            if vals[idx].is_some() {
+                return Err(error(
+                    "rtc::arg::duplicate",
+                    a.span,
+                    format!("`{}` is given twice", names[idx]),
+                )
+                .with_label("second value")
+                .with_help("remove one of the two")
+                .into());
+            }
+            vals[idx] = Some((a.value, a.span));
+        }
+        Ok(Params { site, names, vals })
+    }
+
+    fn idx(&self, name: &str) -> usize {
+        self.names
+            .iter()
+            .position(|n| *n == name)
+            .unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
+    }
+
+    /// The call site.
+    pub fn site(&self) -> CallSite {
+        self.site
+    }
+
+    /// An optional argument.
+    pub fn get(&mut self, name: &str) -> Option<(Value, Span)> {
+        let i = self.idx(name);
+        self.vals[i].take()
+    }
+
+    /// A required argument.
+    pub fn req(&mut self, name: &str) -> R<(Value, Span)> {
+        self.get(name).ok_or_else(|| {
+            error(
+                "rtc::arg::missing",
+                self.site.span,
+                format!("missing argument `{name}` in call of `{}`", self.site.name),
+            )
+            .with_label(format!("`{name}` is required"))
+            .with_help(format!("add `{name}: ...`"))
+            .into()
+        })
+    }
+
+    /// A number with a default.
+    pub fn num_or(&mut self, it: &Interp, name: &str, default: f64) -> R<(f64, Span)> {
+        match self.get(name) {
+            Some((v, s)) => Ok((super::types::num(it, &v, s)?, s)),
+            None => Ok((default, self.site.span)),
+        }
+    }
+
+    /// A required number.
+    pub fn num(&mut self, it: &Interp, name: &str) -> R<(f64, Span)> {
+        let (v, s) = self.req(name)?;
+        Ok((super::types::num(it, &v, s)?, s))
+    }
+
+    /// A vector with a default.
+    pub fn vec3_or(&mut self, it: &Interp, name: &str, default: DVec3) -> R<DVec3> {
+        match self.get(name) {
+            Some((v, s)) => super::types::vec3(it, &v, s),
+            None => Ok(default),
+        }
+    }
+
+    /// A required vector.
+    pub fn vec3(&mut self, it: &Interp, name: &str) -> R<(DVec3, Span)> {
+        let (v, s) = self.req(name)?;
+        Ok((super::types::vec3(it, &v, s)?, s))
+    }
+
+    /// A colour with a default.
+    pub fn color_or(&mut self, it: &Interp, name: &str, default: DVec3) -> R<DVec3> {
+        match self.get(name) {
+            Some((v, s)) => super::types::color(it, &v, s),
+            None => Ok(default),
+        }
+    }
+
+    /// A Bool with a default.
+    pub fn bool_or(&mut self, it: &Interp, name: &str, default: bool) -> R<bool> {
+        match self.get(name) {
+            Some((v, s)) => super::types::boolean(it, &v, s),
+            None => Ok(default),
+        }
+    }
+
+    /// An angle with a default.
+    pub fn angle_or(&mut self, it: &Interp, name: &str, default: f64) -> R<(f64, Span)> {
+        match self.get(name) {
+            Some((v, s)) => Ok((super::types::angle(it, &v, s)?, s)),
+            None => Ok((default, self.site.span)),
+        }
+    }
+}
+
+/// Range check: `name` must satisfy `ok`, described as `rule` (e.g. "> 0").
+pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
+    check_shown(
+        ok && v.is_finite(),
+        name,
+        rule,
+        &super::value::fmt_f(v),
+        span,
+    )
+}
+
+/// Range check with the offending value already formatted (e.g. with its unit).
+pub fn check_shown(ok: bool, name: &str, rule: &str, shown: &str, span: Span) -> R<()> {
+    if ok {
+        return Ok(());
+    }
+    Err(error(
+        "rtc::param::out_of_range",
+        span,
+        format!("`{name}` must be {rule}, but it is {shown}"),
+    )
+    .with_label(format!("evaluates to {shown}"))
+    .with_help(format!("use a value that is {rule}"))
+    .into())
+}
+
+/// `v > 0`.
+pub fn positive(name: &str, v: f64, span: Span) -> R<()> {
+    check(v > 0.0, name, "> 0", v, span)
+}
+
+/// `0 <= v <= 1`.
+pub fn unit_interval(name: &str, v: f64, span: Span) -> R<()> {
+    check((0.0..=1.0).contains(&v), name, "in [0, 1]", v, span)
+}
+
+/// A fresh empty list value.
+pub fn empty_list() -> Value {
+    Value::List(Rc::new(Vec::new()))
+}

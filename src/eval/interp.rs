@@ -1,0 +1,524 @@
+//! The tree-walking evaluator: names, blocks, loops and conditionals.
+
+use std::collections::{HashMap, HashSet};
+use std::path::PathBuf;
+use std::rc::Rc;
+
+use crate::diag::Diagnostic;
+use crate::source::{SourceMap, Span};
+use crate::syntax::ast::*;
+use crate::syntax::intern::Sym;
+
+use super::EvalOptions;
+use super::error::{EvalError, R, error, suggest};
+use super::modules::{Module, Scope};
+use super::value::{Closure, Record, Value};
+
+/// Evaluation state for one run (the scene file and everything it imports).
+pub struct Interp<'a> {
+    /// Budgets.
+    pub opts: &'a EvalOptions,
+    /// Every file read so far.
+    pub sources: &'a mut SourceMap,
+    /// Findings recorded so far (errors recovered at statement boundaries, warnings, prints).
+    pub diags: Vec<Diagnostic>,
+    warned: HashSet<(&'static str, Span)>,
+    /// Local bindings of all active frames; the current frame starts at `frame_base`.
+    pub locals: Vec<(Sym, Value)>,
+    /// First local of the current function frame.
+    pub frame_base: usize,
+    /// The module whose items are visible.
+    pub scope: Rc<Scope>,
+    /// Loop iterations so far (budget).
+    pub loop_iters: u64,
+    /// Nested user calls (budget).
+    pub depth: u32,
+    /// Evaluated modules by key (`std.x` or resolved path).
+    pub modules: HashMap<PathBuf, Rc<Module>>,
+    /// Modules being evaluated, outermost first, with the import that started each (cycles).
+    pub loading: Vec<(PathBuf, Span)>,
+}
+
+impl<'a> Interp<'a> {
+    /// A fresh evaluator whose current module is `scope`.
+    pub fn new(opts: &'a EvalOptions, sources: &'a mut SourceMap, scope: Rc<Scope>) -> Interp<'a> {
+        Interp {
+            opts,
+            sources,
+            diags: Vec::new(),
+            warned: HashSet::new(),
+            locals: Vec::new(),
+            frame_base: 0,
+            scope,
+            loop_iters: 0,
+            depth: 0,
+            modules: HashMap::new(),
+            loading: Vec::new(),
+        }
+    }
+
+    /// Records a warning once per (code, span), however often a loop reaches it.
+    pub fn warn(&mut self, d: Diagnostic) {
+        let Some(span) = d.span else {
+            return self.diags.push(d);
+        };
+        if self.warned.insert((d.code, span)) {
+            self.diags.push(d);
+        }
+    }
+
+    /// The source text under a span.
+    pub fn snippet(&self, span: Span) -> &str {
+        self.sources.snippet(span)
+    }
+
+    /// Looks a name up: locals of this frame, then module items, then built-ins.
+    pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
+        for (k, v) in self.locals[self.frame_base..].iter().rev() {
+            if *k == sym {
+                return Ok(v.clone());
+            }
+        }
+        if let Some(b) = self.scope.items.borrow().get(&sym) {
+            return if b.poisoned {
+                Err(EvalError::Poisoned)
+            } else {
+                Ok(b.value.clone())
+            };
+        }
+        if let Some(v) = super::builtins::global(sym) {
+            return Ok(v);
+        }
+        Err(self.unknown_name(sym, span).into())
+    }
+
+    fn unknown_name(&self, sym: Sym, span: Span) -> Diagnostic {
+        let mut names: Vec<&'static str> = self.locals[self.frame_base..]
+            .iter()
+            .map(|(k, _)| k.as_str())
+            .collect();
+        names.extend(self.scope.items.borrow().keys().map(|k| k.as_str()));
+        names.extend(super::builtins::global_names());
+        names.sort_unstable();
+        let d = error("rtc::name::unknown", span, format!("unknown name `{sym}`"))
+            .with_label("not defined here");
+        match suggest(sym.as_str(), names) {
+            Some(h) => d.with_help(h),
+            None => d.with_help(format!("define it first, e.g. `let {sym} = ...`")),
+        }
+    }
+
+    /// Evaluates an expression.
+    pub fn eval(&mut self, e: &Expr) -> R<Value> {
+        Ok(match &e.kind {
+            ExprKind::Int(i) => Value::Int(*i),
+            ExprKind::Float(f) => Value::Float(*f),
+            ExprKind::Angle(a) => Value::Angle(*a),
+            ExprKind::Bool(b) => Value::Bool(*b),
+            ExprKind::Color(c) => Value::Color((*c).into()),
+            ExprKind::Str(parts) => self.string(parts)?,
+            ExprKind::StrLit(s) => Value::Str(s.clone()),
+            ExprKind::Ident(s) => self.lookup(*s, e.span)?,
+            ExprKind::List(items) => self.list(items, e.span)?,
+            ExprKind::Record(fields) => self.record(fields)?,
+            ExprKind::Unary(op, x) => {
+                let v = self.eval(x)?;
+                super::ops::unary(*op, v, e.span)?
+            }
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e.span)?,
+            ExprKind::Range {
+                start,
+                end,
+                inclusive,
+                step,
+            } => self.range(start, end, *inclusive, step.as_deref(), e.span)?,
+            ExprKind::Call(callee, args) => self.call_expr(callee, args, e.span)?,
+            ExprKind::Member(obj, name) => {
+                let v = self.eval(obj)?;
+                super::members::member(self, v, *name, obj.span)?
+            }
+            ExprKind::Index(obj, idx) => {
+                let v = self.eval(obj)?;
+                let i = self.eval(idx)?;
+                super::members::index(v, i, idx.span)?
+            }
+            ExprKind::With(base, fields) => {
+                let v = self.eval(base)?;
+                let mut upd = Vec::with_capacity(fields.len());
+                for f in fields {
+                    upd.push((f.name, self.eval(&f.value)?, f.value.span));
+                }
+                super::with::with(self, v, base.span, upd)?
+            }
+            ExprKind::If(cond, then, els) => {
+                let c = self.eval(cond)?;
+                match c {
+                    Value::Bool(true) => self.block(then)?,
+                    Value::Bool(false) => match els {
+                        Some(e) => self.eval(e)?,
+                        None => Value::List(Rc::new(Vec::new())),
+                    },
+                    other => {
+                        return Err(super::types::mismatch(self, "Bool", &other, cond.span).into());
+                    }
+                }
+            }
+            ExprKind::For(gens, filter, body) => {
+                let mut out = Vec::new();
+                let header = self.header_span(e.span, body.span);
+                self.for_level(gens, 0, filter.as_deref(), body, header, &mut out)?;
+                Value::List(Rc::new(out))
+            }
+            ExprKind::Lambda(def) => Value::Fn(Rc::new(Closure {
+                def: def.clone(),
+                captured: self.locals[self.frame_base..].to_vec(),
+                module: self.scope.clone(),
+            })),
+            ExprKind::Block(b) => self.block(b)?,
+        })
+    }
+
+    /// `for i in 0..5` without its body: what traces and budget errors point at.
+    fn header_span(&self, whole: Span, body: Span) -> Span {
+        let text = self.sources.get(whole.file).text.as_bytes();
+        let mut end = body.start.max(whole.start);
+        while end > whole.start
+            && text
+                .get(end as usize - 1)
+                .is_some_and(|c| c.is_ascii_whitespace())
+        {
+            end -= 1;
+        }
+        Span { end, ..whole }
+    }
+
+    fn string(&mut self, parts: &[StrPart]) -> R<Value> {
+        let mut s = String::new();
+        for p in parts {
+            match p {
+                StrPart::Text(t) => s.push_str(t),
+                StrPart::Interp(e, prec) => {
+                    let v = self.eval(e)?;
+                    match (prec, v.as_f64()) {
+                        (Some(p), Some(f)) => s.push_str(&format!("{f:.p$}")),
+                        _ => s.push_str(&v.show()),
+                    }
+                }
+            }
+        }
+        Ok(Value::Str(s.into()))
+    }
+
+    /// Checks a list length against the budget.
+    pub fn check_list_len(&self, len: usize, span: Span) -> R<()> {
+        if len as u64 > self.opts.max_list_len {
+            return Err(error("rtc::budget::list", span, "list is too long")
+                .with_label(format!(
+                    "this list grows past {} elements",
+                    self.opts.max_list_len
+                ))
+                .with_help("build fewer elements, e.g. with a coarser `step`")
+                .into());
+        }
+        Ok(())
+    }
+
+    fn list(&mut self, items: &[Expr], span: Span) -> R<Value> {
+        if let [a, b, c] = items {
+            // `[x, y, z]` of numbers is a Vec3; evaluate without a heap list first.
+            let vals = [self.eval(a)?, self.eval(b)?, self.eval(c)?];
+            if let (Some(x), Some(y), Some(z)) =
+                (vals[0].as_f64(), vals[1].as_f64(), vals[2].as_f64())
+            {
+                return Ok(Value::Vec3(glam::DVec3::new(x, y, z)));
+            }
+            return Ok(Value::List(Rc::new(vals.into())));
+        }
+        let mut out = Vec::with_capacity(items.len());
+        for it in items {
+            out.push(self.eval(it)?);
+        }
+        self.check_list_len(out.len(), span)?;
+        Ok(Value::List(Rc::new(out)))
+    }
+
+    fn record(&mut self, fields: &[Field]) -> R<Value> {
+        let mut r = Record::default();
+        for f in fields {
+            if let Some(prev) = r.fields.iter().find(|x| x.name == f.name.sym) {
+                return Err(error(
+                    "rtc::field::duplicate",
+                    f.name.span,
+                    format!("field `{}` is given twice", f.name.sym),
+                )
+                .with_label("second value")
+                .with_secondary(prev.name_span, "first value")
+                .with_help("remove one of them")
+                .into());
+            }
+            let v = self.eval(&f.value)?;
+            r.fields.push(super::value::FieldVal {
+                name: f.name.sym,
+                value: v,
+                span: f.value.span,
+                name_span: f.name.span,
+            });
+        }
+        Ok(Value::Record(Rc::new(r)))
+    }
+
+    fn binary(&mut self, op: BinOp, a: &Expr, b: &Expr, span: Span) -> R<Value> {
+        if matches!(op, BinOp::And | BinOp::Or) {
+            let l = self.eval(a)?;
+            let Value::Bool(lb) = l else {
+                return Err(super::types::mismatch(self, "Bool", &l, a.span).into());
+            };
+            if (op == BinOp::And) != lb {
+                return Ok(Value::Bool(lb));
+            }
+            let r = self.eval(b)?;
+            return match r {
+                Value::Bool(rb) => Ok(Value::Bool(rb)),
+                other => Err(super::types::mismatch(self, "Bool", &other, b.span).into()),
+            };
+        }
+        let l = self.eval(a)?;
+        let r = self.eval(b)?;
+        super::ops::binary(self, op, l, r, a.span, b.span, span)
+    }
+
+    fn range(
+        &mut self,
+        s: &Expr,
+        e: &Expr,
+        inclusive: bool,
+        step: Option<&Expr>,
+        span: Span,
+    ) -> R<Value> {
+        let sv = self.eval(s)?;
+        let ev = self.eval(e)?;
+        let stv = match step {
+            Some(x) => Some((self.eval(x)?, x.span)),
+            None => None,
+        };
+        let num = |me: &Self, v: &Value, sp: Span| -> R<f64> {
+            v.as_f64()
+                .ok_or_else(|| super::types::mismatch(me, "Int", v, sp).into())
+        };
+        let start = num(self, &sv, s.span)?;
+        let end = num(self, &ev, e.span)?;
+        let (step, step_int) = match &stv {
+            Some((v, sp)) => (num(self, v, *sp)?, matches!(v, Value::Int(_))),
+            None => (1.0, true),
+        };
+        if step == 0.0 || !step.is_finite() || !start.is_finite() || !end.is_finite() {
+            let sp = stv.as_ref().map_or(span, |x| x.1);
+            return Err(error(
+                "rtc::value::range_step",
+                sp,
+                "a range needs a finite, non-zero step",
+            )
+            .with_label("this range would never end")
+            .with_help("use a positive `step`, e.g. `step 0.1`")
+            .into());
+        }
+        let ints = matches!(sv, Value::Int(_)) && matches!(ev, Value::Int(_)) && step_int;
+        Ok(Value::Range(super::value::Range {
+            start,
+            end,
+            step,
+            inclusive,
+            ints,
+        }))
+    }
+
+    /// Evaluates a block in a new scope; its value is its last expression (`Unit` if none).
+    pub fn block(&mut self, b: &Block) -> R<Value> {
+        let mark = self.locals.len();
+        let r = self.block_inner(b, mark);
+        self.locals.truncate(mark);
+        r
+    }
+
+    fn block_inner(&mut self, b: &Block, mark: usize) -> R<Value> {
+        let mut last = Value::Unit;
+        let n = b.stmts.len();
+        for (i, st) in b.stmts.iter().enumerate() {
+            match st {
+                Stmt::Let(l) => {
+                    let v = self.eval(&l.value)?;
+                    let v = match &l.ty {
+                        Some(t) => super::types::check_ann(self, t, v, l.value.span)?,
+                        None => v,
+                    };
+                    self.bind_local(l.name, v, mark)?;
+                }
+                Stmt::Fn(def) => {
+                    let c = Closure {
+                        def: def.clone(),
+                        captured: self.locals[self.frame_base..].to_vec(),
+                        module: self.scope.clone(),
+                    };
+                    self.bind_local(def.name, Value::Fn(Rc::new(c)), mark)?;
+                }
+                Stmt::Import(im) => {
+                    return Err(error(
+                        "rtc::module::import_position",
+                        im.span,
+                        "`import` inside a block",
+                    )
+                    .with_label("imports belong at the top of a file")
+                    .with_help("move this `import` to the top level of the file")
+                    .into());
+                }
+                Stmt::Expr(e) => {
+                    let v = self.eval(e)?;
+                    if i + 1 == n {
+                        last = v;
+                    } else if !matches!(v, Value::Unit) {
+                        return Err(error("rtc::value::discarded", e.span, "this value is discarded")
+                            .with_label(format!("{} that goes nowhere", super::value::a_type(v.type_name())))
+                            .with_help("only the last expression of a block is its value; collect several values in a list `[a, b]`")
+                            .into());
+                    }
+                }
+            }
+        }
+        Ok(last)
+    }
+
+    fn bind_local(&mut self, name: Name, v: Value, mark: usize) -> R<()> {
+        if self.locals[mark..].iter().any(|(k, _)| *k == name.sym) {
+            return Err(error(
+                "rtc::name::duplicate",
+                name.span,
+                format!("`{}` is already defined in this block", name.sym),
+            )
+            .with_label("second definition")
+            .with_help(format!(
+                "choose another name, or remove the earlier `let {}`",
+                name.sym
+            ))
+            .into());
+        }
+        let outer = self.locals[self.frame_base..mark]
+            .iter()
+            .any(|(k, _)| *k == name.sym)
+            || self.scope.items.borrow().contains_key(&name.sym);
+        if outer && !name.sym.as_str().starts_with('_') {
+            self.warn(
+                Diagnostic::warning(
+                    "rtc::name::shadowed",
+                    name.span,
+                    format!("`{}` shadows an outer binding", name.sym),
+                )
+                .with_label("this hides the outer value in this block")
+                .with_help(format!(
+                    "rename it, or write `_{}` if the shadowing is intended",
+                    name.sym
+                )),
+            );
+        }
+        self.locals.push((name.sym, v));
+        Ok(())
+    }
+
+    fn for_level(
+        &mut self,
+        gens: &[Generator],
+        level: usize,
+        filter: Option<&Expr>,
+        body: &Block,
+        span: Span,
+        out: &mut Vec<Value>,
+    ) -> R<()> {
+        if level == gens.len() {
+            let r = self.for_body(filter, body, out, span);
+            return r.map_err(|e| {
+                let vars = &self.locals[self.locals.len() - gens.len()..];
+                let desc: Vec<String> = vars
+                    .iter()
+                    .map(|(k, v)| format!("{k} = {}", v.show()))
+                    .collect();
+                e.frame(span, || {
+                    format!("in iteration {} of this `for`", desc.join(", "))
+                })
+            });
+        }
+        let g = &gens[level];
+        let it = self.eval(&g.iter)?;
+        let step = |me: &mut Self, v: Value, out: &mut Vec<Value>| -> R<()> {
+            me.loop_iters += 1;
+            if me.loop_iters > me.opts.max_loop_iterations {
+                return Err(error("rtc::budget::loop", span, "loop budget exhausted")
+                    .with_label(format!(
+                        "the scene's loops ran more than {} iterations in total",
+                        me.opts.max_loop_iterations
+                    ))
+                    .with_help("reduce the ranges of the loops")
+                    .into());
+            }
+            me.locals.push((g.var.sym, v));
+            let r = me.for_level(gens, level + 1, filter, body, span, out);
+            me.locals.pop();
+            r
+        };
+        match it {
+            Value::Range(r) => {
+                for i in 0..r.len() {
+                    step(self, r.get(i), out)?;
+                }
+            }
+            Value::List(l) => {
+                for v in l.iter() {
+                    step(self, v.clone(), out)?;
+                }
+            }
+            Value::Vec3(v) => {
+                for x in v.to_array() {
+                    step(self, Value::Float(x), out)?;
+                }
+            }
+            other => {
+                let d = error(
+                    "rtc::type::mismatch",
+                    g.iter.span,
+                    format!(
+                        "cannot loop over {}",
+                        super::value::a_type(other.type_name())
+                    ),
+                )
+                .with_label("not a range or a list");
+                let d = if matches!(other, Value::Int(_)) {
+                    d.with_help(format!("write a range: `0..{}`", self.snippet(g.iter.span)))
+                } else {
+                    d.with_help("loop over a range such as `0..5` or a list")
+                };
+                return Err(d.into());
+            }
+        }
+        Ok(())
+    }
+
+    fn for_body(
+        &mut self,
+        filter: Option<&Expr>,
+        body: &Block,
+        out: &mut Vec<Value>,
+        span: Span,
+    ) -> R<()> {
+        if let Some(f) = filter {
+            match self.eval(f)? {
+                Value::Bool(true) => {}
+                Value::Bool(false) => return Ok(()),
+                other => return Err(super::types::mismatch(self, "Bool", &other, f.span).into()),
+            }
+        }
+        let v = self.block(body)?;
+        if !matches!(v, Value::Unit) {
+            out.push(v);
+            self.check_list_len(out.len(), span)?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,248 @@
+//! Lowering of emitted values to the IR: objects (groups flattened, CSG kept), materials and
+//! textures (shared by identity, so one material used by a million objects is stored once),
+//! lights, the camera and render settings.
+
+use std::rc::Rc;
+
+use glam::DAffine3;
+
+use crate::diag::Diagnostic;
+use crate::ir;
+use crate::source::Span;
+
+use super::value::{Mat, Obj, ObjShape, RenderVal, Tex, Value};
+
+/// Collects what a scene file emits.
+#[derive(Default)]
+pub struct Lowerer {
+    /// Objects so far.
+    pub objects: Vec<ir::Object>,
+    /// Lights so far.
+    pub lights: Vec<ir::Light>,
+    /// Cameras emitted (one is required).
+    pub cameras: Vec<Rc<ir::Camera>>,
+    /// Render blocks emitted (at most one).
+    pub renders: Vec<Rc<RenderVal>>,
+    materials: Vec<ir::Material>,
+    textures: Vec<ir::Texture>,
+    mat_ids: super::fxhash::FxHashMap<*const Mat, ir::MaterialId>,
+    tex_ids: super::fxhash::FxHashMap<*const Tex, ir::TextureId>,
+    /// Keeps every lowered material alive so its address is never reused by another.
+    keep: Vec<Rc<Mat>>,
+    keep_tex: Vec<Rc<Tex>>,
+}
+
+/// Whether a value is something a scene file may emit.
+pub fn emittable(v: &Value) -> bool {
+    match v {
+        Value::Object(_) | Value::Light(_) | Value::Camera(_) | Value::Render(_) => true,
+        Value::List(l) => {
+            !l.is_empty()
+                && l.iter()
+                    .all(|x| emittable(x) || matches!(x, Value::List(_)))
+        }
+        _ => false,
+    }
+}
+
+impl Lowerer {
+    /// Adds an emitted value; `Err` carries the type of a value that cannot be emitted.
+    pub fn emit(&mut self, v: &Value, max_objects: u64, span: Span) -> Result<(), Diagnostic> {
+        match v {
+            Value::Object(o) => {
+                self.object(o, DAffine3::IDENTITY, None);
+                if self.objects.len() as u64 > max_objects {
+                    return Err(Diagnostic::error(
+                        "rtc::budget::objects",
+                        span,
+                        "too many objects",
+                    )
+                    .with_label(format!("the scene passes {max_objects} objects here"))
+                    .with_help("emit fewer objects, e.g. with a coarser loop `step`"));
+                }
+            }
+            Value::Light(l) => self.lights.push((**l).clone()),
+            Value::Camera(c) => self.cameras.push(c.clone()),
+            Value::Render(r) => self.renders.push(r.clone()),
+            Value::List(l) => {
+                for x in l.iter() {
+                    self.emit(x, max_objects, span)?;
+                }
+            }
+            Value::Unit => {}
+            other => {
+                return Err(Diagnostic::error(
+                    "rtc::value::discarded",
+                    span,
+                    format!(
+                        "{} cannot be part of the scene",
+                        super::value::a_type(other.type_name())
+                    ),
+                )
+                .with_label("this value goes nowhere")
+                .with_help("bind it with `let name = ...`, or remove it"));
+            }
+        }
+        Ok(())
+    }
+
+    fn texture(&mut self, t: &Rc<Tex>) -> ir::TextureId {
+        if let Some(id) = self.tex_ids.get(&Rc::as_ptr(t)) {
+            return *id;
+        }
+        self.textures.push(t.t.clone());
+        let id = ir::TextureId((self.textures.len() - 1) as u32);
+        self.tex_ids.insert(Rc::as_ptr(t), id);
+        self.keep_tex.push(t.clone());
+        id
+    }
+
+    /// The id of a material, adding it on first use.
+    pub fn material(&mut self, m: &Rc<Mat>) -> ir::MaterialId {
+        if let Some(id) = self.mat_ids.get(&Rc::as_ptr(m)) {
+            return *id;
+        }
+        let mut im = m.m.clone();
+        im.texture = m.texture.as_ref().map(|t| self.texture(t));
+        im.bump = m.bump.as_ref().map(|(t, s)| ir::Bump {
+            texture: self.texture(t),
+            scale: *s,
+        });
+        self.materials.push(im);
+        let id = ir::MaterialId((self.materials.len() - 1) as u32);
+        self.mat_ids.insert(Rc::as_ptr(m), id);
+        self.keep.push(m.clone());
+        id
+    }
+
+    fn object(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>) {
+        let mut out = std::mem::take(&mut self.objects);
+        self.lower_into(o, parent, inherited, &mut out);
+        self.objects = out;
+    }
+
+    fn lower_into(
+        &mut self,
+        o: &Obj,
+        parent: DAffine3,
+        inherited: Option<ir::MaterialId>,
+        out: &mut Vec<ir::Object>,
+    ) {
+        let t = parent * o.transform;
+        let mat = match &o.material {
+            Some(m) => Some(self.material(m)),
+            None => inherited,
+        };
+        match &o.shape {
+            ObjShape::Prim(s) => out.push(ir::Object {
+                shape: s.clone(),
+                transform: t,
+                material: mat,
+                span: o.span,
+            }),
+            ObjShape::Group(ch) => {
+                for c in ch.iter() {
+                    self.lower_into(c, t, mat, out);
+                }
+            }
+            ObjShape::Csg(op, ch) => {
+                let mut kids = Vec::with_capacity(ch.len());
+                for c in ch.iter() {
+                    match &c.shape {
+                        // A group inside CSG acts as the union of its children.
+                        ObjShape::Group(g) => {
+                            let mut sub = Vec::new();
+                            let cm = c.material.as_ref().map(|m| self.material(m));
+                            for x in g.iter() {
+                                self.lower_into(x, DAffine3::IDENTITY, None, &mut sub);
+                            }
+                            kids.push(ir::Object {
+                                shape: ir::Shape::Csg {
+                                    op: ir::CsgOp::Union,
+                                    children: sub,
+                                },
+                                transform: c.transform,
+                                material: cm,
+                                span: c.span,
+                            });
+                        }
+                        _ => self.lower_into(c, DAffine3::IDENTITY, None, &mut kids),
+                    }
+                }
+                out.push(ir::Object {
+                    shape: ir::Shape::Csg {
+                        op: *op,
+                        children: kids,
+                    },
+                    transform: t,
+                    material: mat,
+                    span: o.span,
+                });
+            }
+        }
+    }
+
+    /// Builds the scene; `Err` lists what is missing or duplicated.
+    pub fn finish(mut self) -> Result<ir::Scene, Vec<Diagnostic>> {
+        let mut errs = Vec::new();
+        if self.cameras.len() > 1 {
+            errs.push(
+                Diagnostic::error(
+                    "rtc::camera::duplicate",
+                    self.cameras[1].span,
+                    "the scene has two cameras",
+                )
+                .with_label("second camera")
+                .with_secondary(self.cameras[0].span, "first camera")
+                .with_help("remove one of them, or bind the spare one with `let`"),
+            );
+        }
+        if self.renders.len() > 1 {
+            errs.push(
+                Diagnostic::error(
+                    "rtc::render::duplicate",
+                    self.renders[1].span,
+                    "the scene has two `render` blocks",
+                )
+                .with_label("second `render`")
+                .with_secondary(self.renders[0].span, "first `render`")
+                .with_help("merge them into one `render { ... }`"),
+            );
+        }
+        let Some(camera) = self.cameras.first().map(|c| (**c).clone()) else {
+            errs.push(
+                Diagnostic::new(
+                    crate::diag::Severity::Error,
+                    "rtc::camera::missing",
+                    None,
+                    "the scene has no camera",
+                )
+                .with_help("add one, e.g. `camera { eye: [0, 2, 8], center: [0, 0, 0] }`"),
+            );
+            return Err(errs);
+        };
+        if !errs.is_empty() {
+            return Err(errs);
+        }
+        let settings = match self.renders.first().cloned() {
+            Some(r) => {
+                let mut s = r.s.clone();
+                s.default_material = r.material.as_ref().map(|m| self.material(m));
+                s
+            }
+            None => ir::RenderSettings {
+                shadows: true,
+                max_depth: 5,
+                ..ir::RenderSettings::default()
+            },
+        };
+        Ok(ir::Scene {
+            camera,
+            lights: self.lights,
+            materials: self.materials,
+            textures: self.textures,
+            objects: self.objects,
+            settings,
+        })
+    }
+}

@@ -1,0 +1,219 @@
+//! Member access (`v.x`, `obj.bounds`, `module.item`, `record.field`) and indexing.
+
+use std::rc::Rc;
+
+use crate::source::Span;
+use crate::syntax::ast::Name;
+use crate::syntax::intern::Sym;
+
+use super::error::{R, error, suggest};
+use super::interp::Interp;
+use super::value::{FieldVal, Record, Value};
+
+/// Members each type offers (for did-you-mean).
+fn members_of(v: &Value) -> &'static [&'static str] {
+    match v {
+        Value::Vec3(_) => &["x", "y", "z", "xy", "xz", "yz", "xyz", "zyx"],
+        Value::Color(_) => &["r", "g", "b"],
+        Value::Angle(_) => &["deg", "rad", "turn"],
+        Value::Object(_) => &[
+            "bounds",
+            "material",
+            "translate",
+            "scale",
+            "rotate",
+            "matrix",
+            "around",
+            "transform",
+        ],
+        Value::Camera(_) => &["eye", "center", "up"],
+        _ => &[],
+    }
+}
+
+/// `v.name`.
+pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
+    let n = name.sym.as_str();
+    let found = match &v {
+        Value::Module(m) => {
+            return match m.export(name.sym) {
+                Ok(b) if b.poisoned => Err(super::error::EvalError::Poisoned),
+                Ok(b) => Ok(b.value),
+                Err(true) => Err(error(
+                    "rtc::module::private",
+                    name.span,
+                    format!("`{n}` is not public in module `{}`", m.name),
+                )
+                .with_label("private item")
+                .with_help(format!("mark it `pub` in `{}`", m.name))
+                .into()),
+                Err(false) => {
+                    let d = error(
+                        "rtc::name::unknown",
+                        name.span,
+                        format!("no item named `{n}` in module `{}`", m.name),
+                    )
+                    .with_label(format!("not found in `{}`", m.name));
+                    let help = suggest(n, m.export_names()).unwrap_or_else(|| {
+                        format!("`{}` exports: {}", m.name, m.export_names().join(", "))
+                    });
+                    Err(d.with_help(help).into())
+                }
+            };
+        }
+        Value::Record(r) => {
+            if let Some(x) = r.get(name.sym) {
+                return Ok(x.clone());
+            }
+            let names: Vec<&str> = r.fields.iter().map(|f| f.name.as_str()).collect();
+            let d = error(
+                "rtc::field::unknown",
+                name.span,
+                format!("the record has no field `{n}`"),
+            )
+            .with_label("unknown field");
+            let help = suggest(n, names.iter().copied())
+                .unwrap_or_else(|| format!("its fields are: {}", names.join(", ")));
+            return Err(d.with_help(help).into());
+        }
+        Value::Vec3(x)
+            if !n.is_empty() && n.len() <= 3 && n.chars().all(|c| matches!(c, 'x' | 'y' | 'z')) =>
+        {
+            let comps: Vec<f64> = n
+                .chars()
+                .map(|c| match c {
+                    'x' => x.x,
+                    'y' => x.y,
+                    _ => x.z,
+                })
+                .collect();
+            Some(match comps.as_slice() {
+                [a] => Value::Float(*a),
+                [a, b, c] => Value::Vec3(glam::DVec3::new(*a, *b, *c)),
+                _ => Value::List(Rc::new(comps.iter().map(|c| Value::Float(*c)).collect())),
+            })
+        }
+        Value::Color(c) => match n {
+            "r" => Some(Value::Float(c.x)),
+            "g" => Some(Value::Float(c.y)),
+            "b" => Some(Value::Float(c.z)),
+            _ => None,
+        },
+        Value::Angle(a) => match n {
+            "deg" => Some(Value::Float(a.to_degrees())),
+            "rad" => Some(Value::Float(*a)),
+            "turn" => Some(Value::Float(a / std::f64::consts::TAU)),
+            _ => None,
+        },
+        Value::Object(o) => match n {
+            "bounds" => Some(super::bounds::bounds_value(it, o, vspan)?),
+            "material" => Some(match &o.material {
+                Some(m) => Value::Material(m.clone()),
+                None => {
+                    return Err(error(
+                        "rtc::value::no_material",
+                        name.span,
+                        "this object has no material yet",
+                    )
+                    .with_label("nothing to read")
+                    .with_help("give it one with `.material(m)` first")
+                    .into());
+                }
+            }),
+            _ => None,
+        },
+        Value::Camera(c) => match n {
+            "eye" => Some(Value::Vec3(c.eye)),
+            "center" => Some(Value::Vec3(c.center)),
+            "up" => Some(Value::Vec3(c.up)),
+            _ => None,
+        },
+        _ => None,
+    };
+    if let Some(x) = found {
+        return Ok(x);
+    }
+    let known = members_of(&v);
+    let d = error(
+        "rtc::field::unknown",
+        name.span,
+        format!(
+            "{} has no member `{n}`",
+            super::value::a_type(v.type_name())
+        ),
+    )
+    .with_label("unknown member");
+    let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
+        if known.is_empty() {
+            format!("{} has no members", super::value::a_type(v.type_name()))
+        } else {
+            format!("its members are: {}", known.join(", "))
+        }
+    });
+    Err(d.with_help(help).into())
+}
+
+/// `v[i]`.
+pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
+    let Value::Int(k) = i else {
+        return Err(error(
+            "rtc::type::mismatch",
+            ispan,
+            format!("expected `Int`, found `{}`", i.type_name()),
+        )
+        .with_label("an index must be an integer")
+        .with_help("use `round(...)` or `floor(...)` to get an `Int`")
+        .into());
+    };
+    let len = match &v {
+        Value::List(l) => l.len(),
+        Value::Vec3(_) => 3,
+        other => {
+            return Err(error(
+                "rtc::type::mismatch",
+                ispan,
+                format!(
+                    "{} cannot be indexed",
+                    super::value::a_type(other.type_name())
+                ),
+            )
+            .with_label("indexed here")
+            .with_help("only lists and vectors can be indexed")
+            .into());
+        }
+    };
+    if k < 0 || k as usize >= len {
+        return Err(error(
+            "rtc::value::index",
+            ispan,
+            format!("index {k} is out of range for {len} elements"),
+        )
+        .with_label(format!("evaluates to {k}"))
+        .with_help(if len == 0 {
+            "the list is empty".to_owned()
+        } else {
+            format!("use an index from 0 to {}", len - 1)
+        })
+        .into());
+    }
+    Ok(match v {
+        Value::List(l) => l[k as usize].clone(),
+        Value::Vec3(x) => Value::Float(x[k as usize]),
+        _ => unreachable!("checked above"),
+    })
+}
+
+/// Builds a record value from (name, value) pairs with `span` for every field.
+pub fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
+    Value::Record(Rc::new(Record {
+        fields: fields
+            .iter()
+            .map(|(k, v)| FieldVal {
+                name: Sym::new(k),
+                value: v.clone(),
+                span,
+                name_span: span,
+            })
+            .collect(),
+    }))
+}

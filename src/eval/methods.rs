@@ -1,0 +1,106 @@
+//! Method calls: transforms and `.material(m)` on objects, transform chaining, RNG draws and
+//! list helpers.
+
+use std::rc::Rc;
+
+use crate::source::Span;
+use crate::syntax::ast::Name;
+
+use super::call::{ArgVal, CallSite};
+use super::error::{R, error, suggest};
+use super::interp::Interp;
+use super::types;
+use super::value::{Obj, Value};
+
+/// `recv.name(args)`.
+pub fn call_method(
+    it: &mut Interp,
+    recv: Value,
+    name: Name,
+    args: Vec<ArgVal>,
+    span: Span,
+) -> R<Value> {
+    let n = name.sym.as_str();
+    let site = CallSite { span, name: n };
+    let is_t = super::transform::METHODS.contains(&n);
+    match &recv {
+        Value::Object(o) if is_t => {
+            let t = super::transform::method_transform(it, n, site, args)?;
+            let mut o2: Obj = (**o).clone();
+            o2.transform = t * o2.transform;
+            return Ok(Value::Object(Rc::new(o2)));
+        }
+        Value::Object(o) if n == "material" => {
+            let mut p = super::builtins::Params::new(site, &["material"], args)?;
+            let (m, ms) = p.req("material")?;
+            let Value::Material(m) = m else {
+                return Err(types::mismatch(it, "Material", &m, ms).into());
+            };
+            let mut o2: Obj = (**o).clone();
+            o2.material = Some(m);
+            return Ok(Value::Object(Rc::new(o2)));
+        }
+        Value::Transform(a) if is_t => {
+            let t = super::transform::method_transform(it, n, site, args)?;
+            return Ok(Value::Transform(Rc::new(t * **a)));
+        }
+        Value::Rng(seed) if super::rng::METHODS.contains(&n) => {
+            return super::rng::method(it, *seed, n, site, args);
+        }
+        Value::List(l) if n == "map" || n == "filter" => {
+            let mut p = super::builtins::Params::new(site, &["f"], args)?;
+            let (f, fs) = p.req("f")?;
+            if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
+                return Err(types::mismatch(it, "Fn", &f, fs).into());
+            }
+            let mut out = Vec::with_capacity(l.len());
+            for x in l.iter() {
+                let a = vec![ArgVal {
+                    name: None,
+                    value: x.clone(),
+                    span: fs,
+                }];
+                let r = it.call_value(f.clone(), a, span, fs)?;
+                if n == "map" {
+                    out.push(r);
+                } else if types::boolean(it, &r, fs)? {
+                    out.push(x.clone());
+                }
+            }
+            return Ok(Value::List(Rc::new(out)));
+        }
+        _ => {}
+    }
+    let known: &[&str] = match &recv {
+        Value::Object(_) => &[
+            "translate",
+            "scale",
+            "rotate",
+            "matrix",
+            "around",
+            "transform",
+            "material",
+        ],
+        Value::Transform(_) => super::transform::METHODS,
+        Value::Rng(_) => super::rng::METHODS,
+        Value::List(_) => &["map", "filter"],
+        _ => &[],
+    };
+    let d = error(
+        "rtc::field::unknown",
+        name.span,
+        format!(
+            "{} has no method `{n}`",
+            super::value::a_type(recv.type_name())
+        ),
+    )
+    .with_label("unknown method");
+    let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
+        if known.is_empty() {
+            format!("{} has no methods", super::value::a_type(recv.type_name()))
+        } else {
+            format!("its methods are: {}", known.join(", "))
+        }
+    });
+    Err(d.with_help(help).into())
+}

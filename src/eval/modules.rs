@@ -1,0 +1,119 @@
+//! Modules: one scope per file, `pub` exports, the embedded standard library, import caching and
+//! cycle detection.
+
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use crate::source::{FileId, Span};
+use crate::syntax::intern::Sym;
+
+use super::value::Value;
+
+/// The embedded standard library: `std.NAME` is the text of `stdlib/NAME.rtc`. Adding a module
+/// is one line here.
+pub const STDLIB: &[(&str, &str)] = &[
+    ("prelude", include_str!("../../stdlib/prelude.rtc")),
+    ("math", include_str!("../../stdlib/math.rtc")),
+    ("color", include_str!("../../stdlib/color.rtc")),
+    ("materials", include_str!("../../stdlib/materials.rtc")),
+    ("textures", include_str!("../../stdlib/textures.rtc")),
+    ("layout", include_str!("../../stdlib/layout.rtc")),
+    ("shapes", include_str!("../../stdlib/shapes.rtc")),
+];
+
+/// A name bound at module level.
+#[derive(Clone, Debug)]
+pub struct Binding {
+    /// Its value (meaningless when `poisoned`).
+    pub value: Value,
+    /// Exported.
+    pub public: bool,
+    /// Where it was bound.
+    pub span: Span,
+    /// Its definition failed; uses are silently skipped.
+    pub poisoned: bool,
+}
+
+/// The items of one module while it is evaluated (and afterwards, for closures).
+#[derive(Debug)]
+pub struct Scope {
+    /// Module-level bindings.
+    pub items: RefCell<super::fxhash::FxHashMap<Sym, Binding>>,
+    /// Directory that relative paths in this file resolve against.
+    pub dir: PathBuf,
+    /// The file.
+    pub file: FileId,
+    /// Name for messages (`std.color` or the path).
+    pub name: String,
+}
+
+impl Scope {
+    /// An empty scope for a file.
+    pub fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
+        Scope {
+            items: RefCell::new(Default::default()),
+            dir,
+            file,
+            name,
+        }
+    }
+}
+
+/// An evaluated module as a value.
+#[derive(Debug)]
+pub struct Module {
+    /// `std.color` or the path as written.
+    pub name: String,
+    /// Its scope (exports are the `pub` bindings).
+    pub scope: Rc<Scope>,
+}
+
+impl Module {
+    /// A `pub` binding, or `Err(true)` when the name exists but is private, `Err(false)` if absent.
+    pub fn export(&self, name: Sym) -> Result<Binding, bool> {
+        match self.scope.items.borrow().get(&name) {
+            Some(b) if b.public => Ok(b.clone()),
+            Some(_) => Err(true),
+            None => Err(false),
+        }
+    }
+
+    /// Names of all exports, sorted (for did-you-mean).
+    pub fn export_names(&self) -> Vec<&'static str> {
+        let mut v: Vec<&'static str> = self
+            .scope
+            .items
+            .borrow()
+            .iter()
+            .filter(|(_, b)| b.public)
+            .map(|(k, _)| k.as_str())
+            .collect();
+        v.sort_unstable();
+        v
+    }
+}
+
+/// The stdlib text for `std.NAME`.
+pub fn stdlib(name: &str) -> Option<&'static str> {
+    STDLIB.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
+}
+
+/// Resolves `rel` against `dir` without touching the file system (paths stay as the user would
+/// write them, so messages are stable).
+pub fn resolve(dir: &Path, rel: &str) -> PathBuf {
+    let joined = dir.join(rel);
+    let mut out = PathBuf::new();
+    for c in joined.components() {
+        match c {
+            std::path::Component::CurDir => {}
+            std::path::Component::ParentDir
+                if out.file_name().is_some() && !out.ends_with("..") =>
+            {
+                out.pop();
+            }
+            other => out.push(other.as_os_str()),
+        }
+    }
+    out
+}

@@ -1,0 +1,247 @@
+//! Unary and binary operators: arithmetic, comparison, `>>` on transforms, CSG on objects.
+
+use std::rc::Rc;
+
+use crate::ir::CsgOp;
+use crate::source::Span;
+use crate::syntax::ast::{BinOp, UnOp};
+
+use super::error::{R, error};
+use super::interp::Interp;
+use super::value::{Obj, ObjShape, Value};
+
+/// `-x`, `!x`.
+pub fn unary(op: UnOp, v: Value, span: Span) -> R<Value> {
+    Ok(match (op, v) {
+        (UnOp::Neg, Value::Int(i)) => Value::Int(i.checked_neg().ok_or_else(|| overflow(span))?),
+        (UnOp::Neg, Value::Float(f)) => Value::Float(-f),
+        (UnOp::Neg, Value::Angle(a)) => Value::Angle(-a),
+        (UnOp::Neg, Value::Vec3(v)) => Value::Vec3(-v),
+        (UnOp::Not, Value::Bool(b)) => Value::Bool(!b),
+        (op, v) => {
+            let sym = if op == UnOp::Neg { "-" } else { "!" };
+            return Err(error(
+                "rtc::type::operator",
+                span,
+                format!(
+                    "cannot apply `{sym}` to {}",
+                    super::value::a_type(v.type_name())
+                ),
+            )
+            .with_label(format!("this is {}", super::value::a_type(v.type_name())))
+            .with_help(if op == UnOp::Neg {
+                "negate a number, angle or vector"
+            } else {
+                "`!` needs a `Bool`"
+            })
+            .into());
+        }
+    })
+}
+
+fn overflow(span: Span) -> crate::diag::Diagnostic {
+    error("rtc::value::overflow", span, "integer overflow")
+        .with_label("the result does not fit in 64 bits")
+        .with_help("use floats for very large numbers, e.g. `1.0e20`")
+}
+
+/// `a op b` for every operator except the short-circuit `&&` and `||`.
+#[allow(clippy::too_many_arguments)]
+pub fn binary(
+    it: &mut Interp,
+    op: BinOp,
+    l: Value,
+    r: Value,
+    ls: Span,
+    rs: Span,
+    span: Span,
+) -> R<Value> {
+    use BinOp::*;
+    use Value::*;
+    let v = match (op, &l, &r) {
+        (Add, Int(a), Int(b)) => Int(a.checked_add(*b).ok_or_else(|| overflow(span))?),
+        (Sub, Int(a), Int(b)) => Int(a.checked_sub(*b).ok_or_else(|| overflow(span))?),
+        (Mul, Int(a), Int(b)) => Int(a.checked_mul(*b).ok_or_else(|| overflow(span))?),
+        (Rem, Int(a), Int(b)) => {
+            if *b == 0 {
+                return Err(div_zero(rs));
+            }
+            Int(a.rem_euclid(*b))
+        }
+        (Add | Sub | Mul | Div | Rem, Int(_) | Float(_), Int(_) | Float(_)) => {
+            let (a, b) = (l.as_f64().unwrap_or(0.0), r.as_f64().unwrap_or(0.0));
+            Float(match op {
+                Add => a + b,
+                Sub => a - b,
+                Mul => a * b,
+                Div if b == 0.0 => return Err(div_zero(rs)),
+                Div => a / b,
+                Rem if b == 0.0 => return Err(div_zero(rs)),
+                _ => a.rem_euclid(b),
+            })
+        }
+        (Add, Angle(a), Angle(b)) => Angle(a + b),
+        (Sub, Angle(a), Angle(b)) => Angle(a - b),
+        (Mul, Angle(a), Int(_) | Float(_)) => Angle(a * r.as_f64().unwrap_or(0.0)),
+        (Mul, Int(_) | Float(_), Angle(b)) => Angle(l.as_f64().unwrap_or(0.0) * b),
+        (Div, Angle(a), Int(_) | Float(_)) => Angle(a / nonzero(r.as_f64(), rs)?),
+        (Div, Angle(a), Angle(b)) => Float(a / nonzero(Some(*b), rs)?),
+        (Add, Vec3(a), Vec3(b)) => Vec3(*a + *b),
+        (Sub, Vec3(a), Vec3(b)) => Vec3(*a - *b),
+        (Mul, Vec3(a), Vec3(b)) => Vec3(*a * *b),
+        (Mul, Vec3(a), Int(_) | Float(_)) => Vec3(*a * r.as_f64().unwrap_or(0.0)),
+        (Mul, Int(_) | Float(_), Vec3(b)) => Vec3(l.as_f64().unwrap_or(0.0) * *b),
+        (Div, Vec3(a), Int(_) | Float(_)) => Vec3(*a / nonzero(r.as_f64(), rs)?),
+        (Add, Color(a), Color(b)) => Color(*a + *b),
+        (Sub, Color(a), Color(b)) => Color(*a - *b),
+        (Mul, Color(a), Color(b)) => Color(*a * *b),
+        (Mul, Color(a), Int(_) | Float(_)) => Color(*a * r.as_f64().unwrap_or(0.0)),
+        (Mul, Int(_) | Float(_), Color(b)) => Color(l.as_f64().unwrap_or(0.0) * *b),
+        (Div, Color(a), Int(_) | Float(_)) => Color(*a / nonzero(r.as_f64(), rs)?),
+        (Add, Str(a), Str(b)) => Str(format!("{a}{b}").into()),
+        (Add, List(a), List(b)) => {
+            it.check_list_len(a.len() + b.len(), span)?;
+            List(Rc::new(a.iter().chain(b.iter()).cloned().collect()))
+        }
+        (Then, Transform(a), Transform(b)) => Transform(Rc::new(**b * **a)),
+        (Union, Object(_), Object(_)) => csg(it, CsgOp::Union, &l, &r, ls, rs, span)?,
+        (Inter, Object(_), Object(_)) => csg(it, CsgOp::Intersection, &l, &r, ls, rs, span)?,
+        (Sub, Object(_), Object(_)) => csg(it, CsgOp::Difference, &l, &r, ls, rs, span)?,
+        (Eq | Ne, _, _) => {
+            let eq = equal(&l, &r).ok_or_else(|| op_error(it, op, &l, &r, ls, rs))?;
+            Bool(eq == (op == Eq))
+        }
+        (Lt | Le | Gt | Ge, _, _) => {
+            let (a, b) = match (&l, &r) {
+                (Angle(a), Angle(b)) => (*a, *b),
+                _ => match (l.as_f64(), r.as_f64()) {
+                    (Some(a), Some(b)) => (a, b),
+                    _ => return Err(op_error(it, op, &l, &r, ls, rs).into()),
+                },
+            };
+            Bool(match op {
+                Lt => a < b,
+                Le => a <= b,
+                Gt => a > b,
+                _ => a >= b,
+            })
+        }
+        _ => return Err(op_error(it, op, &l, &r, ls, rs).into()),
+    };
+    Ok(v)
+}
+
+fn nonzero(v: Option<f64>, span: Span) -> R<f64> {
+    match v {
+        Some(x) if x != 0.0 => Ok(x),
+        _ => Err(div_zero(span)),
+    }
+}
+
+fn div_zero(span: Span) -> super::error::EvalError {
+    error("rtc::value::division_by_zero", span, "division by zero")
+        .with_label("this is zero")
+        .with_help("guard the division with an `if`, or divide by a non-zero value")
+        .into()
+}
+
+fn equal(a: &Value, b: &Value) -> Option<bool> {
+    use Value::*;
+    Some(match (a, b) {
+        (Int(_) | Float(_), Int(_) | Float(_)) => a.as_f64() == b.as_f64(),
+        (Bool(x), Bool(y)) => x == y,
+        (Str(x), Str(y)) => x == y,
+        (Angle(x), Angle(y)) => x == y,
+        (Vec3(x), Vec3(y)) => x == y,
+        (Color(x), Color(y)) => x == y,
+        _ => return None,
+    })
+}
+
+fn op_error(
+    it: &Interp,
+    op: BinOp,
+    l: &Value,
+    r: &Value,
+    ls: Span,
+    rs: Span,
+) -> crate::diag::Diagnostic {
+    let (lt, rt) = (l.type_name(), r.type_name());
+    let d = error(
+        "rtc::type::operator",
+        rs,
+        format!("cannot apply `{}` to `{lt}` and `{rt}`", op.as_str()),
+    )
+    .with_label(format!("this is {}", super::value::a_type(rt)))
+    .with_secondary(ls, format!("this is {}", super::value::a_type(lt)));
+    let snippet = it.snippet(rs).trim().to_owned();
+    let lsnip = it.snippet(ls).trim().to_owned();
+    match (l, r) {
+        (Value::Angle(_), Value::Int(_) | Value::Float(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
+            d.with_help(format!("give the number a unit: `{snippet}deg`"))
+        }
+        (Value::Int(_) | Value::Float(_), Value::Angle(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
+            d.with_help(format!("give the number a unit: `{lsnip}deg`"))
+        }
+        (Value::Vec3(_), Value::Int(_) | Value::Float(_))
+            if matches!(op, BinOp::Add | BinOp::Sub) =>
+        {
+            d.with_help(format!("add a vector: `[{snippet}, {snippet}, {snippet}]`"))
+        }
+        (Value::Str(_), _) | (_, Value::Str(_)) if op == BinOp::Add => {
+            d.with_help("use interpolation: `\"text {value}\"`")
+        }
+        (Value::Transform(_), Value::Transform(_)) => {
+            d.with_help("compose transforms with `>>` (\"then\")")
+        }
+        (Value::Object(_), _) | (_, Value::Object(_)) => {
+            d.with_help("CSG operators `|`, `&` and `-` need an object on both sides")
+        }
+        _ => d.with_help(format!(
+            "convert one side so both are the same type, e.g. `{lt}`"
+        )),
+    }
+}
+
+/// Builds a CSG node; nested nodes of the same operation (without their own transform or
+/// material) are flattened so `a | b | c` is one union of three.
+fn csg(
+    it: &mut Interp,
+    op: CsgOp,
+    l: &Value,
+    r: &Value,
+    ls: Span,
+    rs: Span,
+    span: Span,
+) -> R<Value> {
+    let (Value::Object(a), Value::Object(b)) = (l, r) else {
+        unreachable!("csg on objects")
+    };
+    for (o, s) in [(a, ls), (b, rs)] {
+        super::shapes::require_closed(it, o, s)?;
+    }
+    let mut children: Vec<Obj> = Vec::new();
+    let flat = |o: &Rc<Obj>, first: bool, children: &mut Vec<Obj>| match &o.shape {
+        ObjShape::Csg(k, ch)
+            if *k == op
+                && o.material.is_none()
+                && o.transform == glam::DAffine3::IDENTITY
+                && (first || op != CsgOp::Difference) =>
+        {
+            children.extend(ch.iter().cloned())
+        }
+        _ => children.push((**o).clone()),
+    };
+    flat(a, true, &mut children);
+    flat(b, false, &mut children);
+    Ok(Value::Object(Rc::new(Obj {
+        shape: ObjShape::Csg(op, Rc::new(children)),
+        transform: glam::DAffine3::IDENTITY,
+        material: None,
+        span,
+    })))
+}

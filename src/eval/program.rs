@@ -1,0 +1,269 @@
+//! Module-level evaluation: hoisted `fn` items, `let`, imports (cached, cycle-checked), emission,
+//! and recovery at statement boundaries.
+
+use std::path::PathBuf;
+use std::rc::Rc;
+
+use crate::diag::Diagnostic;
+
+use crate::syntax::ast::{File, Import, ImportSource, Name, Stmt};
+
+use super::error::{EvalError, R, error, suggest};
+use super::interp::Interp;
+use super::lower::{Lowerer, emittable};
+use super::modules::{Binding, Module, STDLIB, Scope, resolve, stdlib};
+use super::value::{Closure, Value};
+
+impl Interp<'_> {
+    /// Records a statement's error (poisoned errors were reported already).
+    fn record_error(&mut self, e: EvalError) {
+        if let EvalError::Diag(d) = e {
+            self.diags.push(*d);
+        }
+    }
+
+    fn bind_module(&mut self, name: Name, value: Value, public: bool, poisoned: bool) {
+        let mut items = self.scope.items.borrow_mut();
+        if let Some(prev) = items.get(&name.sym) {
+            let d = error(
+                "rtc::name::duplicate",
+                name.span,
+                format!("`{}` is already defined", name.sym),
+            )
+            .with_label("second definition")
+            .with_secondary(prev.span, "first definition")
+            .with_help(format!(
+                "rename one of them; names cannot be rebound (`let {}` is immutable)",
+                name.sym
+            ));
+            drop(items);
+            self.diags.push(d);
+            return;
+        }
+        items.insert(
+            name.sym,
+            Binding {
+                value,
+                public,
+                span: name.span,
+                poisoned,
+            },
+        );
+    }
+
+    /// Evaluates a module's statements. `scene` receives emitted values; `None` for libraries,
+    /// where emitting is an error.
+    pub fn run_module(&mut self, file: &File, mut scene: Option<&mut Lowerer>) {
+        for st in &file.stmts {
+            if let Stmt::Fn(def) = st {
+                let c = Closure {
+                    def: def.clone(),
+                    captured: Vec::new(),
+                    module: self.scope.clone(),
+                };
+                self.bind_module(def.name, Value::Fn(Rc::new(c)), def.public, false);
+            }
+        }
+        for st in &file.stmts {
+            match st {
+                Stmt::Fn(_) => {}
+                Stmt::Import(im) => {
+                    if let Err(e) = self.import(im) {
+                        self.record_error(e);
+                        for n in im.alias.iter().chain(im.names.iter()) {
+                            self.bind_module(*n, Value::Unit, false, true);
+                        }
+                    }
+                }
+                Stmt::Let(l) => {
+                    let r = self.eval(&l.value).and_then(|v| match &l.ty {
+                        Some(t) => super::types::check_ann(self, t, v, l.value.span),
+                        None => Ok(v),
+                    });
+                    match r {
+                        Ok(v) => self.bind_module(l.name, v, l.public, false),
+                        Err(e) => {
+                            self.record_error(e);
+                            self.bind_module(l.name, Value::Unit, l.public, true);
+                        }
+                    }
+                }
+                Stmt::Expr(e) => {
+                    let v = match self.eval(e) {
+                        Ok(v) => v,
+                        Err(err) => {
+                            self.record_error(err);
+                            continue;
+                        }
+                    };
+                    match scene.as_deref_mut() {
+                        Some(l) => {
+                            if let Err(d) = l.emit(&v, self.opts.max_objects, e.span) {
+                                self.diags.push(d);
+                            }
+                        }
+                        None if emittable(&v) => {
+                            let name = self.scope.name.clone();
+                            self.diags.push(
+                                error("rtc::module::emits", e.span, format!("the library module `{name}` emits {}", super::value::a_type(v.type_name())))
+                                    .with_label("imported files may not add to the scene")
+                                    .with_help("wrap it in a function, e.g. `pub fn make() { ... }`, and call that from the scene"),
+                            );
+                        }
+                        None if matches!(v, Value::Unit) => {}
+                        None => self.diags.push(
+                            error(
+                                "rtc::value::discarded",
+                                e.span,
+                                format!("this `{}` is discarded", v.type_name()),
+                            )
+                            .with_label("this value goes nowhere")
+                            .with_help("bind it with `pub let name = ...`, or remove it"),
+                        ),
+                    }
+                }
+            }
+        }
+    }
+
+    fn import(&mut self, im: &Import) -> R<()> {
+        let module = self.load_module(im)?;
+        if im.names.is_empty() {
+            let alias = im.alias.unwrap_or_else(|| {
+                let last = module
+                    .name
+                    .rsplit(['.', '/'])
+                    .next()
+                    .unwrap_or(&module.name);
+                let last = last.trim_end_matches(".rtc");
+                Name {
+                    sym: crate::syntax::intern::Sym::new(last),
+                    span: im.source_span,
+                }
+            });
+            self.bind_module(alias, Value::Module(module), false, false);
+            return Ok(());
+        }
+        for n in &im.names {
+            match super::members::member(self, Value::Module(module.clone()), *n, im.source_span) {
+                Ok(v) => self.bind_module(*n, v, false, false),
+                Err(e) => {
+                    self.record_error(e);
+                    self.bind_module(*n, Value::Unit, false, true);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn load_module(&mut self, im: &Import) -> R<Rc<Module>> {
+        let span = im.source_span;
+        let (key, display, text) = match &im.source {
+            ImportSource::Std(path) => {
+                let Some(name) = path.strip_prefix("std.") else {
+                    return Err(error("rtc::module::unknown", span, format!("unknown module `{path}`"))
+                        .with_label("not a standard module")
+                        .with_help(format!("standard modules start with `std.`; for a file write `import \"./{path}.rtc\"`"))
+                        .into());
+                };
+                let Some(text) = stdlib(name) else {
+                    let names: Vec<String> =
+                        STDLIB.iter().map(|(n, _)| format!("std.{n}")).collect();
+                    let help = suggest(path, names.iter().map(String::as_str))
+                        .unwrap_or_else(|| format!("available: {}", names.join(", ")));
+                    return Err(error(
+                        "rtc::module::unknown",
+                        span,
+                        format!("unknown module `{path}`"),
+                    )
+                    .with_label("no such standard module")
+                    .with_help(help)
+                    .into());
+                };
+                (
+                    PathBuf::from(format!("<std>/{name}")),
+                    path.clone(),
+                    Some(text.to_owned()),
+                )
+            }
+            ImportSource::File(rel) => {
+                let p = resolve(&self.scope.dir, rel);
+                (p.clone(), p.display().to_string(), None)
+            }
+        };
+        if let Some(pos) = self.loading.iter().position(|(k, _)| *k == key) {
+            let mut chain: Vec<String> =
+                self.loading[pos..].iter().map(|(k, _)| short(k)).collect();
+            chain.push(short(&key));
+            return Err(error("rtc::module::cycle", span, "import cycle")
+                .with_label(format!(
+                    "this import closes the cycle {}",
+                    chain.join(" → ")
+                ))
+                .with_help(
+                    "move what both files need into a third module that neither imports back",
+                )
+                .into());
+        }
+        if let Some(m) = self.modules.get(&key) {
+            return Ok(m.clone());
+        }
+        let text = match text {
+            Some(t) => t,
+            None => std::fs::read_to_string(&key).map_err(|e| {
+                error(
+                    "rtc::module::not_found",
+                    span,
+                    format!("cannot read module `{display}`"),
+                )
+                .with_label(if e.kind() == std::io::ErrorKind::NotFound {
+                    "no such file".to_owned()
+                } else {
+                    e.to_string()
+                })
+                .with_help(format!(
+                    "check the path; it is relative to `{}`",
+                    self.sources.get(self.scope.file).path.display()
+                ))
+            })?,
+        };
+        let file = self.sources.add(
+            if key.starts_with("<std>") {
+                PathBuf::from(format!("std/{}.rtc", &display[4..]))
+            } else {
+                key.clone()
+            },
+            text,
+        );
+        let (ast, diags) = crate::syntax::parse(file, &self.sources.get(file).text.clone());
+        let had_errors = diags.iter().any(Diagnostic::is_error);
+        self.diags.extend(diags);
+        let Some(ast) = ast.filter(|_| !had_errors) else {
+            return Err(EvalError::Poisoned);
+        };
+        let dir = key.parent().map(PathBuf::from).unwrap_or_default();
+        let scope = Rc::new(Scope::new(file, dir, display.clone()));
+        self.loading.push((key.clone(), span));
+        let saved_scope = std::mem::replace(&mut self.scope, scope.clone());
+        let saved_locals = std::mem::take(&mut self.locals);
+        let saved_base = std::mem::replace(&mut self.frame_base, 0);
+        self.run_module(&ast, None);
+        self.scope = saved_scope;
+        self.locals = saved_locals;
+        self.frame_base = saved_base;
+        self.loading.pop();
+        let m = Rc::new(Module {
+            name: display,
+            scope,
+        });
+        self.modules.insert(key, m.clone());
+        Ok(m)
+    }
+}
+
+fn short(p: &std::path::Path) -> String {
+    p.file_name().map_or_else(
+        || p.display().to_string(),
+        |f| f.to_string_lossy().into_owned(),
+    )
+}

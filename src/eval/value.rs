@@ -1,0 +1,328 @@
+//! Runtime values. Big values sit behind `Rc` so copying a value is cheap.
+
+use std::fmt;
+use std::rc::Rc;
+
+use glam::{DAffine3, DVec3};
+
+use crate::ir;
+use crate::source::Span;
+use crate::syntax::ast::FnDef;
+use crate::syntax::intern::Sym;
+
+/// A value of the language.
+#[derive(Clone, Debug)]
+pub enum Value {
+    /// The result of `print` and `assert`; discarded silently.
+    Unit,
+    /// 64-bit integer.
+    Int(i64),
+    /// Float.
+    Float(f64),
+    /// Boolean.
+    Bool(bool),
+    /// String.
+    Str(Rc<str>),
+    /// An angle in radians.
+    Angle(f64),
+    /// A 3-vector.
+    Vec3(DVec3),
+    /// A linear RGB colour.
+    Color(DVec3),
+    /// An affine transform.
+    Transform(Rc<DAffine3>),
+    /// A list.
+    List(Rc<Vec<Value>>),
+    /// `a..b step s`.
+    Range(Range),
+    /// `{ name: value }`.
+    Record(Rc<Record>),
+    /// A user function or closure.
+    Fn(Rc<Closure>),
+    /// A built-in function.
+    Builtin(Builtin),
+    /// An object.
+    Object(Rc<Obj>),
+    /// A material.
+    Material(Rc<Mat>),
+    /// A texture.
+    Texture(Rc<Tex>),
+    /// A light.
+    Light(Rc<ir::Light>),
+    /// A camera.
+    Camera(Rc<ir::Camera>),
+    /// Render settings.
+    Render(Rc<RenderVal>),
+    /// A shading model (`phong`, `gooch {..}`, `hatching`).
+    Shading(ir::ShadingModel),
+    /// An image mode (`shaded`, `normal`, `depth`).
+    Mode(ir::RenderMode),
+    /// A sampling strategy (`adaptive(..)`).
+    Sampling(ir::Sampling),
+    /// A texture mapping (`uv`, `planar`, ...).
+    Mapping(ir::Mapping),
+    /// An ambient convention (`per_light`, `once`).
+    Ambient(ir::AmbientConvention),
+    /// A keyed random stream.
+    Rng(u64),
+    /// An imported module.
+    Module(Rc<crate::eval::modules::Module>),
+}
+
+/// A built-in function: its name and implementation.
+#[derive(Clone, Copy)]
+pub struct Builtin {
+    /// Name used in messages.
+    pub name: &'static str,
+    /// Implementation.
+    pub f: crate::eval::builtins::BuiltinFn,
+}
+
+impl fmt::Debug for Builtin {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "builtin {}", self.name)
+    }
+}
+
+/// A numeric range.
+#[derive(Clone, Copy, Debug)]
+pub struct Range {
+    /// Start (inclusive).
+    pub start: f64,
+    /// End.
+    pub end: f64,
+    /// Step (non-zero).
+    pub step: f64,
+    /// End included.
+    pub inclusive: bool,
+    /// All of start, end and step were Int.
+    pub ints: bool,
+}
+
+impl Range {
+    /// Number of elements (saturating; the caller checks budgets).
+    pub fn len(&self) -> u64 {
+        let span = (self.end - self.start) / self.step;
+        if !span.is_finite() || span < 0.0 {
+            return 0;
+        }
+        // A tolerance so that 0..=1 step 0.1 includes 1 despite rounding.
+        let eps = 1e-9;
+        let n = if self.inclusive {
+            (span + eps).floor() + 1.0
+        } else {
+            (span - eps).ceil().max(0.0)
+        };
+        if n > u64::MAX as f64 {
+            u64::MAX
+        } else {
+            n as u64
+        }
+    }
+
+    /// True when the range has no elements.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The `i`th element.
+    pub fn get(&self, i: u64) -> Value {
+        if self.ints {
+            Value::Int((self.start as i64).wrapping_add((i as i64).wrapping_mul(self.step as i64)))
+        } else {
+            Value::Float(self.start + i as f64 * self.step)
+        }
+    }
+}
+
+/// One field of a record value.
+#[derive(Clone, Debug)]
+pub struct FieldVal {
+    /// Its name.
+    pub name: Sym,
+    /// Its value.
+    pub value: Value,
+    /// Span of the value.
+    pub span: Span,
+    /// Span of the name.
+    pub name_span: Span,
+}
+
+/// A record: ordered fields.
+#[derive(Clone, Debug, Default)]
+pub struct Record {
+    /// The fields in written order.
+    pub fields: Vec<FieldVal>,
+}
+
+impl Record {
+    /// Looks a field up.
+    pub fn get(&self, name: Sym) -> Option<&Value> {
+        self.fields
+            .iter()
+            .find(|f| f.name == name)
+            .map(|f| &f.value)
+    }
+}
+
+/// A user function with the local bindings it captured.
+#[derive(Debug)]
+pub struct Closure {
+    /// The definition.
+    pub def: Rc<FnDef>,
+    /// Locals visible where it was defined (module items are found through `module`).
+    pub captured: Vec<(Sym, Value)>,
+    /// The module whose items it sees.
+    pub module: Rc<crate::eval::modules::Scope>,
+}
+
+/// An object value.
+#[derive(Clone, Debug)]
+pub struct Obj {
+    /// The geometry.
+    pub shape: ObjShape,
+    /// Object to world.
+    pub transform: DAffine3,
+    /// Own material.
+    pub material: Option<Rc<Mat>>,
+    /// Where it was made.
+    pub span: Span,
+}
+
+/// Geometry of an object value.
+#[derive(Clone, Debug)]
+pub enum ObjShape {
+    /// A primitive (never `Shape::Csg`).
+    Prim(ir::Shape),
+    /// CSG over children.
+    Csg(ir::CsgOp, Rc<Vec<Obj>>),
+    /// A group, flattened into its children in the IR.
+    Group(Rc<Vec<Obj>>),
+}
+
+/// A material value.
+#[derive(Clone, Debug)]
+pub struct Mat {
+    /// The scalar parameters (texture ids are filled when lowering).
+    pub m: ir::Material,
+    /// Colour texture.
+    pub texture: Option<Rc<Tex>>,
+    /// Bump texture and its strength.
+    pub bump: Option<(Rc<Tex>, f64)>,
+}
+
+/// A texture value (lowered to `ir::Texture`).
+#[derive(Clone, Debug)]
+pub struct Tex {
+    /// The texture.
+    pub t: ir::Texture,
+}
+
+/// Render settings as a value.
+#[derive(Clone, Debug)]
+pub struct RenderVal {
+    /// The settings (material id filled later).
+    pub s: ir::RenderSettings,
+    /// The default material for objects without one.
+    pub material: Option<Rc<Mat>>,
+    /// Where it was made.
+    pub span: Span,
+}
+
+impl Value {
+    /// The type name used in messages.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Value::Unit => "Unit",
+            Value::Int(_) => "Int",
+            Value::Float(_) => "Float",
+            Value::Bool(_) => "Bool",
+            Value::Str(_) => "String",
+            Value::Angle(_) => "Angle",
+            Value::Vec3(_) => "Vec3",
+            Value::Color(_) => "Color",
+            Value::Transform(_) => "Transform",
+            Value::List(_) => "List",
+            Value::Range(_) => "Range",
+            Value::Record(_) => "Record",
+            Value::Fn(_) | Value::Builtin(_) => "Fn",
+            Value::Object(_) => "Object",
+            Value::Material(_) => "Material",
+            Value::Texture(_) => "Texture",
+            Value::Light(_) => "Light",
+            Value::Camera(_) => "Camera",
+            Value::Render(_) => "Render",
+            Value::Shading(_) => "Shading",
+            Value::Mode(_) => "Mode",
+            Value::Sampling(_) => "Sampling",
+            Value::Mapping(_) => "Mapping",
+            Value::Ambient(_) => "Ambient",
+            Value::Rng(_) => "Rng",
+            Value::Module(_) => "Module",
+        }
+    }
+
+    /// The value as a float, if it is a number.
+    pub fn as_f64(&self) -> Option<f64> {
+        match *self {
+            Value::Int(i) => Some(i as f64),
+            Value::Float(f) => Some(f),
+            _ => None,
+        }
+    }
+
+    /// A short rendering for messages and `print`.
+    pub fn show(&self) -> String {
+        match self {
+            Value::Unit => "()".into(),
+            Value::Int(i) => i.to_string(),
+            Value::Float(f) => fmt_f(*f),
+            Value::Bool(b) => b.to_string(),
+            Value::Str(s) => s.to_string(),
+            Value::Angle(a) => format!("{}deg", fmt_f(a.to_degrees())),
+            Value::Vec3(v) => format!("[{}, {}, {}]", fmt_f(v.x), fmt_f(v.y), fmt_f(v.z)),
+            Value::Color(c) => format!("rgb({}, {}, {})", fmt_f(c.x), fmt_f(c.y), fmt_f(c.z)),
+            Value::List(l) => {
+                let items: Vec<String> = l.iter().take(8).map(Value::show).collect();
+                let more = if l.len() > 8 { ", ..." } else { "" };
+                format!("[{}{more}]", items.join(", "))
+            }
+            Value::Range(r) => format!("{}..{}", fmt_f(r.start), fmt_f(r.end)),
+            Value::Record(r) => {
+                let items: Vec<String> = r
+                    .fields
+                    .iter()
+                    .map(|f| format!("{}: {}", f.name, f.value.show()))
+                    .collect();
+                format!("{{ {} }}", items.join(", "))
+            }
+            Value::Object(o) => format!("<{}>", obj_kind(o)),
+            other => format!("<{}>", other.type_name()),
+        }
+    }
+}
+
+/// Kind name of an object value.
+pub fn obj_kind(o: &Obj) -> &'static str {
+    match &o.shape {
+        ObjShape::Prim(s) => s.kind_name(),
+        ObjShape::Csg(..) => "csg",
+        ObjShape::Group(_) => "group",
+    }
+}
+
+/// Formats a float without noise: integers without a fraction, otherwise up to 6 digits.
+pub fn fmt_f(f: f64) -> String {
+    if f == f.trunc() && f.abs() < 1e15 {
+        format!("{}", f as i64)
+    } else {
+        let s = format!("{f:.6}");
+        s.trim_end_matches('0').trim_end_matches('.').to_owned()
+    }
+}
+
+/// "an `Int`", "a `Float`": a type name with its article, for messages.
+pub fn a_type(t: &str) -> String {
+    let vowel = t.starts_with(['A', 'E', 'I', 'O', 'U']);
+    format!("{} `{t}`", if vowel { "an" } else { "a" })
+}

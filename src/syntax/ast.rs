@@ -1,0 +1,297 @@
+//! The abstract syntax tree. Every node carries the [`Span`] of the text it came from.
+
+use std::rc::Rc;
+
+use crate::source::Span;
+use crate::syntax::intern::Sym;
+
+/// A name with the span where it was written.
+#[derive(Clone, Copy, Debug)]
+pub struct Name {
+    /// The interned name.
+    pub sym: Sym,
+    /// Where it was written.
+    pub span: Span,
+}
+
+/// A parsed file: its header and statements.
+#[derive(Clone, Debug)]
+pub struct File {
+    /// The `rtc N` version, if the header was present.
+    pub version: Option<(i64, Span)>,
+    /// Top-level statements in order.
+    pub stmts: Vec<Stmt>,
+}
+
+/// A statement.
+#[derive(Clone, Debug)]
+pub enum Stmt {
+    /// `import std.x as y`, `import "./f.rtc" { a, b }`.
+    Import(Import),
+    /// `let name = value`.
+    Let(Let),
+    /// `fn name(params) { body }`.
+    Fn(Rc<FnDef>),
+    /// An expression statement (emits in a scene file, yields in a block).
+    Expr(Expr),
+}
+
+/// Where an import comes from.
+#[derive(Clone, Debug)]
+pub enum ImportSource {
+    /// `std.name`: an embedded standard-library module.
+    Std(String),
+    /// A file path relative to the importing file.
+    File(String),
+}
+
+/// An `import` statement.
+#[derive(Clone, Debug)]
+pub struct Import {
+    /// The module.
+    pub source: ImportSource,
+    /// Span of the module path.
+    pub source_span: Span,
+    /// `as alias`.
+    pub alias: Option<Name>,
+    /// `{ a, b }`.
+    pub names: Vec<Name>,
+    /// The whole statement.
+    pub span: Span,
+}
+
+/// A `let` binding.
+#[derive(Clone, Debug)]
+pub struct Let {
+    /// Exported with `pub`.
+    pub public: bool,
+    /// The bound name.
+    pub name: Name,
+    /// Optional type annotation.
+    pub ty: Option<TypeAnn>,
+    /// The value.
+    pub value: Expr,
+    /// The whole statement.
+    pub span: Span,
+}
+
+/// A type annotation such as `Float`, `List<Object>` or `Angle?`.
+#[derive(Clone, Debug)]
+pub struct TypeAnn {
+    /// The type's name.
+    pub name: Name,
+    /// Element type of `List<T>`.
+    pub arg: Option<Box<TypeAnn>>,
+    /// Marked optional with `?`.
+    pub optional: bool,
+    /// The whole annotation.
+    pub span: Span,
+}
+
+/// A function definition (named item or `fn(x) expr` literal).
+#[derive(Clone, Debug)]
+pub struct FnDef {
+    /// Exported with `pub`.
+    pub public: bool,
+    /// Its name (`fn` literals are named `<fn>` at their span).
+    pub name: Name,
+    /// Parameters in order.
+    pub params: Vec<Param>,
+    /// Declared return type.
+    pub ret: Option<TypeAnn>,
+    /// The body; its last expression is the result.
+    pub body: Block,
+    /// The whole definition.
+    pub span: Span,
+}
+
+/// One parameter.
+#[derive(Clone, Debug)]
+pub struct Param {
+    /// Its name.
+    pub name: Name,
+    /// Its type, if annotated.
+    pub ty: Option<TypeAnn>,
+    /// Default value, evaluated at call time in the function's scope.
+    pub default: Option<Expr>,
+}
+
+/// A `{ ... }` block: statements, the last expression is its value.
+#[derive(Clone, Debug)]
+pub struct Block {
+    /// The statements.
+    pub stmts: Vec<Stmt>,
+    /// From `{` to `}`.
+    pub span: Span,
+}
+
+/// An expression node.
+#[derive(Clone, Debug)]
+pub struct Expr {
+    /// What it is.
+    pub kind: ExprKind,
+    /// Where it is.
+    pub span: Span,
+}
+
+/// Binary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    /// `||`
+    Or,
+    /// `&&`
+    And,
+    /// `==`
+    Eq,
+    /// `!=`
+    Ne,
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `>>` (transform "then")
+    Then,
+    /// `|` (union)
+    Union,
+    /// `+`
+    Add,
+    /// `-` (also CSG difference)
+    Sub,
+    /// `&` (intersection)
+    Inter,
+    /// `*`
+    Mul,
+    /// `/`
+    Div,
+    /// `%`
+    Rem,
+}
+
+impl BinOp {
+    /// The operator as written.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            BinOp::Or => "||",
+            BinOp::And => "&&",
+            BinOp::Eq => "==",
+            BinOp::Ne => "!=",
+            BinOp::Lt => "<",
+            BinOp::Le => "<=",
+            BinOp::Gt => ">",
+            BinOp::Ge => ">=",
+            BinOp::Then => ">>",
+            BinOp::Union => "|",
+            BinOp::Add => "+",
+            BinOp::Sub => "-",
+            BinOp::Inter => "&",
+            BinOp::Mul => "*",
+            BinOp::Div => "/",
+            BinOp::Rem => "%",
+        }
+    }
+}
+
+/// Unary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnOp {
+    /// `-x`
+    Neg,
+    /// `!x`
+    Not,
+}
+
+/// A piece of a string literal.
+#[derive(Clone, Debug)]
+pub enum StrPart {
+    /// Literal text (escapes resolved).
+    Text(String),
+    /// `{expr}` or `{expr:.2}` (digits after the point).
+    Interp(Expr, Option<usize>),
+}
+
+/// A record field `name: value`.
+#[derive(Clone, Debug)]
+pub struct Field {
+    /// The field name.
+    pub name: Name,
+    /// Its value.
+    pub value: Expr,
+}
+
+/// A call argument, positional or named.
+#[derive(Clone, Debug)]
+pub struct Arg {
+    /// `name:` for a named argument.
+    pub name: Option<Name>,
+    /// The value.
+    pub value: Expr,
+}
+
+/// One `name in iterable` of a `for`.
+#[derive(Clone, Debug)]
+pub struct Generator {
+    /// The loop variable.
+    pub var: Name,
+    /// What it ranges over.
+    pub iter: Expr,
+}
+
+/// Expression kinds.
+#[derive(Clone, Debug)]
+pub enum ExprKind {
+    /// `3`
+    Int(i64),
+    /// `0.5`
+    Float(f64),
+    /// `30deg` (stored in radians).
+    Angle(f64),
+    /// `true`
+    Bool(bool),
+    /// `#ff8800` (linear RGB, converted from sRGB).
+    Color([f64; 3]),
+    /// `"a {x} b"`
+    Str(Vec<StrPart>),
+    /// A string without interpolation, shared so evaluating it never allocates.
+    StrLit(Rc<str>),
+    /// A name.
+    Ident(Sym),
+    /// `[a, b]`
+    List(Vec<Expr>),
+    /// `{ a: 1 }`
+    Record(Vec<Field>),
+    /// `-x`, `!x`
+    Unary(UnOp, Box<Expr>),
+    /// `a + b`
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `a..b`, `a..=b step s`
+    Range {
+        /// Start.
+        start: Box<Expr>,
+        /// End.
+        end: Box<Expr>,
+        /// `..=`
+        inclusive: bool,
+        /// `step s`
+        step: Option<Box<Expr>>,
+    },
+    /// `f(args)` and `f { record }`.
+    Call(Box<Expr>, Vec<Arg>),
+    /// `a.name`
+    Member(Box<Expr>, Name),
+    /// `a[i]`
+    Index(Box<Expr>, Box<Expr>),
+    /// `a with { f: v }`
+    With(Box<Expr>, Vec<Field>),
+    /// `if c { a } else { b }`
+    If(Box<Expr>, Block, Option<Box<Expr>>),
+    /// `for i in r, j in s if c { body }`
+    For(Vec<Generator>, Option<Box<Expr>>, Block),
+    /// `fn(x) x * 2`
+    Lambda(Rc<FnDef>),
+    /// A `{ ... }` block used as an `else` branch.
+    Block(Block),
+}

@@ -1,0 +1,183 @@
+//! A fast pre-scan of brackets, strings and comments. It finds unclosed and mismatched delimiters
+//! precisely (pest alone would report them at the end of the file) and tells the statement
+//! driver where top-level lines start, for recovery.
+
+use crate::diag::Diagnostic;
+use crate::source::{FileId, Span};
+
+/// What the scan learned.
+pub struct Scan {
+    /// Delimiter and string errors (at most one: later ones usually cascade).
+    pub errors: Vec<Diagnostic>,
+    /// Byte offsets of line starts whose bracket depth is zero.
+    pub top_level_lines: Vec<usize>,
+}
+
+fn closer_of(open: u8) -> u8 {
+    match open {
+        b'(' => b')',
+        b'[' => b']',
+        _ => b'}',
+    }
+}
+
+/// Scans `text` for delimiter balance.
+pub fn scan(file: FileId, text: &str) -> Scan {
+    let b = text.as_bytes();
+    let mut stack: Vec<(u8, usize)> = Vec::new();
+    let mut errors = Vec::new();
+    let mut top_level_lines = vec![0];
+    let mut i = 0;
+    let sp = |s: usize, e: usize| Span::new(file, s, e);
+    while i < b.len() {
+        match b[i] {
+            b'\n' => {
+                if stack.is_empty() {
+                    top_level_lines.push(i + 1);
+                }
+                i += 1;
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'*') => {
+                let start = i;
+                i += 2;
+                while i < b.len() && !(b[i] == b'*' && b.get(i + 1) == Some(&b'/')) {
+                    i += 1;
+                }
+                if i >= b.len() {
+                    errors.push(
+                        Diagnostic::error(
+                            "rtc::syntax::unclosed",
+                            sp(start, start + 2),
+                            "unclosed comment",
+                        )
+                        .with_label("this comment is never closed")
+                        .with_help("end it with `*/`"),
+                    );
+                    break;
+                }
+                i += 2;
+            }
+            b'"' => {
+                let start = i;
+                i += 1;
+                while i < b.len() && b[i] != b'"' && b[i] != b'\n' {
+                    i += if b[i] == b'\\' { 2 } else { 1 };
+                }
+                if i >= b.len() || b[i] == b'\n' {
+                    errors.push(
+                        Diagnostic::error(
+                            "rtc::syntax::unclosed",
+                            sp(start, start + 1),
+                            "unterminated string",
+                        )
+                        .with_label("this string is never closed")
+                        .with_help("close it with `\"` on the same line"),
+                    );
+                    return Scan {
+                        errors,
+                        top_level_lines,
+                    };
+                }
+                i += 1;
+            }
+            c @ (b'(' | b'[' | b'{') => {
+                stack.push((c, i));
+                i += 1;
+            }
+            c @ (b')' | b']' | b'}') => {
+                match stack.pop() {
+                    None => {
+                        errors.push(
+                            Diagnostic::error(
+                                "rtc::syntax::unmatched",
+                                sp(i, i + 1),
+                                format!("unexpected `{}`", c as char),
+                            )
+                            .with_label("nothing is open here")
+                            .with_help(format!("remove this `{}`", c as char)),
+                        );
+                        return Scan {
+                            errors,
+                            top_level_lines,
+                        };
+                    }
+                    Some((open, at)) if closer_of(open) != c => {
+                        errors.push(
+                            Diagnostic::error(
+                                "rtc::syntax::unmatched",
+                                sp(i, i + 1),
+                                format!("mismatched `{}`", c as char),
+                            )
+                            .with_label(format!("expected `{}` here", closer_of(open) as char))
+                            .with_secondary(
+                                sp(at, at + 1),
+                                format!("to close this `{}`", open as char),
+                            )
+                            .with_help(format!(
+                                "write `{}` to close the `{}` first",
+                                closer_of(open) as char,
+                                open as char
+                            )),
+                        );
+                        return Scan {
+                            errors,
+                            top_level_lines,
+                        };
+                    }
+                    Some(_) => {}
+                }
+                i += 1;
+            }
+            _ => i += 1,
+        }
+    }
+    if let Some(&(open, at)) = stack.last() {
+        let mut d = Diagnostic::error(
+            "rtc::syntax::unclosed",
+            sp(at, at + 1),
+            format!("unclosed `{}`", open as char),
+        )
+        .with_label("this delimiter is never closed")
+        .with_help(format!("add the missing `{}`", closer_of(open) as char));
+        if let Some(line) = dedented_line_after(text, at) {
+            d = d.with_secondary(
+                sp(line, line + 1),
+                format!(
+                    "perhaps the `{}` belongs before this line",
+                    closer_of(open) as char
+                ),
+            );
+        }
+        errors.push(d);
+    }
+    Scan {
+        errors,
+        top_level_lines,
+    }
+}
+
+fn indent_of(line: &str) -> usize {
+    line.len() - line.trim_start().len()
+}
+
+/// The first non-blank line after `at`'s line that is indented no deeper than that line: a good
+/// guess for where a missing closer belongs.
+fn dedented_line_after(text: &str, at: usize) -> Option<usize> {
+    let line_start = text[..at].rfind('\n').map_or(0, |p| p + 1);
+    let open_indent = indent_of(text[line_start..].lines().next().unwrap_or(""));
+    let mut offset = text[at..].find('\n').map(|p| at + p + 1)?;
+    while offset < text.len() {
+        let line = text[offset..].lines().next().unwrap_or("");
+        let trimmed = line.trim_start();
+        if !trimmed.is_empty() && !trimmed.starts_with("//") && indent_of(line) <= open_indent {
+            return Some(offset + indent_of(line));
+        }
+        offset += line.len() + 1;
+    }
+    None
+}

@@ -1,0 +1,223 @@
+//! Turns pest's failures into diagnostics in plain words: rule names never reach the user.
+
+use pest::error::{Error, ErrorVariant, InputLocation};
+
+use crate::diag::Diagnostic;
+use crate::source::{FileId, Span};
+use crate::syntax::Rule;
+
+/// Human words for a grammar rule, or `None` for rules that only add noise.
+fn rule_words(rule: Rule) -> Option<&'static str> {
+    Some(match rule {
+        Rule::expr
+        | Rule::or_expr
+        | Rule::and_expr
+        | Rule::cmp_expr
+        | Rule::range_expr
+        | Rule::then_expr
+        | Rule::union_expr
+        | Rule::add_expr
+        | Rule::inter_expr
+        | Rule::mul_expr
+        | Rule::unary_expr
+        | Rule::postfix
+        | Rule::arg => "an expression",
+        Rule::ident => "a name",
+        Rule::block => "`{`",
+        Rule::int_lit | Rule::number => "a number",
+        Rule::string => "a string",
+        Rule::type_ann => "a type",
+        Rule::params => "`(`",
+        Rule::field => "a field",
+        Rule::generator => "a loop variable",
+        Rule::header => "`rtc 1`",
+        Rule::std_path => "a module path",
+        Rule::EOI => "end of file",
+        _ => return None,
+    })
+}
+
+/// Order of preference when listing expected tokens: closers and separators first.
+const PRIORITY: &[&str] = &[",", ")", "]", "}", ":", "=", "{", "("];
+
+/// Converts a pest error at byte `base` of the file into a diagnostic.
+pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diagnostic {
+    let pos = match err.location {
+        InputLocation::Pos(p) => p,
+        InputLocation::Span((s, _)) => s,
+    } + base;
+    let pos = back_over_newlines(text, pos).max(base);
+    let mut words: Vec<String> = Vec::new();
+    let mut tokens: Vec<String> = Vec::new();
+    if let Some(attempts) = err.parse_attempts() {
+        for t in attempts.expected_tokens() {
+            // `ParsingToken` is not exported by pest; its Display gives the literal text.
+            let text = t.to_string();
+            let t = text.trim();
+            let is_range = t.len() == 4 && t.get(1..3) == Some("..");
+            if !t.is_empty() && !is_range && !matches!(t, "//" | "/*" | "BUILTIN_RULE") {
+                tokens.push(t.to_owned());
+            }
+        }
+    }
+    let expects_expr = matches!(&err.variant, ErrorVariant::ParsingError { positives, .. }
+        if positives.iter().any(|r| rule_words(*r) == Some("an expression")));
+    let mut closers: Vec<&str> = PRIORITY
+        .iter()
+        .copied()
+        .filter(|p| tokens.iter().any(|t| t == p))
+        .collect();
+    let separators = closers.iter().any(|c| matches!(*c, "," | ")" | "]" | "}"));
+    if separators {
+        closers.retain(|c| matches!(*c, "," | ")" | "]" | "}"));
+    } else if expects_expr {
+        closers.clear();
+    }
+    if !closers.is_empty() {
+        for c in closers.iter().take(3) {
+            push(&mut words, format!("`{c}`"));
+        }
+    } else if expects_expr {
+        push(&mut words, "an expression".into());
+    } else {
+        if let ErrorVariant::ParsingError { positives, .. } = &err.variant {
+            for r in positives {
+                if let Some(w) = rule_words(*r) {
+                    push(&mut words, w.to_owned());
+                }
+            }
+        }
+        for t in tokens
+            .iter()
+            .filter(|t| t.chars().all(|c| c.is_alphabetic()))
+            .take(3)
+        {
+            push(&mut words, format!("`{t}`"));
+        }
+    }
+    if words.is_empty() {
+        push(&mut words, "the end of the line".into());
+    }
+    let (found, len) = found_at(text, pos);
+    if found == "`;`" {
+        return Diagnostic::error(
+            "rtc::syntax::semicolon",
+            Span::new(file, pos, pos + 1),
+            "unexpected `;`",
+        )
+        .with_label("statements end at the end of the line")
+        .with_help("remove the `;`");
+    }
+    let expected = join_or(&words);
+    let span = Span::new(file, pos, pos + len);
+    let mut d = Diagnostic::error(
+        "rtc::syntax::unexpected",
+        span,
+        format!("expected {expected}, found {found}"),
+    )
+    .with_label(format!("expected {expected} here"));
+    if let Some(help) = help_for(text, pos, &found, &words) {
+        d = d.with_help(help);
+    }
+    d
+}
+
+/// When pest stopped at the start of a later line, the problem is at the end of the line before.
+fn back_over_newlines(text: &str, pos: usize) -> usize {
+    let before = text.get(..pos).unwrap_or("");
+    let trimmed = before.trim_end();
+    if before[trimmed.len()..].contains('\n') && !trimmed.is_empty() {
+        trimmed.len()
+    } else {
+        pos
+    }
+}
+
+fn push(words: &mut Vec<String>, w: String) {
+    if !words.contains(&w) {
+        words.push(w);
+    }
+}
+
+fn join_or(words: &[String]) -> String {
+    match words {
+        [] => String::new(),
+        [a] => a.clone(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    }
+}
+
+const KEYWORDS: &[&str] = &[
+    "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
+    "step",
+];
+
+/// A description of the text at `pos` and its length in bytes.
+fn found_at(text: &str, pos: usize) -> (String, usize) {
+    let rest = text.get(pos..).unwrap_or("");
+    let Some(c) = rest.chars().next() else {
+        return ("end of file".into(), 0);
+    };
+    let line_rest = rest.trim_start_matches([' ', '\t', '\r']);
+    if line_rest.is_empty() {
+        return ("end of file".into(), 0);
+    }
+    if line_rest.starts_with('\n') || line_rest.starts_with("//") {
+        return ("end of line".into(), 0);
+    }
+    if c.is_alphanumeric() || c == '_' {
+        let word: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '.')
+            .collect();
+        let word = word.trim_end_matches('.').to_owned();
+        let len = word.len();
+        if KEYWORDS.contains(&word.as_str()) {
+            return (format!("keyword `{word}`"), len);
+        }
+        return (format!("`{word}`"), len);
+    }
+    for op in ["==", "!=", "<=", ">=", "->", ">>", "&&", "||", "..="] {
+        if rest.starts_with(op) {
+            return (format!("`{op}`"), op.len());
+        }
+    }
+    (format!("`{c}`"), c.len_utf8())
+}
+
+/// One concrete fix for the common slips.
+fn help_for(text: &str, pos: usize, found: &str, expected: &[String]) -> Option<String> {
+    let has = |w: &str| expected.iter().any(|e| e == w);
+    if found.starts_with("keyword") && has("a name") {
+        return Some(format!("{} is reserved; choose another name", &found[8..]));
+    }
+    if has("`,`") && !found.starts_with("`=") && !found.ends_with("of file") {
+        let what = if has("`)`") {
+            "arguments"
+        } else if has("`]`") {
+            "list items"
+        } else {
+            "fields"
+        };
+        return Some(format!("separate {what} with `,`"));
+    }
+    if found == "`=`" && has("`:`") {
+        return Some("write `:` instead of `=` for fields and named arguments".into());
+    }
+    if let [only] = expected
+        && matches!(only.as_str(), "`)`" | "`]`" | "`}`")
+    {
+        return Some(format!("add the missing {only}"));
+    }
+    if found == "`=`"
+        && text
+            .get(..pos)
+            .is_some_and(|t| t.trim_end().ends_with("let"))
+    {
+        return None;
+    }
+    if has("an expression") && (found == "end of line" || found == "end of file") {
+        return Some("write the rest of the expression on this line".into());
+    }
+    None
+}

@@ -1,0 +1,168 @@
+//! Syntax: the pest grammar (`grammar/rtc.pest`), the AST, and a statement-by-statement driver
+//! that recovers at top-level line starts so several syntax errors show in one run.
+
+pub mod ast;
+mod build;
+mod delims;
+mod errors;
+pub mod intern;
+
+pub use build::srgb_to_linear;
+
+use pest::Parser;
+
+use crate::diag::Diagnostic;
+use crate::source::{FileId, Span};
+
+/// The generated pest parser.
+#[derive(pest_derive::Parser)]
+#[grammar = "../grammar/rtc.pest"]
+pub struct RtcParser;
+
+/// The language versions this build understands.
+pub const SUPPORTED_VERSION: i64 = 1;
+
+/// Deepest bracket nesting accepted; deeper input is rejected before pest or the evaluator
+/// could exhaust the stack.
+const MAX_NESTING: usize = 200;
+
+/// Parses a whole file. Returns the AST (only when there were no syntax errors) and diagnostics.
+pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::Diagnostic>) {
+    pest::set_error_detail(true);
+    let scan = delims::scan(file, text);
+    if !scan.errors.is_empty() {
+        return (None, scan.errors);
+    }
+    if let Some(d) = too_deep(file, text) {
+        return (None, vec![d]);
+    }
+    let mut diags = Vec::new();
+    let mut stmts = Vec::new();
+    let mut pos = 0;
+    let mut version = None;
+    match RtcParser::parse(Rule::header_line, text) {
+        Ok(mut pairs) => {
+            let line = pairs.next().expect("grammar: header_line");
+            pos = line.as_span().end();
+            let n = line.into_inner().next().and_then(|h| h.into_inner().next());
+            if let Some(n) = n {
+                let s = n.as_span();
+                let span = Span::new(file, s.start(), s.end());
+                let v = n.as_str().parse::<i64>().unwrap_or(-1);
+                if v != SUPPORTED_VERSION {
+                    diags.push(
+                        Diagnostic::error(
+                            "rtc::syntax::version",
+                            span,
+                            format!("unsupported language version `{}`", n.as_str()),
+                        )
+                        .with_label("this build understands version 1")
+                        .with_help("write `rtc 1` as the first line"),
+                    );
+                }
+                version = Some((v, span));
+            }
+        }
+        Err(_) => {
+            let first = first_token(text);
+            diags.push(
+                Diagnostic::error(
+                    "rtc::syntax::header",
+                    Span::new(file, first, first),
+                    "missing `rtc 1` header",
+                )
+                .with_label("the file must start with its language version")
+                .with_help("add `rtc 1` as the first line"),
+            );
+        }
+    }
+    while pos < text.len() {
+        let rest = &text[pos..];
+        match RtcParser::parse(Rule::stmt_line, rest) {
+            Ok(mut pairs) => {
+                let line = pairs.next().expect("grammar: stmt_line");
+                let end = line.as_span().end();
+                let mut b = build::Builder {
+                    file,
+                    base: pos,
+                    diags: &mut diags,
+                };
+                let mut done = false;
+                for p in line.into_inner() {
+                    if p.as_rule() == Rule::EOI {
+                        done = true;
+                    } else {
+                        stmts.push(b.stmt(p));
+                    }
+                }
+                if done || end == 0 {
+                    break;
+                }
+                pos += end;
+            }
+            Err(e) => {
+                let d = errors::convert(file, text, pos, &e);
+                let at = d.span.map_or(pos, |s| s.start as usize);
+                diags.push(d);
+                match scan
+                    .top_level_lines
+                    .iter()
+                    .find(|&&l| l > at.max(pos) && starts_statement(text, l))
+                {
+                    Some(&next) => pos = next,
+                    None => break,
+                }
+            }
+        }
+    }
+    let has_errors = diags.iter().any(Diagnostic::is_error);
+    let file_ast = ast::File { version, stmts };
+    (if has_errors { None } else { Some(file_ast) }, diags)
+}
+
+/// Offset of the first non-blank, non-comment character (where a header would be).
+fn first_token(text: &str) -> usize {
+    let mut i = 0;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        if !t.is_empty() && !t.starts_with("//") {
+            return i + (line.len() - t.len());
+        }
+        i += line.len();
+    }
+    0
+}
+
+/// A top-level line that can begin a new statement (not a continuation or a closer).
+fn starts_statement(text: &str, at: usize) -> bool {
+    let c = text[at..].chars().next();
+    matches!(c, Some(c) if c.is_alphanumeric() || matches!(c, '_' | '[' | '(' | '"' | '#'))
+}
+
+fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
+    let mut depth = 0usize;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' | '{' => {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return Some(
+                        Diagnostic::error(
+                            "rtc::budget::nesting",
+                            Span::new(file, i, i + 1),
+                            "brackets nested too deeply",
+                        )
+                        .with_label(format!("more than {MAX_NESTING} levels deep"))
+                        .with_help("move inner parts into `let` bindings or functions"),
+                    );
+                }
+            }
+            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,158 @@
+//! Property: parsing and evaluating arbitrary input never panics and always terminates (small
+//! budgets keep each case quick). Two generators: raw text, and token soup built from the
+//! language's own vocabulary so that many cases get past the parser into evaluation.
+
+use std::path::Path;
+
+use proptest::prelude::*;
+use rtc::eval::{EvalOptions, load_source};
+use rtc::source::SourceMap;
+
+const TOKENS: &[&str] = &[
+    "rtc 1\n",
+    "let ",
+    "fn ",
+    "for ",
+    " in ",
+    "if ",
+    "else ",
+    "import ",
+    " as ",
+    "pub ",
+    " with ",
+    "step ",
+    "true",
+    "false",
+    "x",
+    "y",
+    "f",
+    "i",
+    "sphere",
+    "box",
+    "plane",
+    "cylinder",
+    "torus",
+    "group",
+    "union",
+    "camera",
+    "render",
+    "point_light",
+    "material",
+    "rgb",
+    "hsv",
+    "translate",
+    "rotate",
+    "scale",
+    "random",
+    "print",
+    "assert",
+    "sin",
+    "normalize",
+    "mesh",
+    "image",
+    ".bounds",
+    ".x",
+    ".material",
+    ".scale",
+    ".rotate",
+    "(",
+    ")",
+    "[",
+    "]",
+    "{",
+    "}",
+    ",",
+    ":",
+    "=",
+    "==",
+    "+",
+    "-",
+    "*",
+    "/",
+    "%",
+    "|",
+    "&",
+    ">>",
+    "..",
+    "..=",
+    ".",
+    "->",
+    "0",
+    "1",
+    "2.5",
+    "-1",
+    "30deg",
+    "1rad",
+    "#ff8800",
+    "\"s {x}\"",
+    "\"./a.rtc\"",
+    "std.prelude",
+    "\n",
+    " ",
+    "// c\n",
+    "/*",
+    "*/",
+    "radius: ",
+    "center: ",
+    "eye: ",
+    "fov: ",
+    "X",
+    "Y",
+    "[0, 1, 2]",
+    "1e400",
+    "9999999999999999999999",
+    "°",
+    "é",
+];
+
+fn opts() -> EvalOptions {
+    EvalOptions {
+        max_loop_iterations: 2_000,
+        max_recursion_depth: 32,
+        max_objects: 500,
+        max_list_len: 2_000,
+    }
+}
+
+fn run(src: &str) {
+    if std::env::var("FUZZ_TRACE").is_ok() {
+        eprintln!("CASE {src:?}");
+    }
+    let mut sm = SourceMap::new();
+    let loaded = load_source(Path::new("tests/lang/fuzz.rtc"), src, &mut sm, &opts());
+    // Every diagnostic's span must lie inside a known file.
+    for d in &loaded.diagnostics.items {
+        if let Some(s) = d.span {
+            let f = sm.get(s.file);
+            assert!(s.end as usize <= f.text.len(), "span past end: {d:?}");
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 1000, .. ProptestConfig::default() })]
+
+    #[test]
+    fn arbitrary_text_never_panics(src in "\\PC{0,200}") {
+        run(&src);
+        run(&format!("rtc 1\n{src}"));
+    }
+
+    #[test]
+    fn token_soup_never_panics(toks in proptest::collection::vec(0..TOKENS.len(), 0..60)) {
+        let src: String = toks.iter().map(|&i| TOKENS[i]).collect();
+        run(&format!("rtc 1\n{src}"));
+    }
+}
+
+#[test]
+fn adversarial_inputs_are_rejected_cleanly() {
+    run(&format!("rtc 1\nlet a = {}1\n", "-".repeat(100_000)));
+    run(&format!("rtc 1\nlet a = 1{}\n", " + 1".repeat(50_000)));
+    run(&format!("rtc 1\nlet a = {}\n", "[".repeat(10_000)));
+    run("rtc 1\nfn f(n) { f(n) + f(n) }\nf(1)\n");
+    run("rtc 1\nfor i in 0..1000000000000 { }\n");
+    run("rtc 1\nlet l = for i in 0..100000 { [i, i] }\n");
+    run("rtc 1\nlet r = 0..1 step 0\n");
+    run("rtc 1\nsphere(radius: 1e400)\n");
+}
