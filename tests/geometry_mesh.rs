@@ -244,7 +244,10 @@ fn mtl_materials_become_rtc_materials() {
         },
         DAffine3::IDENTITY,
     )]);
-    let w = World::build(&sc, MaterialId(0)).expect("duck loads");
+    // A renderer appends its fallback material right after the scene's (id 3 here): MTL
+    // materials must be numbered after it.
+    let w = World::build(&sc, MaterialId(3)).expect("duck loads");
+    assert_eq!(w.first_extra_material(), MaterialId(4));
     assert_eq!(w.stats().unique_triangles, 3712);
     let extra = w.extra_materials();
     assert!(extra.len() >= 3, "{}", extra.len());
@@ -260,8 +263,13 @@ fn mtl_materials_become_rtc_materials() {
     for _ in 0..2_000 {
         let ray = ray_at_box(&mut rng, b.min, b.max);
         if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
-            assert!((h.material.0 as usize) < sc.materials.len() + extra.len());
-            if h.material.0 as usize >= sc.materials.len() {
+            assert!((h.material.0 as usize) < 4 + extra.len());
+            assert_ne!(
+                h.material,
+                MaterialId(0),
+                "use_mtl faces take their MTL material"
+            );
+            if h.material.0 >= 4 {
                 from_mtl += 1;
                 let _ = w.material(&sc, h.material);
             }

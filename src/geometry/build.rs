@@ -37,10 +37,10 @@ pub struct Builder {
 }
 
 impl Builder {
-    /// A builder for `scene`.
-    pub fn new(scene: &Scene) -> Builder {
+    /// A builder for `scene`; MTL materials get ids from `first_extra` on.
+    pub fn new(first_extra: u32) -> Builder {
         Builder {
-            base: scene.materials.len() as u32,
+            base: first_extra,
             extra_materials: Vec::new(),
             cache: HashMap::new(),
             mtl_ids: HashMap::new(),
@@ -346,7 +346,7 @@ impl Builder {
 /// load (missing or malformed OBJ files, with the line), transforms are invertible, shapes are
 /// not degenerate.
 pub fn validate_scene_geometry(scene: &Scene) -> Diagnostics {
-    let mut b = Builder::new(scene);
+    let mut b = Builder::new(scene.materials.len() as u32);
     let fallback = scene.settings.default_material.unwrap_or(MaterialId(0));
     for o in &scene.objects {
         b.object(o, fallback);

@@ -82,7 +82,11 @@ impl World {
     #[allow(clippy::result_large_err)] // the contract's signature: a plain `Diagnostic`
     pub fn build(scene: &Scene, fallback: MaterialId) -> Result<World, Diagnostic> {
         let start = Instant::now();
-        let mut b = Builder::new(scene);
+        // MTL materials are numbered after the scene's and after `fallback` (a renderer may
+        // append its fallback material to the scene's list), so `extra_materials()` can be
+        // appended to that list as is.
+        let material_base = (scene.materials.len() as u32).max(fallback.0.saturating_add(1));
+        let mut b = Builder::new(material_base);
         let mut nodes = Vec::with_capacity(scene.objects.len());
         let mut object_of = Vec::with_capacity(scene.objects.len());
         for (i, o) in scene.objects.iter().enumerate() {
@@ -140,7 +144,7 @@ impl World {
             bvh,
             loose,
             extra_materials: b.extra_materials,
-            material_base: scene.materials.len() as u32,
+            material_base,
             stats,
         })
     }
@@ -166,14 +170,22 @@ impl World {
         static DEFAULT: OnceLock<Material> = OnceLock::new();
         let fallback = || DEFAULT.get_or_init(Material::default);
         match id.0.checked_sub(self.material_base) {
-            Some(i) => self.extra_materials.get(i as usize).unwrap_or_else(fallback),
+            Some(i) => self
+                .extra_materials
+                .get(i as usize)
+                .unwrap_or_else(fallback),
             None => scene.materials.get(id.0 as usize).unwrap_or_else(fallback),
         }
     }
 
-    /// Materials added from MTL files, with ids from `Scene::materials.len()` on.
+    /// Materials added from MTL files, with ids from [`World::first_extra_material`] on.
     pub fn extra_materials(&self) -> &[Material] {
         &self.extra_materials
+    }
+
+    /// The id of the first MTL material: `max(scene materials, fallback + 1)`.
+    pub fn first_extra_material(&self) -> MaterialId {
+        MaterialId(self.material_base)
     }
 
     /// Bounds of everything finite.
