@@ -118,7 +118,13 @@ fn count_line(diags: &Diagnostics) -> String {
 fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
-    let loaded = load(file, &mut sources);
+    let mut loaded = load(file, &mut sources);
+    // Loading meshes and checking CSG operands is what `render` would do first; `check` does it
+    // too so that a clean check means the render will start.
+    if let Some(scene) = &loaded.scene {
+        let geometry = rtc::geometry::validate_scene_geometry(scene);
+        loaded.diagnostics.extend(geometry);
+    }
     let diags = &loaded.diagnostics;
     let outcome = outcome_of(diags, deny_warnings);
     let color = format == Format::Human && std::io::stdout().is_terminal();

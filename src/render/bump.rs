@@ -63,6 +63,7 @@ mod tests {
             t: 1.0,
             point: n,
             normal: n,
+            geometric_normal: n,
             uv: crate::geometry::sphere::uv(n),
             local_point: n,
             material: MaterialId(0),

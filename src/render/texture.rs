@@ -179,6 +179,7 @@ mod tests {
             t: 1.0,
             point: p,
             normal: DVec3::Y,
+            geometric_normal: DVec3::Y,
             uv: DVec2::ZERO,
             local_point: p,
             material: crate::ir::MaterialId(0),
