@@ -125,3 +125,39 @@ fn equivalent_fov_gives_the_course_pixel_size_exactly() {
         assert_eq!(2.0 * d * (0.5 * fov).tan() / h, up);
     }
 }
+
+/// The stronger claim: the `.rtc` rewrite renders the very same bytes as the YAML.
+fn same_bytes(name: &str) {
+    let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
+    let yaml_path = root()
+        .join("tests/data/course/yaml")
+        .join(format!("{name}.yaml"));
+    let mut sources = SourceMap::default();
+    let options = rtc::render::RenderOptions::default();
+    let from_rtc = scene_of(
+        load_file(&rtc_path, &mut sources, &EvalOptions::default()),
+        &rtc_path,
+    );
+    let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
+    let a = rtc::render::render(&from_rtc, &options).expect("rtc scene renders");
+    let b = rtc::render::render(&from_yaml, &options).expect("yaml scene renders");
+    let differing = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();
+    assert_eq!(differing, 0, "{name}: {differing} pixels differ");
+}
+
+#[test]
+fn scene01_family_renders_the_same_bytes_as_the_yaml() {
+    for name in [
+        "scene01",
+        "scene01-normal",
+        "scene01-zbuffer",
+        "scene01-shadows",
+        "scene01-lights-shadows",
+        "scene01-reflect-lights-shadows",
+        "scene01-ss",
+        "scene01-gooch",
+        "scene01-zoom-ss-reflect-lights-shadows",
+    ] {
+        same_bytes(name);
+    }
+}
