@@ -2,7 +2,7 @@
 # End-to-end wall time of rtc versus POV-Ray on peer scene A (five spheres, 400x400, 4x4
 # supersampling, shadows, reflection depth 2), in one session on one machine.
 #   benches/peers.sh [REPS]        (default 10 runs each; needs povray, optional hyperfine)
-# rtc renders scenes/five_spheres.yaml with the release binary; POV-Ray renders
+# rtc renders scenes/five_spheres.rtc (same bytes as scenes/five_spheres.yaml) with the release binary; POV-Ray renders
 # /work/shared/peers/pov/five_spheres.pov with the exact flags of /work/shared/peers/README.md.
 # Prints the median wall time of each and the ratio POV-Ray / rtc. Not a test: timings on a
 # shared machine vary; check `uptime` before trusting a number.
@@ -13,7 +13,7 @@ PEERS="${PEERS:-/work/shared/peers}"
 OUT="$(mktemp -d)"
 trap 'rm -rf "$OUT"' EXIT
 cargo build --release --quiet
-RTC=(target/release/rtc render scenes/five_spheres.yaml -o "$OUT/rtc.png" --threads 2)
+RTC=(target/release/rtc render scenes/five_spheres.rtc -o "$OUT/rtc.png" --threads 2)
 POV=(povray -D +WT2 +W400 +H400 +A0.0 +AM1 +R4 -J +FN File_Gamma=1.0 +GS
      "+I$PEERS/pov/five_spheres.pov" "+O$OUT/pov.png")
 echo "load before: $(uptime)"

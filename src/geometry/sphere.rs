@@ -6,6 +6,44 @@ use glam::{DVec2, DVec3};
 
 use super::{Aabb, Crossing, Hit, Ray};
 
+/// Ray parameter of the nearest intersection in (t_min, t_max), without normal or uv: the hot
+/// path for candidate and shadow tests (uv costs an `acos` and an `atan2`).
+///
+/// Uses the numerically stable quadratic (no cancellation between −b and √disc).
+#[inline]
+pub fn hit_t(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<f64> {
+    hit_t_with(center, radius, ray.dir.length_squared(), ray, t_min, t_max)
+}
+
+/// [`hit_t`] with `a = |dir|²` computed once per ray by the caller (bit-identical results).
+#[inline]
+pub fn hit_t_with(
+    center: DVec3,
+    radius: f64,
+    a: f64,
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<f64> {
+    let oc = ray.origin - center;
+    let half_b = oc.dot(ray.dir);
+    let c = oc.length_squared() - radius * radius;
+    let disc = half_b * half_b - a * c;
+    if disc < 0.0 {
+        return None;
+    }
+    let q = -half_b - disc.sqrt().copysign(half_b);
+    let (t0, t1) = (q / a, c / q);
+    let (t0, t1) = if t0 > t1 { (t1, t0) } else { (t0, t1) };
+    if t0 > t_min && t0 < t_max {
+        Some(t0)
+    } else if t1 > t_min && t1 < t_max {
+        Some(t1)
+    } else {
+        None
+    }
+}
+
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).
 ///
 /// Uses the numerically stable quadratic (no cancellation between −b and √disc).

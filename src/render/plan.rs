@@ -113,13 +113,14 @@ impl<'a> Plan<'a> {
             }
         }
         check_limits(scene)?;
-        let world = World::build(scene, fallback)?;
+        let mut world = World::build(scene, fallback)?;
         // Mesh MTL materials get ids from `first_extra_material` on; line them up with ours.
         let base = world.first_extra_material().0 as usize;
         materials.resize_with(base.max(materials.len()), Material::default);
         materials.extend_from_slice(world.extra_materials());
         let camera = Camera::new(&scene.camera)?;
         let effects = Effects::of(scene);
+        world.need_uv(effects.textures || effects.bump || effects.hatching);
         let textures = if effects.textures || effects.bump {
             texture::load_all(scene)?
         } else {
