@@ -25,7 +25,7 @@ fn no_lights(scene: &Scene, out: &mut Diagnostics) {
                 scene.camera.span,
                 "the scene has no lights",
             )
-            .with_label("this camera will see only black and ambient-free objects")
+            .with_label("with no light the image is black (Phong's ambient term is per light)")
             .with_help("add a light, e.g. `point_light { position: [5, 8, 5] }`"),
         );
     }

@@ -53,6 +53,9 @@ enum Command {
         /// How to print diagnostics.
         #[arg(long, value_enum, default_value = "human")]
         format: Format,
+        /// Print rays traced, rays per second, world build time and memory to stderr.
+        #[arg(long)]
+        stats: bool,
     },
 }
 
@@ -78,7 +81,8 @@ fn main() -> ExitCode {
             output,
             threads,
             format,
-        } => render(&file, output, threads, format),
+            stats,
+        } => render(&file, output, threads, format, stats),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -159,7 +163,13 @@ fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     outcome
 }
 
-fn render(file: &Path, output: Option<PathBuf>, threads: usize, format: Format) -> Outcome {
+fn render(
+    file: &Path,
+    output: Option<PathBuf>,
+    threads: usize,
+    format: Format,
+    show_stats: bool,
+) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
     let loaded = load(file, &mut sources);
@@ -181,8 +191,13 @@ fn render(file: &Path, output: Option<PathBuf>, threads: usize, format: Format) 
         threads,
         progress: std::io::stderr().is_terminal(),
     };
-    let result = rtc::render::render(&scene, &options)
-        .and_then(|image| rtc::render::output::save(&image, &path));
+    let start = std::time::Instant::now();
+    let result = rtc::render::render_film(&scene, &options).and_then(|film| {
+        if show_stats {
+            eprintln!("{}", cli::stats::describe(&film, start.elapsed()));
+        }
+        rtc::render::output::save(&film.to_image(), &path)
+    });
     match result {
         Ok(()) => {
             eprintln!("wrote {}", path.display());

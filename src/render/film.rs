@@ -38,6 +38,8 @@ pub struct Film {
     pub pixels: Vec<Color>,
     /// What it took.
     pub stats: Stats,
+    /// The world's build statistics (objects, triangles, BVH time, memory).
+    pub world: crate::geometry::WorldStats,
 }
 
 impl Film {

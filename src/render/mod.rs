@@ -109,6 +109,7 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
         height: h,
         pixels,
         stats,
+        world: plan.world.stats(),
     })
 }
 

@@ -1,0 +1,115 @@
+//! The command line as a user meets it: exit codes, output naming, no clobbering, `--stats`.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn rtc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the rtc binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-cli-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn unknown_extension_and_missing_file_are_io_errors() {
+    assert_eq!(rtc(&["check", "Cargo.toml"]).status.code(), Some(2));
+    assert_eq!(rtc(&["check", "no/such/scene.rtc"]).status.code(), Some(2));
+    assert_eq!(
+        rtc(&["render", "no/such/scene.yaml"]).status.code(),
+        Some(2)
+    );
+    assert_eq!(rtc(&["check"]).status.code(), Some(2), "usage error");
+}
+
+#[test]
+fn a_failed_render_leaves_an_existing_image_alone() {
+    let dir = scratch("clobber");
+    let scene = dir.join("bad.rtc");
+    std::fs::write(&scene, "rtc 1\nsphere(center: [0, 0, 0], radius: -1)\n").unwrap();
+    let out = dir.join("bad.png");
+    std::fs::write(&out, b"precious").unwrap();
+    let run = rtc(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        run.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    assert_eq!(std::fs::read(&out).unwrap(), b"precious");
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left behind");
+}
+
+#[test]
+fn unknown_output_format_is_refused_without_writing() {
+    let dir = scratch("format");
+    let out = dir.join("scene.gif");
+    let run = rtc(&[
+        "render",
+        "tests/data/course/yaml/scene01.yaml",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(run.status.code(), Some(2));
+    assert!(!Path::new(&out).exists());
+    assert!(String::from_utf8_lossy(&run.stderr).contains("*.png"));
+}
+
+#[test]
+fn render_writes_ppm_and_reports_stats() {
+    let dir = scratch("ppm");
+    let out = dir.join("scene01.ppm");
+    let run = rtc(&[
+        "render",
+        "tests/data/course/in/rt1.in",
+        "-o",
+        out.to_str().unwrap(),
+        "--stats",
+        "--threads",
+        "1",
+    ]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{stderr}");
+    // 400×400 course image: one camera ray per pixel, no supersampling in rt1.
+    assert!(stderr.contains("160000 camera"), "{stderr}");
+    let bytes = std::fs::read(&out).unwrap();
+    let header = b"P6\n400 400\n255\n";
+    assert_eq!(&bytes[..header.len()], header);
+    assert_eq!(bytes.len(), header.len() + 400 * 400 * 3);
+}
+
+#[test]
+fn deny_warnings_turns_a_warning_into_failure() {
+    let dir = scratch("deny");
+    let scene = dir.join("dark.rtc");
+    std::fs::write(
+        &scene,
+        "rtc 1\ncamera { eye: [0, 0, 5], center: [0, 0, 0] }\nsphere(center: [0, 0, 0], radius: 1)\n",
+    )
+    .unwrap();
+    let path = scene.to_str().unwrap();
+    let plain = rtc(&["check", path, "--format", "short"]);
+    let text = String::from_utf8_lossy(&plain.stdout);
+    assert_eq!(plain.status.code(), Some(0), "{text}");
+    assert!(text.contains("rtc::scene::no_lights"), "{text}");
+    assert_eq!(
+        rtc(&["check", path, "--deny", "warnings"]).status.code(),
+        Some(1)
+    );
+}
