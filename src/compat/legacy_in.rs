@@ -12,6 +12,15 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Light, LightKind};
 use crate::source::{FileId, Span};
 
+/// How the three numbers of a point are named in "record ends before ..." messages.
+const XYZ_FIELDS: [&str; 3] = ["the x coordinate", "the y coordinate", "the z coordinate"];
+/// How the three numbers of a colour are named in messages.
+const RGB_FIELDS: [&str; 3] = [
+    "the red component",
+    "the green component",
+    "the blue component",
+];
+
 /// The record kinds, with their field lists for messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
@@ -211,11 +220,7 @@ impl<'t> Reader<'t, '_> {
         match kind {
             Kind::Eye => {
                 draft.camera_written = true;
-                let (eye, _) = self.triple(
-                    kind,
-                    kw,
-                    ["the x coordinate", "the y coordinate", "the z coordinate"],
-                )?;
+                let (eye, _) = self.triple(kind, kw, XYZ_FIELDS)?;
                 let span = kw.join(self.span(self.pos, self.pos));
                 if let Some((_, old)) = draft.eye {
                     self.diags.push(
@@ -231,20 +236,8 @@ impl<'t> Reader<'t, '_> {
                 draft.eye = Some((eye, span));
             }
             Kind::Light => {
-                let (position, _) = self.triple(
-                    kind,
-                    kw,
-                    ["the x coordinate", "the y coordinate", "the z coordinate"],
-                )?;
-                let (color, c_span) = self.triple(
-                    kind,
-                    kw,
-                    [
-                        "the red component",
-                        "the green component",
-                        "the blue component",
-                    ],
-                )?;
+                let (position, _) = self.triple(kind, kw, XYZ_FIELDS)?;
+                let (color, c_span) = self.triple(kind, kw, RGB_FIELDS)?;
                 self.non_negative_color(color, c_span, "light colour");
                 draft.lights.push(Light {
                     kind: LightKind::Point { position },
@@ -253,15 +246,7 @@ impl<'t> Reader<'t, '_> {
                 });
             }
             Kind::Material => {
-                let (color, c_span) = self.triple(
-                    kind,
-                    kw,
-                    [
-                        "the red component",
-                        "the green component",
-                        "the blue component",
-                    ],
-                )?;
+                let (color, c_span) = self.triple(kind, kw, RGB_FIELDS)?;
                 self.non_negative_color(color, c_span, "material colour");
                 let ka = self.coefficient(kind, kw, "ka")?;
                 let kd = self.coefficient(kind, kw, "kd")?;
@@ -302,11 +287,7 @@ impl<'t> Reader<'t, '_> {
                 });
             }
             Kind::Sphere => {
-                let (center, _) = self.triple(
-                    kind,
-                    kw,
-                    ["the x coordinate", "the y coordinate", "the z coordinate"],
-                )?;
+                let (center, _) = self.triple(kind, kw, XYZ_FIELDS)?;
                 let (text, r, r_span) = self.number(kind, kw, "the radius")?;
                 let span = kw.join(self.span(self.pos, self.pos));
                 if r <= 0.0 {

@@ -174,7 +174,7 @@ impl<'n> MapView<'n> {
 
 /// A number (any scalar style; the course reader converted quoted text too).
 pub fn number(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
-    let Some(text) = node.scalar() else {
+    let not_a_number = |diags: &mut Diagnostics| {
         diags.push(
             Diagnostic::error(
                 "rtc::yaml::type",
@@ -183,7 +183,10 @@ pub fn number(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
             )
             .with_label("not a number"),
         );
-        return None;
+        None
+    };
+    let Some(text) = node.scalar() else {
+        return not_a_number(diags);
     };
     let t = text.trim();
     let value = match t.to_ascii_lowercase().as_str() {
@@ -193,15 +196,7 @@ pub fn number(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
         _ => t.parse::<f64>().ok(),
     };
     let Some(value) = value else {
-        diags.push(
-            Diagnostic::error(
-                "rtc::yaml::type",
-                node.span,
-                format!("expected a number for {what}, found {}", node.describe()),
-            )
-            .with_label("not a number"),
-        );
-        return None;
+        return not_a_number(diags);
     };
     build::check_number(t, value, node.span, what, diags)
 }
