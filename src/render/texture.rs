@@ -114,7 +114,11 @@ impl Loaded {
         match self {
             Loaded::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, shape)),
             Loaded::Checker(a, b, size) => {
-                let c = (hit.local_point / *size).floor();
+                // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor
+                // flips the parity pixel by pixel; snapping to a tiny fraction of a cell first
+                // keeps the whole face in one cell.
+                let q = hit.local_point / *size;
+                let c = ((q * 1e6).round() / 1e6).floor();
                 if (c.x + c.y + c.z).rem_euclid(2.0) < 0.5 {
                     *a
                 } else {
@@ -184,6 +188,22 @@ mod tests {
             local_point: p,
             material: crate::ir::MaterialId(0),
             object: 0,
+        }
+    }
+
+    #[test]
+    fn checker_on_a_cell_face_does_not_speckle() {
+        // Hits on a floor at y = 0 land a rounding error above or below it; both must give the
+        // colour of one cell (the gallery floor showed salt-and-pepper before).
+        let plane = Shape::Plane {
+            point: DVec3::ZERO,
+            normal: DVec3::Y,
+        };
+        let checker = Loaded::Checker(DVec3::X, DVec3::Z, 1.0);
+        for x in [0.25, 1.5, -3.75, 123.5] {
+            let above = checker.color(&hit_at(DVec3::new(x, 1e-13, 0.5)), &plane);
+            let below = checker.color(&hit_at(DVec3::new(x, -1e-13, 0.5)), &plane);
+            assert_eq!(above, below, "x = {x}");
         }
     }
 
