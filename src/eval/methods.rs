@@ -10,7 +10,7 @@ use super::call::{ArgVal, CallSite};
 use super::error::{R, error, suggest};
 use super::interp::Interp;
 use super::types;
-use super::value::{Obj, Value};
+use super::value::Value;
 
 /// `recv.name(args)`.
 pub fn call_method(
@@ -23,23 +23,27 @@ pub fn call_method(
     let n = name.sym.as_str();
     let site = CallSite { span, name: n };
     let is_t = super::transform::METHODS.contains(&n);
-    match &recv {
-        Value::Object(o) if is_t => {
+    // The receiver is owned: a temporary object (`sphere(..).translate(..)`) is updated in
+    // place, and only a shared one is copied.
+    let recv = match recv {
+        Value::Object(mut o) if is_t => {
             let t = super::transform::method_transform(it, n, site, args)?;
-            let mut o2: Obj = (**o).clone();
+            let o2 = Rc::make_mut(&mut o);
             o2.transform = t * o2.transform;
-            return Ok(Value::Object(Rc::new(o2)));
+            return Ok(Value::Object(o));
         }
-        Value::Object(o) if n == "material" => {
+        Value::Object(mut o) if n == "material" => {
             let mut p = super::builtins::Params::new(site, &["material"], args)?;
             let (m, ms) = p.req("material")?;
             let Value::Material(m) = m else {
                 return Err(types::mismatch(it, "Material", &m, ms).into());
             };
-            let mut o2: Obj = (**o).clone();
-            o2.material = Some(m);
-            return Ok(Value::Object(Rc::new(o2)));
+            Rc::make_mut(&mut o).material = Some(m);
+            return Ok(Value::Object(o));
         }
+        other => other,
+    };
+    match &recv {
         Value::Transform(a) if is_t => {
             let t = super::transform::method_transform(it, n, site, args)?;
             return Ok(Value::Transform(Rc::new(t * **a)));

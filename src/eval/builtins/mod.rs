@@ -62,6 +62,12 @@ pub struct Params {
     vals: Vec<Option<(Value, Span)>>,
 }
 
+/// The parameter slot named `sym` (its text is fetched once, not once per parameter).
+fn slot_of(names: &[&str], sym: Sym) -> Option<usize> {
+    let text = sym.as_str();
+    names.iter().position(|x| *x == text)
+}
+
 impl Params {
     /// Matches `args` to the parameter `names`: positional first, then named; a single record
     /// argument (`f { a: 1 }`) supplies named arguments.
@@ -69,29 +75,34 @@ impl Params {
         let mut from_record = false;
         if args.len() == 1
             && args[0].name.is_none()
-            && let Value::Record(r) = &args[0].value
+            && matches!(args[0].value, Value::Record(_))
+            && let Some(ArgVal {
+                value: Value::Record(r),
+                ..
+            }) = args.pop()
         {
             from_record = true;
-            let r = r.clone();
-            args = r
-                .fields
-                .iter()
-                .map(|f| ArgVal {
-                    name: Some(crate::syntax::ast::Name {
-                        sym: f.name,
-                        span: f.name_span,
-                    }),
-                    value: f.value.clone(),
-                    span: f.span,
-                })
-                .collect();
+            let field = |f: super::value::FieldVal| ArgVal {
+                name: Some(crate::syntax::ast::Name {
+                    sym: f.name,
+                    span: f.name_span,
+                }),
+                value: f.value,
+                span: f.span,
+            };
+            // An unshared record gives its fields up without cloning them.
+            args = match Rc::try_unwrap(r) {
+                Ok(r) => r.fields.into_iter().map(field).collect(),
+                Err(r) => r.fields.iter().cloned().map(field).collect(),
+            };
         }
-        let mut vals: Vec<Option<(Value, Span)>> = vec![None; names.len()];
+        let mut vals: Vec<Option<(Value, Span)>> = Vec::with_capacity(names.len());
+        vals.resize_with(names.len(), || None);
         let mut pos = 0;
         let name = site.name;
         for a in args {
             let idx = match a.name {
-                Some(n) => match names.iter().position(|x| *x == n.sym.as_str()) {
+                Some(n) => match slot_of(names, n.sym) {
                     Some(i) => i,
                     None => {
                         let (code, what) = if from_record {
