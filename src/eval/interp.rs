@@ -166,7 +166,8 @@ impl<'a> Interp<'a> {
             ExprKind::For(gens, filter, body) => {
                 let mut out = Vec::new();
                 let header = self.header_span(e.span, body.span);
-                self.for_level(gens, 0, filter.as_deref(), body, header, &mut out)?;
+                let mut sink = Sink::List(&mut out);
+                self.for_level(gens, 0, filter.as_deref(), body, header, &mut sink)?;
                 Value::List(Rc::new(out))
             }
             ExprKind::Lambda(def) => Value::Fn(Rc::new(Closure {
@@ -430,7 +431,7 @@ impl<'a> Interp<'a> {
         filter: Option<&Expr>,
         body: &Block,
         span: Span,
-        out: &mut Vec<Value>,
+        out: &mut Sink,
     ) -> R<()> {
         if level == gens.len() {
             let r = self.for_body(filter, body, out, span);
@@ -447,7 +448,7 @@ impl<'a> Interp<'a> {
         }
         let g = &gens[level];
         let it = self.eval(&g.iter)?;
-        let step = |me: &mut Self, v: Value, out: &mut Vec<Value>| -> R<()> {
+        let step = |me: &mut Self, v: Value, out: &mut Sink| -> R<()> {
             me.loop_iters += 1;
             if me.loop_iters > me.opts.max_loop_iterations {
                 return Err(error("rtc::budget::loop", span, "loop budget exhausted")
@@ -504,7 +505,7 @@ impl<'a> Interp<'a> {
         &mut self,
         filter: Option<&Expr>,
         body: &Block,
-        out: &mut Vec<Value>,
+        out: &mut Sink,
         span: Span,
     ) -> R<()> {
         if let Some(f) = filter {
@@ -515,10 +516,36 @@ impl<'a> Interp<'a> {
             }
         }
         let v = self.block(body)?;
-        if !matches!(v, Value::Unit) {
-            out.push(v);
-            self.check_list_len(out.len(), span)?;
+        if matches!(v, Value::Unit) {
+            return Ok(());
+        }
+        match out {
+            Sink::List(list) => {
+                list.push(v);
+                self.check_list_len(list.len(), span)?;
+            }
+            Sink::Emit(lowerer, stmt) => lowerer.emit(&v, self.opts.max_objects, *stmt)?,
         }
         Ok(())
     }
+
+    /// Evaluates a top-level `for` statement of a scene file, emitting each element as it is
+    /// made instead of building the whole list first (a million objects never coexist as values).
+    pub fn emit_for(&mut self, e: &Expr, lowerer: &mut super::lower::Lowerer) -> R<bool> {
+        let ExprKind::For(gens, filter, body) = &e.kind else {
+            return Ok(false);
+        };
+        let header = self.header_span(e.span, body.span);
+        let mut sink = Sink::Emit(lowerer, e.span);
+        self.for_level(gens, 0, filter.as_deref(), body, header, &mut sink)?;
+        Ok(true)
+    }
+}
+
+/// Where the elements of a `for` go.
+pub enum Sink<'a> {
+    /// Collected into a list value.
+    List(&'a mut Vec<Value>),
+    /// Emitted straight into the scene (top-level loops), with the statement's span.
+    Emit(&'a mut super::lower::Lowerer, Span),
 }

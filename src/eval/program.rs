@@ -6,7 +6,7 @@ use std::rc::Rc;
 
 use crate::diag::Diagnostic;
 
-use crate::syntax::ast::{File, Import, ImportSource, Name, Stmt};
+use crate::syntax::ast::{ExprKind, File, Import, ImportSource, Name, Stmt};
 
 use super::error::{EvalError, R, error, suggest};
 use super::interp::Interp;
@@ -89,6 +89,12 @@ impl Interp<'_> {
                     }
                 }
                 Stmt::Expr(e) => {
+                    if let (Some(l), ExprKind::For(..)) = (scene.as_deref_mut(), &e.kind) {
+                        if let Err(err) = self.emit_for(e, l) {
+                            self.record_error(err);
+                        }
+                        continue;
+                    }
                     let v = match self.eval(e) {
                         Ok(v) => v,
                         Err(err) => {

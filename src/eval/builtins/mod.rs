@@ -232,13 +232,10 @@ impl Params {
 
 /// Range check: `name` must satisfy `ok`, described as `rule` (e.g. "> 0").
 pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
-    check_shown(
-        ok && v.is_finite(),
-        name,
-        rule,
-        &super::value::fmt_f(v),
-        span,
-    )
+    if ok && v.is_finite() {
+        return Ok(());
+    }
+    check_shown(false, name, rule, &super::value::fmt_f(v), span)
 }
 
 /// Range check with the offending value already formatted (e.g. with its unit).
