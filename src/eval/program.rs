@@ -136,12 +136,10 @@ impl Interp<'_> {
         let module = self.load_module(im)?;
         if im.names.is_empty() {
             let alias = im.alias.unwrap_or_else(|| {
-                let last = module
-                    .name
-                    .rsplit(['.', '/'])
-                    .next()
-                    .unwrap_or(&module.name);
-                let last = last.trim_end_matches(".rtc");
+                // `std.materials` → `materials`, `"./lib/props.rtc"` → `props`: drop the file
+                // extension before splitting, or the alias of every file would be `rtc`.
+                let name = module.name.trim_end_matches(".rtc");
+                let last = name.rsplit(['.', '/', '\\']).next().unwrap_or(name);
                 Name {
                     sym: crate::syntax::intern::Sym::new(last),
                     span: im.source_span,
