@@ -133,24 +133,33 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
     if let Some(x) = found {
         return Ok(x);
     }
-    let known = members_of(&v);
+    Err(unknown("member", &v, n, name.span, members_of(&v)))
+}
+
+/// The error for `v.n` when `v` has no member (or method, by `what`) called `n`: did-you-mean,
+/// else the list of what it does have.
+pub fn unknown(
+    what: &str,
+    v: &Value,
+    n: &str,
+    span: Span,
+    known: &[&str],
+) -> super::error::EvalError {
+    let a_type = super::value::a_type(v.type_name());
     let d = error(
         "rtc::field::unknown",
-        name.span,
-        format!(
-            "{} has no member `{n}`",
-            super::value::a_type(v.type_name())
-        ),
+        span,
+        format!("{a_type} has no {what} `{n}`"),
     )
-    .with_label("unknown member");
+    .with_label(format!("unknown {what}"));
     let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
         if known.is_empty() {
-            format!("{} has no members", super::value::a_type(v.type_name()))
+            format!("{a_type} has no {what}s")
         } else {
-            format!("its members are: {}", known.join(", "))
+            format!("its {what}s are: {}", known.join(", "))
         }
     });
-    Err(d.with_help(help).into())
+    d.with_help(help).into()
 }
 
 /// `v[i]`.

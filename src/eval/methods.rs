@@ -7,7 +7,7 @@ use crate::source::Span;
 use crate::syntax::ast::Name;
 
 use super::call::{ArgVal, CallSite};
-use super::error::{R, error, suggest};
+use super::error::R;
 use super::interp::Interp;
 use super::types;
 use super::value::Value;
@@ -90,21 +90,7 @@ pub fn call_method(
         Value::List(_) => &["map", "filter"],
         _ => &[],
     };
-    let d = error(
-        "rtc::field::unknown",
-        name.span,
-        format!(
-            "{} has no method `{n}`",
-            super::value::a_type(recv.type_name())
-        ),
-    )
-    .with_label("unknown method");
-    let help = suggest(n, known.iter().copied()).unwrap_or_else(|| {
-        if known.is_empty() {
-            format!("{} has no methods", super::value::a_type(recv.type_name()))
-        } else {
-            format!("its methods are: {}", known.join(", "))
-        }
-    });
-    Err(d.with_help(help).into())
+    Err(super::members::unknown(
+        "method", &recv, n, name.span, known,
+    ))
 }
