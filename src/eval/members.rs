@@ -11,27 +11,17 @@ use super::interp::Interp;
 use super::value::{FieldVal, Record, Value};
 
 /// Members each type offers (for did-you-mean).
-fn members_of(v: &Value) -> &'static [&'static str] {
+fn members_of(v: &Value) -> Vec<&'static str> {
     match v {
-        Value::Vec3(_) => &["x", "y", "z", "xy", "xz", "yz", "xyz", "zyx"],
-        Value::Color(_) => &["r", "g", "b"],
-        Value::Angle(_) => &["deg", "rad", "turn"],
-        Value::Object(_) => &[
-            "bounds",
-            "material",
-            "translate",
-            "scale",
-            "rotate",
-            "matrix",
-            "around",
-            "transform",
-        ],
-        Value::Camera(_) => &["eye", "center", "up"],
-        _ => &[],
+        Value::Vec3(_) => vec!["x", "y", "z", "xy", "xz", "yz", "xyz", "zyx"],
+        Value::Color(_) => vec!["r", "g", "b"],
+        Value::Angle(_) => vec!["deg", "rad", "turn"],
+        Value::Object(_) => [&["bounds"][..], &super::methods::object_methods()].concat(),
+        Value::Camera(_) => vec!["eye", "center", "up"],
+        _ => Vec::new(),
     }
 }
 
-/// `v.name`.
 pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
     let n = name.sym.as_str();
     let found = match &v {
@@ -133,7 +123,7 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
     if let Some(x) = found {
         return Ok(x);
     }
-    Err(unknown("member", &v, n, name.span, members_of(&v)))
+    Err(unknown("member", &v, n, name.span, &members_of(&v)))
 }
 
 /// The error for `v.n` when `v` has no member (or method, by `what`) called `n`: did-you-mean,

@@ -75,22 +75,19 @@ pub fn call_method(
         }
         _ => {}
     }
-    let known: &[&str] = match &recv {
-        Value::Object(_) => &[
-            "translate",
-            "scale",
-            "rotate",
-            "matrix",
-            "around",
-            "transform",
-            "material",
-        ],
-        Value::Transform(_) => super::transform::METHODS,
-        Value::Rng(_) => super::rng::METHODS,
-        Value::List(_) => &["map", "filter"],
-        _ => &[],
+    let known: Vec<&str> = match &recv {
+        Value::Object(_) => object_methods(),
+        Value::Transform(_) => super::transform::METHODS.to_vec(),
+        Value::Rng(_) => super::rng::METHODS.to_vec(),
+        Value::List(_) => vec!["map", "filter"],
+        _ => Vec::new(),
     };
     Err(super::members::unknown(
-        "method", &recv, n, name.span, known,
+        "method", &recv, n, name.span, &known,
     ))
+}
+
+/// Methods of objects: every transform method, plus `material`.
+pub fn object_methods() -> Vec<&'static str> {
+    [super::transform::METHODS, &["material"]].concat()
 }
