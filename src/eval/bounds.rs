@@ -38,39 +38,20 @@ fn disk_extent(normal: DVec3, r: f64) -> DVec3 {
     r * (DVec3::ONE - normal * normal).max(DVec3::ZERO).powf(0.5)
 }
 
-fn mesh_bounds(path: &std::path::Path, span: Span) -> R<Bb> {
-    let opts = tobj::LoadOptions {
-        triangulate: true,
-        single_index: true,
-        ..Default::default()
-    };
-    let (models, _) = tobj::load_obj(path, &opts).map_err(|e| {
+/// A mesh's bounds, from the process-wide mesh cache (the render then reuses the load).
+fn mesh_bounds(path: &std::path::Path, smooth: bool, span: Span) -> R<Bb> {
+    let mesh = crate::geometry::mesh_cache::load(path, smooth).map_err(|e| {
+        let at = e.line.map(|l| format!(" (line {l})")).unwrap_or_default();
         error(
             "rtc::asset::invalid",
             span,
-            format!("cannot read mesh `{}`: {e}", path.display()),
+            format!("cannot read mesh `{}`: {}{at}", path.display(), e.message),
         )
         .with_label("this OBJ file could not be loaded")
-        .with_help("check that the file is a valid Wavefront OBJ")
+        .with_help("check that the file is a valid Wavefront OBJ with at least one face")
     })?;
-    let pts = models.iter().flat_map(|m| {
-        m.mesh
-            .positions
-            .chunks_exact(3)
-            .map(|c| DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64))
-    });
-    let b = of_points(pts);
-    if !b.0.is_finite() {
-        return Err(error(
-            "rtc::asset::invalid",
-            span,
-            format!("mesh `{}` has no vertices", path.display()),
-        )
-        .with_label("empty mesh")
-        .with_help("use an OBJ file with at least one face")
-        .into());
-    }
-    Ok(b)
+    let b = mesh.bounds();
+    Ok((b.min, b.max))
 }
 
 fn unbounded(span: Span) -> super::error::EvalError {
@@ -139,7 +120,7 @@ fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Bb> {
                     .iter()
                     .flat_map(|c| [c.center - c.radius, c.center + c.radius]),
             ),
-            Shape::Mesh { path, .. } => mesh_bounds(path, span)?,
+            Shape::Mesh { path, smooth, .. } => mesh_bounds(path, *smooth, span)?,
             Shape::Csg { .. } => unreachable!("CSG values use ObjShape::Csg"),
         },
         ObjShape::Group(ch) | ObjShape::Csg(CsgOp::Union | CsgOp::Merge, ch) => {

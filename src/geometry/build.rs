@@ -280,7 +280,7 @@ impl Builder {
         if let Some(m) = self.cache.get(&key) {
             return Some(m.clone());
         }
-        match MeshData::load(path, smooth) {
+        match super::mesh_cache::load(path, smooth) {
             Ok(m) => {
                 for w in &m.warnings {
                     self.diagnostics.push(
@@ -292,7 +292,6 @@ impl Builder {
                         .with_label("drawn with the object's material"),
                     );
                 }
-                let m = Arc::new(m);
                 self.cache.insert(key, m.clone());
                 Some(m)
             }

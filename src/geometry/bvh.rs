@@ -1,41 +1,80 @@
-//! BVHs over boxes with obvhs (compressed wide BVH8): the top level over every bounded object
-//! and one per mesh. Traversal is f32; exact hits stay with the callers, who side-store them.
+//! BVHs over boxes: the top level over every bounded object, and one per mesh.
+//!
+//! obvhs builds a binary tree (PLOC with reinsertion); it is collapsed here into an 8-wide tree
+//! whose child boxes are stored uncompressed as f32 structure-of-arrays, so one node test is a
+//! handful of 8-lane operations the compiler vectorises (see `bvh_traverse.rs`). Collapsing is
+//! linear in the node count, far cheaper than obvhs's own compressed-wide conversion, and the
+//! uncompressed boxes need no decoding during traversal.
 
 use std::time::{Duration, Instant};
 
-use glam::{DVec3, Vec3A};
+use glam::{DVec3, Vec3A, Vec4};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb as BAabb;
-use obvhs::bvh2::Bvh2;
 use obvhs::bvh2::builder::build_bvh2;
-use obvhs::cwbvh::CwBvh;
-use obvhs::cwbvh::builder::build_cwbvh;
-use obvhs::ray::{Ray as BRay, RayHit};
 
 use super::Aabb;
 
-/// The tree: a compressed wide BVH8 (fastest to traverse) or a binary one (several times
-/// faster to build, for meshes so large that building dominates the time to first ray).
-#[derive(Clone)]
-enum Tree {
-    Wide(CwBvh),
-    Binary(Bvh2),
+/// Children per node.
+pub const WIDTH: usize = 8;
+
+/// Child slot flag: a leaf (a range of primitive slots) rather than an inner node.
+pub(super) const LEAF: u32 = 1 << 31;
+/// A child slot with nothing in it (its box is empty, so no ray enters it).
+pub(super) const EMPTY: u32 = u32::MAX;
+/// Bits of a leaf's first primitive slot; the count (minus one) sits above them.
+const LEAF_START_BITS: u32 = 26;
+/// Most primitives a leaf can hold (the count field has five bits).
+const MAX_LEAF: u32 = 32;
+/// Most primitives one BVH can index (the leaf start field's range).
+pub const MAX_PRIMITIVES: usize = 1 << LEAF_START_BITS;
+
+/// One node: eight child boxes as structure-of-arrays and eight child references.
+#[derive(Clone, Debug)]
+pub(super) struct Node {
+    /// Child box planes: `planes[axis]` the minima and `planes[3 + axis]` the maxima, each as
+    /// two 4-lane vectors (lanes 0–3 and 4–7), so the node test is plain SSE.
+    pub planes: [[Vec4; 2]; 6],
+    /// Inner node index, `LEAF | (count − 1) << 26 | first slot`, or [`EMPTY`].
+    pub child: [u32; WIDTH],
 }
 
-/// Which tree to build.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BvhKind {
-    /// Compressed wide BVH8.
-    Wide,
-    /// Binary BVH (no wide conversion).
-    Binary,
+impl Node {
+    fn empty() -> Node {
+        let (lo, hi) = (Vec4::splat(f32::INFINITY), Vec4::splat(f32::NEG_INFINITY));
+        Node {
+            planes: [[lo; 2], [lo; 2], [lo; 2], [hi; 2], [hi; 2], [hi; 2]],
+            child: [EMPTY; WIDTH],
+        }
+    }
+
+    fn set_box(&mut self, lane: usize, b: &BAabb) {
+        for axis in 0..3 {
+            self.planes[axis][lane / 4][lane % 4] = b.min[axis];
+            self.planes[3 + axis][lane / 4][lane % 4] = b.max[axis];
+        }
+    }
 }
 
-/// A BVH over a list of boxes; primitive ids in callbacks index [`Bvh::order`].
+/// Encodes a leaf child: `count` primitive slots from `start`.
+fn leaf(start: u32, count: u32) -> u32 {
+    debug_assert!((1..=MAX_LEAF).contains(&count) && (start as usize) < MAX_PRIMITIVES);
+    LEAF | (count - 1) << LEAF_START_BITS | start
+}
+
+/// The primitive slot range of a leaf child.
+#[inline(always)]
+pub(super) fn leaf_range(child: u32) -> std::ops::Range<usize> {
+    let start = (child & ((1 << LEAF_START_BITS) - 1)) as usize;
+    let count = ((child & !LEAF) >> LEAF_START_BITS) as usize + 1;
+    start..start + count
+}
+
+/// A wide BVH over a list of boxes; primitive slots in callbacks index [`Bvh::order`].
 #[derive(Clone, Debug)]
 pub struct Bvh {
-    tree: Tree,
-    /// The caller's primitive index for each BVH slot.
+    pub(super) nodes: Vec<Node>,
+    /// The caller's primitive index for each BVH slot (leaves hold contiguous slot ranges).
     pub order: Vec<u32>,
     /// Time spent building.
     pub build_time: Duration,
@@ -51,83 +90,96 @@ pub fn to_f32_box(b: &Aabb) -> Option<BAabb> {
     (out.min.is_finite() && out.max.is_finite() && !b.is_empty()).then_some(out)
 }
 
-/// The f32 ray for traversal, or `None` when it cannot be represented.
-pub fn to_f32_ray(origin: DVec3, dir: DVec3, t_max: f64) -> Option<BRay> {
-    // obvhs orders slabs by `dir < 0` but inverts −0.0 to −∞: a negative zero would make
-    // every box look empty, so fold it to +0.0.
-    let (o, d) = (origin.as_vec3a(), dir.as_vec3a() + Vec3A::ZERO);
-    if !o.is_finite() || !d.is_finite() || d == Vec3A::ZERO {
-        return None;
-    }
-    let t_max = if t_max.is_finite() {
-        (t_max as f32).next_up()
-    } else {
-        f32::INFINITY
-    };
-    Some(BRay::new(o, d, 0.0, t_max))
+/// A ray prepared for traversal in f32: origin, safe reciprocal direction and a `t` range.
+#[derive(Clone, Copy, Debug)]
+pub struct BvhRay {
+    /// Origin, one axis splatted per vector.
+    pub(super) origin: [Vec4; 3],
+    /// Safe reciprocal direction, splatted likewise.
+    pub(super) inv: [Vec4; 3],
+    /// Per axis, the index into [`Node::planes`] of the slab the ray enters by (the minimum
+    /// for a forward axis, the maximum for a backward one); the exit slab is the other.
+    pub(super) entry_plane: [usize; 3],
+    pub(super) t_min: f32,
+    pub(super) t_max: f32,
 }
 
-/// Like [`to_f32_ray`] with the f64 reciprocal direction already known (saves the divisions
-/// obvhs's constructor would repeat).
-pub fn to_f32_ray_inv(origin: DVec3, dir: DVec3, inv: DVec3, t_max: f64) -> Option<BRay> {
-    let (o, d) = (origin.as_vec3a(), dir.as_vec3a() + Vec3A::ZERO);
-    if !o.is_finite() || !d.is_finite() || d == Vec3A::ZERO {
-        return None;
+impl BvhRay {
+    /// The f32 ray for `origin + t·dir`, `t` in `[t_min, t_max]`, or `None` when it cannot be
+    /// represented (non-finite or zero direction).
+    pub fn new(origin: DVec3, dir: DVec3, t_min: f64, t_max: f64) -> Option<BvhRay> {
+        Self::with_inverse(origin, dir, dir.recip(), t_min, t_max)
     }
-    // obvhs's safe inverse: components within f32::EPSILON of zero invert to ±1/ε.
-    let safe = |x: f32, i: f64| {
-        if x.abs() <= f32::EPSILON {
-            x.signum() / f32::EPSILON
+
+    /// Like [`BvhRay::new`] with the f64 reciprocal direction already known.
+    pub fn with_inverse(
+        origin: DVec3,
+        dir: DVec3,
+        inv: DVec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<BvhRay> {
+        let (o, d) = (origin.as_vec3a(), dir.as_vec3a());
+        if !o.is_finite() || !d.is_finite() || d == Vec3A::ZERO {
+            return None;
+        }
+        // A component too small for f32 inverts to a huge finite value of the right sign, so
+        // slab products never become 0·∞ = NaN.
+        let safe = |x: f32, i: f64| {
+            let i = i as f32;
+            if i.is_finite() {
+                i
+            } else if x.is_sign_negative() {
+                -f32::MAX
+            } else {
+                f32::MAX
+            }
+        };
+        let inv = [safe(d.x, inv.x), safe(d.y, inv.y), safe(d.z, inv.z)];
+        let lo = if t_min.is_finite() {
+            (t_min as f32).next_down()
         } else {
-            i as f32
-        }
-    };
-    let t_max = if t_max.is_finite() {
-        (t_max as f32).next_up()
-    } else {
-        f32::INFINITY
-    };
-    Some(BRay {
-        origin: o,
-        direction: d,
-        inv_direction: Vec3A::new(safe(d.x, inv.x), safe(d.y, inv.y), safe(d.z, inv.z)),
-        tmin: 0.0,
-        tmax: t_max,
-    })
-}
-
-impl std::fmt::Debug for Tree {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Tree::Wide(t) => write!(f, "Wide({} nodes)", t.nodes.len()),
-            Tree::Binary(t) => write!(f, "Binary({} nodes)", t.nodes.len()),
-        }
+            f32::NEG_INFINITY
+        };
+        let hi = if t_max.is_finite() {
+            (t_max as f32).next_up()
+        } else {
+            f32::INFINITY
+        };
+        let entry_plane = [0, 1, 2].map(|axis| if inv[axis] < 0.0 { 3 + axis } else { axis });
+        Some(BvhRay {
+            origin: o.to_array().map(Vec4::splat),
+            inv: inv.map(Vec4::splat),
+            entry_plane,
+            t_min: lo,
+            t_max: hi,
+        })
     }
 }
 
 impl Bvh {
-    /// Builds over `boxes`; `ids[i]` is reported for `boxes[i]`.
-    pub fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams, kind: BvhKind) -> Bvh {
+    /// Builds over `boxes`; `ids[i]` is reported for `boxes[i]`. Leaves hold up to
+    /// `quality.max_prims_per_leaf` primitives.
+    pub fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams) -> Bvh {
         let start = Instant::now();
         let mut core = Duration::default();
-        let (tree, indices) = match kind {
-            BvhKind::Wide => {
-                let cw = build_cwbvh(boxes, quality, &mut core);
-                let idx = cw.primitive_indices.clone();
-                (Tree::Wide(cw), idx)
-            }
-            BvhKind::Binary => {
-                let b = build_bvh2(boxes, quality, &mut core);
-                let idx = b.primitive_indices.clone();
-                (Tree::Binary(b), idx)
-            }
-        };
-        let order = indices
-            .iter()
-            .map(|&i| ids.get(i as usize).copied().unwrap_or(u32::MAX))
-            .collect();
+        let mut nodes = Vec::new();
+        let mut order = Vec::new();
+        if !boxes.is_empty() && boxes.len() <= MAX_PRIMITIVES {
+            let quality = BvhBuildParams {
+                max_prims_per_leaf: quality.max_prims_per_leaf.min(MAX_LEAF),
+                ..quality
+            };
+            let bvh2 = build_bvh2(boxes, quality, &mut core);
+            nodes = collapse(&bvh2.nodes);
+            order = bvh2
+                .primitive_indices
+                .iter()
+                .map(|&i| ids.get(i as usize).copied().unwrap_or(u32::MAX))
+                .collect();
+        }
         Bvh {
-            tree,
+            nodes,
             order,
             build_time: start.elapsed(),
         }
@@ -135,110 +187,172 @@ impl Bvh {
 
     /// Approximate heap bytes.
     pub fn memory(&self) -> usize {
-        let nodes = match &self.tree {
-            Tree::Wide(t) => {
-                t.nodes.len() * std::mem::size_of::<obvhs::cwbvh::node::CwBvhNode>()
-                    + t.primitive_indices.len() * 4
-            }
-            Tree::Binary(t) => {
-                t.nodes.len() * std::mem::size_of::<obvhs::bvh2::node::Bvh2Node>()
-                    + t.primitive_indices.len() * 4
-            }
-        };
-        nodes + self.order.len() * 4
+        self.nodes.len() * std::mem::size_of::<Node>() + self.order.len() * 4
     }
 
-    /// Closest-hit traversal: `f(slot, t_max)` returns the hit distance or `f32::INFINITY`.
-    #[inline]
-    pub fn closest(&self, ray: BRay, mut f: impl FnMut(usize, f32) -> f32) {
-        let mut hit = RayHit::none();
-        match &self.tree {
-            Tree::Wide(t) => {
-                t.ray_traverse(ray, &mut hit, |r, id| f(id, r.tmax));
-            }
-            Tree::Binary(t) => {
-                t.ray_traverse(ray, &mut hit, |r, id| f(id, r.tmax));
-            }
-        }
+    /// Number of wide nodes.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
     }
+}
 
-    /// Any-hit traversal: stops at the first slot for which `f` returns true.
-    #[inline]
-    pub fn any(&self, ray: BRay, mut f: impl FnMut(usize) -> bool) -> bool {
-        let mut g = |_: &BRay, id: usize| if f(id) { 0.0 } else { f32::INFINITY };
-        !match &self.tree {
-            Tree::Wide(t) => t.ray_traverse_miss(ray, &mut g),
-            Tree::Binary(t) => t.ray_traverse_miss(ray, &mut g),
+/// Collapses a binary tree (root at 0, children of an inner node at `first_index` and
+/// `first_index + 1`) into wide nodes, breadth first: each wide node takes the binary node's
+/// children and keeps opening its largest inner child until it has [`WIDTH`] of them.
+fn collapse(bin: &[obvhs::bvh2::node::Bvh2Node]) -> Vec<Node> {
+    let mut out = vec![Node::empty()];
+    let Some(root) = bin.first() else {
+        return Vec::new();
+    };
+    if root.is_leaf() {
+        out[0].set_box(0, &root.aabb);
+        out[0].child[0] = leaf_child(root);
+        return out;
+    }
+    // (binary inner node, wide node it becomes)
+    let mut work = std::collections::VecDeque::from([(0usize, 0usize)]);
+    let mut kids: Vec<usize> = Vec::with_capacity(WIDTH);
+    while let Some((b, w)) = work.pop_front() {
+        let first = bin[b].first_index as usize;
+        kids.clear();
+        kids.extend([first, first + 1]);
+        while kids.len() < WIDTH {
+            let widest = kids
+                .iter()
+                .enumerate()
+                .filter(|(_, k)| !bin[**k].is_leaf())
+                .max_by(|(_, a), (_, c)| {
+                    let area = |i: usize| bin[i].aabb.half_area();
+                    area(**a).total_cmp(&area(**c))
+                })
+                .map(|(pos, _)| pos);
+            let Some(pos) = widest else { break };
+            let open = kids.swap_remove(pos);
+            let f = bin[open].first_index as usize;
+            kids.extend([f, f + 1]);
+        }
+        for (lane, &k) in kids.iter().enumerate() {
+            let node = &bin[k];
+            out[w].set_box(lane, &node.aabb);
+            out[w].child[lane] = if node.is_leaf() {
+                leaf_child(node)
+            } else {
+                out.push(Node::empty());
+                let id = out.len() - 1;
+                work.push_back((k, id));
+                id as u32
+            };
         }
     }
+    out
+}
 
-    /// Visits every slot whose box the ray meets.
-    #[inline]
-    pub fn all(&self, ray: BRay, mut f: impl FnMut(usize)) {
-        match &self.tree {
-            Tree::Wide(t) => t.ray_traverse_anyhit(ray, |_, id| f(id)),
-            Tree::Binary(t) => t.ray_traverse_anyhit(ray, |_, id| f(id)),
-        }
-    }
+fn leaf_child(node: &obvhs::bvh2::node::Bvh2Node) -> u32 {
+    leaf(node.first_index, node.prim_count.clamp(1, MAX_LEAF))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Both tree kinds agree with brute force on random boxes for closest, any and all.
-    #[test]
-    fn both_tree_kinds_match_brute_force() {
-        let mut seed = 7u64;
+    fn random_boxes(n: usize, seed: u64) -> Vec<BAabb> {
+        let mut seed = seed;
         let mut rnd = move || {
             seed = seed
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
             ((seed >> 33) as f32) / (1u64 << 31) as f32
         };
-        let boxes: Vec<BAabb> = (0..500)
+        (0..n)
             .map(|_| {
                 let c = Vec3A::new(rnd(), rnd(), rnd()) * 10.0;
                 let h = Vec3A::new(rnd(), rnd(), rnd()) * 0.3 + 0.01;
                 BAabb::new(c - h, c + h)
             })
-            .collect();
-        let ids: Vec<u32> = (0..boxes.len() as u32).collect();
-        for kind in [BvhKind::Wide, BvhKind::Binary] {
-            let bvh = Bvh::build(&boxes, ids.clone(), BvhBuildParams::fast_build(), kind);
+            .collect()
+    }
+
+    fn slab(b: &BAabb, o: DVec3, d: DVec3) -> Option<f64> {
+        let inv = d.recip();
+        let t0 = (b.min.as_dvec3() - o) * inv;
+        let t1 = (b.max.as_dvec3() - o) * inv;
+        let near = t0.min(t1).max_element().max(0.0);
+        let far = t0.max(t1).min_element();
+        (near <= far).then_some(near)
+    }
+
+    /// Closest, any and all agree with brute force on random boxes, for several leaf sizes.
+    #[test]
+    fn traversals_match_brute_force() {
+        for (n, leaf) in [(1, 1), (5, 1), (500, 1), (500, 4), (3000, 8)] {
+            let boxes = random_boxes(n, 7 + n as u64);
+            let ids: Vec<u32> = (0..n as u32).collect();
+            let params = BvhBuildParams {
+                max_prims_per_leaf: leaf,
+                ..BvhBuildParams::medium_build()
+            };
+            let bvh = Bvh::build(&boxes, ids, params);
+            assert_eq!(bvh.order.len(), n);
+            let mut sorted = bvh.order.clone();
+            sorted.sort_unstable();
+            assert!(sorted.iter().enumerate().all(|(i, &x)| i as u32 == x));
+            let mut seed = 99u64;
+            let mut rnd = move || {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+                ((seed >> 33) as f64) / (1u64 << 31) as f64
+            };
             for _ in 0..300 {
-                let o = DVec3::new(-5.0, rnd() as f64 * 10.0, rnd() as f64 * 10.0);
-                let d = DVec3::new(1.0, rnd() as f64 - 0.5, rnd() as f64 - 0.5).normalize();
-                let r = to_f32_ray(o, d, f64::INFINITY).unwrap();
-                let entry = |i: usize| {
-                    let t = boxes[i].intersect_ray(&r);
-                    (t < f32::INFINITY).then_some(t.max(0.0))
-                };
-                let want = (0..boxes.len())
-                    .filter_map(entry)
-                    .fold(f32::INFINITY, f32::min);
-                let mut got = f32::INFINITY;
-                bvh.closest(r, |slot, _| match entry(bvh.order[slot] as usize) {
+                let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
+                let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).normalize();
+                let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
+                let entry = |i: usize| slab(&boxes[i], o, d);
+                let want = (0..n).filter_map(entry).fold(f64::INFINITY, f64::min);
+                let mut got = f64::INFINITY;
+                bvh.closest(&r, |slot, _| match entry(bvh.order[slot] as usize) {
                     Some(t) => {
                         got = got.min(t);
-                        t
+                        t as f32
                     }
                     None => f32::INFINITY,
                 });
-                assert_eq!(got, want, "{kind:?}");
+                assert_eq!(got, want, "n={n} leaf={leaf}");
                 assert_eq!(
-                    bvh.any(r, |slot| entry(bvh.order[slot] as usize).is_some()),
+                    bvh.any(&r, |slot| entry(bvh.order[slot] as usize).is_some()),
                     want.is_finite()
                 );
-                let mut n = 0;
-                bvh.all(r, |slot| {
-                    n += entry(bvh.order[slot] as usize).is_some() as usize
+                let mut count = 0;
+                bvh.all(&r, |slot| {
+                    count += entry(bvh.order[slot] as usize).is_some() as usize
                 });
-                assert_eq!(
-                    n,
-                    (0..boxes.len()).filter(|&i| entry(i).is_some()).count(),
-                    "{kind:?}"
-                );
+                assert_eq!(count, (0..n).filter(|&i| entry(i).is_some()).count());
+            }
+        }
+    }
+
+    /// Axis-parallel rays (zero direction components) and negative directions still find boxes.
+    #[test]
+    fn axis_parallel_and_backward_rays() {
+        let boxes = random_boxes(200, 3);
+        let bvh = Bvh::build(&boxes, (0..200).collect(), BvhBuildParams::medium_build());
+        for (i, b) in boxes.iter().enumerate() {
+            let c = b.center().as_dvec3();
+            for d in [
+                DVec3::X,
+                -DVec3::X,
+                DVec3::Y,
+                -DVec3::Y,
+                DVec3::Z,
+                -DVec3::Z,
+            ] {
+                let o = c - 20.0 * d;
+                let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
+                let mut seen = false;
+                bvh.all(&r, |slot| seen |= bvh.order[slot] as usize == i);
+                assert!(seen, "box {i} along {d}");
+                let r = BvhRay::new(o, -d, 0.0, f64::INFINITY).unwrap();
+                let mut behind = false;
+                bvh.all(&r, |slot| behind |= bvh.order[slot] as usize == i);
+                assert!(!behind, "box {i} behind a ray along {}", -d);
             }
         }
     }

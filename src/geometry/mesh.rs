@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 
-use super::bvh::{Bvh, BvhKind, to_f32_ray_inv};
+use super::bvh::{Bvh, BvhRay};
 use super::mesh_error::{MeshError, locate};
 use super::triangle::ShearedRay;
 use super::{Aabb, Ray};
@@ -20,10 +20,8 @@ pub const CREASE_ANGLE_DEG: f64 = 60.0;
 /// Above this many triangles a mesh's BVH is built for speed rather than quality.
 pub const LARGE_MESH: usize = 300_000;
 
-/// Above this many triangles a mesh gets a binary BVH: ~20 % less build time than the wide
-/// one (measured on 1.1M triangles) at ~1.7× the tracing time, so only where building
-/// dominates.
-pub const HUGE_MESH: usize = 4_000_000;
+/// Most triangles in one BVH leaf.
+const LEAF_TRIANGLES: u32 = 4;
 
 /// A loaded mesh, shared (`Arc`) by every object that places the same file.
 #[derive(Debug)]
@@ -222,15 +220,13 @@ impl MeshData {
             &boxes,
             (0..tris.len() as u32).collect(),
             // Better trees pay off until the build itself dominates (time to first ray).
-            if tris.len() <= LARGE_MESH {
-                BvhBuildParams::medium_build()
-            } else {
-                BvhBuildParams::fast_build()
-            },
-            if tris.len() <= HUGE_MESH {
-                BvhKind::Wide
-            } else {
-                BvhKind::Binary
+            BvhBuildParams {
+                max_prims_per_leaf: LEAF_TRIANGLES,
+                ..if tris.len() <= LARGE_MESH {
+                    BvhBuildParams::medium_build()
+                } else {
+                    BvhBuildParams::fast_build()
+                }
             },
         );
         let reorder = |i: u32| i as usize;
@@ -344,12 +340,7 @@ impl MeshData {
 
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
-    fn near(
-        &self,
-        ray: &Ray,
-        t_min: f64,
-        t_max: f64,
-    ) -> Option<(f64, ShearedRay, obvhs::ray::Ray, f32)> {
+    fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, BvhRay, f32)> {
         // Slab test against the mesh bounds, keeping the reciprocal for the f32 ray.
         let inv = ray.dir.recip();
         let t0 = (self.bounds.min - ray.origin) * inv;
@@ -359,12 +350,16 @@ impl MeshData {
         if entry > exit {
             return None;
         }
-        let margin = self.margin / ray.dir.length().max(f64::MIN_POSITIVE);
+        // The margin in units of t; it need not be exact, so f32 keeps the division short.
+        let len = (ray.dir.length_squared() as f32)
+            .sqrt()
+            .max(f32::MIN_POSITIVE);
+        let margin = self.margin * (1.0 / len) as f64;
         let s = (entry - margin).max(t_min);
         let origin = ray.at(s);
-        let sr = ShearedRay::new(origin, ray.dir)?;
+        let sr = ShearedRay::with_inverse(origin, ray.dir, inv)?;
         let far = (t_max.min(exit + margin) - s).max(0.0);
-        let r = to_f32_ray_inv(origin, ray.dir, inv, far)?;
+        let r = BvhRay::with_inverse(origin, ray.dir, inv, 0.0, far)?;
         Some((s, sr, r, (t_min - s) as f32))
     }
 
@@ -373,7 +368,7 @@ impl MeshData {
         let (s, sr, r, lo) = self.near(ray, t_min, t_max)?;
         let mut best: Option<(usize, f32, [f32; 3])> = None;
         self.bvh
-            .closest(r, |slot, t_far| match sr.intersect(&self.tris[slot]) {
+            .closest(&r, |slot, t_far| match sr.intersect(&self.tris[slot]) {
                 Some((t, b)) if t > lo && t < t_far => {
                     best = Some((slot, t, b));
                     t
@@ -392,7 +387,7 @@ impl MeshData {
             return false;
         };
         let hi = (t_max - s) as f32;
-        self.bvh.any(r, |slot| {
+        self.bvh.any(&r, |slot| {
             sr.intersect(&self.tris[slot])
                 .is_some_and(|(t, _)| t > lo && t < hi)
         })
@@ -404,7 +399,7 @@ impl MeshData {
             return;
         };
         let start = out.len();
-        self.bvh.all(r, |slot| {
+        self.bvh.all(&r, |slot| {
             if let Some((t, b)) = sr.intersect(&self.tris[slot]) {
                 let mut h = self.hit(slot, t, b);
                 h.t += s;

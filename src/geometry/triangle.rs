@@ -109,12 +109,18 @@ pub struct ShearedRay {
 impl ShearedRay {
     /// Prepares `origin + t·dir` (in the mesh's space); `None` for a zero direction.
     pub fn new(origin: DVec3, dir: DVec3) -> Option<ShearedRay> {
+        Self::with_inverse(origin, dir, dir.recip())
+    }
+
+    /// Like [`ShearedRay::new`] with `dir.recip()` already known (saves a division).
+    #[inline]
+    pub fn with_inverse(origin: DVec3, dir: DVec3, recip: DVec3) -> Option<ShearedRay> {
         let d = dir.to_array();
         let (kx, ky, kz) = shear_axes(d);
         if d[kz] == 0.0 {
             return None;
         }
-        let inv = 1.0 / d[kz];
+        let inv = recip.to_array()[kz];
         let (sx, sy, sz) = ((d[kx] * inv) as f32, (d[ky] * inv) as f32, inv as f32);
         // Columns of the matrix whose rows give x' = a[kx] − sx·a[kz], y' = a[ky] − sy·a[kz],
         // z' = sz·a[kz].

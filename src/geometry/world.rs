@@ -8,7 +8,7 @@ use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
 use super::build::Builder;
-use super::bvh::{Bvh, BvhKind, to_f32_box, to_f32_ray};
+use super::bvh::{Bvh, BvhRay, to_f32_box};
 use super::node::{GeoHit, Geom, Node};
 use super::{Aabb, Ray, sphere};
 use crate::diag::Diagnostic;
@@ -141,7 +141,11 @@ impl World {
         }
         stats.unbounded = loose.len();
         let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
-            let bvh = Bvh::build(&boxes, ids, BvhBuildParams::medium_build(), BvhKind::Wide);
+            let params = BvhBuildParams {
+                max_prims_per_leaf: 1,
+                ..BvhBuildParams::medium_build()
+            };
+            let bvh = Bvh::build(&boxes, ids, params);
             stats.bvh_build_time += bvh.build_time;
             stats.memory_bytes += bvh.memory();
             Some(bvh)
@@ -253,8 +257,8 @@ impl World {
             }
         }
         if let Some(bvh) = &self.bvh {
-            match to_f32_ray(ray.origin, ray.dir, far) {
-                Some(r) => bvh.closest(r, |slot, _| {
+            match BvhRay::new(ray.origin, ray.dir, t_min, far) {
+                Some(r) => bvh.closest(&r, |slot, _| {
                     let i = bvh.order[slot];
                     match self.nodes[i as usize].intersect(ray, t_min, far) {
                         Some(h) => {
@@ -317,8 +321,8 @@ impl World {
         let Some(bvh) = &self.bvh else {
             return false;
         };
-        match to_f32_ray(ray.origin, ray.dir, t_max) {
-            Some(r) => bvh.any(r, |slot| {
+        match BvhRay::new(ray.origin, ray.dir, t_min, t_max) {
+            Some(r) => bvh.any(&r, |slot| {
                 self.nodes[bvh.order[slot] as usize].occluded(ray, t_min, t_max)
             }),
             None => bvh
