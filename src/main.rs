@@ -172,7 +172,9 @@ fn render(
 ) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
+    let load_start = std::time::Instant::now();
     let loaded = load(file, &mut sources);
+    let load_time = load_start.elapsed();
     let color = format == Format::Human && std::io::stderr().is_terminal();
     let print = |diags: &[Diagnostic], sources: &SourceMap| {
         let text = report::render(diags, sources, &subject, format, color);
@@ -194,7 +196,10 @@ fn render(
     let start = std::time::Instant::now();
     let result = rtc::render::render_film(&scene, &options).and_then(|film| {
         if show_stats {
-            eprintln!("{}", cli::stats::describe(&film, start.elapsed()));
+            eprintln!(
+                "{}",
+                cli::stats::describe(&film, load_time, start.elapsed())
+            );
         }
         rtc::render::output::save(&film.to_image(), &path)
     });

@@ -88,6 +88,7 @@ fn render_writes_ppm_and_reports_stats() {
     assert_eq!(run.status.code(), Some(0), "{stderr}");
     // 400×400 course image: one camera ray per pixel, no supersampling in rt1.
     assert!(stderr.contains("160000 camera"), "{stderr}");
+    assert!(stderr.contains("first ray at"), "{stderr}");
     let bytes = std::fs::read(&out).unwrap();
     let header = b"P6\n400 400\n255\n";
     assert_eq!(&bytes[..header.len()], header);

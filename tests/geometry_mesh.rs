@@ -6,7 +6,7 @@ mod geometry_support;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use geometry_support::{Rng, object, ray_at_box, scene, world};
+use geometry_support::{Rng, hemisphere, object, ray_at_box, scene, world};
 use glam::{DAffine3, DVec3, Vec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{CsgOp, MaterialId, Shape};
@@ -324,4 +324,52 @@ fn closed_mesh_works_in_csg() {
         }
     }
     assert!(cut > 200, "{cut}");
+}
+
+/// Secondary rays leave a mesh hit with the renderer's own offset (EPS_REL·|P|, far below the
+/// f32 triangle test's rounding) and must not hit the surface they leave: on a convex mesh no
+/// ray into the outer hemisphere may hit anything (shadow acne, caught in the bunny scene).
+#[test]
+fn rays_leaving_a_mesh_with_the_render_offset_do_not_rehit_it() {
+    let dir = tmp_dir("acne");
+    let (text, _, _) = sphere_obj(4);
+    let path = dir.join("sphere.obj");
+    std::fs::write(&path, text).unwrap();
+    for (scale, offset) in [
+        (1.0, DVec3::new(1.0, 2.0, 3.0)),
+        (0.05, DVec3::new(0.1, -0.2, 0.0)),
+    ] {
+        let xf = DAffine3::from_scale_rotation_translation(
+            DVec3::splat(scale),
+            glam::DQuat::from_rotation_x(0.3),
+            offset,
+        );
+        let w = world(vec![object(mesh(path.clone(), false), xf)]);
+        let b = w.bounds();
+        let mut rng = Rng(11);
+        let mut tested = 0;
+        for i in 0..10_000 {
+            let ray = ray_at_box(&mut rng, b.min, b.max);
+            let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
+                continue;
+            };
+            let n = h.geometric_normal;
+            let d = hemisphere(&mut rng, n);
+            if d.dot(n) < 0.05 {
+                continue;
+            }
+            tested += 1;
+            let eps = rtc::render::plan::EPS_REL * h.point.abs().max_element();
+            let out = Ray::new(h.point + eps * n, d);
+            assert!(
+                !w.occluded(&out, 0.0, f64::INFINITY),
+                "ray {i}: self-shadowed"
+            );
+            assert!(
+                w.intersect(&out, 0.0, f64::INFINITY).is_none(),
+                "ray {i}: re-hit"
+            );
+        }
+        assert!(tested > 2_000, "{tested}");
+    }
 }

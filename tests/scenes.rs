@@ -38,13 +38,31 @@ fn every_scene_passes_check() {
     let mut failures = Vec::new();
     for f in &files {
         let rel = f.strip_prefix(root()).expect("inside the crate");
+        // The benchmark scenes' large models live outside the repository (../shared/models,
+        // or target/models where benches/meshes.sh makes bunny-x16.obj).
+        let models = std::env::join_paths([
+            root().join("../shared/models"),
+            root().join("target/models"),
+        ])
+        .expect("model path");
         let out = Command::new(env!("CARGO_BIN_EXE_rtc"))
             .current_dir(root())
+            .env("RTC_ASSET_PATH", models)
             .args(["check", "--format", "short"])
             .arg(rel)
             .output()
             .expect("run rtc");
         let stdout = String::from_utf8_lossy(&out.stdout);
+        let errors: Vec<&str> = stdout.lines().filter(|l| l.contains(": error[")).collect();
+        if rel.starts_with("scenes/bench")
+            && !errors.is_empty()
+            && errors
+                .iter()
+                .all(|l| l.contains("error[rtc::asset::missing]"))
+        {
+            println!("skipped {}: its model is absent\n{stdout}", rel.display());
+            continue;
+        }
         // Exit status 0 means no errors (warnings are allowed); `: error[` is the short format's
         // error line, checked as well so a wrong exit code cannot hide one.
         if !out.status.success() || stdout.contains(": error[") {

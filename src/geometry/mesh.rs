@@ -44,7 +44,12 @@ pub struct MeshData {
     bounds: Aabb,
     /// How far before the bounds a ray restarts (a thousandth of the diagonal).
     margin: f64,
+    /// Hits closer than this to a ray's start are ignored: the f32 triangle test's error bound
+    /// (a few ulps of the mesh's coordinates), so a ray leaving the surface cannot hit it again.
+    self_hit: f64,
     closed: OnceLock<bool>,
+    /// Time `load` took, BVH included.
+    load_time: std::time::Duration,
 }
 
 /// A hit on a mesh in its own space.
@@ -65,6 +70,7 @@ pub struct MeshHit {
 impl MeshData {
     /// Loads and prepares an OBJ file; `smooth` interpolates normals.
     pub fn load(path: &Path, smooth: bool) -> Result<MeshData, MeshError> {
+        let start = std::time::Instant::now();
         // Separate index streams: `single_index` re-deduplicates every (position, uv, normal)
         // tuple through a hash map, the largest cost of loading a million triangles.
         let opts = tobj::LoadOptions {
@@ -257,7 +263,9 @@ impl MeshData {
             bvh,
             bounds,
             margin: 1e-3 * (bounds.max - bounds.min).length(),
+            self_hit: 16.0 * f32::EPSILON as f64 * reach,
             closed: OnceLock::new(),
+            load_time: start.elapsed(),
         })
     }
 
@@ -274,6 +282,11 @@ impl MeshData {
     /// BVH build time.
     pub fn build_time(&self) -> std::time::Duration {
         self.bvh.build_time
+    }
+
+    /// Time loading took: reading, normals and the BVH.
+    pub fn load_time(&self) -> std::time::Duration {
+        self.load_time
     }
 
     /// Approximate heap bytes.
@@ -354,13 +367,16 @@ impl MeshData {
         let len = (ray.dir.length_squared() as f32)
             .sqrt()
             .max(f32::MIN_POSITIVE);
-        let margin = self.margin * (1.0 / len) as f64;
+        let per_t = (1.0 / len) as f64;
+        let margin = self.margin * per_t;
         let s = (entry - margin).max(t_min);
         let origin = ray.at(s);
         let sr = ShearedRay::with_inverse(origin, ray.dir, inv)?;
         let far = (t_max.min(exit + margin) - s).max(0.0);
         let r = BvhRay::with_inverse(origin, ray.dir, inv, 0.0, far)?;
-        Some((s, sr, r, (t_min - s) as f32))
+        // Past t_min by the self-hit distance (t_min is where a secondary ray leaves a surface).
+        let lo = t_min - s + self.self_hit * per_t;
+        Some((s, sr, r, lo as f32))
     }
 
     /// Nearest hit in (t_min, t_max).

@@ -54,6 +54,9 @@ pub struct WorldStats {
     pub build_time: Duration,
     /// Time spent building BVHs (top level and meshes).
     pub bvh_build_time: Duration,
+    /// Time spent loading mesh files (parsing, normals and their BVHs), wherever it happened:
+    /// a mesh whose `.bounds` the scene asked for was loaded while evaluating it.
+    pub mesh_load_time: Duration,
     /// Approximate heap bytes of the geometry and BVHs.
     pub memory_bytes: usize,
 }
@@ -123,6 +126,7 @@ impl World {
             stats.meshes += 1;
             stats.unique_triangles += m.triangle_count();
             stats.bvh_build_time += m.build_time();
+            stats.mesh_load_time += m.load_time();
             stats.memory_bytes += m.memory();
         }
         stats.instanced_triangles = nodes.iter().map(instanced_triangles).sum();
