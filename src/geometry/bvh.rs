@@ -329,6 +329,27 @@ mod tests {
         }
     }
 
+    /// obvhs builds in parallel; the tree must not depend on the thread count (deterministic
+    /// output for any `--threads`).
+    #[test]
+    fn the_tree_does_not_depend_on_the_thread_count() {
+        let boxes = random_boxes(20_000, 5);
+        let build = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            pool.install(|| Bvh::build(&boxes, (0..20_000).collect(), BvhBuildParams::fast_build()))
+        };
+        let (a, b) = (build(1), build(3));
+        assert_eq!(a.order, b.order);
+        assert_eq!(a.nodes.len(), b.nodes.len());
+        for (x, y) in a.nodes.iter().zip(&b.nodes) {
+            assert_eq!(x.child, y.child);
+            assert_eq!(x.planes, y.planes);
+        }
+    }
+
     /// Axis-parallel rays (zero direction components) and negative directions still find boxes.
     #[test]
     fn axis_parallel_and_backward_rays() {

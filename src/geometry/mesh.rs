@@ -17,7 +17,9 @@ use crate::ir::Material;
 /// Faces meeting at less than this angle share smoothed normals; sharper edges stay creased.
 pub const CREASE_ANGLE_DEG: f64 = 60.0;
 
-/// Above this many triangles a mesh's BVH is built for speed rather than quality.
+/// Above this many triangles a mesh's BVH is built for speed rather than quality (obvhs's
+/// `very_fast_build`: 0.35 s instead of 0.44 s for 1.1M triangles on 2 cores, about the same
+/// tracing speed), because there the build dominates the time to first ray.
 pub const LARGE_MESH: usize = 300_000;
 
 /// Most triangles in one BVH leaf.
@@ -231,7 +233,7 @@ impl MeshData {
                 ..if tris.len() <= LARGE_MESH {
                     BvhBuildParams::medium_build()
                 } else {
-                    BvhBuildParams::fast_build()
+                    BvhBuildParams::very_fast_build()
                 }
             },
         );
