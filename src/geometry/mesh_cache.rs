@@ -36,3 +36,9 @@ pub fn load(path: &Path, smooth: bool) -> Result<Arc<MeshData>, MeshError> {
     let mut map = cache().lock().unwrap_or_else(|e| e.into_inner());
     Ok(map.entry(key).or_insert(m).clone())
 }
+
+/// Forgets every cached mesh (they stay alive while worlds still hold them); benchmarks use it
+/// to time loading afresh.
+pub fn clear() {
+    cache().lock().unwrap_or_else(|e| e.into_inner()).clear();
+}
