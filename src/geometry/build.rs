@@ -30,6 +30,8 @@ pub struct Builder {
     base: u32,
     /// MTL materials added by meshes, in id order after the scene's.
     pub extra_materials: Vec<Material>,
+    /// Meshes this world placed already: a file placed N times is asked of the process-wide
+    /// cache once, and its load warnings are reported once.
     cache: HashMap<(PathBuf, bool), Arc<MeshData>>,
     mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
     /// Findings so far.

@@ -189,11 +189,6 @@ impl Bvh {
     pub fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<Node>() + self.order.len() * 4
     }
-
-    /// Number of wide nodes.
-    pub fn node_count(&self) -> usize {
-        self.nodes.len()
-    }
 }
 
 /// Collapses a binary tree (root at 0, children of an inner node at `first_index` and

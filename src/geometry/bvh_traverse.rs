@@ -160,31 +160,12 @@ impl Bvh {
         }
     }
 
-    /// Visits every slot whose box the ray meets.
+    /// Visits every slot whose box the ray meets (an any-hit traversal that never stops).
     #[inline]
     pub fn all(&self, ray: &BvhRay, mut f: impl FnMut(usize)) {
-        if self.nodes.is_empty() {
-            return;
-        }
-        let mut stack = Stack::new();
-        let mut node = 0u32;
-        loop {
-            let (_, mut mask) = test(&self.nodes[node as usize], ray, ray.t_max);
-            let children = &self.nodes[node as usize].child;
-            while mask != 0 {
-                let lane = mask.trailing_zeros() as usize;
-                mask &= mask - 1;
-                let c = children[lane];
-                if c & LEAF == 0 {
-                    stack.push((c, 0.0));
-                } else if c != EMPTY {
-                    leaf_range(c).for_each(&mut f);
-                }
-            }
-            match stack.pop() {
-                Some((n, _)) => node = n,
-                None => return,
-            }
-        }
+        self.any(ray, |slot| {
+            f(slot);
+            false
+        });
     }
 }

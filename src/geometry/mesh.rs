@@ -237,23 +237,11 @@ impl MeshData {
                 }
             },
         );
-        let reorder = |i: u32| i as usize;
-        let tris2 = bvh.order.iter().map(|&i| tris[reorder(i)]).collect();
-        let normals = if normals.is_empty() {
-            normals
-        } else {
-            bvh.order.iter().map(|&i| normals[reorder(i)]).collect()
-        };
-        let uvs = if any_uv {
-            bvh.order.iter().map(|&i| uvs[reorder(i)]).collect()
-        } else {
-            Vec::new()
-        };
-        let material_of = if any_mat {
-            bvh.order.iter().map(|&i| material_of[reorder(i)]).collect()
-        } else {
-            Vec::new()
-        };
+        // Per-triangle data in BVH slot order, so a leaf's triangles sit side by side.
+        let tris2 = in_order(&tris, &bvh.order);
+        let normals = in_order(&normals, &bvh.order);
+        let uvs = in_order(&uvs, &bvh.order);
+        let material_of = in_order(&material_of, &bvh.order);
         Ok(MeshData {
             path: path.to_path_buf(),
             tris: tris2,
@@ -426,6 +414,15 @@ impl MeshData {
         });
         out[start..].sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     }
+}
+
+/// `values` permuted into `order` (BVH slot → original index); empty stays empty (an attribute
+/// the file does not have).
+fn in_order<T: Copy>(values: &[T], order: &[u32]) -> Vec<T> {
+    if values.is_empty() {
+        return Vec::new();
+    }
+    order.iter().map(|&i| values[i as usize]).collect()
 }
 
 /// Converts an MTL material (Kd colour, Ka/Ks scaled to rtc's scalar coefficients, Ns, d, Ni).

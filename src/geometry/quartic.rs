@@ -184,6 +184,21 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
     Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
 }
 
+/// The smallest root in (t_min, t_max) among those `roots` reports (torus and blob hits).
+pub fn nearest_root(
+    t_min: f64,
+    t_max: f64,
+    roots: impl FnOnce(&mut dyn FnMut(f64, bool)),
+) -> Option<f64> {
+    let mut best: Option<f64> = None;
+    roots(&mut |t, _| {
+        if t > t_min && t < t_max && best.is_none_or(|b| t < b) {
+            best = Some(t);
+        }
+    });
+    best
+}
+
 #[cfg(test)]
 mod tests {
     #[test]

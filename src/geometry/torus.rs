@@ -105,13 +105,8 @@ impl Torus {
 
     /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let mut best: Option<f64> = None;
-        self.roots(ray, |t, _| {
-            if t > t_min && t < t_max && best.is_none_or(|b| t < b) {
-                best = Some(t);
-            }
-        });
-        best.map(|t| self.hit(ray, t))
+        super::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
+            .map(|t| self.hit(ray, t))
     }
 
     /// Boundary crossings along the whole line.
