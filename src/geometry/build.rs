@@ -307,6 +307,20 @@ impl Builder {
                 );
                 None
             }
+            Err(e) if e.too_large => {
+                self.error(
+                    o,
+                    "rtc::mesh::too_large",
+                    format!(
+                        "the mesh file `{}` is too large: {}",
+                        path.display(),
+                        e.message
+                    ),
+                    "this mesh",
+                    "simplify the model or split it into several OBJ files",
+                );
+                None
+            }
             Err(e) => {
                 let at = e.line.map(|l| format!(" at line {l}")).unwrap_or_default();
                 let mut d = Diagnostic::new(

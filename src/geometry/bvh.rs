@@ -159,7 +159,8 @@ impl BvhRay {
 
 impl Bvh {
     /// Builds over `boxes`; `ids[i]` is reported for `boxes[i]`. Leaves hold up to
-    /// `quality.max_prims_per_leaf` primitives.
+    /// `quality.max_prims_per_leaf` primitives. Callers keep `boxes` within [`MAX_PRIMITIVES`]
+    /// (mesh and object budgets); beyond it the tree is left empty rather than corrupt.
     pub fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams) -> Bvh {
         let start = Instant::now();
         let mut core = Duration::default();

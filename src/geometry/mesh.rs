@@ -22,6 +22,11 @@ pub const CREASE_ANGLE_DEG: f64 = 60.0;
 /// tracing speed), because there the build dominates the time to first ray.
 pub const LARGE_MESH: usize = 300_000;
 
+/// Most triangles one mesh file may have (about 7 GB of geometry and BVH; the BVH itself indexes
+/// up to 2²⁶ primitives).
+pub const MAX_TRIANGLES: usize = 50_000_000;
+const _: () = assert!(MAX_TRIANGLES <= super::bvh::MAX_PRIMITIVES);
+
 /// Most triangles in one BVH leaf.
 const LEAF_TRIANGLES: u32 = 4;
 
@@ -190,6 +195,7 @@ impl MeshData {
         if tris.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
         }
+        within_budget(tris.len(), MAX_TRIANGLES)?;
         let usable = |n: &Option<[Vec3; 3]>| {
             n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO))
         };
@@ -416,6 +422,20 @@ impl MeshData {
     }
 }
 
+/// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget).
+fn within_budget(count: usize, max: usize) -> Result<(), MeshError> {
+    if count <= max {
+        return Ok(());
+    }
+    Err(MeshError {
+        too_large: true,
+        ..MeshError::new(
+            format!("it has {count} triangles; at most {max} are supported in one file"),
+            None,
+        )
+    })
+}
+
 /// `values` permuted into `order` (BVH slot → original index); empty stays empty (an attribute
 /// the file does not have).
 fn in_order<T: Copy>(values: &[T], order: &[u32]) -> Vec<T> {
@@ -505,4 +525,18 @@ fn smooth_normals(tris: &[[Vec3A; 3]]) -> Vec<[Vec3; 3]> {
             out
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The triangle budget lets the limit through and rejects one more, flagged as too large.
+    #[test]
+    fn the_triangle_budget_is_enforced() {
+        assert!(within_budget(MAX_TRIANGLES, MAX_TRIANGLES).is_ok());
+        let e = within_budget(11, 10).unwrap_err();
+        assert!(e.too_large && !e.missing, "{e:?}");
+        assert!(e.message.contains("11 triangles") && e.message.contains("at most 10"));
+    }
 }

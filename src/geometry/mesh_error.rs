@@ -12,6 +12,8 @@ pub struct MeshError {
     pub line: Option<usize>,
     /// True when the file could not be opened or read at all.
     pub missing: bool,
+    /// True when the file is valid but over the triangle budget.
+    pub too_large: bool,
 }
 
 impl MeshError {
@@ -21,6 +23,7 @@ impl MeshError {
             message: message.into(),
             line,
             missing: false,
+            too_large: false,
         }
     }
 }
@@ -33,6 +36,7 @@ pub fn locate(path: &Path, e: tobj::LoadError) -> MeshError {
             message: "the file cannot be read".into(),
             line: None,
             missing: true,
+            too_large: false,
         };
     }
     let text = std::fs::read_to_string(path).unwrap_or_default();
