@@ -10,6 +10,7 @@ pub mod blob;
 pub mod build;
 pub mod bvh;
 mod bvh_traverse;
+pub mod circle;
 pub mod cone;
 pub mod csg;
 pub mod cylinder;
