@@ -85,12 +85,12 @@ impl MeshData {
             single_index: false,
             ..Default::default()
         };
-        let (models, mtl) = tobj::load_obj(path, &opts).map_err(|e| locate(path, e))?;
+        let (models, mtl) = super::obj_file::read(path, &opts).map_err(|e| locate(path, e))?;
         let mut warnings = Vec::new();
         let materials = match mtl {
             Ok(m) => m.iter().map(convert_material).collect(),
             Err(e) => {
-                warnings.push(format!("its material library could not be read ({e})"));
+                warnings.push(format!("its material library could not be read: {e}"));
                 Vec::new()
             }
         };

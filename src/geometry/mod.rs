@@ -19,6 +19,7 @@ pub mod mesh;
 pub mod mesh_cache;
 pub mod mesh_error;
 pub mod node;
+pub mod obj_file;
 pub mod plane;
 pub mod polygon;
 pub mod quad;
