@@ -293,9 +293,17 @@ fn budgets_stop_runaway_scenes() {
         max_recursion_depth: 16,
         max_objects: 50,
         max_list_len: 100,
+        max_string_len: 1000,
     };
     assert!(codes("for i in 0..2000 { }", &small).contains(&"rtc::budget::loop"));
     assert!(codes("let l = for i in 0..500 { i }", &small).contains(&"rtc::budget::list"));
+    let doubling = "fn d(s: String, n: Int) -> String { if n == 0 { s } else { d(s + s, n - 1) } }";
+    assert!(
+        codes(&format!("{doubling}\nlet s = d(\"ab\", 9)"), &small)
+            .contains(&"rtc::budget::string")
+    );
+    let s = format!("{doubling}\nlet s = d(\"ab\", 8)\nlet t = \"{{s}}{{s}}\"");
+    assert!(codes(&s, &small).contains(&"rtc::budget::string"));
     assert!(codes("for i in 0..60 { sphere() }", &small).contains(&"rtc::budget::objects"));
     assert!(codes("fn f(n: Int) { f(n + 1) }\nf(0)", &small).contains(&"rtc::budget::recursion"));
 }
@@ -327,6 +335,28 @@ fn modules_are_evaluated_once_and_exports_checked() {
         .collect();
     assert_eq!(prints.len(), 1, "{:#?}", l.diagnostics.items);
     assert!(l.scene.is_some());
+}
+
+/// Lists that share their items describe a tree of 2^60 leaves in 60 steps; `print`, `str` and
+/// error traces show it in bounded text (before, printing 2^26 leaves took 107 s and 5 GB).
+#[test]
+fn showing_a_shared_list_tree_stays_small() {
+    let n = notes(
+        "fn tree(x, n: Int) { if n == 0 { x } else { tree([x, x], n - 1) } }\n\
+         let t = tree(1, 60)\nprint(t)\nprint(str(t) == str(t))\nprint(\"{t}\" == str(t))",
+    );
+    assert_eq!(n.len(), 3, "{n:?}");
+    assert!(
+        n[0].starts_with("[[[[") && n[0].ends_with("..."),
+        "{}",
+        &n[0][..80]
+    );
+    assert!(
+        n[0].len() <= rtc::eval::value::SHOW_LIMIT + 3,
+        "{}",
+        n[0].len()
+    );
+    assert_eq!(&n[1..], ["true", "true"]);
 }
 
 #[test]

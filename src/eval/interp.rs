@@ -200,14 +200,30 @@ impl<'a> Interp<'a> {
                 StrPart::Text(t) => s.push_str(t),
                 StrPart::Interp(e, prec) => {
                     let v = self.eval(e)?;
-                    match (prec, v.as_f64()) {
-                        (Some(p), Some(f)) => s.push_str(&format!("{f:.p$}")),
+                    match (prec, v.as_f64(), &v) {
+                        (Some(p), Some(f), _) => s.push_str(&format!("{f:.p$}")),
+                        (_, _, Value::Str(t)) => s.push_str(t),
                         _ => s.push_str(&v.show()),
                     }
+                    self.check_string_len(s.len(), e.span)?;
                 }
             }
         }
         Ok(Value::Str(s.into()))
+    }
+
+    /// Checks a string length (bytes) against the budget.
+    pub fn check_string_len(&self, len: usize, span: Span) -> R<()> {
+        if len as u64 > self.opts.max_string_len {
+            return Err(error("rtc::budget::string", span, "string is too long")
+                .with_label(format!(
+                    "this string grows past {} bytes",
+                    self.opts.max_string_len
+                ))
+                .with_help("build shorter text; strings label and report, they do not hold data")
+                .into());
+        }
+        Ok(())
     }
 
     /// Checks a list length against the budget.

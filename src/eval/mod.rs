@@ -38,6 +38,8 @@ pub struct EvalOptions {
     pub max_objects: u64,
     /// Elements in any one list.
     pub max_list_len: u64,
+    /// Bytes in any one string.
+    pub max_string_len: u64,
 }
 
 impl Default for EvalOptions {
@@ -47,6 +49,7 @@ impl Default for EvalOptions {
             max_recursion_depth: 256,
             max_objects: 10_000_000,
             max_list_len: 10_000_000,
+            max_string_len: 10_000_000,
         }
     }
 }

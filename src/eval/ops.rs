@@ -98,7 +98,10 @@ pub fn binary(
         (Mul, Color(a), Int(_) | Float(_)) => Color(*a * r.as_f64().unwrap_or(0.0)),
         (Mul, Int(_) | Float(_), Color(b)) => Color(l.as_f64().unwrap_or(0.0) * *b),
         (Div, Color(a), Int(_) | Float(_)) => Color(*a / nonzero(r.as_f64(), rs)?),
-        (Add, Str(a), Str(b)) => Str(format!("{a}{b}").into()),
+        (Add, Str(a), Str(b)) => {
+            it.check_string_len(a.len() + b.len(), span)?;
+            Str(format!("{a}{b}").into())
+        }
         (Add, List(a), List(b)) => {
             it.check_list_len(a.len() + b.len(), span)?;
             List(Rc::new(a.iter().chain(b.iter()).cloned().collect()))

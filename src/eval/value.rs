@@ -271,36 +271,82 @@ impl Value {
         }
     }
 
-    /// A short rendering for messages and `print`.
+    /// A short rendering for messages and `print`: lists show their first 8 items, and the
+    /// whole text stops after [`SHOW_LIMIT`] bytes with `...` (lists that share their items
+    /// describe exponentially large trees in a few steps; their text must stay small).
     pub fn show(&self) -> String {
+        let mut out = String::new();
+        self.show_into(&mut out);
+        if out.len() > SHOW_LIMIT {
+            let mut end = SHOW_LIMIT;
+            while !out.is_char_boundary(end) {
+                end -= 1;
+            }
+            out.truncate(end);
+            out.push_str("...");
+        }
+        out
+    }
+
+    /// Appends the rendering to `out`, stopping early once `out` is past [`SHOW_LIMIT`].
+    fn show_into(&self, out: &mut String) {
+        if out.len() > SHOW_LIMIT {
+            return;
+        }
         match self {
-            Value::Unit => "()".into(),
-            Value::Int(i) => i.to_string(),
-            Value::Float(f) => fmt_f(*f),
-            Value::Bool(b) => b.to_string(),
-            Value::Str(s) => s.to_string(),
-            Value::Angle(a) => format!("{}deg", fmt_f(a.to_degrees())),
-            Value::Vec3(v) => format!("[{}, {}, {}]", fmt_f(v.x), fmt_f(v.y), fmt_f(v.z)),
-            Value::Color(c) => format!("rgb({}, {}, {})", fmt_f(c.x), fmt_f(c.y), fmt_f(c.z)),
+            Value::Unit => out.push_str("()"),
+            Value::Int(i) => out.push_str(&i.to_string()),
+            Value::Float(f) => out.push_str(&fmt_f(*f)),
+            Value::Bool(b) => out.push_str(&b.to_string()),
+            Value::Str(s) => {
+                let mut end = s.len().min(SHOW_LIMIT + 1);
+                while !s.is_char_boundary(end) {
+                    end -= 1;
+                }
+                out.push_str(&s[..end]);
+            }
+            Value::Angle(a) => out.push_str(&format!("{}deg", fmt_f(a.to_degrees()))),
+            Value::Vec3(v) => {
+                out.push_str(&format!("[{}, {}, {}]", fmt_f(v.x), fmt_f(v.y), fmt_f(v.z)));
+            }
+            Value::Color(c) => {
+                out.push_str(&format!(
+                    "rgb({}, {}, {})",
+                    fmt_f(c.x),
+                    fmt_f(c.y),
+                    fmt_f(c.z)
+                ));
+            }
             Value::List(l) => {
-                let items: Vec<String> = l.iter().take(8).map(Value::show).collect();
-                let more = if l.len() > 8 { ", ..." } else { "" };
-                format!("[{}{more}]", items.join(", "))
+                out.push('[');
+                for (i, v) in l.iter().take(8).enumerate() {
+                    if i > 0 {
+                        out.push_str(", ");
+                    }
+                    v.show_into(out);
+                }
+                out.push_str(if l.len() > 8 { ", ...]" } else { "]" });
             }
-            Value::Range(r) => format!("{}..{}", fmt_f(r.start), fmt_f(r.end)),
+            Value::Range(r) => out.push_str(&format!("{}..{}", fmt_f(r.start), fmt_f(r.end))),
             Value::Record(r) => {
-                let items: Vec<String> = r
-                    .fields
-                    .iter()
-                    .map(|f| format!("{}: {}", f.name, f.value.show()))
-                    .collect();
-                format!("{{ {} }}", items.join(", "))
+                out.push_str("{ ");
+                for (i, f) in r.fields.iter().enumerate() {
+                    if i > 0 {
+                        out.push_str(", ");
+                    }
+                    out.push_str(&format!("{}: ", f.name));
+                    f.value.show_into(out);
+                }
+                out.push_str(" }");
             }
-            Value::Object(o) => format!("<{}>", obj_kind(o)),
-            other => format!("<{}>", other.type_name()),
+            Value::Object(o) => out.push_str(&format!("<{}>", obj_kind(o))),
+            other => out.push_str(&format!("<{}>", other.type_name())),
         }
     }
 }
+
+/// Longest text [`Value::show`] produces before it ends in `...`.
+pub const SHOW_LIMIT: usize = 10_000;
 
 /// Kind name of an object value.
 pub fn obj_kind(o: &Obj) -> &'static str {

@@ -280,7 +280,10 @@ fn int(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn str_(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["value"], a)?;
     let (v, _) = p.req("value")?;
-    Ok(Value::Str(Rc::from(v.show())))
+    Ok(match v {
+        Value::Str(_) => v,
+        _ => Value::Str(Rc::from(v.show())),
+    })
 }
 
 fn print(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
