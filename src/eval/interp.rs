@@ -39,6 +39,19 @@ pub struct Interp<'a> {
     pub loading: Vec<(PathBuf, Span)>,
 }
 
+impl Drop for Interp<'_> {
+    /// A module's functions keep its scope (`Closure::module`) and the scope keeps them: an `Rc`
+    /// cycle. Emptying every scope when evaluation ends breaks them, so a process that
+    /// evaluates many scenes (the test suites, the fuzzers, a watcher) frees each one.
+    fn drop(&mut self) {
+        let scopes = std::iter::once(&self.scope).chain(self.modules.values().map(|m| &m.scope));
+        for scope in scopes {
+            let items = std::mem::take(&mut *scope.items.borrow_mut());
+            drop(items);
+        }
+    }
+}
+
 impl<'a> Interp<'a> {
     /// A fresh evaluator whose current module is `scope`.
     pub fn new(opts: &'a EvalOptions, sources: &'a mut SourceMap, scope: Rc<Scope>) -> Interp<'a> {
