@@ -36,16 +36,21 @@ pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), 
     Ok((models, materials))
 }
 
-/// "line N: `Kd` needs three numbers (r g b)" for the first colour line that has fewer.
+/// "line N: `Kd` needs three numbers (r g b)" for the first colour line that has fewer, among
+/// the lines tobj reads: it stops at the first line that is not UTF-8.
 fn short_colour_line(text: &[u8]) -> Option<String> {
-    // tobj reads lines as UTF-8 and fails cleanly on anything else.
-    let text = std::str::from_utf8(text).ok()?;
-    text.lines().enumerate().find_map(|(i, line)| {
+    for (i, line) in text.split(|&b| b == b'\n').enumerate() {
+        let line = std::str::from_utf8(line).ok()?;
         let mut words = line.split_whitespace();
-        let key = words.next()?;
-        let short = matches!(key, "Ka" | "Kd" | "Ks" | "Ke") && words.count() < 3;
-        short.then(|| format!("line {}: `{key}` needs three numbers (r g b)", i + 1))
-    })
+        let Some(key) = words.next() else { continue };
+        if matches!(key, "Ka" | "Kd" | "Ks" | "Ke") && words.count() < 3 {
+            return Some(format!(
+                "line {}: `{key}` needs three numbers (r g b)",
+                i + 1
+            ));
+        }
+    }
+    None
 }
 
 #[cfg(test)]
@@ -60,5 +65,11 @@ mod tests {
             Some("line 3: `Ks` needs three numbers (r g b)")
         );
         assert_eq!(short_colour_line(b"newmtl a\nKd 1 0 0 # red\nNs 8\n"), None);
+        // tobj parses the lines before one that is not UTF-8 (found by the obj_mtl fuzzer).
+        assert_eq!(
+            short_colour_line(b"Ks 0.5\r\nK\xff\n").as_deref(),
+            Some("line 1: `Ks` needs three numbers (r g b)")
+        );
+        assert_eq!(short_colour_line(b"K\xff\nKs 0.5\n"), None);
     }
 }
