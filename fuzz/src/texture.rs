@@ -1,0 +1,75 @@
+//! The texture fuzz target's work, and the one-object scene it shares with the mesh target.
+
+use std::path::Path;
+
+use glam::{DAffine3, DVec3};
+use rtc::ir::{
+    Bump, Camera, Light, LightKind, Mapping, Material, Object, Projection, RenderSettings, Scene,
+    Shape, Texture,
+};
+
+/// Renders a sphere textured and bump-mapped by the image at `path`, under every mapping.
+pub fn exercise(path: &Path) {
+    for mapping in [
+        Mapping::Uv,
+        Mapping::Spherical,
+        Mapping::Planar,
+        Mapping::Cylindrical,
+    ] {
+        let mut scene = one_object_scene(Object {
+            shape: Shape::Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+            },
+            transform: DAffine3::IDENTITY,
+            material: None,
+            span: Default::default(),
+        });
+        let tex = scene.add_texture(Texture::Image {
+            path: path.to_path_buf(),
+            mapping,
+            span: Default::default(),
+        });
+        let mat = scene.add_material(Material {
+            texture: Some(tex),
+            bump: Some(Bump {
+                texture: tex,
+                scale: 0.5,
+            }),
+            ..Material::default()
+        });
+        scene.objects[0].material = Some(mat);
+        crate::later_stages(scene, &crate::synthetic_sources());
+    }
+}
+
+/// A scene with `object`, a point light and a camera 5 units away on +z looking at the origin.
+pub fn one_object_scene(object: Object) -> Scene {
+    Scene {
+        camera: Camera {
+            eye: DVec3::new(0.0, 0.0, 5.0),
+            center: DVec3::ZERO,
+            up: DVec3::Y,
+            width: 4,
+            height: 4,
+            projection: Projection::Perspective { fov_y: 0.8 },
+            aperture: 0.0,
+            focus_distance: 0.0,
+            span: Default::default(),
+        },
+        lights: vec![Light {
+            kind: LightKind::Point {
+                position: DVec3::new(3.0, 4.0, 5.0),
+            },
+            color: DVec3::ONE,
+            span: Default::default(),
+        }],
+        materials: vec![Material::default()],
+        textures: Vec::new(),
+        objects: vec![object],
+        settings: RenderSettings {
+            shadows: true,
+            ..RenderSettings::default()
+        },
+    }
+}
