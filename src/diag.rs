@@ -2,6 +2,9 @@
 
 use crate::source::Span;
 
+/// Diagnostic code for files that cannot be read or written (the CLI exits with 2 on these).
+pub const IO_ERROR: &str = "rtc::io";
+
 /// How bad a diagnostic is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
@@ -120,15 +123,6 @@ impl Diagnostic {
     /// Adds a note.
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
-        self
-    }
-
-    /// Appends a trace frame (callers push outward as the error unwinds).
-    pub fn with_frame(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
-        self.trace.push(TraceFrame {
-            span,
-            message: message.into(),
-        });
         self
     }
 

@@ -10,6 +10,11 @@ use glam::{DAffine3, DVec3};
 
 use crate::source::Span;
 
+pub mod limits;
+mod loaded;
+
+pub use loaded::Loaded;
+
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;
 

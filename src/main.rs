@@ -13,7 +13,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use rtc::diag::{Diagnostic, Diagnostics};
 use rtc::eval::EvalOptions;
-use rtc::frontend::{IO_ERROR, Loaded};
+use rtc::diag::IO_ERROR;
+use rtc::ir::Loaded;
 use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
@@ -93,7 +94,7 @@ fn main() -> ExitCode {
 
 /// Loads a scene and runs the scene lints on it.
 fn load(file: &Path, sources: &mut SourceMap) -> Loaded {
-    let mut loaded = rtc::frontend::load(file, sources, &EvalOptions::default());
+    let mut loaded = rtc::loader::load(file, sources, &EvalOptions::default());
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::lint(scene));
     }

@@ -4,7 +4,7 @@ use std::path::Path;
 
 use glam::DVec3;
 use rtc::compat::{erase_spans, load_in, load_in_source, load_yaml};
-use rtc::frontend::Loaded;
+use rtc::ir::Loaded;
 use rtc::ir::{LightKind, Projection, Scene, Shape};
 use rtc::source::SourceMap;
 

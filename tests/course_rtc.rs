@@ -14,7 +14,7 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn scene_of(loaded: rtc::frontend::Loaded, path: &Path) -> Scene {
+fn scene_of(loaded: rtc::ir::Loaded, path: &Path) -> Scene {
     let errors: Vec<String> = loaded
         .diagnostics
         .items

@@ -3,9 +3,9 @@
 
 use std::path::Path;
 
-use crate::compat::build::{self, Draft};
+use crate::compat::course::{self, Draft};
 use crate::compat::yaml_objects;
-use crate::compat::yaml_tree::{self, Node, NodeKind};
+use crate::compat::yaml_tree::{self, YamlNode, YamlKind};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{
@@ -86,10 +86,10 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
 
 /// The items of a list; a non-list is reported and yields nothing. An empty value (`Objects:`
 /// with nothing under it) is an empty list.
-fn list<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> &'n [Node] {
+fn list<'n>(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> &'n [YamlNode] {
     match &node.kind {
-        NodeKind::Seq(items) => items,
-        NodeKind::Scalar {
+        YamlKind::Seq(items) => items,
+        YamlKind::Scalar {
             text,
             quoted: false,
         } if text.is_empty() || text == "~" || text == "null" => &[],
@@ -108,7 +108,7 @@ fn list<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> &'n [Node] {
     }
 }
 
-fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir::Camera> {
+fn camera(node: &YamlNode, span: Span, diags: &mut Diagnostics) -> Option<crate::ir::Camera> {
     let mut m = MapView::new(node, "`Camera`", diags)?;
     let eye = m.require(&["eye"], "`Camera`", "eye: [200, 200, 1000]", diags);
     let center = m.require(&["center"], "`Camera`", "center: [200, 200, 0]", diags);
@@ -159,11 +159,11 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         );
         return None;
     }
-    Some(build::course_camera(eye, center, up, size, span))
+    Some(course::course_camera(eye, center, up, size, span))
 }
 
-fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
-    let NodeKind::Seq(items) = &node.kind else {
+fn view_size(node: &YamlNode, diags: &mut Diagnostics) -> Option<[u32; 2]> {
+    let YamlKind::Seq(items) = &node.kind else {
         diags.push(
             Diagnostic::error(
                 "rtc::yaml::type",
@@ -190,12 +190,12 @@ fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
         );
         return None;
     }
-    let w = val::integer(&items[0], "the image width", 1, build::MAX_VIEW, diags);
-    let h = val::integer(&items[1], "the image height", 1, build::MAX_VIEW, diags);
+    let w = val::integer(&items[0], "the image width", 1, course::MAX_VIEW, diags);
+    let h = val::integer(&items[1], "the image height", 1, course::MAX_VIEW, diags);
     Some([w?, h?])
 }
 
-fn light(node: &Node, diags: &mut Diagnostics) -> Option<Light> {
+fn light(node: &YamlNode, diags: &mut Diagnostics) -> Option<Light> {
     let mut m = MapView::new(node, "a light", diags)?;
     let position = m.require(
         &["position"],
@@ -254,7 +254,7 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
     }
 }
 
-fn spelling(key: &Node, official: &str, diags: &mut Diagnostics) {
+fn spelling(key: &YamlNode, official: &str, diags: &mut Diagnostics) {
     let written = key.scalar().unwrap_or("");
     diags.push(
         Diagnostic::warning(
@@ -274,7 +274,7 @@ enum Mode {
     Gooch,
 }
 
-fn render_mode(node: &Node, diags: &mut Diagnostics) -> Option<Mode> {
+fn render_mode(node: &YamlNode, diags: &mut Diagnostics) -> Option<Mode> {
     let Some(text) = node.scalar().map(str::trim) else {
         diags.push(
             Diagnostic::error(
@@ -337,7 +337,7 @@ fn render_mode(node: &Node, diags: &mut Diagnostics) -> Option<Mode> {
     Some(mode)
 }
 
-fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
+fn super_sampling(node: &YamlNode, diags: &mut Diagnostics) -> Option<u32> {
     if node.scalar().is_some() {
         let f = val::integer(node, "`SuperSampling`", 1, MAX_FACTOR, diags)?;
         diags.push(
@@ -377,7 +377,7 @@ fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
     factor
 }
 
-fn gooch(node: &Node, used: bool, diags: &mut Diagnostics) -> Option<GoochParams> {
+fn gooch(node: &YamlNode, used: bool, diags: &mut Diagnostics) -> Option<GoochParams> {
     let mut m = MapView::new(node, "`GoochParameters`", diags)?;
     let mut p = GoochParams::default();
     for (name, slot) in [

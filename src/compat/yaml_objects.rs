@@ -6,8 +6,8 @@ use std::path::Path;
 
 use glam::{DAffine3, DVec3};
 
-use crate::compat::build::{self, CourseMaterial, SceneParts};
-use crate::compat::yaml_tree::{Node, NodeKind};
+use crate::compat::course::{self, CourseMaterial, SceneParts};
+use crate::compat::yaml_tree::{YamlNode, YamlKind};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{Mapping, MaterialId, Object, Shape, Texture};
@@ -20,7 +20,7 @@ const MATERIAL_KEYS: &[&str] = &[
 ];
 
 /// Reads one entry of `Objects` into `parts`; unknown types are skipped with a warning.
-pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
     let Some(mut m) = MapView::new(node, "an object", diags) else {
         return;
     };
@@ -66,7 +66,7 @@ pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Dia
 }
 
 /// Reads one entry of the student `Models` list (a mesh without a `type` key).
-pub fn model(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub fn model(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
     if let Some(m) = MapView::new(node, "a model", diags) {
         mesh(m, node, scene, parts, diags, false);
     }
@@ -122,7 +122,7 @@ fn direction(
 
 fn sphere(
     mut m: MapView<'_>,
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
@@ -160,7 +160,7 @@ fn sphere(
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
-    parts.objects.push(build::sphere_object(
+    parts.objects.push(course::sphere_object(
         position,
         radius,
         orientation,
@@ -170,13 +170,13 @@ fn sphere(
 }
 
 /// `radius: r` or `radius: [r, [x, y, z]]` (the list form also gives the texture's north pole).
-fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Option<f64> {
+fn radius(node: &YamlNode, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Option<f64> {
     match &node.kind {
-        NodeKind::Seq(items) if items.len() == 2 => {
+        YamlKind::Seq(items) if items.len() == 2 => {
             *pole = pole_vector(&items[1], diags);
             val::positive(&items[0], "the radius", diags)
         }
-        NodeKind::Seq(items) => {
+        YamlKind::Seq(items) => {
             diags.push(
                 Diagnostic::error(
                     "rtc::yaml::arity",
@@ -192,7 +192,7 @@ fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Opt
     }
 }
 
-fn pole_vector(node: &Node, diags: &mut Diagnostics) -> Option<DVec3> {
+fn pole_vector(node: &YamlNode, diags: &mut Diagnostics) -> Option<DVec3> {
     let v = val::triple(node, "the pole", Triple::Point, diags)?;
     if v.length() == 0.0 {
         diags.push(
@@ -301,7 +301,7 @@ fn cylinder(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 /// material the OBJ's own MTL materials are used.
 fn mesh(
     mut m: MapView<'_>,
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
@@ -310,10 +310,10 @@ fn mesh(
     let file = m.require(&["file", "filename"], "this mesh", "file: model.obj", diags);
     let path = file.and_then(|e| {
         let name = val::string(e.value, "`file`", diags)?;
-        match build::resolve_asset(scene, name) {
+        match course::resolve_asset(scene, name) {
             Ok(p) => Some(p),
             Err(tried) => {
-                diags.push(build::missing_asset(e.value.span, name, "mesh", &tried));
+                diags.push(course::missing_asset(e.value.span, name, "mesh", &tried));
                 None
             }
         }
@@ -324,7 +324,7 @@ fn mesh(
     };
     let scale = match m.get(&["scale", "size"], diags) {
         Some(e) => match &e.value.kind {
-            NodeKind::Seq(_) => val::triple(e.value, "`scale`", Triple::Point, diags),
+            YamlKind::Seq(_) => val::triple(e.value, "`scale`", Triple::Point, diags),
             _ => val::positive(e.value, "`scale`", diags).map(DVec3::splat),
         },
         None => Some(DVec3::ONE),
@@ -344,7 +344,7 @@ fn mesh(
         return;
     };
     if scale.min_element() <= 0.0 {
-        diags.push(build::out_of_range(
+        diags.push(course::out_of_range(
             node.span,
             &format!("{scale}"),
             "the mesh scale",
@@ -383,7 +383,7 @@ fn material_entry(
 
 /// A course material map: `color` or `texture`, `ka kd ks n`, optional `reflect refract eta`.
 fn material(
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     mapping: Mapping,
     parts: &mut SceneParts,
@@ -421,14 +421,14 @@ fn material(
     }
     let texture = texture.and_then(|e| {
         let name = val::string(e.value, "`texture`", diags)?;
-        match build::resolve_asset(scene, name) {
+        match course::resolve_asset(scene, name) {
             Ok(path) => Some(parts.add_texture(Texture::Image {
                 path,
                 mapping,
                 span: e.value.span,
             })),
             Err(tried) => {
-                diags.push(build::missing_asset(e.value.span, name, "texture", &tried));
+                diags.push(course::missing_asset(e.value.span, name, "texture", &tried));
                 None
             }
         }
@@ -474,7 +474,7 @@ fn material(
         let span = eta_entry.map_or(node.span, |e| e.value.span);
         let text = format!("{eta}");
         if refract > 0.0 {
-            diags.push(build::out_of_range(
+            diags.push(course::out_of_range(
                 span,
                 &text,
                 "`eta`",

@@ -24,7 +24,7 @@ use std::path::Path;
 use std::rc::Rc;
 
 use crate::diag::{Diagnostic, Severity};
-use crate::frontend::Loaded;
+use crate::ir::Loaded;
 use crate::source::SourceMap;
 
 /// Budgets that keep evaluation finite; each overrun is a clear error.
@@ -60,7 +60,7 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
             loaded.diagnostics.push(
                 Diagnostic::new(
                     Severity::Error,
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     None,
                     format!("cannot read `{}`: {e}", path.display()),
                 )
@@ -90,7 +90,7 @@ pub fn load_source(
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
             .unwrap_or_else(|_| {
                 Loaded::failure(
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     "cannot start the evaluation thread",
                     "free some memory and retry",
                 )

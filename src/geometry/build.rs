@@ -1,4 +1,4 @@
-//! IR objects → prepared [`Node`]s: shape checks, transforms, materials, mesh loading with
+//! IR objects → prepared [`Primitive`]s: shape checks, transforms, materials, mesh loading with
 //! instancing (one `Arc` per file and smoothing), and diagnostics for everything that cannot
 //! be drawn.
 
@@ -6,11 +6,9 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use glam::DAffine3;
-
-use super::node::{Geom, MeshRef, Node};
+use super::primitive::{Geom, MeshRef, Primitive};
 use super::{
-    aabox::Cuboid,
+    cuboid::Cuboid,
     blob::Blob,
     cone::Cone,
     cylinder::Cylinder,
@@ -64,7 +62,7 @@ impl Builder {
     }
 
     /// Prepares one object (and its CSG children); `None` after recording an error.
-    pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Node> {
+    pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Primitive> {
         let material = o.material.unwrap_or(inherited);
         let t = &o.transform;
         let det = t.matrix3.determinant();
@@ -90,7 +88,7 @@ impl Builder {
             return None;
         }
         let geom = self.geom(o, material)?;
-        Some(Node::new(geom, *t, material))
+        Some(Primitive::new(geom, *t, material))
     }
 
     fn degenerate(&mut self, o: &Object, why: &str) -> Option<Geom> {
@@ -367,16 +365,4 @@ pub fn validate_scene_geometry(scene: &Scene) -> Diagnostics {
         b.object(o, fallback);
     }
     b.diagnostics
-}
-
-/// Whether `t` maps space onto space (for callers checking one transform).
-pub fn is_invertible(t: &DAffine3) -> bool {
-    let det = t.matrix3.determinant();
-    let s = t
-        .matrix3
-        .x_axis
-        .length()
-        .max(t.matrix3.y_axis.length())
-        .max(t.matrix3.z_axis.length());
-    det.is_finite() && det.abs() > 1e-12 * s * s * s
 }

@@ -8,7 +8,7 @@
 //! triangles) cannot corrupt the classification.
 
 use super::Ray;
-use super::node::{GeoHit, Node, NodeCrossing};
+use super::primitive::{GeoHit, Primitive, PrimitiveCrossing};
 use crate::ir::CsgOp;
 
 /// Combines operand memberships under `op` (for `Difference` the first is the base).
@@ -21,8 +21,8 @@ pub fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
 }
 
 /// The node's own boundary crossings along the whole line, in order.
-pub fn crossings(op: CsgOp, children: &[Node], ray: &Ray, out: &mut Vec<NodeCrossing>) {
-    let mut all: Vec<(usize, NodeCrossing)> = Vec::new();
+pub fn crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+    let mut all: Vec<(usize, PrimitiveCrossing)> = Vec::new();
     let mut tmp = Vec::new();
     for (i, c) in children.iter().enumerate() {
         tmp.clear();
@@ -42,7 +42,7 @@ pub fn crossings(op: CsgOp, children: &[Node], ray: &Ray, out: &mut Vec<NodeCros
                 hit.normal = -hit.normal;
                 hit.geometric_normal = -hit.geometric_normal;
             }
-            out.push(NodeCrossing { hit, entering: now });
+            out.push(PrimitiveCrossing { hit, entering: now });
             inside = now;
         }
     }
@@ -52,7 +52,7 @@ pub fn crossings(op: CsgOp, children: &[Node], ray: &Ray, out: &mut Vec<NodeCros
 /// transparent materials); merge, intersection and difference show only the result's boundary.
 pub fn intersect(
     op: CsgOp,
-    children: &[Node],
+    children: &[Primitive],
     ray: &Ray,
     t_min: f64,
     t_max: f64,

@@ -4,22 +4,21 @@
 //! object's affine transform (normals by the inverse transpose).
 
 pub mod aabb;
-#[path = "box.rs"]
-pub mod aabox;
 pub mod blob;
 pub mod build;
 pub mod bvh;
 mod bvh_traverse;
 pub mod cone;
 pub mod csg;
+pub mod cuboid;
 pub mod cylinder;
 pub mod disk;
 pub mod mesh;
 pub mod mesh_cache;
 pub mod mesh_error;
-pub mod node;
 pub mod plane;
 pub mod polygon;
+pub mod primitive;
 pub mod quad;
 pub mod quartic;
 pub mod ray;

@@ -9,7 +9,7 @@ use obvhs::BvhBuildParams;
 
 use super::build::Builder;
 use super::bvh::{Bvh, BvhRay, to_f32_box};
-use super::node::{GeoHit, Geom, Node};
+use super::primitive::{GeoHit, Geom, Primitive};
 use super::{Aabb, Ray, sphere};
 use crate::diag::Diagnostic;
 use crate::ir::{Material, MaterialId, Scene};
@@ -74,7 +74,7 @@ struct LooseSphere {
 pub struct World {
     /// Whether hits need surface coordinates (textures, bumps, hatching); see [`World::need_uv`].
     need_uv: bool,
-    nodes: Vec<Node>,
+    nodes: Vec<Primitive>,
     /// Scene object index of each node.
     object_of: Vec<u32>,
     /// Top level over the bounded nodes (`None` when a linear scan is as fast).
@@ -158,7 +158,7 @@ impl World {
             loose.sort_unstable();
             None
         };
-        stats.memory_bytes += nodes.len() * std::mem::size_of::<Node>();
+        stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>();
         stats.build_time = start.elapsed();
         let (spheres, loose): (Vec<u32>, Vec<u32>) = loose
             .into_iter()
@@ -345,7 +345,7 @@ impl World {
     }
 }
 
-fn instanced_triangles(n: &Node) -> usize {
+fn instanced_triangles(n: &Primitive) -> usize {
     match &n.geom {
         Geom::Mesh(m) => m.data.triangle_count(),
         Geom::Csg { children, .. } => children.iter().map(instanced_triangles).sum(),

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
 use super::{
-    Aabb, Crossing, Hit, Ray, aabox::Cuboid, blob::Blob, cone::Cone, csg, cylinder::Cylinder,
+    Aabb, Crossing, Hit, Ray, cuboid::Cuboid, blob::Blob, cone::Cone, csg, cylinder::Cylinder,
     disk::Disk, mesh::MeshData, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
     triangle::Triangle,
 };
@@ -31,7 +31,7 @@ pub struct GeoHit {
 
 /// A boundary crossing of a solid node (for CSG).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NodeCrossing {
+pub struct PrimitiveCrossing {
     /// The hit.
     pub hit: GeoHit,
     /// Outside → inside.
@@ -89,7 +89,7 @@ pub enum Geom {
         /// The operation.
         op: CsgOp,
         /// Operands.
-        children: Vec<Node>,
+        children: Vec<Primitive>,
     },
 }
 
@@ -106,7 +106,7 @@ pub struct Placement {
 
 /// A prepared object.
 #[derive(Clone, Debug)]
-pub struct Node {
+pub struct Primitive {
     /// Geometry in object space.
     pub geom: Geom,
     /// `None` for the identity.
@@ -117,9 +117,9 @@ pub struct Node {
     pub bounds: Aabb,
 }
 
-impl Node {
+impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
-    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Node {
+    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();
         let placement = (transform != DAffine3::IDENTITY).then(|| Placement {
             to_object: transform.inverse(),
@@ -130,7 +130,7 @@ impl Node {
             None => local,
             Some(p) => local.transformed(&p.to_parent),
         };
-        Node {
+        Primitive {
             geom,
             placement,
             material,
@@ -280,7 +280,7 @@ impl Node {
             Geom::Cylinder(c) => c.is_closed(),
             Geom::Cone(c) => c.is_closed(),
             Geom::Mesh(m) => m.data.is_closed(),
-            Geom::Csg { children, .. } => children.iter().all(Node::is_solid),
+            Geom::Csg { children, .. } => children.iter().all(Primitive::is_solid),
             Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
         }
     }
@@ -301,7 +301,7 @@ impl Node {
     }
 
     /// Every boundary crossing along the whole line of `ray`, sorted by `t` (solids only).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<NodeCrossing>) {
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
         if self.bounds.is_empty()
             || (self.bounds.is_finite()
                 && self
@@ -317,7 +317,7 @@ impl Node {
             let mut tmp = Vec::new();
             f(&mut tmp);
             for c in tmp {
-                out.push(NodeCrossing {
+                out.push(PrimitiveCrossing {
                     hit: self.out(self.leaf(&r, c.hit)),
                     entering: c.entering,
                 });
@@ -346,7 +346,7 @@ impl Node {
                 let mut hits = Vec::new();
                 m.data.all_hits(&r, &mut hits);
                 for (h, entering) in hits {
-                    out.push(NodeCrossing {
+                    out.push(PrimitiveCrossing {
                         hit: self.out(self.mesh_hit(&r, m, h)),
                         entering,
                     });
@@ -355,7 +355,7 @@ impl Node {
             Geom::Csg { op, children } => {
                 let mut tmp = Vec::new();
                 csg::crossings(*op, children, &r, &mut tmp);
-                out.extend(tmp.into_iter().map(|c| NodeCrossing {
+                out.extend(tmp.into_iter().map(|c| PrimitiveCrossing {
                     hit: self.out(c.hit),
                     entering: c.entering,
                 }));
