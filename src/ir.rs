@@ -436,6 +436,25 @@ pub struct RenderSettings {
     pub output: Option<PathBuf>,
 }
 
+impl RenderSettings {
+    /// The course formats' defaults (COURSE.md): no shadows and no bounces unless the file asks,
+    /// one sample per pixel. The same as [`RenderSettings::default`], the IR's neutral settings.
+    pub fn course_defaults() -> RenderSettings {
+        RenderSettings::default()
+    }
+
+    /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
+    /// bounces, so a glass or mirror material shows without further settings.
+    pub fn language_defaults() -> RenderSettings {
+        RenderSettings {
+            shadows: true,
+            max_depth: 5,
+            ..RenderSettings::course_defaults()
+        }
+    }
+}
+
+/// The IR's neutral settings, which are the course defaults: nothing costly unless asked for.
 impl Default for RenderSettings {
     fn default() -> RenderSettings {
         RenderSettings {

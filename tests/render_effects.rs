@@ -5,6 +5,7 @@ mod common;
 use common::{empty, light, mat, scene01_shadows, sphere};
 use glam::{DAffine3, DVec3};
 use proptest::prelude::*;
+use rtc::ir::limits::MAX_DEPTH;
 use rtc::ir::{LightKind, Material, Object, Sampling, Scene, Shape, Texture};
 use rtc::render::{RenderOptions, render, render_film};
 use rtc::source::Span;
@@ -310,7 +311,7 @@ fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
 
 #[test]
 fn deep_recursion_between_mirrors_and_oversized_settings() {
-    // Two mirrors facing each other: the ray along the axis bounces the full 1000 times
+    // Two mirrors facing each other: the ray along the axis bounces the full MAX_DEPTH times
     // (curved mirrors send the off-axis rays away sooner).
     let mut s = empty([0.0, 0.0, 0.0]);
     s.lights.push(light([0.0, 50.0, 0.0], [1.0, 1.0, 1.0]));
@@ -320,13 +321,17 @@ fn deep_recursion_between_mirrors_and_oversized_settings() {
     };
     sphere(&mut s, [-200.0, 0.0, 0.0], 100.0, mirror());
     sphere(&mut s, [200.0, 0.0, 0.0], 100.0, mirror());
-    s.settings.max_depth = 1000;
+    s.settings.max_depth = MAX_DEPTH;
     tiny_view(&mut s, DVec3::ZERO, DVec3::X, 1e-6);
     let film = render_film(&s, &opts(2)).unwrap();
-    assert!(film.stats.secondary_rays >= 1000, "{:?}", film.stats);
+    assert!(
+        film.stats.secondary_rays >= u64::from(MAX_DEPTH),
+        "{:?}",
+        film.stats
+    );
     let code = |s: &Scene| render(s, &opts(1)).unwrap_err().code;
     let mut deep = s.clone();
-    deep.settings.max_depth = 1001;
+    deep.settings.max_depth = MAX_DEPTH + 1;
     assert_eq!(code(&deep), "rtc::render::limit");
     let mut huge = s.clone();
     huge.camera.width = u32::MAX;

@@ -13,8 +13,6 @@ use crate::source::Span;
 
 /// Largest magnitude accepted for any number; beyond it f64 rendering math loses all precision.
 pub const MAX_ABS: f64 = 1e12;
-/// Largest image side accepted from `viewSize`.
-pub const MAX_VIEW: u32 = 16384;
 
 /// Reports NaN, infinities and absurd magnitudes; `text` is the number as written.
 pub fn check_number(
@@ -243,7 +241,7 @@ pub struct Draft {
 }
 
 /// The parts of a [`Scene`] other than the camera and lights.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct SceneParts {
     /// Materials, one per object.
     pub materials: Vec<Material>,
@@ -253,6 +251,17 @@ pub struct SceneParts {
     pub objects: Vec<Object>,
     /// Settings.
     pub settings: RenderSettings,
+}
+
+impl Default for SceneParts {
+    fn default() -> SceneParts {
+        SceneParts {
+            materials: Vec::new(),
+            textures: Vec::new(),
+            objects: Vec::new(),
+            settings: RenderSettings::course_defaults(),
+        }
+    }
 }
 
 impl SceneParts {

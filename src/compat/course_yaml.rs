@@ -11,6 +11,7 @@ use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{
     DepthRange, GoochParams, Light, LightKind, RenderMode, Sampling, Scene, ShadingModel,
 };
+use crate::ir::limits::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::source::{FileId, Span};
 
 /// Every top-level key the course files use (official spellings).
@@ -27,9 +28,6 @@ const TOP_KEYS: &[&str] = &[
     "Models",
 ];
 
-/// Largest accepted reflection depth and supersampling factor (beyond them a render never ends).
-const MAX_DEPTH: u32 = 1000;
-const MAX_FACTOR: u32 = 64;
 
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
 pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> Option<Scene> {
@@ -190,8 +188,8 @@ fn view_size(node: &YamlNode, diags: &mut Diagnostics) -> Option<[u32; 2]> {
         );
         return None;
     }
-    let w = val::integer(&items[0], "the image width", 1, course::MAX_VIEW, diags);
-    let h = val::integer(&items[1], "the image height", 1, course::MAX_VIEW, diags);
+    let w = val::integer(&items[0], "the image width", 1, MAX_IMAGE_SIDE, diags);
+    let h = val::integer(&items[1], "the image height", 1, MAX_IMAGE_SIDE, diags);
     Some([w?, h?])
 }
 
@@ -237,9 +235,9 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
         }
     }
     if let Some(e) = top.get(&["MaxRecursionDepth"], diags)
-        && let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, MAX_DEPTH, diags)
+        && let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, u32::MAX, diags)
     {
-        s.max_depth = d;
+        s.max_depth = capped_depth(d, e.value.span, diags);
     }
     if let Some(e) = top.get(&["SuperSampling"], diags)
         && let Some(factor) = super_sampling(e.value, diags)
@@ -252,6 +250,24 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
     if gooch_mode.is_some() {
         s.shading = ShadingModel::Gooch(params.unwrap_or_default());
     }
+}
+
+/// A depth past [`MAX_DEPTH`] is read as the cap, with a warning: course files were written for
+/// renderers without one, and their images do not change past a few bounces.
+fn capped_depth(depth: u32, span: Span, diags: &mut Diagnostics) -> u32 {
+    if depth <= MAX_DEPTH {
+        return depth;
+    }
+    diags.push(
+        Diagnostic::warning(
+            "rtc::compat::capped",
+            span,
+            format!("`MaxRecursionDepth` {depth} is more than rtc traces; it traces {MAX_DEPTH}"),
+        )
+        .with_label(format!("read as {MAX_DEPTH}"))
+        .with_help(format!("write `MaxRecursionDepth: {MAX_DEPTH}` or less")),
+    );
+    MAX_DEPTH
 }
 
 fn spelling(key: &YamlNode, official: &str, diags: &mut Diagnostics) {
@@ -339,7 +355,7 @@ fn render_mode(node: &YamlNode, diags: &mut Diagnostics) -> Option<Mode> {
 
 fn super_sampling(node: &YamlNode, diags: &mut Diagnostics) -> Option<u32> {
     if node.scalar().is_some() {
-        let f = val::integer(node, "`SuperSampling`", 1, MAX_FACTOR, diags)?;
+        let f = val::integer(node, "`SuperSampling`", 1, MAX_PIXEL_SAMPLES_PER_AXIS, diags)?;
         diags.push(
             Diagnostic::warning(
                 "rtc::yaml::spelling",
@@ -354,7 +370,7 @@ fn super_sampling(node: &YamlNode, diags: &mut Diagnostics) -> Option<u32> {
     let mut m = MapView::new(node, "`SuperSampling`", diags)?;
     let factor = m
         .require(&["factor"], "`SuperSampling`", "factor: 4", diags)
-        .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_FACTOR, diags));
+        .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_PIXEL_SAMPLES_PER_AXIS, diags));
     if let Some(p) = m.get(&["pattern"], diags)
         && !p
             .value

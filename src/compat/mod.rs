@@ -10,7 +10,7 @@
 //! expected_number, extra_number, truncated, unclosed, no_material, duplicate_eye}`;
 //! `rtc::yaml::{syntax, empty, extra_document, too_large, type, arity, missing_key, duplicate_key,
 //! unknown_key, spelling, unknown_value, unknown_object, unused}`; shared `rtc::compat::{not_finite,
-//! out_of_range, degenerate, missing_file, no_camera, camera_override, encoding}`.
+//! out_of_range, degenerate, missing_file, no_camera, camera_override, encoding, capped}`.
 
 pub mod course;
 pub mod course_yaml;

@@ -258,7 +258,11 @@ pub fn integer(
             node.span,
             text,
             what,
-            &format!("between {min} and {max}"),
+            &if max == u32::MAX {
+                format!("at least {min}")
+            } else {
+                format!("between {min} and {max}")
+            },
         ));
         return None;
     }

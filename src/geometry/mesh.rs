@@ -22,9 +22,7 @@ pub const CREASE_ANGLE_DEG: f64 = 60.0;
 /// tracing speed), because there the build dominates the time to first ray.
 pub const LARGE_MESH: usize = 300_000;
 
-/// Most triangles one mesh file may have (about 7 GB of geometry and BVH; the BVH itself indexes
-/// up to 2²⁶ primitives).
-pub const MAX_TRIANGLES: usize = 50_000_000;
+use crate::ir::limits::MAX_TRIANGLES;
 const _: () = assert!(MAX_TRIANGLES <= super::bvh::MAX_PRIMITIVES);
 
 /// Most triangles in one BVH leaf.

@@ -12,6 +12,9 @@ use crate::ir::{
     AmbientConvention, Color, LightKind, Material, MaterialId, RenderMode, Sampling, Scene,
     ShadingModel,
 };
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, MAX_PIXELS,
+};
 use crate::opt::Effects;
 
 /// Relative size of the offset along the normal that starts shadow, reflected and refracted rays,
@@ -20,14 +23,6 @@ use crate::opt::Effects;
 /// from millimetre scenes to the astronomical blue-earth scene (|P| ≈ 1.5e8 → 15 units).
 pub const EPS_REL: f64 = 1e-9;
 
-/// Largest reflection/refraction depth (the course front end accepts up to 1000 as well); the
-/// render threads get a stack large enough for it.
-pub const MAX_DEPTH: u32 = 1000;
-/// Largest samples per axis (pixel grids and area lights): the Sobol' sampler indexes at most
-/// 2^16 samples, and beyond this a render never ends anyway.
-pub const MAX_SAMPLES_PER_AXIS: u32 = 256;
-/// Largest image, in pixels (the film holds 24 bytes per pixel).
-pub const MAX_PIXELS: u64 = 1 << 27;
 
 /// A light prepared for shading: sample positions are generated per shading point.
 #[derive(Clone, Copy, Debug)]
@@ -134,7 +129,7 @@ impl<'a> Plan<'a> {
                 color: l.color,
                 samples: match l.kind {
                     LightKind::Point { .. } => 1,
-                    // Both at most MAX_SAMPLES_PER_AXIS (check_limits), so no overflow.
+                    // Both at most MAX_LIGHT_SAMPLES_PER_AXIS (check_limits), so no overflow.
                     LightKind::Area { samples, .. } => samples[0].max(1) * samples[1].max(1),
                 },
             })
@@ -206,26 +201,26 @@ fn check_limits(scene: &Scene) -> Result<(), Diagnostic> {
         Sampling::Grid { factor } => factor,
         Sampling::Adaptive { min, max, .. } => min.max(max),
     };
-    if factor > MAX_SAMPLES_PER_AXIS {
+    if factor > MAX_PIXEL_SAMPLES_PER_AXIS {
         return too_big(
-            format!("{factor} samples per axis is more than {MAX_SAMPLES_PER_AXIS}"),
-            format!("use at most {MAX_SAMPLES_PER_AXIS} samples per axis"),
+            format!("{factor} samples per axis is more than {MAX_PIXEL_SAMPLES_PER_AXIS}"),
+            format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
         );
     }
     for l in &scene.lights {
         if let LightKind::Area { samples, .. } = l.kind
-            && samples.iter().any(|n| *n > MAX_SAMPLES_PER_AXIS)
+            && samples.iter().any(|n| *n > MAX_LIGHT_SAMPLES_PER_AXIS)
         {
             return Err(Diagnostic::error(
                 "rtc::render::limit",
                 l.span,
                 format!(
-                    "more than {MAX_SAMPLES_PER_AXIS} samples along an edge of this area light"
+                    "more than {MAX_LIGHT_SAMPLES_PER_AXIS} samples along an edge of this area light"
                 ),
             )
             .with_label("this light")
             .with_help(format!(
-                "use at most {MAX_SAMPLES_PER_AXIS} samples per edge"
+                "use at most {MAX_LIGHT_SAMPLES_PER_AXIS} samples per edge"
             )));
         }
     }

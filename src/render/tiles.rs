@@ -14,7 +14,7 @@ use crate::ir::Color;
 /// Rows per task: small enough to balance load over the cores, large enough to amortise scheduling.
 const BAND: usize = 4;
 
-/// Stack per render thread: Whitted recursion up to `plan::MAX_DEPTH` bounces needs more than
+/// Stack per render thread: Whitted recursion up to `ir::limits::MAX_DEPTH` bounces needs more than
 /// the default 2 MiB (it is virtual memory; only what is touched is used).
 const STACK_BYTES: usize = 64 << 20;
 

@@ -11,6 +11,9 @@ use crate::eval::interp::Interp;
 use crate::eval::types;
 use crate::eval::value::{RenderVal, Value};
 use crate::ir;
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_IMAGE_SIDE, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS,
+};
 use crate::source::Span;
 
 /// Scene-level constructors.
@@ -82,8 +85,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         None => (640, 480),
         Some((v, sp)) => match &v {
             Value::List(l) if l.len() == 2 => (
-                int_in(it, &l[0], sp, "resolution", 1, 16384)?,
-                int_in(it, &l[1], sp, "resolution", 1, 16384)?,
+                int_in(it, &l[0], sp, "resolution", 1, MAX_IMAGE_SIDE.into())?,
+                int_in(it, &l[1], sp, "resolution", 1, MAX_IMAGE_SIDE.into())?,
             ),
             _ => {
                 return Err(error(
@@ -172,11 +175,11 @@ fn area_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let samples = match p.get("samples") {
         None => [4, 4],
         Some((Value::List(l), sp)) if l.len() == 2 => [
-            int_in(it, &l[0], sp, "samples", 1, 1024)? as u32,
-            int_in(it, &l[1], sp, "samples", 1, 1024)? as u32,
+            int_in(it, &l[0], sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32,
+            int_in(it, &l[1], sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32,
         ],
         Some((Value::Int(n), sp)) => {
-            let n = int_in(it, &Value::Int(n), sp, "samples", 1, 1024)? as u32;
+            let n = int_in(it, &Value::Int(n), sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32;
             [n, n]
         }
         Some((other, sp)) => {
@@ -224,12 +227,12 @@ fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max", "threshold"], a)?;
     let min = match p.get("min") {
-        Some((v, sp)) => int_in(it, &v, sp, "min", 1, 64)?,
+        Some((v, sp)) => int_in(it, &v, sp, "min", 1, MAX_PIXEL_SAMPLES_PER_AXIS.into())?,
         None => 1,
     };
     let max = match p.get("max") {
-        Some((v, sp)) => int_in(it, &v, sp, "max", min, 64)?,
-        None => (min * 4).min(64),
+        Some((v, sp)) => int_in(it, &v, sp, "max", min, MAX_PIXEL_SAMPLES_PER_AXIS.into())?,
+        None => (min * 4).min(MAX_PIXEL_SAMPLES_PER_AXIS.into()),
     };
     let (threshold, ts) = p.num_or(it, "threshold", 0.02)?;
     positive("threshold", threshold, ts)?;
@@ -272,11 +275,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "material",
     ];
     let mut p = Params::new(s, names, a)?;
-    let mut st = ir::RenderSettings {
-        shadows: true,
-        max_depth: 5,
-        ..ir::RenderSettings::default()
-    };
+    let mut st = ir::RenderSettings::language_defaults();
     if let Some((v, sp)) = p.get("shading") {
         st.shading = match v {
             Value::Shading(m) => m,
@@ -309,15 +308,15 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             }
         };
     }
-    st.shadows = p.bool_or(it, "shadows", true)?;
+    st.shadows = p.bool_or(it, "shadows", st.shadows)?;
     if let Some((v, sp)) = p.get("max_depth") {
-        st.max_depth = int_in(it, &v, sp, "max_depth", 0, 64)? as u32;
+        st.max_depth = int_in(it, &v, sp, "max_depth", 0, MAX_DEPTH.into())? as u32;
     }
     if let Some((v, sp)) = p.get("supersampling") {
         st.sampling = match v {
             Value::Sampling(x) => x,
             Value::Int(_) => ir::Sampling::Grid {
-                factor: int_in(it, &v, sp, "supersampling", 1, 64)? as u32,
+                factor: int_in(it, &v, sp, "supersampling", 1, MAX_PIXEL_SAMPLES_PER_AXIS.into())? as u32,
             },
             other => {
                 return Err(enum_mismatch(
