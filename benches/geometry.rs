@@ -215,7 +215,7 @@ fn median(mut v: Vec<Duration>) -> Duration {
 
 fn build(path: &Path, smooth: bool) -> (Duration, World) {
     // Load afresh each time: the process-wide mesh cache would make repeats free.
-    rtc::geometry::mesh_cache::clear();
+    rtc::assets::clear_cache();
     let start = Instant::now();
     let w = World::build(&scene_of(path, smooth), MaterialId(0)).expect("model loads");
     (start.elapsed(), w)

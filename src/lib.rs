@@ -8,6 +8,7 @@
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
 #![allow(clippy::result_large_err)]
 
+pub mod assets;
 pub mod check;
 pub mod compat;
 pub mod diag;

@@ -11,9 +11,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use rtc::diag::IO_ERROR;
 use rtc::diag::{Diagnostic, Diagnostics};
 use rtc::eval::EvalOptions;
-use rtc::diag::IO_ERROR;
 use rtc::ir::Loaded;
 use rtc::ir::Scene;
 use rtc::source::SourceMap;

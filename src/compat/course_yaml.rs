@@ -5,13 +5,13 @@ use std::path::Path;
 
 use crate::compat::course::{self, Draft};
 use crate::compat::yaml_objects;
-use crate::compat::yaml_tree::{self, YamlNode, YamlKind};
+use crate::compat::yaml_tree::{self, YamlKind, YamlNode};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
+use crate::ir::limits::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::ir::{
     DepthRange, GoochParams, Light, LightKind, RenderMode, Sampling, Scene, ShadingModel,
 };
-use crate::ir::limits::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::source::{FileId, Span};
 
 /// Every top-level key the course files use (official spellings).
@@ -27,7 +27,6 @@ const TOP_KEYS: &[&str] = &[
     "GoochParameters",
     "Models",
 ];
-
 
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
 pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> Option<Scene> {
@@ -355,7 +354,13 @@ fn render_mode(node: &YamlNode, diags: &mut Diagnostics) -> Option<Mode> {
 
 fn super_sampling(node: &YamlNode, diags: &mut Diagnostics) -> Option<u32> {
     if node.scalar().is_some() {
-        let f = val::integer(node, "`SuperSampling`", 1, MAX_PIXEL_SAMPLES_PER_AXIS, diags)?;
+        let f = val::integer(
+            node,
+            "`SuperSampling`",
+            1,
+            MAX_PIXEL_SAMPLES_PER_AXIS,
+            diags,
+        )?;
         diags.push(
             Diagnostic::warning(
                 "rtc::yaml::spelling",

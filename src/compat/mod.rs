@@ -4,13 +4,15 @@
 //! Mapping decisions (COURSE.md §4): the course camera ([`crate::ir::Projection::Course`]; no
 //! `Camera` means eye = `Eye`, centre (200, 200, 0), up +Y, 400×400); `reflect = ks` unless the
 //! file gives `reflect`; ambient per light; textured spheres sit at the origin with
-//! [`course::sphere_orientation`]; assets resolve next to the scene, then in the working directory.
+//! [`course::sphere_orientation`]; assets resolve in the asset service's one search order
+//! (`assets::search`).
 //!
 //! Diagnostic codes: `rtc::io` (unreadable file); `rtc::in::{unknown_record, expected_record,
 //! expected_number, extra_number, truncated, unclosed, no_material, duplicate_eye}`;
 //! `rtc::yaml::{syntax, empty, extra_document, too_large, type, arity, missing_key, duplicate_key,
 //! unknown_key, spelling, unknown_value, unknown_object, unused}`; shared `rtc::compat::{not_finite,
-//! out_of_range, degenerate, missing_file, no_camera, camera_override, encoding, capped}`.
+//! out_of_range, degenerate, no_camera, camera_override, encoding, capped}`; the asset
+//! service's `rtc::asset::missing` for a texture or mesh file that is not found.
 
 pub mod course;
 pub mod course_yaml;

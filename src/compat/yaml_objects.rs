@@ -7,7 +7,7 @@ use std::path::Path;
 use glam::{DAffine3, DVec3};
 
 use crate::compat::course::{self, CourseMaterial, SceneParts};
-use crate::compat::yaml_tree::{YamlNode, YamlKind};
+use crate::compat::yaml_tree::{YamlKind, YamlNode};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{Mapping, MaterialId, Object, Shape, Texture};
@@ -310,13 +310,7 @@ fn mesh(
     let file = m.require(&["file", "filename"], "this mesh", "file: model.obj", diags);
     let path = file.and_then(|e| {
         let name = val::string(e.value, "`file`", diags)?;
-        match course::resolve_asset(scene, name) {
-            Ok(p) => Some(p),
-            Err(tried) => {
-                diags.push(course::missing_asset(e.value.span, name, "mesh", &tried));
-                None
-            }
-        }
+        course::find_asset(scene, name, e.value.span, "mesh", diags)
     });
     let position = match m.get(&["position"], diags) {
         Some(e) => val::triple(e.value, "`position`", Triple::Point, diags),
@@ -421,17 +415,12 @@ fn material(
     }
     let texture = texture.and_then(|e| {
         let name = val::string(e.value, "`texture`", diags)?;
-        match course::resolve_asset(scene, name) {
-            Ok(path) => Some(parts.add_texture(Texture::Image {
-                path,
-                mapping,
-                span: e.value.span,
-            })),
-            Err(tried) => {
-                diags.push(course::missing_asset(e.value.span, name, "texture", &tried));
-                None
-            }
-        }
+        let path = course::find_asset(scene, name, e.value.span, "texture", diags)?;
+        Some(parts.add_texture(Texture::Image {
+            path,
+            mapping,
+            span: e.value.span,
+        }))
     });
     let coef = |m: &mut MapView<'_>, name: &str, example: &str, diags: &mut Diagnostics| {
         m.require(&[name], "the material", example, diags)

@@ -160,7 +160,13 @@ fn unclosed_bracket(text: &str) -> Option<usize> {
 
 enum Open {
     Seq(Vec<YamlNode>, Span, usize, bool),
-    Map(Vec<(YamlNode, YamlNode)>, Option<YamlNode>, Span, usize, bool),
+    Map(
+        Vec<(YamlNode, YamlNode)>,
+        Option<YamlNode>,
+        Span,
+        usize,
+        bool,
+    ),
 }
 
 struct Builder<'t> {

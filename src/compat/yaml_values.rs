@@ -4,7 +4,7 @@
 use glam::DVec3;
 
 use crate::compat::course;
-use crate::compat::yaml_tree::{YamlNode, YamlKind};
+use crate::compat::yaml_tree::{YamlKind, YamlNode};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::source::Span;
 

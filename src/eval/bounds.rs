@@ -38,20 +38,11 @@ fn disk_extent(normal: DVec3, r: f64) -> DVec3 {
     r * (DVec3::ONE - normal * normal).max(DVec3::ZERO).powf(0.5)
 }
 
-/// A mesh's bounds, from the process-wide mesh cache (the render then reuses the load).
+/// A mesh's vertex bounds, through the asset service (which keeps the load for the render; no
+/// BVH is built to answer).
 fn mesh_bounds(path: &std::path::Path, smooth: bool, span: Span) -> R<Bb> {
-    let mesh = crate::geometry::mesh_cache::load(path, smooth).map_err(|e| {
-        let at = e.line.map(|l| format!(" (line {l})")).unwrap_or_default();
-        error(
-            "rtc::asset::invalid",
-            span,
-            format!("cannot read mesh `{}`: {}{at}", path.display(), e.message),
-        )
-        .with_label("this OBJ file could not be loaded")
-        .with_help("check that the file is a valid Wavefront OBJ with at least one face")
-    })?;
-    let b = mesh.bounds();
-    Ok((b.min, b.max))
+    let mesh = crate::assets::mesh(path, smooth).map_err(|e| e.diagnostic(span, path))?;
+    Ok((mesh.min, mesh.max))
 }
 
 fn unbounded(span: Span) -> super::error::EvalError {

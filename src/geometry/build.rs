@@ -8,18 +8,19 @@ use std::sync::Arc;
 
 use super::primitive::{Geom, MeshRef, Primitive};
 use super::{
-    cuboid::Cuboid,
     blob::Blob,
     cone::Cone,
+    cuboid::Cuboid,
     cylinder::Cylinder,
     disk::Disk,
-    mesh::MeshData,
+    mesh::{Mesh, MeshParts},
     polygon::{Polygon, PolygonError},
     quad::Quad,
     torus::Torus,
     triangle::Triangle,
 };
-use crate::diag::{Diagnostic, Diagnostics, Severity};
+use crate::assets::{self, MeshAsset};
+use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Material, MaterialId, Object, Scene, Shape};
 
 /// Prepares objects, collecting every problem instead of stopping at the first.
@@ -30,7 +31,7 @@ pub struct Builder {
     pub extra_materials: Vec<Material>,
     /// Meshes this world placed already: a file placed N times is asked of the process-wide
     /// cache once, and its load warnings are reported once.
-    cache: HashMap<(PathBuf, bool), Arc<MeshData>>,
+    cache: HashMap<(PathBuf, bool), (Arc<MeshAsset>, Arc<Mesh>)>,
     mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
     /// Findings so far.
     pub diagnostics: Diagnostics,
@@ -49,7 +50,7 @@ impl Builder {
     }
 
     /// Distinct meshes loaded so far.
-    pub fn meshes(&self) -> impl Iterator<Item = &Arc<MeshData>> {
+    pub fn meshes(&self) -> impl Iterator<Item = &(Arc<MeshAsset>, Arc<Mesh>)> {
         self.cache.values()
     }
 
@@ -212,8 +213,8 @@ impl Builder {
                 smooth,
                 use_mtl,
             } => {
-                let data = self.mesh(o, path, *smooth)?;
-                let mtl = (*use_mtl && !data.materials.is_empty()).then(|| self.mtl(&data));
+                let (asset, data) = self.mesh(o, path, *smooth)?;
+                let mtl = (*use_mtl && !asset.materials.is_empty()).then(|| self.mtl(&asset));
                 Geom::Mesh(MeshRef { data, mtl })
             }
             Shape::Csg { op, children } => {
@@ -221,7 +222,7 @@ impl Builder {
                 let mut ok = true;
                 for c in children {
                     match self.object(c, material) {
-                        Some(n) if !n.is_solid() => {
+                        Some(_) if !solid(c) => {
                             ok = false;
                             let what = match &c.shape {
                                 Shape::Mesh { path, .. } => {
@@ -275,14 +276,19 @@ impl Builder {
         Some(g)
     }
 
-    fn mesh(&mut self, o: &Object, path: &std::path::Path, smooth: bool) -> Option<Arc<MeshData>> {
+    fn mesh(
+        &mut self,
+        o: &Object,
+        path: &std::path::Path,
+        smooth: bool,
+    ) -> Option<(Arc<MeshAsset>, Arc<Mesh>)> {
         let key = (path.to_path_buf(), smooth);
         if let Some(m) = self.cache.get(&key) {
             return Some(m.clone());
         }
-        match super::mesh_cache::load(path, smooth) {
-            Ok(m) => {
-                for w in &m.warnings {
+        match assets::mesh(path, smooth) {
+            Ok(asset) => {
+                for w in &asset.warnings {
                     self.diagnostics.push(
                         Diagnostic::warning(
                             "rtc::mesh::missing_mtl",
@@ -292,53 +298,23 @@ impl Builder {
                         .with_label("drawn with the object's material"),
                     );
                 }
-                self.cache.insert(key, m.clone());
-                Some(m)
-            }
-            Err(e) if e.missing => {
-                self.error(
-                    o,
-                    "rtc::mesh::not_found",
-                    format!("cannot read the mesh file `{}`", path.display()),
-                    "this mesh",
-                    "check the path; it is resolved relative to the scene file",
-                );
-                None
-            }
-            Err(e) if e.too_large => {
-                self.error(
-                    o,
-                    "rtc::mesh::too_large",
-                    format!(
-                        "the mesh file `{}` is too large: {}",
-                        path.display(),
-                        e.message
-                    ),
-                    "this mesh",
-                    "simplify the model or split it into several OBJ files",
-                );
-                None
+                let mesh = Arc::new(Mesh::build(MeshParts {
+                    triangles: &asset.triangles,
+                    normals: &asset.normals,
+                    uvs: &asset.uvs,
+                    material_of: &asset.material_of,
+                }));
+                self.cache.insert(key, (asset.clone(), mesh.clone()));
+                Some((asset, mesh))
             }
             Err(e) => {
-                let at = e.line.map(|l| format!(" at line {l}")).unwrap_or_default();
-                let mut d = Diagnostic::new(
-                    Severity::Error,
-                    "rtc::mesh::malformed",
-                    Some(o.span),
-                    format!("the mesh file `{}` is malformed{at}", path.display()),
-                )
-                .with_label("this mesh")
-                .with_note(e.message.clone());
-                if let Some(l) = e.line {
-                    d = d.with_note(format!("{}:{l}", path.display()));
-                }
-                self.diagnostics.push(d);
+                self.diagnostics.push(e.diagnostic(o.span, path));
                 None
             }
         }
     }
 
-    fn mtl(&mut self, data: &MeshData) -> Vec<MaterialId> {
+    fn mtl(&mut self, data: &MeshAsset) -> Vec<MaterialId> {
         if let Some(ids) = self.mtl_ids.get(&data.path) {
             return ids.clone();
         }
@@ -352,6 +328,22 @@ impl Builder {
             .collect();
         self.mtl_ids.insert(data.path.clone(), ids.clone());
         ids
+    }
+}
+
+/// Whether an object is a closed solid (or a half-space), so CSG can classify against it.
+fn solid(o: &Object) -> bool {
+    match &o.shape {
+        Shape::Triangle { .. }
+        | Shape::Quad { .. }
+        | Shape::Polygon { .. }
+        | Shape::Disk { .. } => false,
+        Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
+        Shape::Mesh { path, smooth, .. } => {
+            assets::mesh(path, *smooth).is_ok_and(|m| m.is_closed())
+        }
+        Shape::Csg { children, .. } => children.iter().all(solid),
+        _ => true,
     }
 }
 

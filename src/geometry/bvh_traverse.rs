@@ -4,7 +4,7 @@
 
 use glam::Vec4;
 
-use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, WideNode, WIDTH, leaf_range};
+use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, WIDTH, WideNode, leaf_range};
 
 /// Slab distances are rounded in f32; widening the exit by a few ulps (Ize 2013, 1 + 2γ₃)
 /// keeps a box that the exact ray grazes from being culled. (A negative exit is narrowed

@@ -14,8 +14,6 @@ pub mod cuboid;
 pub mod cylinder;
 pub mod disk;
 pub mod mesh;
-pub mod mesh_cache;
-pub mod mesh_error;
 pub mod plane;
 pub mod polygon;
 pub mod primitive;

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
 use super::{
-    Aabb, Crossing, Hit, Ray, cuboid::Cuboid, blob::Blob, cone::Cone, csg, cylinder::Cylinder,
-    disk::Disk, mesh::MeshData, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
+    Aabb, Crossing, Hit, Ray, blob::Blob, cone::Cone, csg, cuboid::Cuboid, cylinder::Cylinder,
+    disk::Disk, mesh::Mesh, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
     triangle::Triangle,
 };
 use crate::ir::{CsgOp, MaterialId};
@@ -42,7 +42,7 @@ pub struct PrimitiveCrossing {
 #[derive(Clone, Debug)]
 pub struct MeshRef {
     /// The shared data (instanced by path and smoothing).
-    pub data: Arc<MeshData>,
+    pub data: Arc<Mesh>,
     /// Material id of each of the file's MTL materials, when the object uses them.
     pub mtl: Option<Vec<MaterialId>>,
 }
@@ -272,19 +272,6 @@ impl Primitive {
         }
     }
 
-    /// Whether the node is a closed solid (or a half-space), so CSG can classify against it.
-    pub fn is_solid(&self) -> bool {
-        match &self.geom {
-            Geom::Sphere { .. } | Geom::Plane { .. } | Geom::Box(_) => true,
-            Geom::Torus(_) | Geom::Blob(_) => true,
-            Geom::Cylinder(c) => c.is_closed(),
-            Geom::Cone(c) => c.is_closed(),
-            Geom::Mesh(m) => m.data.is_closed(),
-            Geom::Csg { children, .. } => children.iter().all(Primitive::is_solid),
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
-        }
-    }
-
     /// Whether the ray's line starts (at t → −∞) inside this solid.
     pub fn inside_at_start(&self, ray: &Ray) -> bool {
         let r = self.local(ray);
@@ -387,7 +374,7 @@ impl Primitive {
 }
 
 /// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
-fn mesh_contains(m: &MeshData, p: DVec3) -> bool {
+fn mesh_contains(m: &Mesh, p: DVec3) -> bool {
     let dir = DVec3::new(0.5773, 0.5774, 0.5771);
     let mut hits = Vec::new();
     m.all_hits(&Ray::new(p, dir), &mut hits);

@@ -122,11 +122,11 @@ impl World {
             objects: nodes.len(),
             ..WorldStats::default()
         };
-        for m in b.meshes() {
+        for (asset, m) in b.meshes() {
             stats.meshes += 1;
             stats.unique_triangles += m.triangle_count();
             stats.bvh_build_time += m.build_time();
-            stats.mesh_load_time += m.load_time();
+            stats.mesh_load_time += asset.load_time + m.build_time();
             stats.memory_bytes += m.memory();
         }
         stats.instanced_triangles = nodes.iter().map(instanced_triangles).sum();

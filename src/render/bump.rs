@@ -55,8 +55,8 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::assets::Picture;
     use crate::ir::{Mapping, MaterialId};
-    use crate::render::texture::Picture;
 
     fn hit_at(n: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -79,13 +79,16 @@ mod tests {
         };
         let n = DVec3::new(1.0, 0.2, -0.3).normalize();
         let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
-        let flat = Loaded::Image(flat, Mapping::Spherical);
+        let flat = Loaded::Image(flat.into(), Mapping::Spherical);
         assert_eq!(perturb(&flat, 1.0, &hit_at(n), &sphere, n), n);
         // Height grows with u (eastwards): the normal tilts westwards, against T.
         let ramp: Vec<DVec3> = (0..64)
             .map(|i| DVec3::splat(f64::from(i % 64) / 63.0))
             .collect();
-        let ramp = Loaded::Image(Picture::new(64, 1, ramp).unwrap(), Mapping::Spherical);
+        let ramp = Loaded::Image(
+            Picture::new(64, 1, ramp).unwrap().into(),
+            Mapping::Spherical,
+        );
         let tilted = perturb(&ramp, 0.01, &hit_at(n), &sphere, n);
         let t = DVec3::Y.cross(n).normalize();
         assert!((tilted.length() - 1.0).abs() < 1e-12);

@@ -8,12 +8,12 @@ use super::sampler::PixelSampler;
 use super::texture::{self, Loaded};
 use crate::diag::{Diagnostic, Severity};
 use crate::geometry::World;
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, MAX_PIXELS,
+};
 use crate::ir::{
     AmbientConvention, Color, LightKind, Material, MaterialId, RenderMode, Sampling, Scene,
     ShadingModel,
-};
-use crate::ir::limits::{
-    MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, MAX_PIXELS,
 };
 use crate::opt::Effects;
 
@@ -22,7 +22,6 @@ use crate::opt::Effects;
 /// the coordinates keeps it above the rounding error of a hit point (about 1e-16·|P|) at any scale,
 /// from millimetre scenes to the astronomical blue-earth scene (|P| ≈ 1.5e8 → 15 units).
 pub const EPS_REL: f64 = 1e-9;
-
 
 /// A light prepared for shading: sample positions are generated per shading point.
 #[derive(Clone, Copy, Debug)]

@@ -1,52 +1,20 @@
 //! Textures: images are decoded once before rendering; lookups are nearest-pixel as the course
 //! framework does (COURSE.md §2.5); checker and stripes are solid textures in object space.
 
+use std::sync::Arc;
+
 use glam::{DVec2, DVec3};
 
+use crate::assets::Picture;
 use crate::diag::Diagnostic;
 use crate::geometry::{SurfaceHit, sphere};
 use crate::ir::{Color, Mapping, Scene, Shape, Texture};
-
-/// A decoded image with channels in [0, 1].
-#[derive(Clone, Debug)]
-pub struct Picture {
-    width: u32,
-    height: u32,
-    texels: Vec<DVec3>,
-}
-
-impl Picture {
-    /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
-    pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
-        let ok = width > 0 && height > 0 && texels.len() == width as usize * height as usize;
-        ok.then_some(Picture {
-            width,
-            height,
-            texels,
-        })
-    }
-
-    /// The size of one texel in (u, v).
-    pub fn texel_size(&self) -> (f64, f64) {
-        (1.0 / f64::from(self.width), 1.0 / f64::from(self.height))
-    }
-
-    /// The texel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top row; u, v are clamped to [0, 1].
-    pub fn nearest(&self, uv: DVec2) -> Color {
-        let pick = |t: f64, n: u32| {
-            let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-            ((t * f64::from(n - 1)) as u32).min(n - 1) as usize
-        };
-        let (x, y) = (pick(uv.x, self.width), pick(uv.y, self.height));
-        self.texels[y * self.width as usize + x]
-    }
-}
 
 /// A texture ready for lookups.
 #[derive(Clone, Debug)]
 pub enum Loaded {
     /// An image with its surface mapping.
-    Image(Picture, Mapping),
+    Image(Arc<Picture>, Mapping),
     /// A 3-D checkerboard.
     Checker(Color, Color, f64),
     /// Stripes along object-space x.
@@ -65,34 +33,7 @@ fn load(t: &Texture) -> Result<Loaded, Diagnostic> {
             mapping,
             span,
         } => {
-            let img = image::open(path).map_err(|e| {
-                Diagnostic::error(
-                    "rtc::render::texture",
-                    *span,
-                    format!("cannot read texture `{}`", path.display()),
-                )
-                .with_label(e.to_string())
-                .with_help("check the file name; it is resolved relative to the scene file")
-            })?;
-            let (w, h) = (img.width(), img.height());
-            // 8-bit images convert exactly as byte/255 in f64, like the course framework.
-            let texels: Vec<DVec3> = if img.color().bytes_per_pixel() == img.color().channel_count()
-            {
-                let to = |b: u8| f64::from(b) / 255.0;
-                img.to_rgb8()
-                    .pixels()
-                    .map(|p| DVec3::new(to(p[0]), to(p[1]), to(p[2])))
-                    .collect()
-            } else {
-                img.to_rgb32f()
-                    .pixels()
-                    .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2])))
-                    .collect()
-            };
-            let pic = Picture::new(w, h, texels).ok_or_else(|| {
-                Diagnostic::error("rtc::render::texture", *span, "the texture image is empty")
-                    .with_label("this image has no pixels")
-            })?;
+            let pic = crate::assets::picture(path).map_err(|e| e.diagnostic(*span, path))?;
             Loaded::Image(pic, *mapping)
         }
         Texture::Checker { a, b, size } => Loaded::Checker(*a, *b, positive(*size)),
@@ -163,20 +104,6 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit, shape: &Shape) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn nearest_uses_truncated_scaled_coordinates() {
-        // 3×2 image: texel value encodes its index.
-        let texels = (0..6).map(|i| DVec3::splat(f64::from(i))).collect();
-        let p = Picture::new(3, 2, texels).unwrap();
-        assert_eq!(p.nearest(DVec2::new(0.0, 0.0)).x, 0.0);
-        assert_eq!(p.nearest(DVec2::new(0.49, 0.0)).x, 0.0); // int(0.98) = 0
-        assert_eq!(p.nearest(DVec2::new(0.5, 0.0)).x, 1.0);
-        assert_eq!(p.nearest(DVec2::new(1.0, 1.0)).x, 5.0);
-        assert_eq!(p.nearest(DVec2::new(0.99, 0.99)).x, 1.0); // (int(1.98), int(0.99)) = (1, 0)
-        assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
-        assert!(Picture::new(0, 2, vec![]).is_none());
-    }
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {

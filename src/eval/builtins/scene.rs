@@ -175,11 +175,32 @@ fn area_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let samples = match p.get("samples") {
         None => [4, 4],
         Some((Value::List(l), sp)) if l.len() == 2 => [
-            int_in(it, &l[0], sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32,
-            int_in(it, &l[1], sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32,
+            int_in(
+                it,
+                &l[0],
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32,
+            int_in(
+                it,
+                &l[1],
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32,
         ],
         Some((Value::Int(n), sp)) => {
-            let n = int_in(it, &Value::Int(n), sp, "samples", 1, MAX_LIGHT_SAMPLES_PER_AXIS.into())? as u32;
+            let n = int_in(
+                it,
+                &Value::Int(n),
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32;
             [n, n]
         }
         Some((other, sp)) => {
@@ -316,7 +337,14 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         st.sampling = match v {
             Value::Sampling(x) => x,
             Value::Int(_) => ir::Sampling::Grid {
-                factor: int_in(it, &v, sp, "supersampling", 1, MAX_PIXEL_SAMPLES_PER_AXIS.into())? as u32,
+                factor: int_in(
+                    it,
+                    &v,
+                    sp,
+                    "supersampling",
+                    1,
+                    MAX_PIXEL_SAMPLES_PER_AXIS.into(),
+                )? as u32,
             },
             other => {
                 return Err(enum_mismatch(
