@@ -36,6 +36,12 @@ pub struct Cache<T> {
     map: OnceLock<Mutex<HashMap<FileKey, Arc<T>>>>,
 }
 
+impl<T> Default for Cache<T> {
+    fn default() -> Cache<T> {
+        Cache::new()
+    }
+}
+
 impl<T> Cache<T> {
     /// An empty cache (usable in a `static`).
     pub const fn new() -> Cache<T> {
