@@ -169,6 +169,17 @@ impl Diagnostics {
     }
 }
 
+/// A number as messages show it: integers without a fraction (`-1`, `64`), others with up to
+/// six decimals and no trailing zeros (`1.5`, `0.333333`).
+pub fn number(f: f64) -> String {
+    if f == f.trunc() && f.abs() < 1e15 {
+        format!("{}", f as i64)
+    } else {
+        let s = format!("{f:.6}");
+        s.trim_end_matches('0').trim_end_matches('.').to_owned()
+    }
+}
+
 /// Closest candidate to `name` by Jaro-Winkler/Levenshtein, for "did you mean" help.
 pub fn did_you_mean<'a>(
     name: &str,

@@ -223,11 +223,12 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
         Some(Span::new(FileId(0), 80, 85)),
         "found inside the CSG"
     );
+    // Shape rules and codes are geometry::shape's, the same the language and course files get.
     assert_eq!(
-        only(&d, "rtc::geometry::degenerate").span,
+        only(&d, "rtc::param::out_of_range").span,
         Some(Span::new(FileId(0), 90, 95))
     );
-    only(&d, "rtc::geometry::polygon_not_planar");
+    only(&d, "rtc::param::not_planar");
     // A mirrored (negative) scale is fine.
     let mirrored = object(
         Shape::Box {

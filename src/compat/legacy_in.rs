@@ -304,10 +304,8 @@ impl<'t> Reader<'t, '_> {
                     return Ok(());
                 };
                 let id = draft.scene.add_material(material.to_ir());
-                draft
-                    .scene
-                    .objects
-                    .push(course::sphere_object(center, r, None, Some(id), span));
+                let sphere = course::sphere_object(center, r, None, Some(id), span);
+                draft.scene.add_object(sphere, self.diags);
             }
         }
         Ok(())

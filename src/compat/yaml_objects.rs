@@ -56,12 +56,15 @@ pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut
     let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags);
     m.finish(&format!("a {kind_name}"), &known_keys(kind_name), diags);
     if let (Some(shape), Some(material)) = (shape, material) {
-        parts.objects.push(Object {
-            shape,
-            transform: DAffine3::IDENTITY,
-            material: Some(material),
-            span: node.span,
-        });
+        parts.add_object(
+            Object {
+                shape,
+                transform: DAffine3::IDENTITY,
+                material: Some(material),
+                span: node.span,
+            },
+            diags,
+        );
     }
 }
 
@@ -160,13 +163,8 @@ fn sphere(
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
-    parts.objects.push(course::sphere_object(
-        position,
-        radius,
-        orientation,
-        Some(material),
-        node.span,
-    ));
+    let sphere = course::sphere_object(position, radius, orientation, Some(material), node.span);
+    parts.add_object(sphere, diags);
 }
 
 /// `radius: r` or `radius: [r, [x, y, z]]` (the list form also gives the texture's north pole).
@@ -228,16 +226,8 @@ fn plane(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 }
 
 fn aabb(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
-    let head = m.head();
     let min = point(m, &["min"], "this box", diags)?;
     let max = point(m, &["max"], "this box", diags)?;
-    if min.cmpge(max).any() {
-        diags.push(
-            Diagnostic::error("rtc::compat::degenerate", head, "the box is empty")
-                .with_label("every coordinate of `min` must be below the one of `max`"),
-        );
-        return None;
-    }
     Some(Shape::Box { min, max })
 }
 
@@ -271,24 +261,12 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 }
 
 fn cylinder(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
-    let head = m.head();
     let base = point(m, &["p1", "center1", "base"], "this cylinder", diags);
     let top = point(m, &["p2", "center2", "top"], "this cylinder", diags);
     let radius = m
         .require(&["radius", "r"], "this cylinder", "radius: 25", diags)
         .and_then(|e| val::positive(e.value, "the radius", diags));
     let (base, top, radius) = (base?, top?, radius?);
-    if base == top {
-        diags.push(
-            Diagnostic::error(
-                "rtc::compat::degenerate",
-                head,
-                "the cylinder has no length",
-            )
-            .with_label("its two end points are the same"),
-        );
-        return None;
-    }
     Some(Shape::Cylinder {
         base,
         top,
@@ -346,7 +324,7 @@ fn mesh(
         ));
         return;
     }
-    parts.objects.push(Object {
+    let mesh = Object {
         shape: Shape::Mesh {
             path,
             smooth: false,
@@ -359,7 +337,8 @@ fn mesh(
         ),
         material,
         span: node.span,
-    });
+    };
+    parts.add_object(mesh, diags);
 }
 
 /// The required `material:` of an object; `None` after an error.

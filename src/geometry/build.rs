@@ -6,19 +6,9 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use super::mesh::{Mesh, MeshParts};
 use super::primitive::{Geom, MeshRef, Primitive};
-use super::{
-    blob::Blob,
-    cone::Cone,
-    cuboid::Cuboid,
-    cylinder::Cylinder,
-    disk::Disk,
-    mesh::{Mesh, MeshParts},
-    polygon::{Polygon, PolygonError},
-    quad::Quad,
-    torus::Torus,
-    triangle::Triangle,
-};
+use super::shape;
 use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Material, MaterialId, Object, Scene, Shape};
@@ -92,122 +82,8 @@ impl Builder {
         Some(Primitive::new(geom, *t, material))
     }
 
-    fn degenerate(&mut self, o: &Object, why: &str) -> Option<Geom> {
-        self.error(
-            o,
-            "rtc::geometry::degenerate",
-            format!("this {} has no surface: {why}", o.shape.kind_name()),
-            "degenerate shape",
-            "",
-        );
-        None
-    }
-
     fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {
         let g = match &o.shape {
-            Shape::Sphere { center, radius } => {
-                if !(*radius > 0.0 && radius.is_finite() && center.is_finite()) {
-                    return self.degenerate(o, "its radius must be positive");
-                }
-                Geom::Sphere {
-                    center: *center,
-                    radius: *radius,
-                }
-            }
-            Shape::Plane { point, normal } => match normal.try_normalize() {
-                Some(n) if point.is_finite() => Geom::Plane {
-                    point: *point,
-                    normal: n,
-                },
-                _ => return self.degenerate(o, "its normal is zero"),
-            },
-            Shape::Box { min, max } => {
-                if !(min.is_finite() && max.is_finite()) || min.cmpeq(*max).any() {
-                    return self.degenerate(o, "two of its corners coincide on some axis");
-                }
-                Geom::Box(Cuboid::new(*min, *max))
-            }
-            Shape::Triangle { vertices } => match Triangle::new(*vertices) {
-                Some(t) => Geom::Triangle(t),
-                None => return self.degenerate(o, "its corners are collinear"),
-            },
-            Shape::Quad { corner, u, v } => match Quad::new(*corner, *u, *v) {
-                Some(q) => Geom::Quad(q),
-                None => return self.degenerate(o, "its edges are parallel"),
-            },
-            Shape::Polygon { points } => match Polygon::new(points) {
-                Ok(p) => Geom::Polygon(p),
-                Err(PolygonError::TooFew) => {
-                    return self.degenerate(o, "it needs at least 3 points");
-                }
-                Err(PolygonError::Degenerate) => {
-                    return self.degenerate(o, "its points enclose no area");
-                }
-                Err(PolygonError::NotPlanar) => {
-                    self.error(
-                        o,
-                        "rtc::geometry::polygon_not_planar",
-                        "the points of this polygon do not lie in one plane".into(),
-                        "non-planar polygon",
-                        "split it into triangles, or move the points onto one plane",
-                    );
-                    return None;
-                }
-            },
-            Shape::Disk {
-                center,
-                normal,
-                radius,
-            } => match Disk::new(*center, *normal, *radius) {
-                Some(d) => Geom::Disk(d),
-                None => {
-                    return self
-                        .degenerate(o, "its radius must be positive and its normal non-zero");
-                }
-            },
-            Shape::Cylinder {
-                base,
-                top,
-                radius,
-                capped,
-            } => match Cylinder::new(*base, *top, *radius, *capped) {
-                Some(c) => Geom::Cylinder(c),
-                None => {
-                    return self.degenerate(o, "its ends must differ and its radius be positive");
-                }
-            },
-            Shape::Cone {
-                base,
-                top,
-                base_radius,
-                top_radius,
-                capped,
-            } => match Cone::new(*base, *top, *base_radius, *top_radius, *capped) {
-                Some(c) => Geom::Cone(c),
-                None => {
-                    return self.degenerate(o, "its ends must differ, radii be ≥ 0 and not both 0");
-                }
-            },
-            Shape::Torus {
-                center,
-                major_radius,
-                minor_radius,
-            } => match Torus::new(*center, *major_radius, *minor_radius) {
-                Some(t) => Geom::Torus(t),
-                None => return self.degenerate(o, "both radii must be positive"),
-            },
-            Shape::Blob {
-                components,
-                threshold,
-            } => match Blob::new(components, *threshold) {
-                Some(b) => Geom::Blob(b),
-                None => {
-                    return self.degenerate(
-                        o,
-                        "it needs a positive threshold, positive radii and a positive component",
-                    );
-                }
-            },
             Shape::Mesh {
                 path,
                 smooth,
@@ -222,7 +98,7 @@ impl Builder {
                 let mut ok = true;
                 for c in children {
                     match self.object(c, material) {
-                        Some(_) if !solid(c) => {
+                        Some(_) if !shape::encloses_volume(&c.shape, &closed_mesh) => {
                             ok = false;
                             let what = match &c.shape {
                                 Shape::Mesh { path, .. } => {
@@ -254,14 +130,8 @@ impl Builder {
                         None => ok = false,
                     }
                 }
-                if children.len() < 2 {
-                    self.error(
-                        o,
-                        "rtc::csg::too_few_operands",
-                        "a CSG operation needs at least two operands".into(),
-                        "only one operand",
-                        "",
-                    );
+                if let Err(flaw) = shape::check(&o.shape) {
+                    self.diagnostics.push(flaw.diagnostic(o.span));
                     return None;
                 }
                 if !ok {
@@ -272,6 +142,13 @@ impl Builder {
                     children: nodes,
                 }
             }
+            leaf_shape => match shape::leaf(leaf_shape) {
+                Ok(g) => g,
+                Err(flaw) => {
+                    self.diagnostics.push(flaw.diagnostic(o.span));
+                    return None;
+                }
+            },
         };
         Some(g)
     }
@@ -331,20 +208,9 @@ impl Builder {
     }
 }
 
-/// Whether an object is a closed solid (or a half-space), so CSG can classify against it.
-fn solid(o: &Object) -> bool {
-    match &o.shape {
-        Shape::Triangle { .. }
-        | Shape::Quad { .. }
-        | Shape::Polygon { .. }
-        | Shape::Disk { .. } => false,
-        Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
-        Shape::Mesh { path, smooth, .. } => {
-            assets::mesh(path, *smooth).is_ok_and(|m| m.is_closed())
-        }
-        Shape::Csg { children, .. } => children.iter().all(solid),
-        _ => true,
-    }
+/// Whether the mesh file is a closed surface (through the asset cache).
+fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
+    assets::mesh(path, smooth).is_ok_and(|m| m.is_closed())
 }
 
 /// Checks a scene's geometry before any ray is traced: CSG operands are closed solids, meshes

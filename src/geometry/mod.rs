@@ -20,6 +20,7 @@ pub mod primitive;
 pub mod quad;
 pub mod quartic;
 pub mod ray;
+pub mod shape;
 pub mod sphere;
 pub mod torus;
 pub mod triangle;

@@ -229,7 +229,7 @@ impl Primitive {
                 .intersect(&r, t_min, t_max)
                 .map(|h| self.out(self.mesh_hit(&r, m, h))),
             Geom::Csg { op, children } => {
-                csg::intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
+                csg_intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
             }
         }
     }
@@ -341,7 +341,7 @@ impl Primitive {
             }
             Geom::Csg { op, children } => {
                 let mut tmp = Vec::new();
-                csg::crossings(*op, children, &r, &mut tmp);
+                csg_crossings(*op, children, &r, &mut tmp);
                 out.extend(tmp.into_iter().map(|c| PrimitiveCrossing {
                     hit: self.out(c.hit),
                     entering: c.entering,
@@ -373,6 +373,54 @@ impl Primitive {
     }
 }
 
+/// A CSG node's own boundary crossings along the whole line, in order.
+fn csg_crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+    let mut all: Vec<(usize, GeoHit, bool)> = Vec::new();
+    let mut tmp = Vec::new();
+    for (i, c) in children.iter().enumerate() {
+        tmp.clear();
+        c.crossings(ray, &mut tmp);
+        all.extend(tmp.iter().map(|x| (i, x.hit, x.entering)));
+    }
+    all.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
+    let starts = children.iter().map(|c| c.inside_at_start(ray)).collect();
+    csg::boundary(op, starts, &all, |i, mut hit, entering| {
+        if csg::flips_normal(op, i) {
+            hit.normal = -hit.normal;
+            hit.geometric_normal = -hit.geometric_normal;
+        }
+        out.push(PrimitiveCrossing { hit, entering });
+    });
+}
+
+/// A CSG node's nearest hit in (t_min, t_max). A union keeps its operands' inner surfaces
+/// (visible through transparent materials); merge, intersection and difference show only the
+/// result's boundary.
+fn csg_intersect(
+    op: CsgOp,
+    children: &[Primitive],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<GeoHit> {
+    if op == CsgOp::Union {
+        let mut best: Option<GeoHit> = None;
+        let mut far = t_max;
+        for c in children {
+            if let Some(h) = c.intersect(ray, t_min, far) {
+                far = h.t;
+                best = Some(h);
+            }
+        }
+        return best;
+    }
+    let mut out = Vec::new();
+    csg_crossings(op, children, ray, &mut out);
+    out.into_iter()
+        .map(|c| c.hit)
+        .find(|h| h.t > t_min && h.t < t_max)
+}
+
 /// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
 fn mesh_contains(m: &Mesh, p: DVec3) -> bool {
     let dir = DVec3::new(0.5773, 0.5774, 0.5771);
@@ -399,7 +447,7 @@ impl Geom {
             Geom::Mesh(m) => m.data.bounds(),
             Geom::Csg { op, children } => {
                 let b: Vec<Aabb> = children.iter().map(|c| c.bounds).collect();
-                crate::opt::bounds::csg_bounds(*op, &b)
+                csg::bounds(*op, &b)
             }
         }
     }

@@ -1,6 +1,5 @@
 //! Scene analysis and optimisation between the IR and the renderer.
 
-pub mod bounds;
 pub mod effects;
 
 pub use effects::Effects;
