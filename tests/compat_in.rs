@@ -84,8 +84,8 @@ fn rt1_in_and_scene01_yaml_render_the_same_bytes() {
         &mut sources,
     );
     let options = rtc::render::RenderOptions::default();
-    let ra = rtc::render::render(&a.scene.expect("rt1 scene"), &options);
-    let rb = rtc::render::render(&b.scene.expect("scene01 scene"), &options);
+    let ra = rtc::render::render_image(&a.scene.expect("rt1 scene"), &options);
+    let rb = rtc::render::render_image(&b.scene.expect("scene01 scene"), &options);
     match (ra, rb) {
         (Ok(ia), Ok(ib)) => {
             assert_eq!(ia.dimensions(), (400, 400));

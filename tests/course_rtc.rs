@@ -139,8 +139,8 @@ fn same_bytes(name: &str) {
         &rtc_path,
     );
     let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
-    let a = rtc::render::render(&from_rtc, &options).expect("rtc scene renders");
-    let b = rtc::render::render(&from_yaml, &options).expect("yaml scene renders");
+    let a = rtc::render::render_image(&from_rtc, &options).expect("rtc scene renders");
+    let b = rtc::render::render_image(&from_yaml, &options).expect("yaml scene renders");
     let differing = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();
     assert_eq!(differing, 0, "{name}: {differing} pixels differ");
 }

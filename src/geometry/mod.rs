@@ -1,11 +1,11 @@
-//! Geometry: rays, hits, bounds, one file per shape family, and the [`World`] the renderer queries.
+//! Geometry: rays, hits, bounds, one file per shape family, CSG, meshes, BVHs, and the [`World`]
+//! the renderer queries. [`shape`] is the one home of a shape's validity and bounds.
 //!
 //! Shapes intersect in their own object space; [`World`] moves rays in and hits out through each
 //! object's affine transform (normals by the inverse transpose).
 
 pub mod aabb;
 pub mod blob;
-pub mod build;
 pub mod bvh;
 mod bvh_traverse;
 pub mod cone;
@@ -27,6 +27,6 @@ pub mod triangle;
 pub mod world;
 
 pub use aabb::Aabb;
-pub use build::validate_scene_geometry;
+pub use primitive::{MappingFrame, Primitive};
 pub use ray::{Crossing, Hit, Ray};
 pub use world::{SurfaceHit, World, WorldStats};

@@ -25,8 +25,47 @@ pub struct GeoHit {
     pub uv: DVec2,
     /// The hit point in the leaf object's own space.
     pub local_point: DVec3,
+    /// The frame texture mappings read `local_point` in (the leaf shape's).
+    pub frame: MappingFrame,
     /// The material to shade with.
     pub material: MaterialId,
+}
+
+/// The frame in which texture mappings read a hit's position: a sphere's own centre (and its
+/// equirectangular uv), or the object-space origin for every other shape. It travels with the
+/// hit, so a sphere inside a CSG node or group maps about its own centre.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MappingFrame {
+    /// About the object-space origin.
+    Object,
+    /// About a sphere's centre, with its radius.
+    Sphere {
+        /// The sphere's centre (object space).
+        center: DVec3,
+        /// Its radius.
+        radius: f64,
+    },
+}
+
+impl MappingFrame {
+    /// The point mappings measure from.
+    pub fn center(&self) -> DVec3 {
+        match *self {
+            MappingFrame::Object => DVec3::ZERO,
+            MappingFrame::Sphere { center, .. } => center,
+        }
+    }
+
+    /// Equirectangular (u, v) of the object-space point `p` about the frame's centre (+Y is the
+    /// north pole): a sphere's own uv, else the direction from the origin.
+    pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
+        match *self {
+            MappingFrame::Sphere { center, radius } => {
+                sphere::uv(((p - center) / radius).normalize())
+            }
+            MappingFrame::Object => sphere::uv(p.try_normalize().unwrap_or(DVec3::Y)),
+        }
+    }
 }
 
 /// A boundary crossing of a solid node (for CSG).
@@ -176,7 +215,16 @@ impl Primitive {
             geometric_normal: h.normal,
             uv: h.uv,
             local_point: ray.at(h.t),
+            frame: self.frame(),
             material: self.material,
+        }
+    }
+
+    /// The mapping frame of hits on this node's own geometry.
+    fn frame(&self) -> MappingFrame {
+        match self.geom {
+            Geom::Sphere { center, radius } => MappingFrame::Sphere { center, radius },
+            _ => MappingFrame::Object,
         }
     }
 
@@ -194,6 +242,10 @@ impl Primitive {
                     geometric_normal: normal,
                     uv: DVec2::ZERO,
                     local_point,
+                    frame: MappingFrame::Sphere {
+                        center: *center,
+                        radius: *radius,
+                    },
                     material: self.material,
                 })
             });
@@ -236,8 +288,8 @@ impl Primitive {
 
     /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
     pub fn finish(&self, h: &mut GeoHit) {
-        if let Geom::Sphere { center, radius } = &self.geom {
-            h.uv = sphere::uv(((h.local_point - *center) / *radius).normalize());
+        if let Geom::Sphere { .. } = &self.geom {
+            h.uv = h.frame.spherical_uv(h.local_point);
         }
     }
 
@@ -268,6 +320,7 @@ impl Primitive {
             geometric_normal: h.geometric,
             uv: h.uv,
             local_point: r.at(h.t),
+            frame: MappingFrame::Object,
             material,
         }
     }

@@ -6,12 +6,12 @@
 
 use glam::{DVec2, DVec3};
 
-use super::texture::{self, Loaded};
+use super::texture;
 use crate::geometry::SurfaceHit;
-use crate::ir::Shape;
+use crate::opt::TextureMap;
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
-pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVec3) -> DVec3 {
+pub fn perturb(tex: &TextureMap, scale: f64, hit: &SurfaceHit, n: DVec3) -> DVec3 {
     let up = if n.y.abs() > 0.999 {
         DVec3::X
     } else {
@@ -20,8 +20,8 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
     let t = up.cross(n).normalize();
     let b = t.cross(n);
     let (dh_du, dh_dv) = match tex {
-        Loaded::Image(pic, mapping) => {
-            let uv = texture::uv(*mapping, hit, shape);
+        TextureMap::Image(pic, mapping) => {
+            let uv = texture::uv(*mapping, hit);
             let (du, dv) = pic.texel_size();
             let h = |o: DVec2| pic.nearest(uv + o).y;
             let h0 = h(DVec2::ZERO);
@@ -30,12 +30,10 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
                 (h(DVec2::new(0.0, dv)) - h0) / dv,
             )
         }
-        Loaded::Checker(_, _, size) | Loaded::Stripes(_, _, size) => {
+        TextureMap::Checker(_, _, size) | TextureMap::Stripes(_, _, size) => {
             let step = size / 8.0;
             let lum = |p: DVec3| {
-                let mut moved = *hit;
-                moved.local_point = p;
-                let c = tex.color(&moved, shape);
+                let c = texture::solid(tex, hit, p);
                 (c.x + c.y + c.z) / 3.0
             };
             let h0 = lum(hit.local_point);
@@ -55,8 +53,9 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::assets::Picture;
+    use crate::geometry::MappingFrame;
     use crate::ir::{Mapping, MaterialId};
+    use crate::opt::Picture;
 
     fn hit_at(n: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -66,6 +65,10 @@ mod tests {
             geometric_normal: n,
             uv: crate::geometry::sphere::uv(n),
             local_point: n,
+            frame: MappingFrame::Sphere {
+                center: DVec3::ZERO,
+                radius: 1.0,
+            },
             material: MaterialId(0),
             object: 0,
         }
@@ -73,23 +76,19 @@ mod tests {
 
     #[test]
     fn flat_height_keeps_the_normal_and_a_ramp_tilts_it() {
-        let sphere = Shape::Sphere {
-            center: DVec3::ZERO,
-            radius: 1.0,
-        };
         let n = DVec3::new(1.0, 0.2, -0.3).normalize();
         let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
-        let flat = Loaded::Image(flat.into(), Mapping::Spherical);
-        assert_eq!(perturb(&flat, 1.0, &hit_at(n), &sphere, n), n);
+        let flat = TextureMap::Image(flat.into(), Mapping::Spherical);
+        assert_eq!(perturb(&flat, 1.0, &hit_at(n), n), n);
         // Height grows with u (eastwards): the normal tilts westwards, against T.
         let ramp: Vec<DVec3> = (0..64)
             .map(|i| DVec3::splat(f64::from(i % 64) / 63.0))
             .collect();
-        let ramp = Loaded::Image(
+        let ramp = TextureMap::Image(
             Picture::new(64, 1, ramp).unwrap().into(),
             Mapping::Spherical,
         );
-        let tilted = perturb(&ramp, 0.01, &hit_at(n), &sphere, n);
+        let tilted = perturb(&ramp, 0.01, &hit_at(n), n);
         let t = DVec3::Y.cross(n).normalize();
         assert!((tilted.length() - 1.0).abs() < 1e-12);
         assert!(tilted.dot(t) < 0.0);

@@ -1,98 +1,53 @@
-//! Textures: images are decoded once before rendering; lookups are nearest-pixel as the course
-//! framework does (COURSE.md §2.5); checker and stripes are solid textures in object space.
-
-use std::sync::Arc;
+//! Texture lookups at a hit: images nearest-pixel as the course framework does (COURSE.md
+//! §2.5) through a surface mapping; checker and stripes are solid textures in object space.
+//! Every coordinate comes from the hit (its uv, its object-space point and its mapping frame),
+//! so a lookup never needs the shape.
 
 use glam::{DVec2, DVec3};
 
-use crate::assets::Picture;
-use crate::diag::Diagnostic;
-use crate::geometry::{SurfaceHit, sphere};
-use crate::ir::{Color, Mapping, Scene, Shape, Texture};
+use crate::geometry::SurfaceHit;
+use crate::ir::{Color, Mapping};
+use crate::opt::TextureMap;
 
-/// A texture ready for lookups.
-#[derive(Clone, Debug)]
-pub enum Loaded {
-    /// An image with its surface mapping.
-    Image(Arc<Picture>, Mapping),
-    /// A 3-D checkerboard.
-    Checker(Color, Color, f64),
-    /// Stripes along object-space x.
-    Stripes(Color, Color, f64),
+/// The colour of `tex` at `hit`.
+pub fn color(tex: &TextureMap, hit: &SurfaceHit) -> Color {
+    solid(tex, hit, hit.local_point)
 }
 
-/// Decodes every texture of a scene once.
-pub fn load_all(scene: &Scene) -> Result<Vec<Loaded>, Diagnostic> {
-    scene.textures.iter().map(load).collect()
-}
-
-fn load(t: &Texture) -> Result<Loaded, Diagnostic> {
-    Ok(match t {
-        Texture::Image {
-            path,
-            mapping,
-            span,
-        } => {
-            let pic = crate::assets::picture(path).map_err(|e| e.diagnostic(*span, path))?;
-            Loaded::Image(pic, *mapping)
-        }
-        Texture::Checker { a, b, size } => Loaded::Checker(*a, *b, positive(*size)),
-        Texture::Stripes { a, b, size } => Loaded::Stripes(*a, *b, positive(*size)),
-    })
-}
-
-fn positive(size: f64) -> f64 {
-    if size > 0.0 && size.is_finite() {
-        size
-    } else {
-        1.0
-    }
-}
-
-impl Loaded {
-    /// The colour at a hit on an object of shape `shape`.
-    pub fn color(&self, hit: &SurfaceHit, shape: &Shape) -> Color {
-        match self {
-            Loaded::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, shape)),
-            Loaded::Checker(a, b, size) => {
-                // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor
-                // flips the parity pixel by pixel; snapping to a tiny fraction of a cell first
-                // keeps the whole face in one cell.
-                let q = hit.local_point / *size;
-                let c = ((q * 1e6).round() / 1e6).floor();
-                if (c.x + c.y + c.z).rem_euclid(2.0) < 0.5 {
-                    *a
-                } else {
-                    *b
-                }
+/// The colour of `tex` at `hit`, with solid textures read at object-space point `p` (bump
+/// mapping reads them at points near the hit).
+pub fn solid(tex: &TextureMap, hit: &SurfaceHit, p: DVec3) -> Color {
+    match tex {
+        TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit)),
+        TextureMap::Checker(a, b, size) => {
+            // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor flips
+            // the parity pixel by pixel; snapping to a tiny fraction of a cell first keeps the
+            // whole face in one cell.
+            let q = p / *size;
+            let c = ((q * 1e6).round() / 1e6).floor();
+            if (c.x + c.y + c.z).rem_euclid(2.0) < 0.5 {
+                *a
+            } else {
+                *b
             }
-            Loaded::Stripes(a, b, size) => {
-                if (hit.local_point.x / *size).floor().rem_euclid(2.0) < 0.5 {
-                    *a
-                } else {
-                    *b
-                }
+        }
+        TextureMap::Stripes(a, b, size) => {
+            if (p.x / *size).floor().rem_euclid(2.0) < 0.5 {
+                *a
+            } else {
+                *b
             }
         }
     }
 }
 
-/// Surface coordinates of a hit under a mapping (object space; +Y is the north pole).
-pub fn uv(mapping: Mapping, hit: &SurfaceHit, shape: &Shape) -> DVec2 {
-    let centre = match shape {
-        Shape::Sphere { center, .. } => *center,
-        _ => DVec3::ZERO,
-    };
-    let p = hit.local_point - centre;
+/// Surface coordinates of a hit under a mapping (in the hit's mapping frame; +Y is the north
+/// pole).
+pub fn uv(mapping: Mapping, hit: &SurfaceHit) -> DVec2 {
+    let p = hit.mapping_point();
     match mapping {
         Mapping::Uv => hit.uv,
-        Mapping::Spherical => {
-            if matches!(shape, Shape::Sphere { .. }) {
-                hit.uv
-            } else {
-                sphere::uv(p.try_normalize().unwrap_or(DVec3::Y))
-            }
-        }
+        Mapping::Spherical => hit.spherical_uv(),
         Mapping::Planar => DVec2::new(p.x - p.x.floor(), p.z - p.z.floor()),
         Mapping::Cylindrical => {
             let phi = (-p.z).atan2(p.x).rem_euclid(std::f64::consts::TAU);
@@ -104,6 +59,7 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit, shape: &Shape) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::MappingFrame;
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -113,6 +69,7 @@ mod tests {
             geometric_normal: DVec3::Y,
             uv: DVec2::ZERO,
             local_point: p,
+            frame: MappingFrame::Object,
             material: crate::ir::MaterialId(0),
             object: 0,
         }
@@ -122,14 +79,10 @@ mod tests {
     fn checker_on_a_cell_face_does_not_speckle() {
         // Hits on a floor at y = 0 land a rounding error above or below it; both must give the
         // colour of one cell (the gallery floor showed salt-and-pepper before).
-        let plane = Shape::Plane {
-            point: DVec3::ZERO,
-            normal: DVec3::Y,
-        };
-        let checker = Loaded::Checker(DVec3::X, DVec3::Z, 1.0);
+        let checker = TextureMap::Checker(DVec3::X, DVec3::Z, 1.0);
         for x in [0.25, 1.5, -3.75, 123.5] {
-            let above = checker.color(&hit_at(DVec3::new(x, 1e-13, 0.5)), &plane);
-            let below = checker.color(&hit_at(DVec3::new(x, -1e-13, 0.5)), &plane);
+            let above = color(&checker, &hit_at(DVec3::new(x, 1e-13, 0.5)));
+            let below = color(&checker, &hit_at(DVec3::new(x, -1e-13, 0.5)));
             assert_eq!(above, below, "x = {x}");
         }
     }
@@ -137,30 +90,36 @@ mod tests {
     #[test]
     fn checker_and_stripes_alternate_in_object_space() {
         let (a, b) = (DVec3::X, DVec3::Z);
-        let plane = Shape::Plane {
-            point: DVec3::ZERO,
-            normal: DVec3::Y,
+        let checker = TextureMap::Checker(a, b, 2.0);
+        assert_eq!(color(&checker, &hit_at(DVec3::new(0.5, 0.5, 0.5))), a);
+        assert_eq!(color(&checker, &hit_at(DVec3::new(2.5, 0.5, 0.5))), b);
+        assert_eq!(color(&checker, &hit_at(DVec3::new(2.5, 2.5, 0.5))), a);
+        assert_eq!(color(&checker, &hit_at(DVec3::new(-0.5, 0.5, 0.5))), b);
+        let stripes = TextureMap::Stripes(a, b, 1.0);
+        assert_eq!(color(&stripes, &hit_at(DVec3::new(0.2, 9.0, -4.0))), a);
+        assert_eq!(color(&stripes, &hit_at(DVec3::new(1.2, 9.0, -4.0))), b);
+        assert_eq!(color(&stripes, &hit_at(DVec3::new(-0.2, 0.0, 0.0))), b);
+    }
+
+    #[test]
+    fn mappings_read_a_sphere_about_its_own_centre() {
+        // The same point of a sphere centred at c, as a hit framed by that sphere: every
+        // mapping sees it relative to c (a sphere inside a CSG node used to map about the
+        // origin).
+        let c = DVec3::new(5.0, -2.0, 1.0);
+        let on = DVec3::new(0.0, 0.0, -1.0);
+        let mut framed = hit_at(c + on);
+        framed.frame = MappingFrame::Sphere {
+            center: c,
+            radius: 1.0,
         };
-        let checker = Loaded::Checker(a, b, 2.0);
-        assert_eq!(checker.color(&hit_at(DVec3::new(0.5, 0.5, 0.5)), &plane), a);
-        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 0.5, 0.5)), &plane), b);
-        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 2.5, 0.5)), &plane), a);
-        assert_eq!(
-            checker.color(&hit_at(DVec3::new(-0.5, 0.5, 0.5)), &plane),
-            b
-        );
-        let stripes = Loaded::Stripes(a, b, 1.0);
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(0.2, 9.0, -4.0)), &plane),
-            a
-        );
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(1.2, 9.0, -4.0)), &plane),
-            b
-        );
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(-0.2, 0.0, 0.0)), &plane),
-            b
-        );
+        let mut at_origin = hit_at(on);
+        at_origin.frame = MappingFrame::Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        };
+        for m in [Mapping::Spherical, Mapping::Planar, Mapping::Cylindrical] {
+            assert_eq!(uv(m, &framed), uv(m, &at_origin), "{m:?}");
+        }
     }
 }

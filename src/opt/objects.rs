@@ -1,17 +1,35 @@
-//! IR objects → prepared [`Primitive`]s: shape checks, transforms, materials, mesh loading with
-//! instancing (one `Arc` per file and smoothing), and diagnostics for everything that cannot
-//! be drawn.
+//! IR objects → prepared [`Primitive`]s: shape checks (by `geometry::shape`), transforms,
+//! materials, mesh loading through the asset service with instancing (one BVH per file and
+//! smoothing, shared by every object placing it), MTL material ids, and diagnostics for
+//! everything that cannot be drawn.
 
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use super::mesh::{Mesh, MeshParts};
-use super::primitive::{Geom, MeshRef, Primitive};
-use super::shape;
+use std::time::Duration;
+
 use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{Material, MaterialId, Object, Scene, Shape};
+use crate::geometry::mesh::{Mesh, MeshParts};
+use crate::geometry::primitive::{Geom, MeshRef, Primitive};
+use crate::geometry::shape;
+use crate::ir::{Material, MaterialId, Object, Shape};
+
+/// What the meshes placed so far took.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MeshStats {
+    /// Distinct files (and smoothing) placed.
+    pub meshes: usize,
+    /// Their triangles, each file once.
+    pub unique_triangles: usize,
+    /// Time their BVHs took.
+    pub bvh_build_time: Duration,
+    /// Time reading the files and building their BVHs took.
+    pub load_time: Duration,
+    /// Approximate heap bytes of their triangles and BVHs.
+    pub memory_bytes: usize,
+}
 
 /// Prepares objects, collecting every problem instead of stopping at the first.
 pub struct Builder {
@@ -39,9 +57,17 @@ impl Builder {
         }
     }
 
-    /// Distinct meshes loaded so far.
-    pub fn meshes(&self) -> impl Iterator<Item = &(Arc<MeshAsset>, Arc<Mesh>)> {
-        self.cache.values()
+    /// What the meshes placed so far took.
+    pub fn stats(&self) -> MeshStats {
+        let mut s = MeshStats::default();
+        for (asset, m) in self.cache.values() {
+            s.meshes += 1;
+            s.unique_triangles += m.triangle_count();
+            s.bvh_build_time += m.build_time();
+            s.load_time += asset.load_time + m.build_time();
+            s.memory_bytes += m.memory();
+        }
+        s
     }
 
     fn error(&mut self, o: &Object, code: &'static str, msg: String, label: &str, help: &str) {
@@ -211,16 +237,4 @@ impl Builder {
 /// Whether the mesh file is a closed surface (through the asset cache).
 fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
     assets::mesh(path, smooth).is_ok_and(|m| m.is_closed())
-}
-
-/// Checks a scene's geometry before any ray is traced: CSG operands are closed solids, meshes
-/// load (missing or malformed OBJ files, with the line), transforms are invertible, shapes are
-/// not degenerate.
-pub fn validate_scene_geometry(scene: &Scene) -> Diagnostics {
-    let mut b = Builder::new(scene.materials.len() as u32);
-    let fallback = scene.settings.default_material.unwrap_or(MaterialId(0));
-    for o in &scene.objects {
-        b.object(o, fallback);
-    }
-    b.diagnostics
 }
