@@ -518,6 +518,15 @@ pub enum RenderMode {
     Depth(DepthRange),
 }
 
+impl RenderMode {
+    /// The modes a scene names without parameters, by their names in the language (`depth`
+    /// takes a range and is a function of its own).
+    pub const NAMED: &'static [(&'static str, RenderMode)] = &[
+        ("shaded", RenderMode::Shaded),
+        ("normal", RenderMode::Normal),
+    ];
+}
+
 /// The distance range of a depth image.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum DepthRange {

@@ -5,11 +5,8 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
-use super::{
-    Aabb, Crossing, Hit, Ray, blob::Blob, cone::Cone, csg, cuboid::Cuboid, cylinder::Cylinder,
-    disk::Disk, mesh::Mesh, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
-    triangle::Triangle,
-};
+use super::shape::Leaf;
+use super::{Aabb, Hit, MappingFrame, Ray, csg, mesh::Mesh, sphere};
 use crate::ir::{CsgOp, MaterialId};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
@@ -29,43 +26,6 @@ pub struct GeoHit {
     pub frame: MappingFrame,
     /// The material to shade with.
     pub material: MaterialId,
-}
-
-/// The frame in which texture mappings read a hit's position: a sphere's own centre (and its
-/// equirectangular uv), or the object-space origin for every other shape. It travels with the
-/// hit, so a sphere inside a CSG node or group maps about its own centre.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum MappingFrame {
-    /// About the object-space origin.
-    Object,
-    /// About a sphere's centre, with its radius.
-    Sphere {
-        /// The sphere's centre (object space).
-        center: DVec3,
-        /// Its radius.
-        radius: f64,
-    },
-}
-
-impl MappingFrame {
-    /// The point mappings measure from.
-    pub fn center(&self) -> DVec3 {
-        match *self {
-            MappingFrame::Object => DVec3::ZERO,
-            MappingFrame::Sphere { center, .. } => center,
-        }
-    }
-
-    /// Equirectangular (u, v) of the object-space point `p` about the frame's centre (+Y is the
-    /// north pole): a sphere's own uv, else the direction from the origin.
-    pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
-        match *self {
-            MappingFrame::Sphere { center, radius } => {
-                sphere::uv(((p - center) / radius).normalize())
-            }
-            MappingFrame::Object => sphere::uv(p.try_normalize().unwrap_or(DVec3::Y)),
-        }
-    }
 }
 
 /// A boundary crossing of a solid node (for CSG).
@@ -89,38 +49,8 @@ pub struct MeshRef {
 /// Geometry of one node, in object space.
 #[derive(Clone, Debug)]
 pub enum Geom {
-    /// A sphere.
-    Sphere {
-        /// Centre.
-        center: DVec3,
-        /// Radius.
-        radius: f64,
-    },
-    /// A half-space bounded by a plane.
-    Plane {
-        /// A point on it.
-        point: DVec3,
-        /// Unit outward normal.
-        normal: DVec3,
-    },
-    /// A box.
-    Box(Cuboid),
-    /// A triangle.
-    Triangle(Triangle),
-    /// A parallelogram.
-    Quad(Quad),
-    /// A planar polygon.
-    Polygon(Polygon),
-    /// A disk.
-    Disk(Disk),
-    /// A cylinder.
-    Cylinder(Cylinder),
-    /// A cone or frustum.
-    Cone(Cone),
-    /// A torus.
-    Torus(Torus),
-    /// Metaballs.
-    Blob(Blob),
+    /// A single shape (see [`Leaf`]).
+    Leaf(Leaf),
     /// A triangle mesh.
     Mesh(MeshRef),
     /// A CSG node.
@@ -177,16 +107,16 @@ impl Primitive {
         }
     }
 
-    /// The ray in object space (same `t`).
-    #[inline]
     /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
     pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
         match (&self.geom, &self.placement) {
-            (Geom::Sphere { center, radius }, None) => Some((*center, *radius)),
+            (Geom::Leaf(Leaf::Sphere { center, radius }), None) => Some((*center, *radius)),
             _ => None,
         }
     }
 
+    /// The ray in object space (same `t`).
+    #[inline]
     fn local(&self, ray: &Ray) -> Ray {
         match &self.placement {
             None => *ray,
@@ -222,8 +152,8 @@ impl Primitive {
 
     /// The mapping frame of hits on this node's own geometry.
     fn frame(&self) -> MappingFrame {
-        match self.geom {
-            Geom::Sphere { center, radius } => MappingFrame::Sphere { center, radius },
+        match &self.geom {
+            Geom::Leaf(l) => l.frame(),
             _ => MappingFrame::Object,
         }
     }
@@ -231,7 +161,7 @@ impl Primitive {
     /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
         // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
-        if let Geom::Sphere { center, radius } = &self.geom {
+        if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
             let r = self.local(ray);
             return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
                 let local_point = r.at(t);
@@ -259,23 +189,10 @@ impl Primitive {
             return None;
         }
         let r = self.local(ray);
-        let simple = |h: Option<Hit>| h.map(|h| self.out(self.leaf(&r, h)));
         match &self.geom {
-            Geom::Sphere { center, radius } => {
-                simple(sphere::intersect(*center, *radius, &r, t_min, t_max))
-            }
-            Geom::Plane { point, normal } => {
-                simple(plane::intersect(*point, *normal, &r, t_min, t_max))
-            }
-            Geom::Box(b) => simple(b.intersect(&r, t_min, t_max)),
-            Geom::Triangle(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Quad(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Polygon(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Disk(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Cylinder(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Cone(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Torus(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Blob(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Leaf(l) => l
+                .intersect(&r, t_min, t_max)
+                .map(|h| self.out(self.leaf(&r, h))),
             Geom::Mesh(m) => m
                 .data
                 .intersect(&r, t_min, t_max)
@@ -288,7 +205,7 @@ impl Primitive {
 
     /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
     pub fn finish(&self, h: &mut GeoHit) {
-        if let Geom::Sphere { .. } = &self.geom {
+        if let Geom::Leaf(Leaf::Sphere { .. }) = &self.geom {
             h.uv = h.frame.spherical_uv(h.local_point);
         }
     }
@@ -296,7 +213,7 @@ impl Primitive {
     /// True when anything of this node lies in (t_min, t_max).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.geom {
-            Geom::Sphere { center, radius } => {
+            Geom::Leaf(Leaf::Sphere { center, radius }) => {
                 sphere::hit_t(*center, *radius, &self.local(ray), t_min, t_max).is_some()
             }
             Geom::Mesh(m) => {
@@ -329,14 +246,11 @@ impl Primitive {
     pub fn inside_at_start(&self, ray: &Ray) -> bool {
         let r = self.local(ray);
         match &self.geom {
-            Geom::Plane { point, normal } => {
-                let dn = normal.dot(r.dir);
-                dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
-            }
+            Geom::Leaf(l) => l.inside_at_start(&r),
             Geom::Csg { op, children } => {
                 csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r)))
             }
-            _ => false,
+            Geom::Mesh(_) => false,
         }
     }
 
@@ -353,35 +267,17 @@ impl Primitive {
         }
         let r = self.local(ray);
         let start = out.len();
-        let mut simple = |f: &dyn Fn(&mut Vec<Crossing>)| {
-            let mut tmp = Vec::new();
-            f(&mut tmp);
-            for c in tmp {
-                out.push(PrimitiveCrossing {
-                    hit: self.out(self.leaf(&r, c.hit)),
-                    entering: c.entering,
-                });
-            }
-        };
         match &self.geom {
-            Geom::Sphere { center, radius } => {
-                simple(&|o| sphere::crossings(*center, *radius, &r, o))
-            }
-            Geom::Plane { point, normal } => simple(&|o| {
-                if let Some(h) =
-                    plane::intersect(*point, *normal, &r, f64::NEG_INFINITY, f64::INFINITY)
-                {
-                    o.push(Crossing {
-                        hit: h,
-                        entering: normal.dot(r.dir) < 0.0,
+            Geom::Leaf(l) => {
+                let mut tmp = Vec::new();
+                l.crossings(&r, &mut tmp);
+                for c in tmp {
+                    out.push(PrimitiveCrossing {
+                        hit: self.out(self.leaf(&r, c.hit)),
+                        entering: c.entering,
                     });
                 }
-            }),
-            Geom::Box(b) => simple(&|o| b.crossings(&r, o)),
-            Geom::Cylinder(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Cone(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Torus(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Blob(x) => simple(&|o| x.crossings(&r, o)),
+            }
             Geom::Mesh(m) => {
                 let mut hits = Vec::new();
                 m.data.all_hits(&r, &mut hits);
@@ -400,7 +296,6 @@ impl Primitive {
                     entering: c.entering,
                 }));
             }
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => {}
         }
         out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
     }
@@ -412,16 +307,9 @@ impl Primitive {
             Some(pl) => pl.to_object.transform_point3(p),
         };
         match &self.geom {
-            Geom::Sphere { center, radius } => sphere::contains(*center, *radius, q),
-            Geom::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
-            Geom::Box(b) => b.contains(q),
-            Geom::Cylinder(c) => c.is_closed() && c.contains(q),
-            Geom::Cone(c) => c.is_closed() && c.contains(q),
-            Geom::Torus(t) => t.contains(q),
-            Geom::Blob(b) => b.contains(q),
+            Geom::Leaf(l) => l.contains(q),
             Geom::Mesh(m) => mesh_contains(&m.data, q),
             Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
         }
     }
 }
@@ -486,17 +374,7 @@ impl Geom {
     /// Object-space bounds (infinite for planes; CSG per its operation).
     pub fn bounds(&self) -> Aabb {
         match self {
-            Geom::Sphere { center, radius } => sphere::bounds(*center, *radius),
-            Geom::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
-            Geom::Box(b) => b.bounds(),
-            Geom::Triangle(x) => x.bounds(),
-            Geom::Quad(x) => x.bounds(),
-            Geom::Polygon(x) => x.bounds(),
-            Geom::Disk(x) => x.bounds(),
-            Geom::Cylinder(x) => x.bounds(),
-            Geom::Cone(x) => x.bounds(),
-            Geom::Torus(x) => x.bounds(),
-            Geom::Blob(x) => x.bounds(),
+            Geom::Leaf(l) => l.bounds(),
             Geom::Mesh(m) => m.data.bounds(),
             Geom::Csg { op, children } => {
                 let b: Vec<Aabb> = children.iter().map(|c| c.bounds).collect();

@@ -1,8 +1,10 @@
-//! What geometry knows about an IR shape before any ray: whether it can be drawn, and its
-//! bounds. This is the one home of both facts: the scene language checks each shape here as it
-//! is made, the course front ends as they read it, and the preparation stage builds the
-//! intersectable [`Geom`] through [`leaf`]; `.bounds` in the language and the world's BVH boxes
-//! both come from [`Geom::bounds`] and [`super::csg::bounds`].
+//! Every single shape in one place: whether an IR shape can be drawn, its intersectable form
+//! ([`Leaf`]) and what that answers (bounds, hits, crossings, membership). This is the one home
+//! of a shape's validity and bounds: the scene language checks each shape here as it is made,
+//! the course front ends as they read it, and the preparation stage builds its [`Leaf`] through
+//! [`leaf`]; `.bounds` in the language and the world's BVH boxes both come from
+//! [`Leaf::bounds`] (and [`super::csg::bounds`] for CSG). Adding a shape: its file in
+//! `geometry/`, a `Leaf` variant with its arms below, its rule in [`leaf`].
 //!
 //! Diagnostic codes (one set for every front end): `rtc::param::out_of_range` (a number outside
 //! its range, value shown), `rtc::param::degenerate` (a shape with no surface),
@@ -13,17 +15,16 @@ use std::path::Path;
 
 use glam::DVec3;
 
-use super::Aabb;
 use super::blob::Blob;
 use super::cone::Cone;
 use super::cuboid::Cuboid;
 use super::cylinder::Cylinder;
 use super::disk::Disk;
 use super::polygon::{Polygon, PolygonError};
-use super::primitive::Geom;
 use super::quad::Quad;
 use super::torus::Torus;
 use super::triangle::Triangle;
+use super::{Aabb, Crossing, Hit, MappingFrame, Ray, plane, sphere};
 use crate::diag::{Diagnostic, number};
 use crate::ir::Shape;
 use crate::source::Span;
@@ -177,6 +178,136 @@ pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
     }
 }
 
+/// A single shape's geometry in object space: every shape but meshes and CSG nodes.
+#[derive(Clone, Debug)]
+pub enum Leaf {
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius.
+        radius: f64,
+    },
+    /// A half-space bounded by a plane.
+    Plane {
+        /// A point on it.
+        point: DVec3,
+        /// Unit outward normal.
+        normal: DVec3,
+    },
+    /// A box.
+    Box(Cuboid),
+    /// A triangle.
+    Triangle(Triangle),
+    /// A parallelogram.
+    Quad(Quad),
+    /// A planar polygon.
+    Polygon(Polygon),
+    /// A disk.
+    Disk(Disk),
+    /// A cylinder.
+    Cylinder(Cylinder),
+    /// A cone or frustum.
+    Cone(Cone),
+    /// A torus.
+    Torus(Torus),
+    /// Metaballs.
+    Blob(Blob),
+}
+
+impl Leaf {
+    /// Object-space bounds (infinite for a plane).
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::bounds(*center, *radius),
+            Leaf::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
+            Leaf::Box(b) => b.bounds(),
+            Leaf::Triangle(x) => x.bounds(),
+            Leaf::Quad(x) => x.bounds(),
+            Leaf::Polygon(x) => x.bounds(),
+            Leaf::Disk(x) => x.bounds(),
+            Leaf::Cylinder(x) => x.bounds(),
+            Leaf::Cone(x) => x.bounds(),
+            Leaf::Torus(x) => x.bounds(),
+            Leaf::Blob(x) => x.bounds(),
+        }
+    }
+
+    /// Nearest hit in (t_min, t_max), in object space.
+    #[inline]
+    pub fn intersect(&self, r: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::intersect(*center, *radius, r, t_min, t_max),
+            Leaf::Plane { point, normal } => plane::intersect(*point, *normal, r, t_min, t_max),
+            Leaf::Box(b) => b.intersect(r, t_min, t_max),
+            Leaf::Triangle(x) => x.intersect(r, t_min, t_max),
+            Leaf::Quad(x) => x.intersect(r, t_min, t_max),
+            Leaf::Polygon(x) => x.intersect(r, t_min, t_max),
+            Leaf::Disk(x) => x.intersect(r, t_min, t_max),
+            Leaf::Cylinder(x) => x.intersect(r, t_min, t_max),
+            Leaf::Cone(x) => x.intersect(r, t_min, t_max),
+            Leaf::Torus(x) => x.intersect(r, t_min, t_max),
+            Leaf::Blob(x) => x.intersect(r, t_min, t_max),
+        }
+    }
+
+    /// Every boundary crossing along the whole line of `r` (solids; surfaces have none).
+    pub fn crossings(&self, r: &Ray, out: &mut Vec<Crossing>) {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::crossings(*center, *radius, r, out),
+            Leaf::Plane { point, normal } => {
+                if let Some(h) =
+                    plane::intersect(*point, *normal, r, f64::NEG_INFINITY, f64::INFINITY)
+                {
+                    out.push(Crossing {
+                        hit: h,
+                        entering: normal.dot(r.dir) < 0.0,
+                    });
+                }
+            }
+            Leaf::Box(b) => b.crossings(r, out),
+            Leaf::Cylinder(x) => x.crossings(r, out),
+            Leaf::Cone(x) => x.crossings(r, out),
+            Leaf::Torus(x) => x.crossings(r, out),
+            Leaf::Blob(x) => x.crossings(r, out),
+            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => {}
+        }
+    }
+
+    /// Point membership in object space (closed solids; surfaces contain nothing).
+    pub fn contains(&self, q: DVec3) -> bool {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::contains(*center, *radius, q),
+            Leaf::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
+            Leaf::Box(b) => b.contains(q),
+            Leaf::Cylinder(c) => c.is_closed() && c.contains(q),
+            Leaf::Cone(c) => c.is_closed() && c.contains(q),
+            Leaf::Torus(t) => t.contains(q),
+            Leaf::Blob(b) => b.contains(q),
+            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => false,
+        }
+    }
+
+    /// Whether the line of `r` starts (at t → −∞) inside (only a half-space can).
+    pub fn inside_at_start(&self, r: &Ray) -> bool {
+        match self {
+            Leaf::Plane { point, normal } => {
+                let dn = normal.dot(r.dir);
+                dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
+            }
+            _ => false,
+        }
+    }
+
+    /// The frame texture mappings read this shape's hits in.
+    pub fn frame(&self) -> MappingFrame {
+        match *self {
+            Leaf::Sphere { center, radius } => MappingFrame::Sphere { center, radius },
+            _ => MappingFrame::Object,
+        }
+    }
+}
+
 /// Whether a CSG node with `count` operands can be built (it needs two or more).
 pub fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
     if count >= 2 {
@@ -191,14 +322,14 @@ pub fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
     ))
 }
 
-/// The intersectable geometry of a shape other than a mesh or a CSG node (which the
-/// preparation stage assembles from loaded files and prepared operands), or its flaw.
-pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
+/// The intersectable form of a shape other than a mesh or a CSG node (which the preparation
+/// stage assembles from loaded files and prepared operands), or its flaw.
+pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
     Ok(match shape {
         Shape::Sphere { center, radius } => {
             positive("radius", *radius)?;
             finite("center", &[*center])?;
-            Geom::Sphere {
+            Leaf::Sphere {
                 center: *center,
                 radius: *radius,
             }
@@ -206,7 +337,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
         Shape::Plane { point, normal } => {
             finite("point", &[*point])?;
             match normal.try_normalize() {
-                Some(normal) => Geom::Plane {
+                Some(normal) => Leaf::Plane {
                     point: *point,
                     normal,
                 },
@@ -231,11 +362,11 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
                     "swap the corners or fix the smaller coordinate",
                 ));
             }
-            Geom::Box(Cuboid::new(*min, *max))
+            Leaf::Box(Cuboid::new(*min, *max))
         }
         Shape::Triangle { vertices } => {
             finite("c", vertices)?;
-            Geom::Triangle(Triangle::new(*vertices).ok_or_else(|| {
+            Leaf::Triangle(Triangle::new(*vertices).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "c",
                     "the triangle has zero area",
@@ -246,7 +377,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
         }
         Shape::Quad { corner, u, v } => {
             finite("v", &[*corner, *u, *v])?;
-            Geom::Quad(Quad::new(*corner, *u, *v).ok_or_else(|| {
+            Leaf::Quad(Quad::new(*corner, *u, *v).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "v",
                     "the quad has zero area",
@@ -257,7 +388,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
         }
         Shape::Polygon { points } => {
             finite("points", points)?;
-            Geom::Polygon(Polygon::new(points).map_err(|e| match e {
+            Leaf::Polygon(Polygon::new(points).map_err(|e| match e {
                 PolygonError::TooFew => ShapeFlaw::other(
                     "points",
                     OUT_OF_RANGE,
@@ -287,7 +418,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
         } => {
             positive("radius", *radius)?;
             finite("center", &[*center, *normal])?;
-            Geom::Disk(Disk::new(*center, *normal, *radius).ok_or_else(|| {
+            Leaf::Disk(Disk::new(*center, *normal, *radius).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "normal",
                     "the disk's normal is the zero vector",
@@ -304,7 +435,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
         } => {
             positive("radius", *radius)?;
             finite("top", &[*base, *top])?;
-            Geom::Cylinder(Cylinder::new(*base, *top, *radius, *capped).ok_or_else(ends_coincide)?)
+            Leaf::Cylinder(Cylinder::new(*base, *top, *radius, *capped).ok_or_else(ends_coincide)?)
         }
         Shape::Cone {
             base,
@@ -324,7 +455,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
                 ));
             }
             finite("top", &[*base, *top])?;
-            Geom::Cone(
+            Leaf::Cone(
                 Cone::new(*base, *top, *base_radius, *top_radius, *capped)
                     .ok_or_else(ends_coincide)?,
             )
@@ -343,7 +474,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
                 *minor_radius,
             )?;
             finite("center", &[*center])?;
-            Geom::Torus(
+            Leaf::Torus(
                 Torus::new(*center, *major_radius, *minor_radius)
                     .ok_or_else(|| ShapeFlaw::range("major_radius", "> 0", *major_radius))?,
             )
@@ -367,7 +498,7 @@ pub fn leaf(shape: &Shape) -> Result<Geom, ShapeFlaw> {
                 finite("components", &[c.center])?;
             }
             positive("threshold", *threshold)?;
-            Geom::Blob(Blob::new(components, *threshold).ok_or_else(|| {
+            Leaf::Blob(Blob::new(components, *threshold).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "components",
                     "the blob has no surface",

@@ -7,8 +7,8 @@ use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
 use super::bvh::{Bvh, BvhRay, to_f32_box};
-use super::primitive::{GeoHit, Geom, MappingFrame, Primitive};
-use super::{Aabb, Ray, sphere};
+use super::primitive::{GeoHit, Geom, Primitive};
+use super::{Aabb, MappingFrame, Ray, sphere};
 use crate::ir::MaterialId;
 
 /// A world-space hit with everything shading needs.

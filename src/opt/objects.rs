@@ -169,7 +169,7 @@ impl Builder {
                 }
             }
             leaf_shape => match shape::leaf(leaf_shape) {
-                Ok(g) => g,
+                Ok(l) => Geom::Leaf(l),
                 Err(flaw) => {
                     self.diagnostics.push(flaw.diagnostic(o.span));
                     return None;

@@ -29,11 +29,12 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
 
 /// Named enumeration values.
 pub fn constants() -> Vec<(&'static str, Value)> {
+    let modes = ir::RenderMode::NAMED
+        .iter()
+        .map(|(name, mode)| (*name, Value::Mode(*mode)));
     vec![
         ("phong", Value::Shading(ir::ShadingModel::Phong)),
         ("hatching", Value::Shading(ir::ShadingModel::Hatching)),
-        ("shaded", Value::Mode(ir::RenderMode::Shaded)),
-        ("normal", Value::Mode(ir::RenderMode::Normal)),
         ("per_light", Value::Ambient(ir::AmbientConvention::PerLight)),
         ("once", Value::Ambient(ir::AmbientConvention::Once)),
         ("uv", Value::Mapping(ir::Mapping::Uv)),
@@ -41,6 +42,9 @@ pub fn constants() -> Vec<(&'static str, Value)> {
         ("spherical", Value::Mapping(ir::Mapping::Spherical)),
         ("cylindrical", Value::Mapping(ir::Mapping::Cylindrical)),
     ]
+    .into_iter()
+    .chain(modes)
+    .collect()
 }
 
 fn int_in(it: &Interp, v: &Value, sp: Span, name: &str, lo: i64, hi: i64) -> R<i64> {
