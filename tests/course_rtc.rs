@@ -117,12 +117,40 @@ fn scene01_zoom() {
 
 /// The rule above is exact, not approximate: the renderer sizes a perspective pixel at `center`
 /// as 2·d·tan(fov_y / 2) / h, and for the course views that is |up| to the last bit, so the
-/// `.rtc` files trace bit-identical primary rays.
+/// `.rtc` files trace bit-identical primary rays: the renderer's cameras for both files agree
+/// ray for ray.
 #[test]
-fn equivalent_fov_gives_the_course_pixel_size_exactly() {
-    for (h, up, d) in [(400.0_f64, 1.0_f64, 1000.0_f64), (400.0, 0.75, 1000.0)] {
-        let fov: f64 = 2.0 * (h * up / 2.0 / d).atan();
-        assert_eq!(2.0 * d * (0.5 * fov).tan() / h, up);
+fn equivalent_fov_gives_the_course_rays_exactly() {
+    use rtc::render::camera::Camera;
+    for name in ["scene01", "scene01-zoom-ss-reflect-lights-shadows"] {
+        let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
+        let yaml_path = root()
+            .join("tests/data/course/yaml")
+            .join(format!("{name}.yaml"));
+        let mut sources = SourceMap::default();
+        let from_rtc = scene_of(
+            load_file(&rtc_path, &mut sources, &EvalOptions::default()),
+            &rtc_path,
+        );
+        let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
+        assert!(matches!(
+            from_rtc.camera.projection,
+            Projection::Perspective { .. }
+        ));
+        assert_eq!(from_yaml.camera.projection, Projection::Course);
+        let (a, b) = (
+            Camera::new(&from_rtc.camera),
+            Camera::new(&from_yaml.camera),
+        );
+        for (x, y) in [(0, 0), (399, 0), (123, 321), (200, 200), (399, 399)] {
+            for (sx, sy) in [(0.5, 0.5), (0.125, 0.875)] {
+                let (ra, rb) = (
+                    a.ray(x, y, sx, sy, (0.5, 0.5)),
+                    b.ray(x, y, sx, sy, (0.5, 0.5)),
+                );
+                assert_eq!(ra, rb, "{name}: pixel ({x}, {y}) offset ({sx}, {sy})");
+            }
+        }
     }
 }
 

@@ -237,15 +237,6 @@ impl SceneParts {
         crate::ir::MaterialId((self.materials.len() - 1) as u32)
     }
 
-    /// Adds an object whose shape passes geometry's checks (the one home of shape validity,
-    /// `geometry::shape`); reports the flaw on the object otherwise.
-    pub fn add_object(&mut self, object: Object, diags: &mut Diagnostics) {
-        match crate::geometry::shape::check(&object.shape) {
-            Ok(()) => self.objects.push(object),
-            Err(flaw) => diags.push(flaw.diagnostic(object.span)),
-        }
-    }
-
     /// Adds a texture and returns its id.
     pub fn add_texture(&mut self, t: crate::ir::Texture) -> TextureId {
         self.textures.push(t);

@@ -305,7 +305,7 @@ impl<'t> Reader<'t, '_> {
                 };
                 let id = draft.scene.add_material(material.to_ir());
                 let sphere = course::sphere_object(center, r, None, Some(id), span);
-                draft.scene.add_object(sphere, self.diags);
+                draft.scene.objects.push(sphere);
             }
         }
         Ok(())

@@ -12,7 +12,9 @@
 //! `rtc::yaml::{syntax, empty, extra_document, too_large, type, arity, missing_key, duplicate_key,
 //! unknown_key, spelling, unknown_value, unknown_object, unused}`; shared `rtc::compat::{not_finite,
 //! out_of_range, degenerate, no_camera, camera_override, encoding, capped}`; the asset
-//! service's `rtc::asset::missing` for a texture or mesh file that is not found.
+//! service's `rtc::asset::missing` for a texture or mesh file that is not found. Shapes are
+//! checked by geometry's rules when the scene is prepared (`rtc::param::*`, the codes the scene
+//! language uses), not here: one home for shape validity.
 
 pub mod course;
 pub mod course_yaml;

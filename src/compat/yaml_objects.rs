@@ -56,15 +56,12 @@ pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut
     let material = material_entry(&mut m, scene, Mapping::Uv, parts, diags);
     m.finish(&format!("a {kind_name}"), &known_keys(kind_name), diags);
     if let (Some(shape), Some(material)) = (shape, material) {
-        parts.add_object(
-            Object {
-                shape,
-                transform: DAffine3::IDENTITY,
-                material: Some(material),
-                span: node.span,
-            },
-            diags,
-        );
+        parts.objects.push(Object {
+            shape,
+            transform: DAffine3::IDENTITY,
+            material: Some(material),
+            span: node.span,
+        });
     }
 }
 
@@ -164,7 +161,7 @@ fn sphere(
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
     let sphere = course::sphere_object(position, radius, orientation, Some(material), node.span);
-    parts.add_object(sphere, diags);
+    parts.objects.push(sphere);
 }
 
 /// `radius: r` or `radius: [r, [x, y, z]]` (the list form also gives the texture's north pole).
@@ -338,7 +335,7 @@ fn mesh(
         material,
         span: node.span,
     };
-    parts.add_object(mesh, diags);
+    parts.objects.push(mesh);
 }
 
 /// The required `material:` of an object; `None` after an error.
