@@ -43,7 +43,8 @@ fn as_perspective(mut s: Scene) -> Scene {
     s
 }
 
-fn compare(name: &str) {
+/// The scene `name` of the family as written in the language and in the course YAML.
+fn both(name: &str) -> (Scene, Scene) {
     let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
     let yaml_path = root()
         .join("tests/data/course/yaml")
@@ -54,6 +55,11 @@ fn compare(name: &str) {
         &rtc_path,
     );
     let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
+    (from_rtc, from_yaml)
+}
+
+fn compare(name: &str) {
+    let (from_rtc, from_yaml) = both(name);
     assert_eq!(
         from_yaml.camera.projection,
         Projection::Course,
@@ -123,16 +129,7 @@ fn scene01_zoom() {
 fn equivalent_fov_gives_the_course_rays_exactly() {
     use rtc::render::camera::Camera;
     for name in ["scene01", "scene01-zoom-ss-reflect-lights-shadows"] {
-        let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
-        let yaml_path = root()
-            .join("tests/data/course/yaml")
-            .join(format!("{name}.yaml"));
-        let mut sources = SourceMap::default();
-        let from_rtc = scene_of(
-            load_file(&rtc_path, &mut sources, &EvalOptions::default()),
-            &rtc_path,
-        );
-        let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
+        let (from_rtc, from_yaml) = both(name);
         assert!(matches!(
             from_rtc.camera.projection,
             Projection::Perspective { .. }
@@ -156,17 +153,8 @@ fn equivalent_fov_gives_the_course_rays_exactly() {
 
 /// The stronger claim: the `.rtc` rewrite renders the very same bytes as the YAML.
 fn same_bytes(name: &str) {
-    let rtc_path = root().join("scenes/course").join(format!("{name}.rtc"));
-    let yaml_path = root()
-        .join("tests/data/course/yaml")
-        .join(format!("{name}.yaml"));
-    let mut sources = SourceMap::default();
     let options = rtc::render::RenderOptions::default();
-    let from_rtc = scene_of(
-        load_file(&rtc_path, &mut sources, &EvalOptions::default()),
-        &rtc_path,
-    );
-    let from_yaml = scene_of(load_yaml(&yaml_path, &mut sources), &yaml_path);
+    let (from_rtc, from_yaml) = both(name);
     let a = rtc::render::render_image(&from_rtc, &options).expect("rtc scene renders");
     let b = rtc::render::render_image(&from_yaml, &options).expect("yaml scene renders");
     let differing = a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count();

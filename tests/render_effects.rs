@@ -271,12 +271,20 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         render_image(&s, &opts(1)).unwrap_err().code,
         "rtc::render::texture"
     );
-    let mut s = empty([200.0, 200.0, 1000.0]);
-    s.camera.up = DVec3::Z;
-    assert_eq!(
-        render_image(&s, &opts(1)).unwrap_err().code,
-        "rtc::render::camera"
-    );
+    // Cameras that cannot make rays: `up` along the view, an empty image, no field of view.
+    let bad_cameras: [fn(&mut rtc::ir::Camera); 3] = [
+        |c| c.up = DVec3::Z,
+        |c| c.width = 0,
+        |c| c.projection = rtc::ir::Projection::Perspective { fov_y: 0.0 },
+    ];
+    for spoil in bad_cameras {
+        let mut s = empty([200.0, 200.0, 1000.0]);
+        spoil(&mut s.camera);
+        assert_eq!(
+            render_image(&s, &opts(1)).unwrap_err().code,
+            "rtc::render::camera"
+        );
+    }
 }
 
 #[test]

@@ -162,34 +162,3 @@ pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     }
     Ok(())
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::source::Span;
-    use glam::DVec3;
-
-    fn course(up: DVec3, w: u32, h: u32) -> Camera {
-        Camera {
-            eye: DVec3::new(200.0, 200.0, 1000.0),
-            center: DVec3::new(200.0, 200.0, 0.0),
-            up,
-            width: w,
-            height: h,
-            projection: Projection::Course,
-            aperture: 0.0,
-            focus_distance: 0.0,
-            span: Span::default(),
-        }
-    }
-
-    #[test]
-    fn degenerate_cameras_are_diagnosed() {
-        assert!(camera(&course(DVec3::Y, 4, 4)).is_ok());
-        assert!(camera(&course(DVec3::Z, 4, 4)).is_err());
-        assert!(camera(&course(DVec3::Y, 0, 4)).is_err());
-        let mut c = course(DVec3::Y, 4, 4);
-        c.projection = Projection::Perspective { fov_y: 0.0 };
-        assert!(camera(&c).is_err());
-    }
-}

@@ -163,11 +163,6 @@ impl Params {
             .unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
     }
 
-    /// The call site.
-    pub fn site(&self) -> CallSite {
-        self.site
-    }
-
     /// An optional argument.
     pub fn get(&mut self, name: &str) -> Option<(Value, Span)> {
         let i = self.idx(name);
@@ -272,9 +267,4 @@ pub fn positive(name: &str, v: f64, span: Span) -> R<()> {
 /// `0 <= v <= 1`.
 pub fn unit_interval(name: &str, v: f64, span: Span) -> R<()> {
     check((0.0..=1.0).contains(&v), name, "in [0, 1]", v, span)
-}
-
-/// A fresh empty list value.
-pub fn empty_list() -> Value {
-    Value::List(Rc::new(Vec::new()))
 }
