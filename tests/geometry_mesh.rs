@@ -229,7 +229,7 @@ fn one_file_placed_many_times_is_loaded_once() {
     for i in 0..5 {
         let ray = Ray::new(DVec3::new(3.0 * i as f64, 0.0, 10.0), -DVec3::Z);
         let h = w.intersect(&ray, 0.0, f64::INFINITY).expect("instance hit");
-        assert_eq!(h.object, i);
+        assert_eq!(w.object(&h), i);
         assert!((h.t - 9.0).abs() < 1e-5);
     }
 }

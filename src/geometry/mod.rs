@@ -27,6 +27,6 @@ pub mod triangle;
 pub mod world;
 
 pub use aabb::Aabb;
-pub use primitive::Primitive;
+pub use primitive::{Primitive, SurfaceId};
 pub use ray::{Crossing, Hit, MappingFrame, Ray};
 pub use world::{SurfaceHit, World, WorldStats};

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
 use super::shape::Leaf;
-use super::{Aabb, Hit, MappingFrame, Ray, csg, mesh::Mesh, sphere};
+use super::{Aabb, Hit, Ray, csg, mesh::Mesh, sphere};
 use crate::ir::{CsgOp, MaterialId};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
@@ -22,8 +22,8 @@ pub struct GeoHit {
     pub uv: DVec2,
     /// The hit point in the leaf object's own space.
     pub local_point: DVec3,
-    /// The frame texture mappings read `local_point` in (the leaf shape's).
-    pub frame: MappingFrame,
+    /// The surface hit (see [`SurfaceId`]).
+    pub surface: SurfaceId,
     /// The material to shade with.
     pub material: MaterialId,
 }
@@ -84,7 +84,14 @@ pub struct Primitive {
     pub material: MaterialId,
     /// Bounds in the parent's space (infinite for unbounded geometry).
     pub bounds: Aabb,
+    /// The surface a leaf or mesh node is, once the world has numbered them.
+    pub surface: SurfaceId,
 }
+
+/// A surface of the world: one leaf shape or mesh, wherever it sits (a top-level object or an
+/// operand deep inside CSG). Hits carry it; the world tells its object and mapping frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SurfaceId(pub u32);
 
 impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
@@ -104,6 +111,7 @@ impl Primitive {
             placement,
             material,
             bounds,
+            surface: SurfaceId::default(),
         }
     }
 
@@ -145,16 +153,8 @@ impl Primitive {
             geometric_normal: h.normal,
             uv: h.uv,
             local_point: ray.at(h.t),
-            frame: self.frame(),
+            surface: self.surface,
             material: self.material,
-        }
-    }
-
-    /// The mapping frame of hits on this node's own geometry.
-    fn frame(&self) -> MappingFrame {
-        match &self.geom {
-            Geom::Leaf(l) => l.frame(),
-            _ => MappingFrame::Object,
         }
     }
 
@@ -172,10 +172,7 @@ impl Primitive {
                     geometric_normal: normal,
                     uv: DVec2::ZERO,
                     local_point,
-                    frame: MappingFrame::Sphere {
-                        center: *center,
-                        radius: *radius,
-                    },
+                    surface: self.surface,
                     material: self.material,
                 })
             });
@@ -205,8 +202,8 @@ impl Primitive {
 
     /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
     pub fn finish(&self, h: &mut GeoHit) {
-        if let Geom::Leaf(Leaf::Sphere { .. }) = &self.geom {
-            h.uv = h.frame.spherical_uv(h.local_point);
+        if let Geom::Leaf(l @ Leaf::Sphere { .. }) = &self.geom {
+            h.uv = l.frame().spherical_uv(h.local_point);
         }
     }
 
@@ -237,7 +234,7 @@ impl Primitive {
             geometric_normal: h.geometric,
             uv: h.uv,
             local_point: r.at(h.t),
-            frame: MappingFrame::Object,
+            surface: self.surface,
             material,
         }
     }

@@ -37,8 +37,8 @@ pub struct Hit {
 }
 
 /// The frame in which texture mappings read a hit's position: a sphere's own centre (and its
-/// equirectangular uv), or the object-space origin for every other shape. It travels with the
-/// hit, so a sphere inside a CSG node or group maps about its own centre.
+/// equirectangular uv), or the object-space origin for every other shape. The world keeps it
+/// per surface (`World::frame`), so a sphere inside a CSG node maps about its own centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum MappingFrame {
     /// About the object-space origin.
@@ -53,11 +53,11 @@ pub enum MappingFrame {
 }
 
 impl MappingFrame {
-    /// The point mappings measure from.
-    pub fn center(&self) -> DVec3 {
+    /// The object-space point `p` as mappings read it: relative to the frame's centre.
+    pub fn point(&self, p: DVec3) -> DVec3 {
         match *self {
-            MappingFrame::Object => DVec3::ZERO,
-            MappingFrame::Sphere { center, .. } => center,
+            MappingFrame::Object => p - DVec3::ZERO,
+            MappingFrame::Sphere { center, .. } => p - center,
         }
     }
 

@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
 use super::bvh::{Bvh, BvhRay, to_f32_box};
-use super::primitive::{GeoHit, Geom, Primitive};
+use super::primitive::{GeoHit, Geom, Primitive, SurfaceId};
 use super::{Aabb, MappingFrame, Ray, sphere};
 use crate::ir::MaterialId;
 
@@ -27,26 +27,21 @@ pub struct SurfaceHit {
     pub uv: DVec2,
     /// Hit point in the leaf object's own space (for solid textures).
     pub local_point: DVec3,
-    /// The frame texture mappings read `local_point` in (see [`SurfaceHit::mapping_point`]).
-    pub frame: MappingFrame,
     /// The material to shade with (an index into the prepared scene's material table, which
     /// holds a mesh's MTL materials after the scene's).
     pub material: MaterialId,
-    /// Index of the top-level object in `Scene::objects`.
-    pub object: u32,
+    /// The surface hit: [`World::object`] and [`World::frame`] tell its object and mapping
+    /// frame (kept out of the hit so it stays small: hits are copied on every candidate).
+    pub surface: SurfaceId,
 }
 
-impl SurfaceHit {
-    /// The hit point as texture mappings read it: in the leaf shape's object space, relative to
-    /// its mapping centre (a sphere's centre, else the origin).
-    pub fn mapping_point(&self) -> DVec3 {
-        self.local_point - self.frame.center()
-    }
-
-    /// Equirectangular (u, v) of the hit about its mapping centre (+Y is the north pole).
-    pub fn spherical_uv(&self) -> DVec2 {
-        self.frame.spherical_uv(self.local_point)
-    }
+/// What the world knows about one surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct SurfaceInfo {
+    /// The top-level object it belongs to (an index into the scene's objects).
+    object: u32,
+    /// The frame texture mappings read its hits in.
+    frame: MappingFrame,
 }
 
 /// What building the world took (for `rtc render --stats`).
@@ -78,6 +73,8 @@ pub struct World {
     nodes: Vec<Primitive>,
     /// Scene object index of each node.
     object_of: Vec<u32>,
+    /// Every leaf and mesh node by its [`SurfaceId`].
+    surfaces: Vec<SurfaceInfo>,
     /// Top level over the bounded nodes (`None` when a linear scan is as fast).
     bvh: Option<Bvh>,
     /// Nodes tested beside the BVH (all of them when there is no BVH), except `spheres`.
@@ -94,7 +91,11 @@ const MIN_BVH_OBJECTS: usize = 12;
 
 impl World {
     /// The world of prepared objects; `object_of[i]` is the scene object `nodes[i]` came from.
-    pub fn new(nodes: Vec<Primitive>, object_of: Vec<u32>) -> World {
+    pub fn new(mut nodes: Vec<Primitive>, object_of: Vec<u32>) -> World {
+        let mut surfaces = Vec::new();
+        for (n, &object) in nodes.iter_mut().zip(&object_of) {
+            number_surfaces(n, object, &mut surfaces);
+        }
         let mut stats = WorldStats {
             objects: nodes.len(),
             ..WorldStats::default()
@@ -147,6 +148,7 @@ impl World {
             spheres,
             nodes,
             object_of,
+            surfaces,
             bvh,
             loose,
             stats,
@@ -242,9 +244,8 @@ impl World {
                 geometric_normal: h.geometric_normal,
                 uv: h.uv,
                 local_point: h.local_point,
-                frame: h.frame,
                 material: h.material,
-                object: self.object_of[i as usize],
+                surface: h.surface,
             }
         })
     }
@@ -279,6 +280,21 @@ impl World {
         }
     }
 
+    /// The top-level object (an index into the scene's objects) a hit belongs to.
+    pub fn object(&self, hit: &SurfaceHit) -> u32 {
+        self.surfaces
+            .get(hit.surface.0 as usize)
+            .map_or(0, |s| s.object)
+    }
+
+    /// The frame texture mappings read a hit's `local_point` in: its leaf shape's (a sphere's
+    /// own centre, even inside CSG), else the object-space origin.
+    pub fn frame(&self, hit: &SurfaceHit) -> MappingFrame {
+        self.surfaces
+            .get(hit.surface.0 as usize)
+            .map_or(MappingFrame::Object, |s| s.frame)
+    }
+
     /// Whether a world point is inside the solid object `object` (CSG checks and tests).
     pub fn contains(&self, object: u32, p: DVec3) -> bool {
         self.object_of
@@ -286,6 +302,23 @@ impl World {
             .position(|&o| o == object)
             .is_some_and(|i| self.nodes[i].contains(p))
     }
+}
+
+/// Numbers the leaf and mesh nodes of `n` (a node of top-level object `object`) from
+/// `surfaces.len()` on, recording each one's object and mapping frame.
+fn number_surfaces(n: &mut Primitive, object: u32, surfaces: &mut Vec<SurfaceInfo>) {
+    let frame = match &mut n.geom {
+        Geom::Leaf(l) => l.frame(),
+        Geom::Mesh(_) => MappingFrame::Object,
+        Geom::Csg { children, .. } => {
+            for c in children {
+                number_surfaces(c, object, surfaces);
+            }
+            return;
+        }
+    };
+    n.surface = SurfaceId(surfaces.len() as u32);
+    surfaces.push(SurfaceInfo { object, frame });
 }
 
 /// Triangles a prepared object places, counting every instance.

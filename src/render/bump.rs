@@ -7,11 +7,17 @@
 use glam::{DVec2, DVec3};
 
 use super::texture;
-use crate::geometry::SurfaceHit;
+use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::opt::TextureMap;
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
-pub fn perturb(tex: &TextureMap, scale: f64, hit: &SurfaceHit, n: DVec3) -> DVec3 {
+pub fn perturb(
+    tex: &TextureMap,
+    scale: f64,
+    hit: &SurfaceHit,
+    frame: MappingFrame,
+    n: DVec3,
+) -> DVec3 {
     let up = if n.y.abs() > 0.999 {
         DVec3::X
     } else {
@@ -21,7 +27,7 @@ pub fn perturb(tex: &TextureMap, scale: f64, hit: &SurfaceHit, n: DVec3) -> DVec
     let b = t.cross(n);
     let (dh_du, dh_dv) = match tex {
         TextureMap::Image(pic, mapping) => {
-            let uv = texture::uv(*mapping, hit);
+            let uv = texture::uv(*mapping, hit, frame);
             let (du, dv) = pic.texel_size();
             let h = |o: DVec2| pic.nearest(uv + o).y;
             let h0 = h(DVec2::ZERO);
@@ -33,7 +39,7 @@ pub fn perturb(tex: &TextureMap, scale: f64, hit: &SurfaceHit, n: DVec3) -> DVec
         TextureMap::Checker(_, _, size) | TextureMap::Stripes(_, _, size) => {
             let step = size / 8.0;
             let lum = |p: DVec3| {
-                let c = texture::solid(tex, hit, p);
+                let c = texture::solid(tex, hit, frame, p);
                 (c.x + c.y + c.z) / 3.0
             };
             let h0 = lum(hit.local_point);
@@ -53,9 +59,14 @@ pub fn perturb(tex: &TextureMap, scale: f64, hit: &SurfaceHit, n: DVec3) -> DVec
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::MappingFrame;
+    use crate::geometry::SurfaceId;
     use crate::ir::{Mapping, MaterialId};
     use crate::opt::Picture;
+
+    const SPHERE: MappingFrame = MappingFrame::Sphere {
+        center: DVec3::ZERO,
+        radius: 1.0,
+    };
 
     fn hit_at(n: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -65,12 +76,8 @@ mod tests {
             geometric_normal: n,
             uv: crate::geometry::sphere::uv(n),
             local_point: n,
-            frame: MappingFrame::Sphere {
-                center: DVec3::ZERO,
-                radius: 1.0,
-            },
             material: MaterialId(0),
-            object: 0,
+            surface: SurfaceId(0),
         }
     }
 
@@ -79,7 +86,7 @@ mod tests {
         let n = DVec3::new(1.0, 0.2, -0.3).normalize();
         let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
         let flat = TextureMap::Image(flat.into(), Mapping::Spherical);
-        assert_eq!(perturb(&flat, 1.0, &hit_at(n), n), n);
+        assert_eq!(perturb(&flat, 1.0, &hit_at(n), SPHERE, n), n);
         // Height grows with u (eastwards): the normal tilts westwards, against T.
         let ramp: Vec<DVec3> = (0..64)
             .map(|i| DVec3::splat(f64::from(i % 64) / 63.0))
@@ -88,7 +95,7 @@ mod tests {
             Picture::new(64, 1, ramp).unwrap().into(),
             Mapping::Spherical,
         );
-        let tilted = perturb(&ramp, 0.01, &hit_at(n), n);
+        let tilted = perturb(&ramp, 0.01, &hit_at(n), SPHERE, n);
         let t = DVec3::Y.cross(n).normalize();
         assert!((tilted.length() - 1.0).abs() < 1e-12);
         assert!(tilted.dot(t) < 0.0);

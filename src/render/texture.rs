@@ -5,20 +5,20 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::geometry::SurfaceHit;
+use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::ir::{Color, Mapping};
 use crate::opt::TextureMap;
 
-/// The colour of `tex` at `hit`.
-pub fn color(tex: &TextureMap, hit: &SurfaceHit) -> Color {
-    solid(tex, hit, hit.local_point)
+/// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
+pub fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Color {
+    solid(tex, hit, frame, hit.local_point)
 }
 
 /// The colour of `tex` at `hit`, with solid textures read at object-space point `p` (bump
 /// mapping reads them at points near the hit).
-pub fn solid(tex: &TextureMap, hit: &SurfaceHit, p: DVec3) -> Color {
+pub fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
     match tex {
-        TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit)),
+        TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, frame)),
         TextureMap::Checker(a, b, size) => {
             // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor flips
             // the parity pixel by pixel; snapping to a tiny fraction of a cell first keeps the
@@ -41,13 +41,13 @@ pub fn solid(tex: &TextureMap, hit: &SurfaceHit, p: DVec3) -> Color {
     }
 }
 
-/// Surface coordinates of a hit under a mapping (in the hit's mapping frame; +Y is the north
-/// pole).
-pub fn uv(mapping: Mapping, hit: &SurfaceHit) -> DVec2 {
-    let p = hit.mapping_point();
+/// Surface coordinates of a hit under a mapping, in its surface's mapping `frame` (+Y is the
+/// north pole).
+pub fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
+    let p = frame.point(hit.local_point);
     match mapping {
         Mapping::Uv => hit.uv,
-        Mapping::Spherical => hit.spherical_uv(),
+        Mapping::Spherical => frame.spherical_uv(hit.local_point),
         Mapping::Planar => DVec2::new(p.x - p.x.floor(), p.z - p.z.floor()),
         Mapping::Cylindrical => {
             let phi = (-p.z).atan2(p.x).rem_euclid(std::f64::consts::TAU);
@@ -59,7 +59,7 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::MappingFrame;
+    use crate::geometry::SurfaceId;
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -69,10 +69,13 @@ mod tests {
             geometric_normal: DVec3::Y,
             uv: DVec2::ZERO,
             local_point: p,
-            frame: MappingFrame::Object,
             material: crate::ir::MaterialId(0),
-            object: 0,
+            surface: SurfaceId(0),
         }
+    }
+
+    fn at(tex: &TextureMap, hit: &SurfaceHit) -> Color {
+        color(tex, hit, MappingFrame::Object)
     }
 
     #[test]
@@ -81,8 +84,8 @@ mod tests {
         // colour of one cell (the gallery floor showed salt-and-pepper before).
         let checker = TextureMap::Checker(DVec3::X, DVec3::Z, 1.0);
         for x in [0.25, 1.5, -3.75, 123.5] {
-            let above = color(&checker, &hit_at(DVec3::new(x, 1e-13, 0.5)));
-            let below = color(&checker, &hit_at(DVec3::new(x, -1e-13, 0.5)));
+            let above = at(&checker, &hit_at(DVec3::new(x, 1e-13, 0.5)));
+            let below = at(&checker, &hit_at(DVec3::new(x, -1e-13, 0.5)));
             assert_eq!(above, below, "x = {x}");
         }
     }
@@ -91,14 +94,14 @@ mod tests {
     fn checker_and_stripes_alternate_in_object_space() {
         let (a, b) = (DVec3::X, DVec3::Z);
         let checker = TextureMap::Checker(a, b, 2.0);
-        assert_eq!(color(&checker, &hit_at(DVec3::new(0.5, 0.5, 0.5))), a);
-        assert_eq!(color(&checker, &hit_at(DVec3::new(2.5, 0.5, 0.5))), b);
-        assert_eq!(color(&checker, &hit_at(DVec3::new(2.5, 2.5, 0.5))), a);
-        assert_eq!(color(&checker, &hit_at(DVec3::new(-0.5, 0.5, 0.5))), b);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(0.5, 0.5, 0.5))), a);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(2.5, 0.5, 0.5))), b);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(2.5, 2.5, 0.5))), a);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(-0.5, 0.5, 0.5))), b);
         let stripes = TextureMap::Stripes(a, b, 1.0);
-        assert_eq!(color(&stripes, &hit_at(DVec3::new(0.2, 9.0, -4.0))), a);
-        assert_eq!(color(&stripes, &hit_at(DVec3::new(1.2, 9.0, -4.0))), b);
-        assert_eq!(color(&stripes, &hit_at(DVec3::new(-0.2, 0.0, 0.0))), b);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(0.2, 9.0, -4.0))), a);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(1.2, 9.0, -4.0))), b);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(-0.2, 0.0, 0.0))), b);
     }
 
     #[test]
@@ -108,18 +111,17 @@ mod tests {
         // origin).
         let c = DVec3::new(5.0, -2.0, 1.0);
         let on = DVec3::new(0.0, 0.0, -1.0);
-        let mut framed = hit_at(c + on);
-        framed.frame = MappingFrame::Sphere {
+        let framed = MappingFrame::Sphere {
             center: c,
             radius: 1.0,
         };
-        let mut at_origin = hit_at(on);
-        at_origin.frame = MappingFrame::Sphere {
+        let at_origin = MappingFrame::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
         };
         for m in [Mapping::Spherical, Mapping::Planar, Mapping::Cylindrical] {
-            assert_eq!(uv(m, &framed), uv(m, &at_origin), "{m:?}");
+            let (a, b) = (hit_at(c + on), hit_at(on));
+            assert_eq!(uv(m, &a, framed), uv(m, &b, at_origin), "{m:?}");
         }
     }
 }

@@ -203,7 +203,8 @@ impl<'a> Whitted<'a> {
     fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
         match mat.texture {
             Some(t) if self.effects.textures => {
-                texture::color(&self.scene.textures()[t.0 as usize], hit)
+                let frame = self.scene.world().frame(hit);
+                texture::color(&self.scene.textures()[t.0 as usize], hit, frame)
             }
             _ => mat.color,
         }
@@ -216,6 +217,7 @@ impl<'a> Whitted<'a> {
                 &self.scene.textures()[b.texture.0 as usize],
                 b.scale,
                 hit,
+                self.scene.world().frame(hit),
                 facing,
             ),
             _ => facing,
