@@ -1,5 +1,5 @@
 //! The scene IR: plain data produced by the language evaluator and the legacy front ends, consumed
-//! by the optimizer and the renderer. No parsing types and no render types live here.
+//! by the preparation stage (`opt`). No parsing types and no render types live here.
 //!
 //! Conventions: world units are free (the course uses pixels), `f64` everywhere, colours are linear
 //! RGB with no upper clamp, every item carries the [`Span`] of the source that made it.
@@ -348,7 +348,7 @@ pub enum Shape {
         /// Iso-value.
         threshold: f64,
     },
-    /// A triangle mesh from an OBJ file (loaded by the optimizer; instanced by path).
+    /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
     Mesh {
         /// Resolved path.
         path: PathBuf,

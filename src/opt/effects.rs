@@ -1,4 +1,4 @@
-//! The effects set: which costly effects a scene calls for, so the render plan skips the rest.
+//! The effects set: which costly effects a scene calls for, so the renderer skips the rest.
 
 use std::fmt;
 
