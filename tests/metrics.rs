@@ -287,6 +287,11 @@ fn bad_input_is_a_diagnostic_not_a_panic() {
     let code = |r: Result<LinearRgb<'_>, rtc::diag::Diagnostic>| r.unwrap_err().code;
     assert_eq!(code(LinearRgb::new(2, 3, &small)), metrics::BUFFER_SIZE);
     assert_eq!(code(LinearRgb::new(0, 3, &[])), metrics::EMPTY);
+    // Checked before the buffer: no 17 GB buffer is needed to hit the budget.
+    assert_eq!(
+        code(LinearRgb::new(65536, 32768, &small)),
+        metrics::TOO_LARGE
+    );
     let mut nan = small.clone();
     nan[7] = f32::NAN;
     let d = LinearRgb::new(2, 2, &nan).unwrap_err();

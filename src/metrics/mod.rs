@@ -31,7 +31,7 @@ use crate::diag::Diagnostic;
 pub use flip::{FlipMap, PIXELS_PER_DEGREE, PNG_ENCODE, flip};
 pub use noise::{NoiseEstimate, noise};
 pub use pixel_error::{REL_MSE_EPSILON, rel_mse, rmse, squared_error_map};
-pub use view::{BUFFER_SIZE, EMPTY, LinearRgb, NOT_FINITE, SIZE_MISMATCH};
+pub use view::{BUFFER_SIZE, EMPTY, LinearRgb, MAX_PIXELS, NOT_FINITE, SIZE_MISMATCH, TOO_LARGE};
 pub use worst::{WORST_FRACTION, mean_of_worst};
 
 /// Every metric of one test image against its reference.

@@ -10,6 +10,11 @@ pub const SIZE_MISMATCH: &str = "rtc::metrics::size_mismatch";
 pub const EMPTY: &str = "rtc::metrics::empty";
 /// A channel is NaN or infinite.
 pub const NOT_FINITE: &str = "rtc::metrics::not_finite";
+/// More pixels than the ꟻLIP library can index.
+pub const TOO_LARGE: &str = "rtc::metrics::too_large";
+
+/// The largest image measured: ꟻLIP's C++ counts `width × height × 3` channels in 32 bits.
+pub const MAX_PIXELS: u64 = u32::MAX as u64 / 3;
 
 /// A linear-RGB image: `width × height` pixels of three `f32` channels, rows from the top.
 ///
@@ -31,7 +36,15 @@ impl<'a> LinearRgb<'a> {
                     .with_help("compare images of at least 1×1 pixels"),
             );
         }
-        let expected = u64::from(width) * u64::from(height) * 3;
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > MAX_PIXELS {
+            return Err(error(
+                TOO_LARGE,
+                format!("a {width}×{height} image has more than {MAX_PIXELS} pixels"),
+            )
+            .with_help("measure a crop or a reduced-resolution render"));
+        }
+        let expected = pixels * 3;
         if data.len() as u64 != expected {
             return Err(error(
                 BUFFER_SIZE,
