@@ -15,6 +15,7 @@ pub mod eval;
 pub mod frontend;
 pub mod geometry;
 pub mod ir;
+pub mod metrics;
 pub mod opt;
 pub mod render;
 pub mod source;
