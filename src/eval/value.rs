@@ -63,6 +63,8 @@ pub enum Value {
     Mapping(ir::Mapping),
     /// An ambient convention (`per_light`, `once`).
     Ambient(ir::AmbientConvention),
+    /// An output encoding (`linear`; `srgb` is the colour function, accepted by name).
+    Encoding(ir::Encoding),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -257,6 +259,7 @@ impl Value {
             Value::Sampling(_) => "Sampling",
             Value::Mapping(_) => "Mapping",
             Value::Ambient(_) => "Ambient",
+            Value::Encoding(_) => "Encoding",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }

@@ -11,12 +11,13 @@ use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
 
-/// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve).
+/// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
+/// value is the same on every machine).
 pub fn srgb_to_linear(c: f64) -> f64 {
     if c <= 0.04045 {
         c / 12.92
     } else {
-        ((c + 0.055) / 1.055).powf(2.4)
+        libm::pow((c + 0.055) / 1.055, 2.4)
     }
 }
 

@@ -6,6 +6,7 @@ mod math;
 mod scene;
 
 pub use looks::{mat_warnings, set_mat_field};
+pub use scene::language_settings;
 
 use std::rc::Rc;
 
