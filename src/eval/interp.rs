@@ -116,6 +116,7 @@ impl<'a> Interp<'a> {
             ExprKind::Angle(a) => Value::Angle(*a),
             ExprKind::Bool(b) => Value::Bool(*b),
             ExprKind::Color(c) => Value::Color((*c).into()),
+            ExprKind::Vec3(v) => Value::Vec3((*v).into()),
             ExprKind::Str(parts) => self.string(parts)?,
             ExprKind::StrLit(s) => Value::Str(s.clone()),
             ExprKind::Ident(s) => self.lookup(*s, e.span)?,

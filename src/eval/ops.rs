@@ -68,17 +68,32 @@ pub fn binary(
             }
             Int(a.rem_euclid(*b))
         }
-        (Add | Sub | Mul | Div | Rem, Int(_) | Float(_), Int(_) | Float(_)) => {
+        (IntDiv, Int(a), Int(b)) => {
+            if *b == 0 {
+                return Err(div_zero(rs));
+            }
+            Int(a.checked_div_euclid(*b).ok_or_else(|| overflow(span))?)
+        }
+        (Pow, Int(a), Int(b)) if *b >= 0 => {
+            let e = u32::try_from(*b).map_err(|_| overflow(span))?;
+            Int(a.checked_pow(e).ok_or_else(|| overflow(span))?)
+        }
+        (Add | Sub | Mul | Div | Rem | Pow, Int(_) | Float(_), Int(_) | Float(_)) => {
             let (a, b) = (l.as_f64().unwrap_or(0.0), r.as_f64().unwrap_or(0.0));
-            Float(match op {
+            let v = match op {
                 Add => a + b,
                 Sub => a - b,
                 Mul => a * b,
                 Div if b == 0.0 => return Err(div_zero(rs)),
                 Div => a / b,
                 Rem if b == 0.0 => return Err(div_zero(rs)),
-                _ => a.rem_euclid(b),
-            })
+                Rem => a.rem_euclid(b),
+                _ => libm::pow(a, b),
+            };
+            if !v.is_finite() {
+                return Err(not_finite(it, op, a, b, span));
+            }
+            Float(v)
         }
         (Add, Angle(a), Angle(b)) => Angle(a + b),
         (Sub, Angle(a), Angle(b)) => Angle(a - b),
@@ -129,6 +144,24 @@ pub fn binary(
         _ => return Err(op_error(it, op, &l, &r, ls, rs).into()),
     };
     Ok(v)
+}
+
+/// A number operation whose result is infinite or NaN: stopped here, before it reaches geometry.
+fn not_finite(it: &Interp, op: BinOp, a: f64, b: f64, span: Span) -> super::error::EvalError {
+    let (a, b) = (super::value::fmt_f(a), super::value::fmt_f(b));
+    let help = if op == BinOp::Pow {
+        "a negative base needs a whole exponent; keep results below about 1.8e308"
+    } else {
+        "keep results below about 1.8e308"
+    };
+    error(
+        "rtc::value::nan",
+        span,
+        format!("`{}` has no finite result", it.snippet(span).trim()),
+    )
+    .with_label(format!("{a} {} {b} is not a finite number", op.as_str()))
+    .with_help(help)
+    .into()
 }
 
 fn nonzero(v: Option<f64>, span: Span) -> R<f64> {

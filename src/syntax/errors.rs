@@ -10,29 +10,25 @@ use crate::syntax::Rule;
 fn rule_words(rule: Rule) -> Option<&'static str> {
     Some(match rule {
         Rule::expr
-        | Rule::or_expr
-        | Rule::and_expr
-        | Rule::cmp_expr
-        | Rule::range_expr
-        | Rule::then_expr
-        | Rule::union_expr
-        | Rule::add_expr
-        | Rule::inter_expr
-        | Rule::mul_expr
-        | Rule::unary_expr
-        | Rule::postfix
+        | Rule::head_expr
+        // `unary_op` is tried at the start of every operand: its presence means "an expression".
+        | Rule::unary_op
         | Rule::arg => "an expression",
         Rule::ident => "a name",
         Rule::block => "`{`",
-        Rule::int_lit | Rule::number => "a number",
+        Rule::number | Rule::vec_lit => "a number",
         Rule::string => "a string",
         Rule::type_ann => "a type",
         Rule::params => "`(`",
         Rule::field => "a field",
         Rule::generator => "a loop variable",
-        Rule::header => "`rtc 1`",
+        Rule::header => "`rtc 1.1`",
+        Rule::version => "a version number",
         Rule::std_path => "a module path",
         Rule::EOI => "end of file",
+        Rule::kw_else => "`else`",
+        Rule::kw_in => "`in`",
+        Rule::kw_with => "`with`",
         _ => return None,
     })
 }
@@ -147,9 +143,10 @@ fn join_or(words: &[String]) -> String {
     }
 }
 
+/// Words that cannot be names (the grammar's `keyword` rule).
 const KEYWORDS: &[&str] = &[
     "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
-    "step",
+    "step", "div",
 ];
 
 /// A description of the text at `pos` and its length in bytes.
