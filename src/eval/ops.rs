@@ -90,9 +90,6 @@ pub fn binary(
                 Rem => a.rem_euclid(b),
                 _ => libm::pow(a, b),
             };
-            if !v.is_finite() {
-                return Err(not_finite(it, op, a, b, span));
-            }
             Float(v)
         }
         (Add, Angle(a), Angle(b)) => Angle(a + b),
@@ -143,12 +140,19 @@ pub fn binary(
         }
         _ => return Err(op_error(it, op, &l, &r, ls, rs).into()),
     };
+    let finite = match &v {
+        Float(x) | Angle(x) => x.is_finite(),
+        Vec3(x) | Color(x) => x.is_finite(),
+        _ => true,
+    };
+    if !finite {
+        return Err(not_finite(it, op, &l, &r, span));
+    }
     Ok(v)
 }
 
-/// A number operation whose result is infinite or NaN: stopped here, before it reaches geometry.
-fn not_finite(it: &Interp, op: BinOp, a: f64, b: f64, span: Span) -> super::error::EvalError {
-    let (a, b) = (super::value::fmt_f(a), super::value::fmt_f(b));
+/// An operation whose result is infinite or NaN: stopped here, before it reaches geometry.
+fn not_finite(it: &Interp, op: BinOp, l: &Value, r: &Value, span: Span) -> super::error::EvalError {
     let help = if op == BinOp::Pow {
         "a negative base needs a whole exponent; keep results below about 1.8e308"
     } else {
@@ -159,7 +163,12 @@ fn not_finite(it: &Interp, op: BinOp, a: f64, b: f64, span: Span) -> super::erro
         span,
         format!("`{}` has no finite result", it.snippet(span).trim()),
     )
-    .with_label(format!("{a} {} {b} is not a finite number", op.as_str()))
+    .with_label(format!(
+        "{} {} {} is not a finite number",
+        l.show(),
+        op.as_str(),
+        r.show()
+    ))
     .with_help(help)
     .into()
 }
