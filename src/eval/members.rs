@@ -195,13 +195,20 @@ pub fn unknown(
 /// `v[i]`.
 pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
     let Value::Int(k) = i else {
+        let help = match i {
+            // `0..n / 2` gives Float elements: `/` always divides exactly.
+            Value::Float(f) if f == f.trunc() => {
+                "`/` always gives a `Float`; divide with `div` for an `Int` (`n div 2`), or use `int(...)`"
+            }
+            _ => "use `round(...)` or `floor(...)` to get an `Int`",
+        };
         return Err(error(
             "rtc::type::mismatch",
             ispan,
             format!("expected `Int`, found `{}`", i.type_name()),
         )
         .with_label("an index must be an integer")
-        .with_help("use `round(...)` or `floor(...)` to get an `Int`")
+        .with_help(help)
         .into());
     };
     let len = match &v {

@@ -158,6 +158,10 @@ fn not_finite(it: &Interp, op: BinOp, l: &Value, r: &Value, span: Span) -> super
     } else {
         "keep results below about 1.8e308"
     };
+    let shown = |v: &Value| match v.show() {
+        s if s.starts_with('-') => format!("({s})"),
+        s => s,
+    };
     error(
         "rtc::value::nan",
         span,
@@ -165,9 +169,9 @@ fn not_finite(it: &Interp, op: BinOp, l: &Value, r: &Value, span: Span) -> super
     )
     .with_label(format!(
         "{} {} {} is not a finite number",
-        l.show(),
+        shown(l),
         op.as_str(),
-        r.show()
+        shown(r)
     ))
     .with_help(help)
     .into()

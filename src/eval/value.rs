@@ -356,7 +356,7 @@ pub fn obj_kind(o: &Obj) -> &'static str {
 pub fn fmt_f(f: f64) -> String {
     if f == f.trunc() && f.abs() < 1e15 {
         format!("{}", f as i64)
-    } else if f.abs() >= 1e15 || (f != 0.0 && f.abs() < 1e-6) {
+    } else if f.abs() >= 1e15 {
         format!("{f:e}")
     } else {
         let s = format!("{f:.6}");

@@ -265,7 +265,13 @@ impl Builder {
     pub fn expr(&self, p: P) -> Expr {
         match p.as_rule() {
             Rule::expr | Rule::head_expr => self.flat(p),
-            Rule::paren => self.expr(p.into_inner().next().expect("grammar: inner")),
+            Rule::paren => {
+                // The parentheses belong to the span, so `(-8) ** 0.5` is quoted whole.
+                let span = self.span(&p);
+                let mut e = self.expr(p.into_inner().next().expect("grammar: inner"));
+                e.span = span;
+                e
+            }
             _ => {
                 let span = self.span(&p);
                 Expr {

@@ -143,7 +143,8 @@ pub fn scan(file: FileId, text: &str) -> Scan {
             _ => i += 1,
         }
     }
-    if let Some(&(open, at)) = stack.last() {
+    // The earliest opener still open: later ones are usually inside it.
+    if let Some(&(open, at)) = stack.first() {
         let mut d = Diagnostic::error(
             "rtc::syntax::unclosed",
             sp(at, at + 1),
