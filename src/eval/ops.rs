@@ -200,6 +200,22 @@ fn equal(a: &Value, b: &Value) -> Option<bool> {
         (Angle(x), Angle(y)) => x == y,
         (Vec3(x), Vec3(y)) => x == y,
         (Color(x), Color(y)) => x == y,
+        // Lists compare element by element; a `Vec3` counts as a list of three numbers.
+        (List(_) | Vec3(_), List(_) | Vec3(_)) => {
+            let (x, y) = (
+                super::builtins::lists::items(a)?,
+                super::builtins::lists::items(b)?,
+            );
+            if x.len() != y.len() {
+                return Some(false);
+            }
+            for (p, q) in x.iter().zip(y.iter()) {
+                if !equal(p, q)? {
+                    return Some(false);
+                }
+            }
+            true
+        }
         _ => return None,
     })
 }
