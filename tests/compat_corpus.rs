@@ -22,7 +22,7 @@ fn check(path: &Path) -> (String, i32) {
         .output()
         .expect("run rtc");
     (
-        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
         out.status.code().unwrap_or(-1),
     )
 }

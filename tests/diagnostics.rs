@@ -1,5 +1,5 @@
 //! The diagnostics corpus: every `tests/diagnostics/NAME.rtc` is checked with the real binary
-//! (`rtc check --format short`, run from the crate root) and its stdout must equal
+//! (`rtc check --format short`, run from the crate root) and its stderr must equal
 //! `NAME.expected`, which was written and reviewed by hand against the case. Helper modules
 //! imported by cases live in `tests/diagnostics/lib/` and are not cases themselves.
 
@@ -27,7 +27,7 @@ fn run(name: &str) -> (String, i32) {
         .output()
         .expect("run rtc");
     (
-        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
         out.status.code().unwrap_or(-1),
     )
 }

@@ -1,8 +1,9 @@
-//! The film: one floating-point colour per pixel, turned into bytes by clamping each channel to
-//! [0, 1] and truncating `255·c` (COURSE.md §1.4/§2.5: trunc, not round).
+//! The film: one floating-point colour per pixel, turned into bytes by the scene's
+//! [`Encoding`]: linear (clamp to [0, 1] and truncate `255·c`, COURSE.md §1.4/§2.5: trunc, not
+//! round) or sRGB (the IEC 61966-2-1 curve, rounded to the nearest level).
 
 use super::Image;
-use crate::ir::Color;
+use crate::ir::{Color, Encoding};
 
 /// Per-render counters (integers, so sums are identical for any thread count).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -40,6 +41,8 @@ pub struct Film {
     pub stats: Stats,
     /// The world's build statistics (objects, triangles, BVH time, memory).
     pub world: crate::geometry::WorldStats,
+    /// How [`Film::to_image`] quantises.
+    pub encoding: Encoding,
 }
 
 impl Film {
@@ -48,17 +51,42 @@ impl Film {
         self.pixels[y as usize * self.width as usize + x as usize]
     }
 
-    /// Quantises to 8-bit RGB.
+    /// Quantises to 8-bit RGB with the film's encoding.
     pub fn to_image(&self) -> Image {
-        let bytes = self.pixels.iter().flat_map(|c| to_bytes(*c)).collect();
+        let bytes = self
+            .pixels
+            .iter()
+            .flat_map(|c| encode(*c, self.encoding))
+            .collect();
         Image::from_raw(self.width, self.height, bytes).unwrap_or_default()
     }
 }
 
-/// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0).
+/// One colour as bytes in `encoding` (NaN becomes 0 in both).
+pub fn encode(c: Color, encoding: Encoding) -> [u8; 3] {
+    match encoding {
+        Encoding::Linear => to_bytes(c),
+        Encoding::Srgb => {
+            let q = |v: f64| (255.0 * linear_to_srgb(v.clamp(0.0, 1.0)) + 0.5) as u8;
+            [q(c.x), q(c.y), q(c.z)]
+        }
+    }
+}
+
+/// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0): the linear encoding.
 pub fn to_bytes(c: Color) -> [u8; 3] {
     let q = |v: f64| (255.0 * v.clamp(0.0, 1.0)) as u8;
     [q(c.x), q(c.y), q(c.z)]
+}
+
+/// The sRGB transfer curve (IEC 61966-2-1) for a linear value in [0, 1]. `libm::pow`, not
+/// `f64::powf`, so the bytes are the same on every CPU and C library.
+pub fn linear_to_srgb(c: f64) -> f64 {
+    if c <= 0.0031308 {
+        12.92 * c
+    } else {
+        1.055 * libm::pow(c, 1.0 / 2.4) - 0.055
+    }
 }
 
 #[cfg(test)]
@@ -70,5 +98,17 @@ mod tests {
     fn quantisation_truncates_and_clamps() {
         assert_eq!(to_bytes(DVec3::new(1.0, 0.999, 0.5)), [255, 254, 127]);
         assert_eq!(to_bytes(DVec3::new(7.0, -1.0, f64::NAN)), [255, 0, 0]);
+    }
+
+    #[test]
+    fn srgb_rounds_and_clamps() {
+        let e = |v: f64| encode(DVec3::splat(v), Encoding::Srgb)[0];
+        assert_eq!(e(0.0), 0);
+        assert_eq!(e(1.0), 255);
+        assert_eq!(e(7.0), 255);
+        assert_eq!(e(-1.0), 0);
+        assert_eq!(e(f64::NAN), 0);
+        // Linear 0.2158605 is sRGB 0.5019608 = 128/255.
+        assert_eq!(e(0.21586050011389926), 128);
     }
 }

@@ -110,6 +110,7 @@ pub fn render_film(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagn
         pixels,
         stats,
         world: plan.world.stats(),
+        encoding: scene.settings.encoding,
     })
 }
 

@@ -33,6 +33,7 @@ pub fn constants() -> Vec<(&'static str, Value)> {
         ("normal", Value::Mode(ir::RenderMode::Normal)),
         ("per_light", Value::Ambient(ir::AmbientConvention::PerLight)),
         ("once", Value::Ambient(ir::AmbientConvention::Once)),
+        ("linear", Value::Encoding(ir::Encoding::Linear)),
         ("uv", Value::Mapping(ir::Mapping::Uv)),
         ("planar", Value::Mapping(ir::Mapping::Planar)),
         ("spherical", Value::Mapping(ir::Mapping::Spherical)),
@@ -270,13 +271,10 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "seed",
         "output",
         "material",
+        "encoding",
     ];
     let mut p = Params::new(s, names, a)?;
-    let mut st = ir::RenderSettings {
-        shadows: true,
-        max_depth: 5,
-        ..ir::RenderSettings::default()
-    };
+    let mut st = language_settings();
     if let Some((v, sp)) = p.get("shading") {
         st.shading = match v {
             Value::Shading(m) => m,
@@ -344,6 +342,21 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             }
         };
     }
+    if let Some((v, sp)) = p.get("encoding") {
+        st.encoding = match v {
+            Value::Encoding(e) => e,
+            Value::Builtin(b) if b.name == "srgb" => ir::Encoding::Srgb,
+            other => {
+                return Err(enum_mismatch(
+                    it,
+                    "Encoding",
+                    &other,
+                    sp,
+                    "`srgb` or `linear`",
+                ));
+            }
+        };
+    }
     st.background = p.color_or(it, "background", DVec3::ZERO)?;
     if let Some((v, sp)) = p.get("seed") {
         st.seed = int_in(it, &v, sp, "seed", 0, i64::MAX)? as u64;
@@ -364,6 +377,17 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         }
     }
     Ok(Value::Render(Rc::new(rv)))
+}
+
+/// The render settings of a `.rtc` scene before its `render` block: shadows on, five bounces,
+/// sRGB output.
+pub fn language_settings() -> ir::RenderSettings {
+    ir::RenderSettings {
+        shadows: true,
+        max_depth: 5,
+        encoding: ir::Encoding::Srgb,
+        ..ir::RenderSettings::default()
+    }
 }
 
 fn enum_mismatch(
