@@ -30,7 +30,8 @@ fn main() {
             let film = match render_scene(&scene, &opts) {
                 Ok(f) => f,
                 Err(d) => {
-                    eprintln!("render failed: {}", d.message);
+                    let first = d.items.first().map_or("", |d| d.message.as_str());
+                    eprintln!("render failed: {first}");
                     std::process::exit(1);
                 }
             };

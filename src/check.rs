@@ -110,8 +110,11 @@ fn invisible_bounces(scene: &Scene, out: &mut Diagnostics) {
 
 /// `kind` in the plural when `count` is not one ("box" → "boxes").
 fn plural(kind: &str, count: usize) -> String {
-    match count {
-        1 => kind.to_string(),
+    match (kind, count) {
+        ("csg", 1) => "CSG object".to_string(),
+        ("csg", _) => "CSG objects".to_string(),
+        (_, 1) => kind.to_string(),
+        ("torus", _) => "tori".to_string(),
         _ if kind.ends_with('x') || kind.ends_with('h') => format!("{kind}es"),
         _ => format!("{kind}s"),
     }

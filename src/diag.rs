@@ -174,6 +174,8 @@ impl Diagnostics {
 pub fn number(f: f64) -> String {
     if f == f.trunc() && f.abs() < 1e15 {
         format!("{}", f as i64)
+    } else if f.abs() >= 1e15 {
+        format!("{f:e}")
     } else {
         let s = format!("{f:.6}");
         s.trim_end_matches('0').trim_end_matches('.').to_owned()

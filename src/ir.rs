@@ -434,6 +434,20 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Output file requested by the scene, resolved relative to it.
     pub output: Option<PathBuf>,
+    /// How film colours become 8-bit values.
+    pub encoding: Encoding,
+}
+
+/// How a linear film colour is quantised to 8 bits.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Encoding {
+    /// `trunc(255·clamp(c))`: the course's convention, which its reference images use (the
+    /// default of the IR, so the course front ends keep it).
+    #[default]
+    Linear,
+    /// The sRGB transfer curve, rounded to the nearest level: what `.rtc` scenes get by default,
+    /// so that an sRGB colour such as `#808080` comes out as the byte it names (128).
+    Srgb,
 }
 
 impl RenderSettings {
@@ -444,11 +458,12 @@ impl RenderSettings {
     }
 
     /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
-    /// bounces, so a glass or mirror material shows without further settings.
+    /// bounces, so a glass or mirror material shows without further settings, and sRGB output.
     pub fn language_defaults() -> RenderSettings {
         RenderSettings {
             shadows: true,
             max_depth: 5,
+            encoding: Encoding::Srgb,
             ..RenderSettings::course_defaults()
         }
     }
@@ -468,6 +483,7 @@ impl Default for RenderSettings {
             default_material: None,
             seed: 0,
             output: None,
+            encoding: Encoding::Linear,
         }
     }
 }

@@ -19,6 +19,7 @@ pub mod eval;
 pub mod geometry;
 pub mod ir;
 pub mod loader;
+pub mod metrics;
 pub mod opt;
 pub mod render;
 pub mod source;

@@ -1,5 +1,6 @@
 //! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it.
-//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems.
+//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems. Diagnostics go to stderr;
+//! stdout carries only what was asked for (`--format json`).
 #![forbid(unsafe_code)]
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
 #![allow(clippy::result_large_err)]
@@ -129,7 +130,7 @@ fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     }
     let diags = &loaded.diagnostics;
     let outcome = outcome_of(diags, deny_warnings);
-    let color = format == Format::Human && std::io::stdout().is_terminal();
+    let color = format == Format::Human && std::io::stderr().is_terminal();
     let summary = match (&outcome, &loaded.scene) {
         (Outcome::Ok, Some(scene)) => {
             format!("{}: ok: {}", file.display(), rtc::check::summary(scene))
@@ -149,14 +150,16 @@ fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
         doc["ok"] = serde_json::Value::Bool(matches!(outcome, Outcome::Ok));
         println!("{doc}");
     } else {
+        // Diagnostics and the summary are a compiler's messages: stderr. Only `--format json`,
+        // which a tool asked for, writes to stdout.
         let text = report::render(&diags.items, &sources, &subject, format, color);
         if !text.is_empty() {
-            println!("{}", text.trim_end());
+            eprintln!("{}", text.trim_end());
             if format == Format::Short {
-                println!();
+                eprintln!();
             }
         }
-        println!("{summary}");
+        eprintln!("{summary}");
     }
     outcome
 }

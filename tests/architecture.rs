@@ -25,6 +25,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("render", &["opt", "geometry", "ir"]),
     ("check", &["ir", "opt", "geometry"]),
     ("loader", &["eval", "compat", "ir"]),
+    ("metrics", &[]),
 ];
 
 /// Narrower rules inside an allowed edge: `(module, target, the only paths under target it may

@@ -1,9 +1,9 @@
 //! The diagnostics corpora, through one runner: every `tests/diagnostics/NAME.rtc` (language
 //! mistakes; helper modules imported by cases live in `tests/diagnostics/lib/` and are not cases)
 //! and every `tests/compat/NAME.in|yaml` (broken course files) is checked with the real binary,
-//! `rtc check --format short` run from the crate root, and its stdout must equal `NAME.expected`,
-//! written and reviewed by hand against the case, with exit code 1 when that holds an error and
-//! 0 otherwise.
+//! `rtc check --format short` run from the crate root, and its stderr (where diagnostics go) must
+//! equal `NAME.expected`, written and reviewed by hand against the case, with exit code 1 when
+//! that holds an error and 0 otherwise.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -24,7 +24,7 @@ fn cases(dir: &str, extensions: &[&str]) -> Vec<PathBuf> {
     cases
 }
 
-/// `rtc check --format short PATH` from the crate root: stdout and exit code.
+/// `rtc check --format short PATH` from the crate root: stderr and exit code.
 fn check(path: &Path) -> (String, i32) {
     let out = Command::new(env!("CARGO_BIN_EXE_rtc"))
         .args(["check", "--format", "short"])
@@ -34,7 +34,7 @@ fn check(path: &Path) -> (String, i32) {
         .output()
         .expect("run rtc");
     (
-        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
         out.status.code().unwrap_or(-1),
     )
 }

@@ -186,9 +186,10 @@ fn adversarial_inputs_are_rejected_cleanly() {
             "rtc 1\nlet r = 0..1 step 0\n".into(),
             &["rtc::value::range_step"],
         ),
+        // A literal too large for a Float is refused where it is written.
         (
             "rtc 1\nsphere(radius: 1e400)\n".into(),
-            &["rtc::param::out_of_range"],
+            &["rtc::syntax::number"],
         ),
     ];
     for (src, expected) in &cases {

@@ -258,7 +258,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         span: Span::default(),
     });
     assert_eq!(
-        render_image(&s, &opts(1)).unwrap_err().code,
+        render_image(&s, &opts(1)).unwrap_err().items[0].code,
         "rtc::render::material"
     );
     let mut s = empty([200.0, 200.0, 1000.0]);
@@ -268,7 +268,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
     };
     sphere(&mut s, [0.0, 0.0, 0.0], 1.0, m);
     assert_eq!(
-        render_image(&s, &opts(1)).unwrap_err().code,
+        render_image(&s, &opts(1)).unwrap_err().items[0].code,
         "rtc::render::texture"
     );
     // Cameras that cannot make rays: `up` along the view, an empty image, no field of view.
@@ -281,7 +281,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         let mut s = empty([200.0, 200.0, 1000.0]);
         spoil(&mut s.camera);
         assert_eq!(
-            render_image(&s, &opts(1)).unwrap_err().code,
+            render_image(&s, &opts(1)).unwrap_err().items[0].code,
             "rtc::render::camera"
         );
     }
@@ -334,7 +334,7 @@ fn deep_recursion_between_mirrors_and_oversized_settings() {
         "{:?}",
         film.stats
     );
-    let code = |s: &Scene| render_image(s, &opts(1)).unwrap_err().code;
+    let code = |s: &Scene| render_image(s, &opts(1)).unwrap_err().items[0].code;
     let mut deep = s.clone();
     deep.settings.max_depth = MAX_DEPTH + 1;
     assert_eq!(code(&deep), "rtc::render::limit");

@@ -102,6 +102,11 @@ impl<'a> Interp<'a> {
         names.sort_unstable();
         let d = error("rtc::name::unknown", span, format!("unknown name `{sym}`"))
             .with_label("not defined here");
+        if let Some(m) = super::modules::std_modules_exporting(sym.as_str()).first() {
+            return d.with_help(format!(
+                "`{sym}` is in `std.{m}`: add `import std.{m} {{ {sym} }}` at the top of the file"
+            ));
+        }
         match suggest(sym.as_str(), names) {
             Some(h) => d.with_help(h),
             None => d.with_help(format!("define it first, e.g. `let {sym} = ...`")),
@@ -116,6 +121,7 @@ impl<'a> Interp<'a> {
             ExprKind::Angle(a) => Value::Angle(*a),
             ExprKind::Bool(b) => Value::Bool(*b),
             ExprKind::Color(c) => Value::Color((*c).into()),
+            ExprKind::Vec3(v) => Value::Vec3((*v).into()),
             ExprKind::Str(parts) => self.string(parts)?,
             ExprKind::StrLit(s) => Value::Str(s.clone()),
             ExprKind::Ident(s) => self.lookup(*s, e.span)?,

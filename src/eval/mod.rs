@@ -53,8 +53,15 @@ impl Default for EvalOptions {
 
 /// Parses and evaluates the scene file at `path`, reading it from disk.
 pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
-    match std::fs::read_to_string(path) {
-        Ok(text) => load_source(path, &text, sources, options),
+    match std::fs::read(path).map(String::from_utf8) {
+        Ok(Ok(text)) => load_source(path, &text, sources, options),
+        Ok(Err(e)) => {
+            let mut loaded = Loaded::default();
+            loaded
+                .diagnostics
+                .push(not_text(path, e.as_bytes(), e.utf8_error()));
+            loaded
+        }
         Err(e) => {
             let mut loaded = Loaded::default();
             loaded.diagnostics.push(
@@ -69,6 +76,42 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
             loaded
         }
     }
+}
+
+/// The error for a scene file that is not UTF-8 text: where the first bad byte is, and whether the
+/// file looks binary (a NUL byte) rather than text in another encoding.
+fn not_text(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> Diagnostic {
+    let at = e.valid_up_to();
+    let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+    let column = at
+        - bytes[..at]
+            .iter()
+            .rposition(|&b| b == b'\n')
+            .map_or(0, |p| p + 1)
+        + 1;
+    let binary = bytes.iter().take(8192).any(|&b| b == 0);
+    let (what, help) = if binary {
+        (
+            "looks like a binary file, not a scene",
+            "give `rtc` a `.rtc` text file; images and models are loaded by the scene with `image(...)` and `mesh(...)`",
+        )
+    } else {
+        (
+            "is not UTF-8 text",
+            "save the file as UTF-8 (e.g. `iconv -f latin1 -t utf-8`)",
+        )
+    };
+    Diagnostic::new(
+        Severity::Error,
+        "rtc::syntax::encoding",
+        None,
+        format!(
+            "`{}` {what}: byte 0x{:02x} at offset {at} (line {line}, column {column}) is not UTF-8",
+            path.display(),
+            bytes.get(at).copied().unwrap_or(0),
+        ),
+    )
+    .with_help(help)
 }
 
 /// Parses and evaluates `text` as the scene file `path` (relative paths resolve against its

@@ -301,6 +301,7 @@ fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (pv, ps) = p.req("path")?;
     let rel = types::string(it, &pv, ps)?;
     let path = super::assets::existing(it, &rel, ps, "mesh")?;
+    only_obj(&path, ps)?;
     let smooth = p.bool_or(it, "smooth", false)?;
     let use_mtl = p.bool_or(it, "use_mtl", false)?;
     Ok(prim(
@@ -311,6 +312,32 @@ fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         s.span,
     ))
+}
+
+/// Meshes are Wavefront OBJ: another format (STL, PLY, glTF...) is refused by its extension
+/// before anyone tries to read it as OBJ.
+fn only_obj(path: &std::path::Path, span: Span) -> R<()> {
+    let ext = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    if ext == "obj" {
+        return Ok(());
+    }
+    Err(crate::eval::error::error(
+        "rtc::asset::format",
+        span,
+        format!("`{}` is not a Wavefront OBJ file", path.display()),
+    )
+    .with_label(if ext.is_empty() {
+        "no `.obj` extension".to_owned()
+    } else {
+        format!("a `.{ext}` file")
+    })
+    .with_help(
+        "only OBJ meshes are read; convert the model to `.obj` (e.g. with Blender or MeshLab)",
+    )
+    .into())
 }
 
 /// Flattens nested lists of objects (as `for` produces) into `out`.

@@ -63,6 +63,8 @@ pub enum Value {
     Mapping(ir::Mapping),
     /// An ambient convention (`per_light`, `once`).
     Ambient(ir::AmbientConvention),
+    /// An output encoding (`linear`; `srgb` is the colour function, accepted by name).
+    Encoding(ir::Encoding),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -257,6 +259,7 @@ impl Value {
             Value::Sampling(_) => "Sampling",
             Value::Mapping(_) => "Mapping",
             Value::Ambient(_) => "Ambient",
+            Value::Encoding(_) => "Encoding",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }
@@ -297,9 +300,47 @@ impl Value {
                 format!("{{ {} }}", items.join(", "))
             }
             Value::Object(o) => format!("<{}>", obj_kind(o)),
+            Value::Material(m) => show_material(m),
+            Value::Transform(t) => {
+                let rows: Vec<String> = (0..3)
+                    .map(|r| {
+                        let row = t.matrix3.row(r);
+                        format!(
+                            "[{}, {}, {}, {}]",
+                            fmt_f(row.x),
+                            fmt_f(row.y),
+                            fmt_f(row.z),
+                            fmt_f(t.translation[r])
+                        )
+                    })
+                    .collect();
+                format!("matrix([{}])", rows.join(", "))
+            }
             other => format!("<{}>", other.type_name()),
         }
     }
+}
+
+/// A material as the `material { .. }` call that makes it (textures shown by kind).
+fn show_material(m: &Mat) -> String {
+    let c = m.m.color;
+    let mut fields = vec![
+        format!("color: rgb({}, {}, {})", fmt_f(c.x), fmt_f(c.y), fmt_f(c.z)),
+        format!("ka: {}", fmt_f(m.m.ka)),
+        format!("kd: {}", fmt_f(m.m.kd)),
+        format!("ks: {}", fmt_f(m.m.ks)),
+        format!("n: {}", fmt_f(m.m.n)),
+        format!("reflect: {}", fmt_f(m.m.reflect)),
+        format!("refract: {}", fmt_f(m.m.refract)),
+        format!("eta: {}", fmt_f(m.m.eta)),
+    ];
+    if m.texture.is_some() {
+        fields.push("texture: <Texture>".into());
+    }
+    if let Some((_, s)) = &m.bump {
+        fields.push(format!("bump: <Texture>, bump_scale: {}", fmt_f(*s)));
+    }
+    format!("material {{ {} }}", fields.join(", "))
 }
 
 /// Kind name of an object value.

@@ -1,11 +1,12 @@
 //! The film: per pixel, one floating-point value per named channel. The colour channel turns
-//! into bytes by clamping each component to [0, 1] and truncating `255·c` (COURSE.md §1.4/§2.5:
-//! trunc, not round). A later output (an AOV such as depth or albedo, an EXR layer) is a new
+//! into bytes by the scene's [`Encoding`]: linear (clamp to [0, 1] and truncate `255·c`,
+//! COURSE.md §1.4/§2.5: trunc, not round) or sRGB (the IEC 61966-2-1 curve, rounded to the
+//! nearest level). A later output (an AOV such as depth or albedo, an EXR layer) is a new
 //! [`Channel`] an integrator fills, not a new code path: the tile driver, the averaging and the
 //! film carry any number of channels.
 
 use super::Image;
-use crate::ir::Color;
+use crate::ir::{Color, Encoding};
 
 /// Most channels one film holds.
 pub const MAX_CHANNELS: usize = 8;
@@ -61,6 +62,8 @@ pub struct Film {
     layers: Vec<Vec<Color>>,
     /// What it took.
     pub stats: Stats,
+    /// How [`Film::to_image`] quantises the colour channel.
+    pub encoding: Encoding,
 }
 
 impl Film {
@@ -71,6 +74,7 @@ impl Film {
         channels: &[Channel],
         values: Vec<Color>,
         stats: Stats,
+        encoding: Encoding,
     ) -> Film {
         let n = channels.len().max(1);
         let layers = if n == 1 {
@@ -86,6 +90,7 @@ impl Film {
             channels: channels.to_vec(),
             layers,
             stats,
+            encoding,
         }
     }
 
@@ -110,17 +115,42 @@ impl Film {
         self.color()[y as usize * self.width as usize + x as usize]
     }
 
-    /// Quantises the colour channel to 8-bit RGB.
+    /// Quantises the colour channel to 8-bit RGB with the film's encoding.
     pub fn to_image(&self) -> Image {
-        let bytes = self.color().iter().flat_map(|c| to_bytes(*c)).collect();
+        let bytes = self
+            .color()
+            .iter()
+            .flat_map(|c| encode(*c, self.encoding))
+            .collect();
         Image::from_raw(self.width, self.height, bytes).unwrap_or_default()
     }
 }
 
-/// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0).
+/// One colour as bytes in `encoding` (NaN becomes 0 in both).
+pub fn encode(c: Color, encoding: Encoding) -> [u8; 3] {
+    match encoding {
+        Encoding::Linear => to_bytes(c),
+        Encoding::Srgb => {
+            let q = |v: f64| (255.0 * linear_to_srgb(v.clamp(0.0, 1.0)) + 0.5) as u8;
+            [q(c.x), q(c.y), q(c.z)]
+        }
+    }
+}
+
+/// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0): the linear encoding.
 pub fn to_bytes(c: Color) -> [u8; 3] {
     let q = |v: f64| (255.0 * v.clamp(0.0, 1.0)) as u8;
     [q(c.x), q(c.y), q(c.z)]
+}
+
+/// The sRGB transfer curve (IEC 61966-2-1) for a linear value in [0, 1]. `libm::pow`, not
+/// `f64::powf`, so the bytes are the same on every CPU and C library.
+pub fn linear_to_srgb(c: f64) -> f64 {
+    if c <= 0.0031308 {
+        12.92 * c
+    } else {
+        1.055 * libm::pow(c, 1.0 / 2.4) - 0.055
+    }
 }
 
 #[cfg(test)]
@@ -143,11 +173,24 @@ mod tests {
             &[Channel::Color, Channel::Color],
             vec![v(1.0), v(2.0), v(3.0), v(4.0)],
             Stats::default(),
+            Encoding::Linear,
         );
         assert_eq!(
             film.layers,
             vec![vec![v(1.0), v(3.0)], vec![v(2.0), v(4.0)]]
         );
         assert_eq!(film.get(1, 0), v(3.0));
+    }
+
+    #[test]
+    fn srgb_rounds_and_clamps() {
+        let e = |v: f64| encode(DVec3::splat(v), Encoding::Srgb)[0];
+        assert_eq!(e(0.0), 0);
+        assert_eq!(e(1.0), 255);
+        assert_eq!(e(7.0), 255);
+        assert_eq!(e(-1.0), 0);
+        assert_eq!(e(f64::NAN), 0);
+        // Linear 0.2158605 is sRGB 0.5019608 = 128/255.
+        assert_eq!(e(0.21586050011389926), 128);
     }
 }

@@ -35,7 +35,7 @@ pub mod shading;
 pub mod texture;
 pub mod tiles;
 
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Color, Scene};
 use crate::opt::Prepared;
 use camera::Camera;
@@ -58,23 +58,14 @@ pub struct RenderOptions {
 pub type Image = image::RgbImage;
 
 /// Prepares and renders a scene without progress reports: the whole pipeline in one call
-/// (tests, benchmarks); the first preparation error is the error.
-pub fn render_scene(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagnostic> {
-    let prepared = crate::opt::prepare(scene).map_err(|d| {
-        let first = d.items.iter().find(|d| d.is_error()).cloned();
-        first.unwrap_or_else(|| {
-            Diagnostic::error(
-                "rtc::render::prepare",
-                scene.camera.span,
-                "the scene cannot be prepared",
-            )
-        })
-    })?;
-    render(&prepared, options, &Silent)
+/// (tests, benchmarks). Fails with every problem preparing found, or the render's one error.
+pub fn render_scene(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagnostics> {
+    let prepared = crate::opt::prepare(scene)?;
+    render(&prepared, options, &Silent).map_err(|d| Diagnostics { items: vec![d] })
 }
 
 /// [`render_scene`], quantised to 8-bit RGB.
-pub fn render_image(scene: &Scene, options: &RenderOptions) -> Result<Image, Diagnostic> {
+pub fn render_image(scene: &Scene, options: &RenderOptions) -> Result<Image, Diagnostics> {
     render_scene(scene, options).map(|f| f.to_image())
 }
 
@@ -133,7 +124,14 @@ pub fn render(
         stats.add(&more);
     }
     progress.finish();
-    Ok(Film::new(w, h, channels, values, stats))
+    Ok(Film::new(
+        w,
+        h,
+        channels,
+        values,
+        stats,
+        scene.settings().encoding,
+    ))
 }
 
 /// What turns a pixel sample into a camera ray.

@@ -1,11 +1,12 @@
 //! Built-in functions and constants, and [`Params`], the schema-checked argument reader every
 //! built-in uses (unknown names with did-you-mean, arity, missing values, types and ranges).
 
+pub mod lists;
 mod looks;
 mod math;
 mod scene;
 
-pub use looks::{mat_warnings, set_mat_field};
+pub use looks::{MAT_FIELDS, mat_warnings, set_mat_field};
 
 use std::rc::Rc;
 
@@ -26,6 +27,7 @@ fn table() -> Vec<(&'static str, Value)> {
     let mut t: Vec<(&'static str, Value)> = Vec::new();
     let fns: Vec<(&'static str, BuiltinFn)> = [
         math::FNS,
+        lists::FNS,
         looks::FNS,
         scene::FNS,
         super::shapes::FNS,

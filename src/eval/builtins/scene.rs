@@ -37,6 +37,7 @@ pub fn constants() -> Vec<(&'static str, Value)> {
         ("hatching", Value::Shading(ir::ShadingModel::Hatching)),
         ("per_light", Value::Ambient(ir::AmbientConvention::PerLight)),
         ("once", Value::Ambient(ir::AmbientConvention::Once)),
+        ("linear", Value::Encoding(ir::Encoding::Linear)),
         ("uv", Value::Mapping(ir::Mapping::Uv)),
         ("planar", Value::Mapping(ir::Mapping::Planar)),
         ("spherical", Value::Mapping(ir::Mapping::Spherical)),
@@ -298,6 +299,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "seed",
         "output",
         "material",
+        "encoding",
     ];
     let mut p = Params::new(s, names, a)?;
     let mut st = ir::RenderSettings::language_defaults();
@@ -371,6 +373,21 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
                     &other,
                     sp,
                     "`per_light` or `once`",
+                ));
+            }
+        };
+    }
+    if let Some((v, sp)) = p.get("encoding") {
+        st.encoding = match v {
+            Value::Encoding(e) => e,
+            Value::Builtin(b) if b.name == "srgb" => ir::Encoding::Srgb,
+            other => {
+                return Err(enum_mismatch(
+                    it,
+                    "Encoding",
+                    &other,
+                    sp,
+                    "`srgb` or `linear`",
                 ));
             }
         };
