@@ -106,11 +106,32 @@ fn deny_warnings_turns_a_warning_into_failure() {
     .unwrap();
     let path = scene.to_str().unwrap();
     let plain = rtc(&["check", path, "--format", "short"]);
-    let text = String::from_utf8_lossy(&plain.stdout);
+    let text = String::from_utf8_lossy(&plain.stderr);
     assert_eq!(plain.status.code(), Some(0), "{text}");
     assert!(text.contains("rtc::scene::no_lights"), "{text}");
     assert_eq!(
         rtc(&["check", path, "--deny", "warnings"]).status.code(),
         Some(1)
     );
+}
+
+#[test]
+fn diagnostics_go_to_stderr_and_json_to_stdout() {
+    let dir = scratch("streams");
+    let scene = dir.join("bad.rtc");
+    std::fs::write(&scene, "rtc 1\nsphere(radius: -1)\n").unwrap();
+    let path = scene.to_str().unwrap();
+    for format in ["human", "short"] {
+        let run = rtc(&["check", path, "--format", format]);
+        assert_eq!(run.status.code(), Some(1));
+        assert!(run.stdout.is_empty(), "{format}: stdout must stay empty");
+        let err = String::from_utf8_lossy(&run.stderr);
+        assert!(err.contains("rtc::param::out_of_range"), "{format}: {err}");
+    }
+    let run = rtc(&["check", path, "--format", "json"]);
+    assert_eq!(run.status.code(), Some(1));
+    assert!(run.stderr.is_empty(), "json: stderr must stay empty");
+    let doc: serde_json::Value = serde_json::from_slice(&run.stdout).expect("JSON on stdout");
+    assert_eq!(doc["diagnostics"][0]["code"], "rtc::param::out_of_range");
+    assert_eq!(doc["ok"], false);
 }

@@ -1,6 +1,6 @@
 //! Every ```rtc block of docs/language.md evaluates as the document says.
 //!
-//! Rules (stated at the top of the document): a block without the `rtc 1` header gets one
+//! Rules (stated at the top of the document): a block without the `rtc 1.1` header gets one
 //! prepended, a block that writes no `camera` gets `camera { eye: [0, 0, 10] }` appended. A
 //! ```rtc block must produce no errors; a ```rtc,error block must produce at least one. Every
 //! `error[CODE]` or `warning[CODE]` written in a block must be reported with that code and
@@ -86,7 +86,7 @@ fn has_header(text: &str) -> bool {
     text.lines()
         .map(str::trim)
         .find(|l| !l.is_empty() && !l.starts_with("//"))
-        .is_some_and(|l| l == "rtc 1")
+        .is_some_and(|l| l == "rtc 1" || l == "rtc 1.1")
 }
 
 fn line_of(text: &str, byte: usize) -> usize {
@@ -108,7 +108,7 @@ fn every_example_in_the_language_reference_behaves_as_documented() {
         let header = !has_header(&b.text);
         let mut src = String::new();
         if header {
-            src.push_str("rtc 1\n");
+            src.push_str("rtc 1.1\n");
         }
         src.push_str(&b.text);
         if !b.text.contains("camera {") && !b.text.contains("camera(") {
@@ -189,4 +189,5 @@ fn the_block_reader_sees_fences_and_annotations() {
         vec![(1, Severity::Error, "rtc::name::unknown".to_owned())]
     );
     assert!(has_header("// c\nrtc 1\n") && !has_header("let a = 1\nrtc 1\n"));
+    assert!(has_header("rtc 1.1\n"));
 }

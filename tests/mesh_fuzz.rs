@@ -3,12 +3,14 @@
 //! and a loaded mesh answers rays. The coverage-guided fuzzer in fuzz/ does this at scale; this
 //! is the short version that runs in CI.
 
+mod geometry_support;
+
 use std::path::PathBuf;
 
 use glam::DVec3;
 use proptest::prelude::*;
+use rtc::assets::MeshAsset;
 use rtc::geometry::Ray;
-use rtc::geometry::mesh::MeshData;
 
 const CUBE: &str = include_str!("data/course/models/cube.obj");
 const DUCK_MTL: &str = include_str!("data/course/models/devilduk.mtl");
@@ -40,7 +42,8 @@ fn load_and_trace(obj: &str, mtl: &str, smooth: bool, case: u32) {
     let path = dir.join(format!("m{case}.obj"));
     std::fs::write(&path, format!("mtllib m{case}.mtl\nusemtl bill\n{obj}")).expect("write");
     std::fs::write(dir.join(format!("m{case}.mtl")), mtl).expect("write");
-    if let Ok(mesh) = MeshData::load(&path, smooth) {
+    if let Ok(asset) = MeshAsset::load(&path, smooth) {
+        let mesh = geometry_support::mesh_of(&asset);
         let b = mesh.bounds();
         let centre = 0.5 * (b.min + b.max);
         for dir in [
@@ -54,7 +57,7 @@ fn load_and_trace(obj: &str, mtl: &str, smooth: bool, case: u32) {
                 assert!(h.t >= 0.0 && finite, "{h:?}");
             }
         }
-        let _ = mesh.is_closed();
+        let _ = asset.is_closed();
     }
 }
 

@@ -16,7 +16,7 @@ use glam::{DAffine3, DQuat, DVec3};
 use rtc::eval::{EvalOptions, load_source};
 use rtc::geometry::{Ray, World};
 use rtc::ir::Shape;
-use rtc::render::{Image, RenderOptions, render};
+use rtc::render::{Image, RenderOptions, render_image};
 use rtc::source::SourceMap;
 
 /// Image side in pixels; the view spans [−1.5, 1.5]² at the origin.
@@ -35,14 +35,7 @@ fn render_rtc(src: &str) -> Image {
     let scene = loaded
         .scene
         .unwrap_or_else(|| panic!("scene evaluates: {:?}", loaded.diagnostics.items));
-    render(
-        &scene,
-        &RenderOptions {
-            threads: 1,
-            progress: false,
-        },
-    )
-    .expect("renders")
+    render_image(&scene, &RenderOptions { threads: 1 }).expect("renders")
 }
 
 /// A normal-mode image of `object` seen along −z from `[ex, ey, distance]` with a view 3 units

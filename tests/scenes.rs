@@ -52,7 +52,7 @@ fn every_scene_passes_check() {
             .arg(rel)
             .output()
             .expect("run rtc");
-        let stdout = String::from_utf8_lossy(&out.stdout);
+        let stdout = String::from_utf8_lossy(&out.stderr);
         let errors: Vec<&str> = stdout.lines().filter(|l| l.contains(": error[")).collect();
         if rel.starts_with("scenes/bench")
             && !errors.is_empty()

@@ -11,8 +11,7 @@ use std::sync::OnceLock;
 
 use rtc::diag::Diagnostic;
 use rtc::eval::EvalOptions;
-use rtc::frontend::Loaded;
-use rtc::ir::{Sampling, Scene};
+use rtc::ir::{Loaded, Sampling, Scene};
 use rtc::render::RenderOptions;
 use rtc::source::{SourceMap, Span};
 
@@ -76,24 +75,27 @@ pub fn synthetic_sources() -> SourceMap {
     sources
 }
 
-/// `rtc check`'s lints and geometry validation, then a render of at most 4×4 pixels.
+/// `rtc check`'s lints and the preparation stage (geometry, meshes, textures), then a render of
+/// at most 4×4 pixels.
 pub fn later_stages(mut scene: Scene, sources: &SourceMap) {
+    clamp_work(&mut scene);
     for d in &rtc::check::lint(&scene).items {
         spans_ok(d, sources);
     }
-    let geometry = rtc::geometry::validate_scene_geometry(&scene);
-    for d in &geometry.items {
+    let prepared = match rtc::opt::prepare(&scene) {
+        Ok(p) => p,
+        Err(problems) => {
+            for d in &problems.items {
+                spans_ok(d, sources);
+            }
+            return;
+        }
+    };
+    for d in prepared.warnings() {
         spans_ok(d, sources);
     }
-    if geometry.has_errors() {
-        return;
-    }
-    clamp_work(&mut scene);
-    let options = RenderOptions {
-        threads: 1,
-        progress: false,
-    };
-    if let Ok(film) = rtc::render::render_film(&scene, &options) {
+    let options = RenderOptions { threads: 1 };
+    if let Ok(film) = rtc::render::render(&prepared, &options, &rtc::render::Silent) {
         let _ = film.to_image();
     }
 }

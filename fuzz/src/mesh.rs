@@ -4,14 +4,21 @@ use std::path::Path;
 
 use glam::{DAffine3, DVec3};
 use rtc::geometry::Ray;
-use rtc::geometry::mesh::MeshData;
+use rtc::assets::MeshAsset;
+use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::ir::{Object, Shape};
 
 /// Loads the OBJ at `path` and uses it every way the renderer does.
 pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
-    let Ok(mesh) = MeshData::load(path, smooth) else {
+    let Ok(asset) = MeshAsset::load(path, smooth) else {
         return;
     };
+    let mesh = Mesh::build(MeshParts {
+        triangles: &asset.triangles,
+        normals: &asset.normals,
+        uvs: &asset.uvs,
+        material_of: &asset.material_of,
+    });
     let b = mesh.bounds();
     let centre = 0.5 * (b.min + b.max);
     let reach = (b.max - b.min).length().max(1.0);
@@ -25,9 +32,9 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         hits.clear();
         mesh.all_hits(&ray, &mut hits);
     }
-    let _ = (mesh.is_closed(), mesh.triangle_count(), mesh.memory());
-    // As a scene object (through the shared mesh cache, emptied so this file is read afresh).
-    rtc::geometry::mesh_cache::clear();
+    let _ = (asset.is_closed(), mesh.triangle_count(), mesh.memory());
+    // As a scene object (through the asset cache, emptied so this file is read afresh).
+    rtc::assets::clear_cache();
     let mut scene = crate::texture::one_object_scene(Object {
         shape: Shape::Mesh {
             path: path.to_path_buf(),

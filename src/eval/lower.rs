@@ -230,11 +230,7 @@ impl Lowerer {
                 s.default_material = r.material.as_ref().map(|m| self.material(m));
                 s
             }
-            None => ir::RenderSettings {
-                shadows: true,
-                max_depth: 5,
-                ..ir::RenderSettings::default()
-            },
+            None => ir::RenderSettings::language_defaults(),
         };
         Ok(ir::Scene {
             camera,

@@ -18,6 +18,7 @@ fn members_of(v: &Value) -> Vec<&'static str> {
         Value::Angle(_) => vec!["deg", "rad", "turn"],
         Value::Object(_) => [&["bounds"][..], &super::methods::object_methods()].concat(),
         Value::Camera(_) => vec!["eye", "center", "up"],
+        Value::Material(_) => super::builtins::MAT_FIELDS.to_vec(),
         _ => Vec::new(),
     }
 }
@@ -112,6 +113,7 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
             }),
             _ => None,
         },
+        Value::Material(m) => material_field(m, n, name.span)?,
         Value::Camera(c) => match n {
             "eye" => Some(Value::Vec3(c.eye)),
             "center" => Some(Value::Vec3(c.center)),
@@ -124,6 +126,44 @@ pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
         return Ok(x);
     }
     Err(unknown("member", &v, n, name.span, &members_of(&v)))
+}
+
+/// `m.color`, `m.ka`, ...: a material's fields read back (`None` for an unknown name).
+fn material_field(m: &super::value::Mat, n: &str, span: Span) -> R<Option<Value>> {
+    let absent = |what: &str| -> R<Option<Value>> {
+        Err(error(
+            "rtc::value::no_material",
+            span,
+            format!("this material has no {what}"),
+        )
+        .with_label("nothing to read")
+        .with_help(format!("set one with `m with {{ {n}: ... }}` first"))
+        .into())
+    };
+    Ok(Some(match n {
+        "color" => Value::Color(m.m.color),
+        "ka" => Value::Float(m.m.ka),
+        "kd" => Value::Float(m.m.kd),
+        "ks" => Value::Float(m.m.ks),
+        "n" => Value::Float(m.m.n),
+        "reflect" => Value::Float(m.m.reflect),
+        "refract" => Value::Float(m.m.refract),
+        "eta" => Value::Float(m.m.eta),
+        "texture" => match &m.texture {
+            Some(t) => Value::Texture(t.clone()),
+            None => return absent("texture"),
+        },
+        "bump" => match &m.bump {
+            Some((t, _)) => Value::Texture(t.clone()),
+            None => return absent("bump texture"),
+        },
+        "bump_scale" => Value::Float(m.bump.as_ref().map_or(1.0, |b| b.1)),
+        "shading" => match m.m.shading {
+            Some(s) => Value::Shading(s),
+            None => return absent("shading model of its own"),
+        },
+        _ => return Ok(None),
+    }))
 }
 
 /// The error for `v.n` when `v` has no member (or method, by `what`) called `n`: did-you-mean,
@@ -155,13 +195,20 @@ pub fn unknown(
 /// `v[i]`.
 pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
     let Value::Int(k) = i else {
+        let help = match i {
+            // `0..n / 2` gives Float elements: `/` always divides exactly.
+            Value::Float(f) if f == f.trunc() => {
+                "`/` always gives a `Float`; divide with `div` for an `Int` (`n div 2`), or use `int(...)`"
+            }
+            _ => "use `round(...)` or `floor(...)` to get an `Int`",
+        };
         return Err(error(
             "rtc::type::mismatch",
             ispan,
             format!("expected `Int`, found `{}`", i.type_name()),
         )
         .with_label("an index must be an integer")
-        .with_help("use `round(...)` or `floor(...)` to get an `Int`")
+        .with_help(help)
         .into());
     };
     let len = match &v {

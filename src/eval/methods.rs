@@ -1,5 +1,5 @@
-//! Method calls: transforms and `.material(m)` on objects, transform chaining, RNG draws and
-//! list helpers.
+//! Method calls: transforms and `.material(m)` on objects, transform chaining, applying a
+//! transform to a point or vector, RNG draws, list methods and vector methods.
 
 use std::rc::Rc;
 
@@ -51,40 +51,118 @@ pub fn call_method(
         Value::Rng(seed) if super::rng::METHODS.contains(&n) => {
             return super::rng::method(it, *seed, n, site, args);
         }
-        Value::List(l) if n == "map" || n == "filter" => {
-            let mut p = super::builtins::Params::new(site, &["f"], args)?;
-            let (f, fs) = p.req("f")?;
-            if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
-                return Err(types::mismatch(it, "Fn", &f, fs).into());
-            }
-            let mut out = Vec::with_capacity(l.len());
-            for x in l.iter() {
-                let a = vec![ArgVal {
-                    name: None,
-                    value: x.clone(),
-                    span: fs,
-                }];
-                let r = it.call_value(f.clone(), a, span, fs)?;
-                if n == "map" {
-                    out.push(r);
-                } else if types::boolean(it, &r, fs)? {
-                    out.push(x.clone());
-                }
-            }
-            return Ok(Value::List(Rc::new(out)));
+        Value::List(_) | Value::Vec3(_) if n == "map" || n == "filter" => {
+            return map_filter(it, &recv, n == "map", site, args);
+        }
+        Value::List(_) | Value::Vec3(_) if LIST_METHODS.contains(&n) => {
+            return with_receiver(it, recv, name, args, span);
+        }
+        Value::Vec3(v) if is_t => {
+            // A point: `p.rotate(y: 90deg)` is where `rotate(y: 90deg)` takes the point `p`.
+            let t = super::transform::method_transform(it, n, site, args)?;
+            return Ok(Value::Vec3(t.transform_point3(*v)));
+        }
+        Value::Vec3(_) if VEC_METHODS.contains(&n) => {
+            return with_receiver(it, recv, name, args, span);
+        }
+        Value::Transform(t) if n == "point" || n == "vector" => {
+            let mut p = super::builtins::Params::new(site, &["v"], args)?;
+            let (v, _) = p.vec3(it, "v")?;
+            return Ok(Value::Vec3(if n == "point" {
+                t.transform_point3(v)
+            } else {
+                t.transform_vector3(v)
+            }));
         }
         _ => {}
     }
     let known: Vec<&str> = match &recv {
         Value::Object(_) => object_methods(),
-        Value::Transform(_) => super::transform::METHODS.to_vec(),
+        Value::Transform(_) => [super::transform::METHODS, &["point", "vector"]].concat(),
         Value::Rng(_) => super::rng::METHODS.to_vec(),
-        Value::List(_) => vec!["map", "filter"],
+        Value::List(_) => [&["map", "filter"], LIST_METHODS].concat(),
+        Value::Vec3(_) => [
+            &["map", "filter"],
+            LIST_METHODS,
+            VEC_METHODS,
+            super::transform::METHODS,
+        ]
+        .concat(),
         _ => Vec::new(),
     };
     Err(super::members::unknown(
         "method", &recv, n, name.span, &known,
     ))
+}
+
+/// List functions that are also methods of lists and vectors (`l.sum()` is `sum(l)`).
+const LIST_METHODS: &[&str] = &[
+    "len",
+    "sum",
+    "min",
+    "max",
+    "flatten",
+    "reverse",
+    "zip",
+    "enumerate",
+    "any",
+    "all",
+    "reduce",
+];
+
+/// Vector functions that are also methods of vectors (`v.dot(w)` is `dot(v, w)`).
+const VEC_METHODS: &[&str] = &["length", "normalize", "dot", "cross", "distance"];
+
+/// `recv.f(args)` as the built-in `f(recv, args)`.
+fn with_receiver(
+    it: &mut Interp,
+    recv: Value,
+    name: Name,
+    mut args: Vec<ArgVal>,
+    span: Span,
+) -> R<Value> {
+    let f = super::builtins::global(name.sym).expect("list and vector methods are built-ins");
+    args.insert(
+        0,
+        ArgVal {
+            name: None,
+            value: recv,
+            span,
+        },
+    );
+    it.call_value(f, args, span, name.span)
+}
+
+/// `l.map(f)` and `l.filter(f)` on a list or a vector. Mapping a vector to numbers gives a
+/// vector again; otherwise the result is a list.
+fn map_filter(
+    it: &mut Interp,
+    recv: &Value,
+    map: bool,
+    site: CallSite,
+    args: Vec<ArgVal>,
+) -> R<Value> {
+    let mut p = super::builtins::Params::new(site, &["f"], args)?;
+    let (f, fs) = p.req("f")?;
+    if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
+        return Err(types::mismatch(it, "Fn", &f, fs).into());
+    }
+    let items = super::builtins::lists::items(recv).expect("a list or a vector");
+    let mut out = Vec::with_capacity(items.len());
+    for x in items.iter() {
+        let r = super::builtins::lists::call(it, &f, std::slice::from_ref(x), fs, site.span)?;
+        if map {
+            out.push(r);
+        } else if types::boolean(it, &r, fs)? {
+            out.push(x.clone());
+        }
+    }
+    if let (true, Value::Vec3(_), [a, b, c]) = (map, recv, out.as_slice())
+        && let (Some(x), Some(y), Some(z)) = (a.as_f64(), b.as_f64(), c.as_f64())
+    {
+        return Ok(Value::Vec3(glam::DVec3::new(x, y, z)));
+    }
+    Ok(Value::List(Rc::new(out)))
 }
 
 /// Methods of objects: every transform method, plus `material`.

@@ -1,31 +1,33 @@
 //! Evaluation of `.rtc` files to the IR: names, types, loops, functions, modules, budgets.
 
-pub mod assets;
-pub mod bounds;
-pub mod builtins;
-pub mod call;
-pub mod error;
-pub mod fxhash;
-pub mod interp;
-pub mod lower;
-pub mod members;
-pub mod methods;
+pub(crate) mod assets;
+pub(crate) mod bounds;
+pub(crate) mod builtins;
+pub(crate) mod call;
+pub(crate) mod error;
+pub(crate) mod fxhash;
+pub(crate) mod interp;
+pub(crate) mod lower;
+pub(crate) mod members;
+pub(crate) mod methods;
 pub mod modules;
-pub mod ops;
-pub mod program;
+pub(crate) mod ops;
+pub(crate) mod program;
 pub mod rng;
-pub mod shapes;
-pub mod transform;
-pub mod types;
-pub mod value;
-pub mod with;
+pub(crate) mod shapes;
+pub(crate) mod transform;
+pub(crate) mod types;
+pub(crate) mod value;
+pub(crate) mod with;
 
 use std::path::Path;
 use std::rc::Rc;
 
 use crate::diag::{Diagnostic, Severity};
-use crate::frontend::Loaded;
+use crate::ir::Loaded;
 use crate::source::SourceMap;
+
+pub use value::SHOW_LIMIT;
 
 /// Budgets that keep evaluation finite; each overrun is a clear error.
 #[derive(Clone, Debug)]
@@ -56,14 +58,21 @@ impl Default for EvalOptions {
 
 /// Parses and evaluates the scene file at `path`, reading it from disk.
 pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
-    match std::fs::read_to_string(path) {
-        Ok(text) => load_source(path, &text, sources, options),
+    match std::fs::read(path).map(String::from_utf8) {
+        Ok(Ok(text)) => load_source(path, &text, sources, options),
+        Ok(Err(e)) => {
+            let mut loaded = Loaded::default();
+            loaded
+                .diagnostics
+                .push(not_text(path, e.as_bytes(), e.utf8_error()));
+            loaded
+        }
         Err(e) => {
             let mut loaded = Loaded::default();
             loaded.diagnostics.push(
                 Diagnostic::new(
                     Severity::Error,
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     None,
                     format!("cannot read `{}`: {e}", path.display()),
                 )
@@ -72,6 +81,42 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
             loaded
         }
     }
+}
+
+/// The error for a scene file that is not UTF-8 text: where the first bad byte is, and whether the
+/// file looks binary (a NUL byte) rather than text in another encoding.
+fn not_text(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> Diagnostic {
+    let at = e.valid_up_to();
+    let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+    let column = at
+        - bytes[..at]
+            .iter()
+            .rposition(|&b| b == b'\n')
+            .map_or(0, |p| p + 1)
+        + 1;
+    let binary = bytes.iter().take(8192).any(|&b| b == 0);
+    let (what, help) = if binary {
+        (
+            "looks like a binary file, not a scene",
+            "give `rtc` a `.rtc` text file; images and models are loaded by the scene with `image(...)` and `mesh(...)`",
+        )
+    } else {
+        (
+            "is not UTF-8 text",
+            "save the file as UTF-8 (e.g. `iconv -f latin1 -t utf-8`)",
+        )
+    };
+    Diagnostic::new(
+        Severity::Error,
+        "rtc::syntax::encoding",
+        None,
+        format!(
+            "`{}` {what}: byte 0x{:02x} at offset {at} (line {line}, column {column}) is not UTF-8",
+            path.display(),
+            bytes.get(at).copied().unwrap_or(0),
+        ),
+    )
+    .with_help(help)
 }
 
 /// Parses and evaluates `text` as the scene file `path` (relative paths resolve against its
@@ -93,7 +138,7 @@ pub fn load_source(
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
             .unwrap_or_else(|_| {
                 Loaded::failure(
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     "cannot start the evaluation thread",
                     "free some memory and retry",
                 )

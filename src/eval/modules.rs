@@ -99,21 +99,29 @@ pub fn stdlib(name: &str) -> Option<&'static str> {
     STDLIB.iter().find(|(n, _)| *n == name).map(|(_, t)| *t)
 }
 
+/// The standard modules that export `name` (read from their `pub let` / `pub fn` lines), for
+/// the help of an unknown name: `red` is in `std.color`. `std.prelude` is left out: its names
+/// are the same as in `std.math`.
+pub fn std_modules_exporting(name: &str) -> Vec<&'static str> {
+    let exports = |text: &str| {
+        text.lines().any(|l| {
+            let rest = l
+                .strip_prefix("pub let ")
+                .or_else(|| l.strip_prefix("pub fn "))
+                .unwrap_or("");
+            rest.strip_prefix(name)
+                .is_some_and(|r| r.starts_with([' ', '(', ':', '=']))
+        })
+    };
+    STDLIB
+        .iter()
+        .filter(|(m, text)| *m != "prelude" && exports(text))
+        .map(|(m, _)| *m)
+        .collect()
+}
+
 /// Resolves `rel` against `dir` without touching the file system (paths stay as the user would
 /// write them, so messages are stable).
 pub fn resolve(dir: &Path, rel: &str) -> PathBuf {
-    let joined = dir.join(rel);
-    let mut out = PathBuf::new();
-    for c in joined.components() {
-        match c {
-            std::path::Component::CurDir => {}
-            std::path::Component::ParentDir
-                if out.file_name().is_some() && !out.ends_with("..") =>
-            {
-                out.pop();
-            }
-            other => out.push(other.as_os_str()),
-        }
-    }
-    out
+    crate::assets::search::join(dir, rel)
 }

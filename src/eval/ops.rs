@@ -68,17 +68,29 @@ pub fn binary(
             }
             Int(a.rem_euclid(*b))
         }
-        (Add | Sub | Mul | Div | Rem, Int(_) | Float(_), Int(_) | Float(_)) => {
+        (IntDiv, Int(a), Int(b)) => {
+            if *b == 0 {
+                return Err(div_zero(rs));
+            }
+            Int(a.checked_div_euclid(*b).ok_or_else(|| overflow(span))?)
+        }
+        (Pow, Int(a), Int(b)) if *b >= 0 => {
+            let e = u32::try_from(*b).map_err(|_| overflow(span))?;
+            Int(a.checked_pow(e).ok_or_else(|| overflow(span))?)
+        }
+        (Add | Sub | Mul | Div | Rem | Pow, Int(_) | Float(_), Int(_) | Float(_)) => {
             let (a, b) = (l.as_f64().unwrap_or(0.0), r.as_f64().unwrap_or(0.0));
-            Float(match op {
+            let v = match op {
                 Add => a + b,
                 Sub => a - b,
                 Mul => a * b,
                 Div if b == 0.0 => return Err(div_zero(rs)),
                 Div => a / b,
                 Rem if b == 0.0 => return Err(div_zero(rs)),
-                _ => a.rem_euclid(b),
-            })
+                Rem => a.rem_euclid(b),
+                _ => libm::pow(a, b),
+            };
+            Float(v)
         }
         (Add, Angle(a), Angle(b)) => Angle(a + b),
         (Sub, Angle(a), Angle(b)) => Angle(a - b),
@@ -131,7 +143,41 @@ pub fn binary(
         }
         _ => return Err(op_error(it, op, &l, &r, ls, rs).into()),
     };
+    let finite = match &v {
+        Float(x) | Angle(x) => x.is_finite(),
+        Vec3(x) | Color(x) => x.is_finite(),
+        _ => true,
+    };
+    if !finite {
+        return Err(not_finite(it, op, &l, &r, span));
+    }
     Ok(v)
+}
+
+/// An operation whose result is infinite or NaN: stopped here, before it reaches geometry.
+fn not_finite(it: &Interp, op: BinOp, l: &Value, r: &Value, span: Span) -> super::error::EvalError {
+    let help = if op == BinOp::Pow {
+        "a negative base needs a whole exponent; keep results below about 1.8e308"
+    } else {
+        "keep results below about 1.8e308"
+    };
+    let shown = |v: &Value| match v.show() {
+        s if s.starts_with('-') => format!("({s})"),
+        s => s,
+    };
+    error(
+        "rtc::value::nan",
+        span,
+        format!("`{}` has no finite result", it.snippet(span).trim()),
+    )
+    .with_label(format!(
+        "{} {} {} is not a finite number",
+        shown(l),
+        op.as_str(),
+        shown(r)
+    ))
+    .with_help(help)
+    .into()
 }
 
 fn nonzero(v: Option<f64>, span: Span) -> R<f64> {
@@ -157,6 +203,22 @@ fn equal(a: &Value, b: &Value) -> Option<bool> {
         (Angle(x), Angle(y)) => x == y,
         (Vec3(x), Vec3(y)) => x == y,
         (Color(x), Color(y)) => x == y,
+        // Lists compare element by element; a `Vec3` counts as a list of three numbers.
+        (List(_) | Vec3(_), List(_) | Vec3(_)) => {
+            let (x, y) = (
+                super::builtins::lists::items(a)?,
+                super::builtins::lists::items(b)?,
+            );
+            if x.len() != y.len() {
+                return Some(false);
+            }
+            for (p, q) in x.iter().zip(y.iter()) {
+                if !equal(p, q)? {
+                    return Some(false);
+                }
+            }
+            true
+        }
         _ => return None,
     })
 }

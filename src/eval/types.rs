@@ -169,10 +169,17 @@ pub fn angle(it: &Interp, v: &Value, span: Span) -> R<f64> {
     }
 }
 
-/// A Vec3.
+/// A Vec3; a `List` of exactly three numbers (what `.map` on a list gives) is one too.
 pub fn vec3(it: &Interp, v: &Value, span: Span) -> R<DVec3> {
     match v {
         Value::Vec3(x) => Ok(*x),
+        Value::List(l) => match l.as_slice() {
+            [a, b, c] => match (a.as_f64(), b.as_f64(), c.as_f64()) {
+                (Some(x), Some(y), Some(z)) => Ok(DVec3::new(x, y, z)),
+                _ => Err(mismatch(it, "Vec3", v, span).into()),
+            },
+            _ => Err(mismatch(it, "Vec3", v, span).into()),
+        },
         _ => Err(mismatch(it, "Vec3", v, span).into()),
     }
 }

@@ -63,6 +63,8 @@ pub enum Value {
     Mapping(ir::Mapping),
     /// An ambient convention (`per_light`, `once`).
     Ambient(ir::AmbientConvention),
+    /// An output encoding (`linear`; `srgb` is the colour function, accepted by name).
+    Encoding(ir::Encoding),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -257,6 +259,7 @@ impl Value {
             Value::Sampling(_) => "Sampling",
             Value::Mapping(_) => "Mapping",
             Value::Ambient(_) => "Ambient",
+            Value::Encoding(_) => "Encoding",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }
@@ -340,6 +343,24 @@ impl Value {
                 out.push_str(" }");
             }
             Value::Object(o) => out.push_str(&format!("<{}>", obj_kind(o))),
+            Value::Material(m) => out.push_str(&show_material(m)),
+            Value::Transform(t) => {
+                out.push_str("matrix([");
+                for r in 0..3 {
+                    let row = t.matrix3.row(r);
+                    if r > 0 {
+                        out.push_str(", ");
+                    }
+                    out.push_str(&format!(
+                        "[{}, {}, {}, {}]",
+                        fmt_f(row.x),
+                        fmt_f(row.y),
+                        fmt_f(row.z),
+                        fmt_f(t.translation[r])
+                    ));
+                }
+                out.push_str("])");
+            }
             other => out.push_str(&format!("<{}>", other.type_name())),
         }
     }
@@ -347,6 +368,28 @@ impl Value {
 
 /// Longest text [`Value::show`] produces before it ends in `...`.
 pub const SHOW_LIMIT: usize = 10_000;
+
+/// A material as the `material { .. }` call that makes it (textures shown by kind).
+fn show_material(m: &Mat) -> String {
+    let c = m.m.color;
+    let mut fields = vec![
+        format!("color: rgb({}, {}, {})", fmt_f(c.x), fmt_f(c.y), fmt_f(c.z)),
+        format!("ka: {}", fmt_f(m.m.ka)),
+        format!("kd: {}", fmt_f(m.m.kd)),
+        format!("ks: {}", fmt_f(m.m.ks)),
+        format!("n: {}", fmt_f(m.m.n)),
+        format!("reflect: {}", fmt_f(m.m.reflect)),
+        format!("refract: {}", fmt_f(m.m.refract)),
+        format!("eta: {}", fmt_f(m.m.eta)),
+    ];
+    if m.texture.is_some() {
+        fields.push("texture: <Texture>".into());
+    }
+    if let Some((_, s)) = &m.bump {
+        fields.push(format!("bump: <Texture>, bump_scale: {}", fmt_f(*s)));
+    }
+    format!("material {{ {} }}", fields.join(", "))
+}
 
 /// Kind name of an object value.
 pub fn obj_kind(o: &Obj) -> &'static str {
@@ -359,12 +402,7 @@ pub fn obj_kind(o: &Obj) -> &'static str {
 
 /// Formats a float without noise: integers without a fraction, otherwise up to 6 digits.
 pub fn fmt_f(f: f64) -> String {
-    if f == f.trunc() && f.abs() < 1e15 {
-        format!("{}", f as i64)
-    } else {
-        let s = format!("{f:.6}");
-        s.trim_end_matches('0').trim_end_matches('.').to_owned()
-    }
+    crate::diag::number(f)
 }
 
 /// "an `Int`", "a `Float`": a type name with its article, for messages.

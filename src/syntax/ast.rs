@@ -17,8 +17,8 @@ pub struct Name {
 /// A parsed file: its header and statements.
 #[derive(Clone, Debug)]
 pub struct File {
-    /// The `rtc N` version, if the header was present.
-    pub version: Option<(i64, Span)>,
+    /// The `rtc N` version as written (`1`, `1.1`), if the header was present.
+    pub version: Option<(String, Span)>,
     /// Top-level statements in order.
     pub stmts: Vec<Stmt>,
 }
@@ -169,6 +169,10 @@ pub enum BinOp {
     Div,
     /// `%`
     Rem,
+    /// `div` (integer division, rounding toward negative infinity for a positive divisor)
+    IntDiv,
+    /// `**`
+    Pow,
 }
 
 impl BinOp {
@@ -191,6 +195,8 @@ impl BinOp {
             BinOp::Mul => "*",
             BinOp::Div => "/",
             BinOp::Rem => "%",
+            BinOp::IntDiv => "div",
+            BinOp::Pow => "**",
         }
     }
 }
@@ -253,6 +259,8 @@ pub enum ExprKind {
     Bool(bool),
     /// `#ff8800` (linear RGB, converted from sRGB).
     Color([f64; 3]),
+    /// `[1, 2.5, -3]`: three plain numbers, read as one token.
+    Vec3([f64; 3]),
     /// `"a {x} b"`
     Str(Vec<StrPart>),
     /// A string without interpolation, shared so evaluating it never allocates.

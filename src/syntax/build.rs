@@ -1,6 +1,7 @@
 //! Builds the AST from pest's parse tree, reporting the slips the grammar accepts on purpose
 //! (`=` instead of `:` in records and named arguments).
 
+use std::cell::RefCell;
 use std::rc::Rc;
 
 use pest::iterators::Pair;
@@ -10,24 +11,27 @@ use crate::source::{FileId, Span};
 use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
+use crate::syntax::pratt;
 
-/// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve).
+/// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
+/// value is the same on every machine).
 pub fn srgb_to_linear(c: f64) -> f64 {
     if c <= 0.04045 {
         c / 12.92
     } else {
-        ((c + 0.055) / 1.055).powf(2.4)
+        libm::pow((c + 0.055) / 1.055, 2.4)
     }
 }
 
 /// Tree builder for one statement parsed at byte `base` of `file`.
-pub struct Builder<'a> {
+pub struct Builder {
     /// The file being parsed.
     pub file: FileId,
     /// Offset of the parsed slice in the file.
     pub base: usize,
-    /// Where slips are reported.
-    pub diags: &'a mut Vec<Diagnostic>,
+    /// Slips and warnings found while building (a `RefCell` because the Pratt parser's
+    /// callbacks share the builder).
+    diags: RefCell<Vec<Diagnostic>>,
 }
 
 type P<'i> = Pair<'i, Rule>;
@@ -35,7 +39,40 @@ type P<'i> = Pair<'i, Rule>;
 /// Longest operator chain in one expression: evaluation recurses once per operator.
 const MAX_CHAIN: usize = 10_000;
 
-impl Builder<'_> {
+/// An expression with what its top operator was, so that `a < b < c` and `0..1..2` can be told
+/// from `(a < b) < c`: parentheses reset the tag.
+struct Built {
+    expr: Expr,
+    top: Top,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Top {
+    Other,
+    Comparison,
+    Range,
+    RangeWithStep,
+}
+
+impl Builder {
+    /// A builder for the statement at `base`.
+    pub fn new(file: FileId, base: usize) -> Builder {
+        Builder {
+            file,
+            base,
+            diags: RefCell::new(Vec::new()),
+        }
+    }
+
+    /// The diagnostics found while building.
+    pub fn finish(self) -> Vec<Diagnostic> {
+        self.diags.into_inner()
+    }
+
+    fn push(&self, d: Diagnostic) {
+        self.diags.borrow_mut().push(d);
+    }
+
     fn span(&self, p: &P) -> Span {
         let s = p.as_span();
         Span::new(self.file, self.base + s.start(), self.base + s.end())
@@ -49,7 +86,7 @@ impl Builder<'_> {
     }
 
     /// A statement pair (`import_stmt`, `let_stmt`, `fn_def` or `expr`).
-    pub fn stmt(&mut self, p: P) -> Stmt {
+    pub fn stmt(&self, p: P) -> Stmt {
         match p.as_rule() {
             Rule::import_stmt => Stmt::Import(self.import(p)),
             Rule::let_stmt => Stmt::Let(self.let_stmt(p)),
@@ -58,7 +95,26 @@ impl Builder<'_> {
         }
     }
 
-    fn import(&mut self, p: P) -> Import {
+    /// Warns when a statement that starts with `-` follows an expression or `let` that it could
+    /// have continued: `-y` on its own line is a new statement (`- y` would subtract).
+    pub fn check_minus_line(&self, prev: Option<&Stmt>, p: &P) {
+        if !p.as_str().starts_with('-') || !matches!(prev, Some(Stmt::Expr(_) | Stmt::Let(_))) {
+            return;
+        }
+        let start = self.span(p).start as usize;
+        let span = Span::new(self.file, start, start + 1);
+        self.push(
+            Diagnostic::warning(
+                "rtc::syntax::ambiguous_minus",
+                span,
+                "this line starts a new statement; it does not subtract from the line above",
+            )
+            .with_label("a `-` with no space after it negates the value that follows")
+            .with_help("to subtract, put a space after the `-`; to keep a new statement, write it in parentheses `(-...)`"),
+        );
+    }
+
+    fn import(&self, p: P) -> Import {
         let span = self.span(&p);
         let mut it = p.into_inner();
         let src = it.next().expect("grammar: import source");
@@ -85,7 +141,7 @@ impl Builder<'_> {
         }
     }
 
-    fn plain_string(&mut self, p: P) -> String {
+    fn plain_string(&self, p: P) -> String {
         let mut out = String::new();
         for part in p.into_inner() {
             match part.as_rule() {
@@ -93,7 +149,7 @@ impl Builder<'_> {
                 Rule::str_escape => out.push(unescape(part.as_str())),
                 _ => {
                     let s = self.span(&part);
-                    self.diags.push(
+                    self.push(
                         Diagnostic::error(
                             "rtc::syntax::unexpected",
                             s,
@@ -108,7 +164,7 @@ impl Builder<'_> {
         out
     }
 
-    fn let_stmt(&mut self, p: P) -> Let {
+    fn let_stmt(&self, p: P) -> Let {
         let span = self.span(&p);
         let mut public = false;
         let mut name = None;
@@ -131,7 +187,7 @@ impl Builder<'_> {
         }
     }
 
-    fn type_ann(&mut self, p: P) -> TypeAnn {
+    fn type_ann(&self, p: P) -> TypeAnn {
         let span = self.span(&p);
         let mut it = p.into_inner();
         let name = self.name(&it.next().expect("grammar: type name"));
@@ -151,7 +207,7 @@ impl Builder<'_> {
         }
     }
 
-    fn fn_def(&mut self, p: P) -> FnDef {
+    fn fn_def(&self, p: P) -> FnDef {
         let span = self.span(&p);
         let mut public = false;
         let mut name = None;
@@ -177,7 +233,7 @@ impl Builder<'_> {
         }
     }
 
-    fn params(&mut self, p: P) -> Vec<Param> {
+    fn params(&self, p: P) -> Vec<Param> {
         p.into_inner()
             .map(|q| {
                 let mut it = q.into_inner();
@@ -195,178 +251,248 @@ impl Builder<'_> {
             .collect()
     }
 
-    fn block(&mut self, p: P) -> Block {
+    fn block(&self, p: P) -> Block {
         let span = self.span(&p);
-        let stmts = p.into_inner().map(|q| self.stmt(q)).collect();
+        let mut stmts: Vec<Stmt> = Vec::new();
+        for q in p.into_inner() {
+            self.check_minus_line(stmts.last(), &q);
+            stmts.push(self.stmt(q));
+        }
         Block { stmts, span }
     }
 
     /// Any expression-level pair.
-    pub fn expr(&mut self, p: P) -> Expr {
-        let span = self.span(&p);
+    pub fn expr(&self, p: P) -> Expr {
         match p.as_rule() {
-            Rule::expr | Rule::paren => self.expr(p.into_inner().next().expect("grammar: inner")),
-            Rule::or_expr
-            | Rule::and_expr
-            | Rule::cmp_expr
-            | Rule::then_expr
-            | Rule::union_expr
-            | Rule::add_expr
-            | Rule::inter_expr
-            | Rule::mul_expr => self.binary(p),
-            Rule::range_expr => self.range(p),
-            Rule::unary_expr => self.unary(p),
-            Rule::postfix => self.postfix(p),
-            _ => Expr {
-                kind: self.primary(p),
-                span,
-            },
+            Rule::expr | Rule::head_expr => self.flat(p),
+            Rule::paren => {
+                // The parentheses belong to the span, so `(-8) ** 0.5` is quoted whole.
+                let span = self.span(&p);
+                let mut e = self.expr(p.into_inner().next().expect("grammar: inner"));
+                e.span = span;
+                e
+            }
+            _ => {
+                let span = self.span(&p);
+                Expr {
+                    kind: self.primary(p),
+                    span,
+                }
+            }
         }
     }
 
-    fn too_long(&mut self, span: Span) {
-        self.diags.push(
+    fn too_long(&self, span: Span) -> Expr {
+        self.push(
             Diagnostic::error("rtc::budget::nesting", span, "expression is too long")
                 .with_label(format!("more than {MAX_CHAIN} operators in one expression"))
                 .with_help("split it into several `let` bindings"),
         );
-    }
-
-    fn binary(&mut self, p: P) -> Expr {
-        let span = self.span(&p);
-        if p.clone().into_inner().count() > 2 * MAX_CHAIN {
-            self.too_long(span);
-            return Expr {
-                kind: ExprKind::Int(0),
-                span,
-            };
-        }
-        let mut it = p.into_inner();
-        let mut lhs = self.expr(it.next().expect("grammar: operand"));
-        while let Some(op) = it.next() {
-            let rhs = self.expr(it.next().expect("grammar: operand"));
-            let op = match op.as_str() {
-                "||" => BinOp::Or,
-                "&&" => BinOp::And,
-                "==" => BinOp::Eq,
-                "!=" => BinOp::Ne,
-                "<" => BinOp::Lt,
-                "<=" => BinOp::Le,
-                ">" => BinOp::Gt,
-                ">=" => BinOp::Ge,
-                ">>" => BinOp::Then,
-                "|" => BinOp::Union,
-                "+" => BinOp::Add,
-                "-" => BinOp::Sub,
-                "&" => BinOp::Inter,
-                "*" => BinOp::Mul,
-                "/" => BinOp::Div,
-                _ => BinOp::Rem,
-            };
-            let span = lhs.span.join(rhs.span);
-            lhs = Expr {
-                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
-                span,
-            };
-        }
-        lhs
-    }
-
-    fn range(&mut self, p: P) -> Expr {
-        let span = self.span(&p);
-        let mut it = p.into_inner();
-        let start = self.expr(it.next().expect("grammar: operand"));
-        let Some(op) = it.next() else { return start };
-        let end = self.expr(it.next().expect("grammar: range end"));
-        let step = it
-            .find(|s| s.as_rule() != Rule::step_kw)
-            .map(|s| Box::new(self.expr(s)));
         Expr {
-            kind: ExprKind::Range {
-                start: Box::new(start),
-                end: Box::new(end),
-                inclusive: op.as_str() == "..=",
-                step,
-            },
+            kind: ExprKind::Int(0),
             span,
         }
     }
 
-    fn unary(&mut self, p: P) -> Expr {
-        let span = self.span(&p);
-        let pairs: Vec<P> = p.into_inner().collect();
-        if pairs.len() > MAX_CHAIN {
-            self.too_long(span);
-            return Expr {
-                kind: ExprKind::Int(0),
-                span,
-            };
+    /// A flat `expr`: operands and operators in a row. Without prefix or infix operators (the
+    /// common case: a literal, a name, a call chain) the suffixes are applied directly; otherwise
+    /// the Pratt table decides.
+    fn flat(&self, p: P) -> Expr {
+        let mut inner = p.clone().into_inner();
+        let first = inner.next().expect("grammar: operand");
+        let mut ops = 0usize;
+        for q in inner.clone() {
+            let r = q.as_rule();
+            if pratt::is_infix(r) || r == Rule::unary_op {
+                ops += 1;
+            }
         }
-        let mut iter = pairs.into_iter().rev();
-        let mut e = self.expr(iter.next().expect("grammar: operand"));
-        for op in iter {
-            let s = self.span(&op).join(e.span);
-            let op = if op.as_str() == "-" {
-                UnOp::Neg
-            } else {
-                UnOp::Not
-            };
-            e = Expr {
-                kind: ExprKind::Unary(op, Box::new(e)),
-                span: s,
-            };
+        if first.as_rule() == Rule::unary_op {
+            ops += 1;
         }
-        e
+        if ops == 0 {
+            let mut e = self.expr(first);
+            for s in inner {
+                e = self.suffix(e, s);
+            }
+            return e;
+        }
+        if ops > MAX_CHAIN {
+            return self.too_long(self.span(&p));
+        }
+        let built = pratt::PRATT
+            .map_primary(|q| Built {
+                expr: self.expr(q),
+                top: Top::Other,
+            })
+            .map_prefix(|op, rhs| {
+                let span = self.span(&op).join(rhs.expr.span);
+                let op = if op.as_str() == "-" {
+                    UnOp::Neg
+                } else {
+                    UnOp::Not
+                };
+                Built {
+                    expr: Expr {
+                        kind: ExprKind::Unary(op, Box::new(rhs.expr)),
+                        span,
+                    },
+                    top: Top::Other,
+                }
+            })
+            .map_postfix(|lhs, s| Built {
+                expr: self.suffix(lhs.expr, s),
+                top: Top::Other,
+            })
+            .map_infix(|lhs, op, rhs| self.infix(lhs, op, rhs))
+            .parse(p.into_inner());
+        built.expr
     }
 
-    fn postfix(&mut self, p: P) -> Expr {
-        let mut it = p.into_inner();
-        let mut e = self.expr(it.next().expect("grammar: primary"));
-        for s in it {
-            let span = e.span.join(self.span(&s));
-            let kind = match s.as_rule() {
-                Rule::call_args => {
-                    let args = s.into_inner().map(|a| self.arg(a)).collect();
-                    ExprKind::Call(Box::new(e), args)
+    fn infix(&self, lhs: Built, op: P, rhs: Built) -> Built {
+        let span = lhs.expr.span.join(rhs.expr.span);
+        let op_span = self.span(&op);
+        let chained = |what: &str, help: &str| {
+            Diagnostic::error(
+                "rtc::syntax::unexpected",
+                op_span,
+                format!("{what} do not chain"),
+            )
+            .with_label("the second operator of the chain")
+            .with_help(help.to_owned())
+        };
+        match op.as_rule() {
+            Rule::range_op => {
+                if lhs.top != Top::Other || rhs.top != Top::Other {
+                    self.push(chained(
+                        "ranges",
+                        "put a range in parentheses to use it as a value",
+                    ));
                 }
-                Rule::index => {
-                    let i = self.expr(s.into_inner().next().expect("grammar: index"));
-                    ExprKind::Index(Box::new(e), Box::new(i))
+                Built {
+                    expr: Expr {
+                        kind: ExprKind::Range {
+                            start: Box::new(lhs.expr),
+                            end: Box::new(rhs.expr),
+                            inclusive: op.as_str() == "..=",
+                            step: None,
+                        },
+                        span,
+                    },
+                    top: Top::Range,
                 }
-                Rule::member => {
-                    let n = self.name(&s.into_inner().next().expect("grammar: member"));
-                    ExprKind::Member(Box::new(e), n)
+            }
+            Rule::step_kw => {
+                let Built {
+                    expr:
+                        Expr {
+                            kind:
+                                ExprKind::Range {
+                                    start,
+                                    end,
+                                    inclusive,
+                                    step: None,
+                                },
+                            ..
+                        },
+                    top: Top::Range,
+                } = lhs
+                else {
+                    self.push(
+                        Diagnostic::error(
+                            "rtc::syntax::unexpected",
+                            op_span,
+                            "`step` must follow a range",
+                        )
+                        .with_label("no range before this `step`")
+                        .with_help("write `a..b step s`"),
+                    );
+                    return lhs;
+                };
+                Built {
+                    expr: Expr {
+                        kind: ExprKind::Range {
+                            start,
+                            end,
+                            inclusive,
+                            step: Some(Box::new(rhs.expr)),
+                        },
+                        span,
+                    },
+                    top: Top::RangeWithStep,
                 }
-                Rule::record_arg => {
-                    let r = s.into_inner().next().expect("grammar: record");
-                    let rspan = self.span(&r);
-                    let fields = self.fields(r);
-                    let value = Expr {
-                        kind: ExprKind::Record(fields),
-                        span: rspan,
-                    };
-                    ExprKind::Call(Box::new(e), vec![Arg { name: None, value }])
+            }
+            _ => {
+                let bop = pratt::bin_op(op.as_str()).expect("grammar: binary operator");
+                let is_cmp = op.as_rule() == Rule::cmp_op;
+                if is_cmp && (lhs.top == Top::Comparison || rhs.top == Top::Comparison) {
+                    self.push(chained(
+                        "comparisons",
+                        "join two comparisons with `&&`, e.g. `a < b && b < c`",
+                    ));
                 }
-                _ => {
-                    let r = s.into_inner().next().expect("grammar: record");
-                    ExprKind::With(Box::new(e), self.fields(r))
+                Built {
+                    expr: Expr {
+                        kind: ExprKind::Binary(bop, Box::new(lhs.expr), Box::new(rhs.expr)),
+                        span,
+                    },
+                    top: if is_cmp { Top::Comparison } else { Top::Other },
                 }
-            };
-            e = Expr { kind, span };
+            }
         }
-        e
     }
 
-    fn eq_slip(&mut self, p: &P) {
+    /// Applies one suffix (call, index, member, record call, `with`) to `e`.
+    fn suffix(&self, e: Expr, s: P) -> Expr {
+        let span = e.span.join(self.span(&s));
+        let kind = match s.as_rule() {
+            Rule::call_args => {
+                let args = s.into_inner().map(|a| self.arg(a)).collect();
+                ExprKind::Call(Box::new(e), args)
+            }
+            Rule::index => {
+                let i = self.expr(s.into_inner().next().expect("grammar: index"));
+                ExprKind::Index(Box::new(e), Box::new(i))
+            }
+            Rule::member => {
+                let n = self.name(&s.into_inner().next().expect("grammar: member"));
+                ExprKind::Member(Box::new(e), n)
+            }
+            Rule::record_arg => {
+                let r = s.into_inner().next().expect("grammar: record");
+                let rspan = self.span(&r);
+                let fields = self.fields(r);
+                let value = Expr {
+                    kind: ExprKind::Record(fields),
+                    span: rspan,
+                };
+                ExprKind::Call(Box::new(e), vec![Arg { name: None, value }])
+            }
+            Rule::empty_record_arg => {
+                let value = Expr {
+                    kind: ExprKind::Record(Vec::new()),
+                    span: self.span(&s),
+                };
+                ExprKind::Call(Box::new(e), vec![Arg { name: None, value }])
+            }
+            _ => {
+                let r = s.into_inner().next().expect("grammar: record");
+                ExprKind::With(Box::new(e), self.fields(r))
+            }
+        };
+        Expr { kind, span }
+    }
+
+    fn eq_slip(&self, p: &P) {
         let s = self.span(p);
-        self.diags.push(
+        self.push(
             Diagnostic::error("rtc::syntax::eq_for_colon", s, "expected `:`, found `=`")
                 .with_label("fields and named arguments use `:`")
                 .with_help("write `:` instead of `=`"),
         );
     }
 
-    fn arg(&mut self, p: P) -> Arg {
+    fn arg(&self, p: P) -> Arg {
         let mut name = None;
         let mut value = None;
         for q in p.into_inner() {
@@ -382,7 +508,7 @@ impl Builder<'_> {
         }
     }
 
-    fn fields(&mut self, record: P) -> Vec<Field> {
+    fn fields(&self, record: P) -> Vec<Field> {
         let mut out = Vec::new();
         for f in record.into_inner() {
             let mut name = None;
@@ -402,36 +528,81 @@ impl Builder<'_> {
         out
     }
 
-    fn number(&mut self, p: &P) -> f64 {
-        p.as_str().parse::<f64>().unwrap_or(f64::NAN)
+    fn number_error(&self, p: &P, message: &str, help: String) {
+        let s = self.span(p);
+        self.push(
+            Diagnostic::error("rtc::syntax::number", s, message.to_owned())
+                .with_label("does not fit in 64 bits")
+                .with_help(help),
+        );
     }
 
-    fn primary(&mut self, p: P) -> ExprKind {
-        match p.as_rule() {
-            Rule::int_lit => match p.as_str().parse::<i64>() {
+    /// A plain number `3`, `0.5`, `2e6` (no unit) as `Int` or `Float`; a too-large integer or
+    /// a float that overflows to infinity is an error.
+    fn plain_number(&self, p: &P, text: &str) -> ExprKind {
+        if !text.contains(['.', 'e', 'E']) {
+            return match text.parse::<i64>() {
                 Ok(v) => ExprKind::Int(v),
                 Err(_) => {
-                    let s = self.span(&p);
-                    self.diags.push(
-                        Diagnostic::error("rtc::syntax::number", s, "integer literal is too large")
-                            .with_label("does not fit in 64 bits")
-                            .with_help(format!("write it as a float: `{}.0`", p.as_str())),
+                    self.number_error(
+                        p,
+                        "integer literal is too large",
+                        format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
                     );
                     ExprKind::Int(0)
                 }
-            },
-            Rule::float_lit => ExprKind::Float(self.number(&p)),
-            Rule::angle_lit => {
-                let mut it = p.into_inner();
-                let n = it.next().expect("grammar: angle number");
-                let v = self.number(&n);
-                let unit = it.next().map_or("deg", |u| u.as_str());
-                ExprKind::Angle(match unit {
-                    "rad" => v,
-                    "turn" => v * std::f64::consts::TAU,
-                    _ => v.to_radians(),
-                })
-            }
+            };
+        }
+        let v = text.parse::<f64>().unwrap_or(f64::NAN);
+        if !v.is_finite() {
+            self.number_error(
+                p,
+                "number is too large",
+                "numbers must be below about 1.8e308".to_owned(),
+            );
+            return ExprKind::Float(0.0);
+        }
+        ExprKind::Float(v)
+    }
+
+    /// `number`: an Int, a Float or an Angle (`30deg`, `0.5rad`, `0.25turn`, `45°`).
+    fn number(&self, p: &P) -> ExprKind {
+        let text = p.as_str();
+        let (digits, to_radians): (&str, fn(f64) -> f64) =
+            if let Some(d) = text.strip_suffix("deg").or_else(|| text.strip_suffix('°')) {
+                (d, f64::to_radians)
+            } else if let Some(d) = text.strip_suffix("rad") {
+                (d, |v| v)
+            } else if let Some(d) = text.strip_suffix("turn") {
+                (d, |v| v * std::f64::consts::TAU)
+            } else {
+                return self.plain_number(p, text);
+            };
+        match self.plain_number(p, digits) {
+            ExprKind::Int(i) => ExprKind::Angle(to_radians(i as f64)),
+            ExprKind::Float(f) => ExprKind::Angle(to_radians(f)),
+            other => other,
+        }
+    }
+
+    /// `vec_lit`: `[x, y, z]` of plain numbers, read from the token's text.
+    fn vec_lit(&self, p: &P) -> ExprKind {
+        let text = p.as_str();
+        let mut out = [0.0; 3];
+        for (slot, part) in out.iter_mut().zip(text[1..text.len() - 1].split(',')) {
+            *slot = match self.plain_number(p, part.trim()) {
+                ExprKind::Int(i) => i as f64,
+                ExprKind::Float(f) => f,
+                _ => 0.0,
+            };
+        }
+        ExprKind::Vec3(out)
+    }
+
+    fn primary(&self, p: P) -> ExprKind {
+        match p.as_rule() {
+            Rule::number => self.number(&p),
+            Rule::vec_lit => self.vec_lit(&p),
             Rule::bool_lit => ExprKind::Bool(p.as_str() == "true"),
             Rule::hex_color => {
                 let h = &p.as_str()[1..];

@@ -9,6 +9,8 @@ use crate::source::{FileId, Span};
 pub struct Scan {
     /// Delimiter and string errors (at most one: later ones usually cascade).
     pub errors: Vec<Diagnostic>,
+    /// Lexical warnings (`n // 2`, where `//` starts a comment).
+    pub warnings: Vec<Diagnostic>,
     /// Byte offsets of line starts whose bracket depth is zero.
     pub top_level_lines: Vec<usize>,
 }
@@ -26,6 +28,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
     let b = text.as_bytes();
     let mut stack: Vec<(u8, usize)> = Vec::new();
     let mut errors = Vec::new();
+    let mut warnings = Vec::new();
     let mut top_level_lines = vec![0];
     let mut i = 0;
     let sp = |s: usize, e: usize| Span::new(file, s, e);
@@ -38,6 +41,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                 i += 1;
             }
             b'/' if b.get(i + 1) == Some(&b'/') => {
+                warnings.extend(division_comment(file, text, i));
                 while i < b.len() && b[i] != b'\n' {
                     i += 1;
                 }
@@ -80,6 +84,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                     );
                     return Scan {
                         errors,
+                        warnings,
                         top_level_lines,
                     };
                 }
@@ -103,6 +108,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                         );
                         return Scan {
                             errors,
+                            warnings,
                             top_level_lines,
                         };
                     }
@@ -126,6 +132,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                         );
                         return Scan {
                             errors,
+                            warnings,
                             top_level_lines,
                         };
                     }
@@ -136,7 +143,8 @@ pub fn scan(file: FileId, text: &str) -> Scan {
             _ => i += 1,
         }
     }
-    if let Some(&(open, at)) = stack.last() {
+    // The earliest opener still open: later ones are usually inside it.
+    if let Some(&(open, at)) = stack.first() {
         let mut d = Diagnostic::error(
             "rtc::syntax::unclosed",
             sp(at, at + 1),
@@ -157,8 +165,43 @@ pub fn scan(file: FileId, text: &str) -> Scan {
     }
     Scan {
         errors,
+        warnings,
         top_level_lines,
     }
+}
+
+/// `n // 2`: a `//` right after a value, followed by a number, reads like division but starts a
+/// comment. Warned, because the statement silently means `n`. A comment that starts with a word
+/// (`r // radius`, `x // 2 spheres`) is not warned.
+fn division_comment(file: FileId, text: &str, at: usize) -> Option<Diagnostic> {
+    let line_start = text[..at].rfind('\n').map_or(0, |p| p + 1);
+    let before = text[line_start..at].trim_end();
+    let operand = before
+        .rsplit(|c: char| !(c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | ')' | ']')))
+        .next()
+        .filter(|w| !w.is_empty())?;
+    let line_end = text[at..].find('\n').map_or(text.len(), |p| at + p);
+    let comment = text[at + 2..line_end].trim();
+    let digits = comment
+        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .unwrap_or(comment.len());
+    let (number, rest) = comment.split_at(digits);
+    let rest = rest.trim_start();
+    let reads_as_math = rest.is_empty() || rest.starts_with(['+', '-', '*', '/', ')', ']', ',']);
+    if number.is_empty() || !number.starts_with(|c: char| c.is_ascii_digit()) || !reads_as_math {
+        return None;
+    }
+    Some(
+        Diagnostic::warning(
+            "rtc::syntax::comment_division",
+            Span::new(file, at, at + 2),
+            format!("`//` starts a comment, so `// {number}` is ignored"),
+        )
+        .with_label("the rest of the line is a comment")
+        .with_help(format!(
+            "for integer division write `{operand} div {number}`; for a comment, start it with a word"
+        )),
+    )
 }
 
 fn indent_of(line: &str) -> usize {

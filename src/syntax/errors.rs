@@ -10,29 +10,25 @@ use crate::syntax::Rule;
 fn rule_words(rule: Rule) -> Option<&'static str> {
     Some(match rule {
         Rule::expr
-        | Rule::or_expr
-        | Rule::and_expr
-        | Rule::cmp_expr
-        | Rule::range_expr
-        | Rule::then_expr
-        | Rule::union_expr
-        | Rule::add_expr
-        | Rule::inter_expr
-        | Rule::mul_expr
-        | Rule::unary_expr
-        | Rule::postfix
+        | Rule::head_expr
+        // `unary_op` is tried at the start of every operand: its presence means "an expression".
+        | Rule::unary_op
         | Rule::arg => "an expression",
         Rule::ident => "a name",
         Rule::block => "`{`",
-        Rule::int_lit | Rule::number => "a number",
+        Rule::number | Rule::vec_lit => "a number",
         Rule::string => "a string",
         Rule::type_ann => "a type",
         Rule::params => "`(`",
         Rule::field => "a field",
         Rule::generator => "a loop variable",
-        Rule::header => "`rtc 1`",
+        Rule::header => "`rtc 1.1`",
+        Rule::version => "a version number",
         Rule::std_path => "a module path",
         Rule::EOI => "end of file",
+        Rule::kw_else => "`else`",
+        Rule::kw_in => "`in`",
+        Rule::kw_with => "`with`",
         _ => return None,
     })
 }
@@ -47,6 +43,9 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
         InputLocation::Span((s, _)) => s,
     } + base;
     let pos = back_over_newlines(text, pos).max(base);
+    if let Some(d) = missing_statement(file, text, pos) {
+        return d;
+    }
     let mut words: Vec<String> = Vec::new();
     let mut tokens: Vec<String> = Vec::new();
     if let Some(attempts) = err.parse_attempts() {
@@ -122,6 +121,53 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
     d
 }
 
+/// The statements rtc does not have, recognised on the line of the error so that the message
+/// says so instead of "expected ...": `while` and assignment to an existing name.
+fn missing_statement(file: FileId, text: &str, pos: usize) -> Option<Diagnostic> {
+    let line_start = text[..pos].rfind('\n').map_or(0, |p| p + 1);
+    let line_end = text[pos..].find('\n').map_or(text.len(), |p| pos + p);
+    let line = &text[line_start..line_end];
+    let indent = line.len() - line.trim_start().len();
+    let at = line_start + indent;
+    let body = line.trim();
+    let word_len = body
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(body.len());
+    let (word, rest) = body.split_at(word_len);
+    if word == "while" {
+        return Some(
+            Diagnostic::error(
+                "rtc::syntax::no_while",
+                Span::new(file, at, at + 5),
+                "rtc has no `while` loop",
+            )
+            .with_label("loops are `for` over a range or a list")
+            .with_help("loop over a range (`for i in 0..n`), or build the sequence with `iterate(start, next, while)` (§8)"),
+        );
+    }
+    let rest = rest.trim_start();
+    let op_len = ["+=", "-=", "*=", "/=", "="]
+        .iter()
+        .find(|op| rest.starts_with(**op) && !rest[op.len()..].starts_with('='))
+        .map(|op| op.len())?;
+    if word.is_empty() || word.starts_with(|c: char| c.is_ascii_digit()) || KEYWORDS.contains(&word)
+    {
+        return None;
+    }
+    let op_at = at + word_len + (body[word_len..].len() - rest.len());
+    Some(
+        Diagnostic::error(
+            "rtc::syntax::reassign",
+            Span::new(file, op_at, op_at + op_len),
+            format!("`{word}` cannot be assigned to: names are bound once"),
+        )
+        .with_label("there is no assignment in rtc")
+        .with_help(format!(
+            "bind a new name (`let {word}2 = ...`), or accumulate with `reduce(list, start, f)` or a `for` (§6)"
+        )),
+    )
+}
+
 /// When pest stopped at the start of a later line, the problem is at the end of the line before.
 fn back_over_newlines(text: &str, pos: usize) -> usize {
     let before = text.get(..pos).unwrap_or("");
@@ -147,9 +193,10 @@ fn join_or(words: &[String]) -> String {
     }
 }
 
+/// Words that cannot be names (the grammar's `keyword` rule).
 const KEYWORDS: &[&str] = &[
     "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
-    "step",
+    "step", "div",
 ];
 
 /// A description of the text at `pos` and its length in bytes.

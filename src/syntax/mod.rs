@@ -6,6 +6,7 @@ mod build;
 mod delims;
 mod errors;
 pub mod intern;
+mod pratt;
 
 pub use build::srgb_to_linear;
 
@@ -19,8 +20,9 @@ use crate::source::{FileId, Span};
 #[grammar = "../grammar/rtc.pest"]
 pub struct RtcParser;
 
-/// The language versions this build understands.
-pub const SUPPORTED_VERSION: i64 = 1;
+/// The language versions this build understands: `rtc 1` and `rtc 1.1` name the same language
+/// (1.1 is a compatible extension of 1; docs/language.md §2).
+pub const SUPPORTED_VERSIONS: &[&str] = &["1", "1.0", "1.1"];
 
 /// Deepest bracket nesting accepted; deeper input is rejected before pest or the evaluator
 /// could exhaust the stack.
@@ -28,79 +30,53 @@ const MAX_NESTING: usize = 200;
 
 /// Parses a whole file. Returns the AST (only when there were no syntax errors) and diagnostics.
 pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::Diagnostic>) {
-    pest::set_error_detail(true);
-    let scan = delims::scan(file, text);
-    if !scan.errors.is_empty() {
-        return (None, scan.errors);
-    }
     if let Some(d) = too_deep(file, text) {
         return (None, vec![d]);
     }
-    let mut diags = Vec::new();
-    let mut stmts = Vec::new();
-    let mut pos = 0;
-    let mut version = None;
-    match RtcParser::parse(Rule::header_line, text) {
-        Ok(mut pairs) => {
-            let line = pairs.next().expect("grammar: header_line");
-            pos = line.as_span().end();
-            let n = line.into_inner().next().and_then(|h| h.into_inner().next());
-            if let Some(n) = n {
-                let s = n.as_span();
-                let span = Span::new(file, s.start(), s.end());
-                let v = n.as_str().parse::<i64>().unwrap_or(-1);
-                if v != SUPPORTED_VERSION {
-                    diags.push(
-                        Diagnostic::error(
-                            "rtc::syntax::version",
-                            span,
-                            format!("unsupported language version `{}`", n.as_str()),
-                        )
-                        .with_label("this build understands version 1")
-                        .with_help("write `rtc 1` as the first line"),
-                    );
-                }
-                version = Some((v, span));
-            }
-        }
-        Err(_) => {
-            let first = first_token(text);
-            diags.push(
-                Diagnostic::error(
-                    "rtc::syntax::header",
-                    Span::new(file, first, first),
-                    "missing `rtc 1` header",
-                )
-                .with_label("the file must start with its language version")
-                .with_help("add `rtc 1` as the first line"),
-            );
-        }
-    }
-    while pos < text.len() {
-        let rest = &text[pos..];
+    let scan = delims::scan(file, text);
+    // A delimiter error cuts the file: statements before the one it is in are still parsed (so
+    // their errors show too), later ones would only repeat it.
+    let cutoff = scan.errors.first().map_or(text.len(), |d| {
+        let at = d.span.map_or(0, |s| s.start as usize);
+        scan.top_level_lines
+            .iter()
+            .copied()
+            .filter(|&l| l <= at)
+            .max()
+            .unwrap_or(0)
+    });
+    let mut diags = scan.warnings;
+    let mut stmts: Vec<ast::Stmt> = Vec::new();
+    let (version, mut pos) = header(file, text, &mut diags);
+    while pos < cutoff {
+        let rest = &text[pos..cutoff];
         match RtcParser::parse(Rule::stmt_line, rest) {
             Ok(mut pairs) => {
                 let line = pairs.next().expect("grammar: stmt_line");
                 let end = line.as_span().end();
-                let mut b = build::Builder {
-                    file,
-                    base: pos,
-                    diags: &mut diags,
-                };
+                let b = build::Builder::new(file, pos);
                 let mut done = false;
                 for p in line.into_inner() {
                     if p.as_rule() == Rule::EOI {
                         done = true;
                     } else {
+                        b.check_minus_line(stmts.last(), &p);
                         stmts.push(b.stmt(p));
                     }
                 }
+                diags.extend(b.finish());
                 if done || end == 0 {
                     break;
                 }
                 pos += end;
             }
-            Err(e) => {
+            Err(first) => {
+                // Parse again with pest's error detail (expected tokens) switched on: it costs
+                // an allocation per attempted token, so the fast path above runs without it.
+                pest::set_error_detail(true);
+                let detailed = RtcParser::parse(Rule::stmt_line, rest);
+                pest::set_error_detail(false);
+                let e = detailed.err().unwrap_or(first);
                 let d = errors::convert(file, text, pos, &e);
                 let at = d.span.map_or(pos, |s| s.start as usize);
                 diags.push(d);
@@ -115,9 +91,51 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
             }
         }
     }
+    diags.extend(scan.errors);
+    // Errors in file order: the delimiter error may lie before later statements' errors.
+    diags.sort_by_key(|d| d.span.map_or(0, |s| s.start));
     let has_errors = diags.iter().any(Diagnostic::is_error);
     let file_ast = ast::File { version, stmts };
     (if has_errors { None } else { Some(file_ast) }, diags)
+}
+
+/// Reads the `rtc N` header; returns the version and the offset after it.
+fn header(
+    file: FileId,
+    text: &str,
+    diags: &mut Vec<Diagnostic>,
+) -> (Option<(String, Span)>, usize) {
+    let Ok(mut pairs) = RtcParser::parse(Rule::header_line, text) else {
+        let first = first_token(text);
+        diags.push(
+            Diagnostic::error(
+                "rtc::syntax::header",
+                Span::new(file, first, first),
+                "missing `rtc 1.1` header",
+            )
+            .with_label("the file must start with its language version")
+            .with_help("add `rtc 1.1` as the first line"),
+        );
+        return (None, 0);
+    };
+    let line = pairs.next().expect("grammar: header_line");
+    let end = line.as_span().end();
+    let n = line.into_inner().next().and_then(|h| h.into_inner().next());
+    let Some(n) = n else { return (None, end) };
+    let s = n.as_span();
+    let span = Span::new(file, s.start(), s.end());
+    if !SUPPORTED_VERSIONS.contains(&n.as_str()) {
+        diags.push(
+            Diagnostic::error(
+                "rtc::syntax::version",
+                span,
+                format!("unsupported language version `{}`", n.as_str()),
+            )
+            .with_label("this build understands versions 1 and 1.1")
+            .with_help("write `rtc 1.1` as the first line"),
+        );
+    }
+    (Some((n.as_str().to_owned(), span)), end)
 }
 
 /// Offset of the first non-blank, non-comment character (where a header would be).

@@ -2,8 +2,10 @@
 #![allow(dead_code)]
 
 use glam::{DAffine3, DQuat, DVec3};
+use rtc::assets::MeshAsset;
+use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::geometry::{Ray, World};
-use rtc::ir::{Camera, Material, MaterialId, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
 use rtc::source::Span;
 
 /// SplitMix64: tiny, deterministic, good enough for test rays.
@@ -87,8 +89,20 @@ pub fn scene(objects: Vec<Object>) -> Scene {
     }
 }
 
+/// The prepared world of a scene holding `objects`.
 pub fn world(objects: Vec<Object>) -> World {
-    World::build(&scene(objects), MaterialId(0)).expect("world builds")
+    let prepared = rtc::opt::prepare(&scene(objects)).expect("world builds");
+    prepared.world().clone()
+}
+
+/// The mesh (with its BVH) the preparation stage builds from a loaded OBJ file.
+pub fn mesh_of(asset: &MeshAsset) -> Mesh {
+    Mesh::build(MeshParts {
+        triangles: &asset.triangles,
+        normals: &asset.normals,
+        uvs: &asset.uvs,
+        material_of: &asset.material_of,
+    })
 }
 
 /// A skewed, mirrored (negative determinant) placement.

@@ -57,6 +57,23 @@ fn srgb(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn hsv(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["hue", "s", "v"], a)?;
     let (hv, hs) = p.req("hue")?;
+    if let Some(x) = hv.as_f64() {
+        // A bare hue is most often a fraction of the colour wheel (0.5) or degrees (120).
+        let (deg, turn) = if (0.0..=1.0).contains(&x) {
+            (x * 360.0, x)
+        } else {
+            (x, x / 360.0)
+        };
+        let fmt = crate::eval::value::fmt_f;
+        return Err(types::mismatch(it, "Angle", &hv, hs)
+            .with_label("a hue is an angle on the colour wheel")
+            .with_help(format!(
+                "write `{}deg` (the same as `{}turn`); 0deg is red, 120deg green, 240deg blue",
+                fmt(deg),
+                fmt(turn)
+            ))
+            .into());
+    }
     let h = types::angle(it, &hv, hs)?;
     let (sat, ss) = p.num(it, "s")?;
     let (val, vs) = p.num(it, "v")?;

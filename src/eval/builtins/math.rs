@@ -36,8 +36,6 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("normalize", normalize),
     ("length", length),
     ("distance", distance),
-    ("len", len),
-    ("sum", sum),
     ("float", float),
     ("int", int),
     ("str", str_),
@@ -77,9 +75,44 @@ fn tan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(one_angle(it, s, a)?.tan()))
 }
 
+/// A domain check that names the function: "`sqrt(x)` needs `x` >= 0, but `x` is -1".
+fn domain(s: CallSite, ok: bool, rule: &str, x: f64, sp: crate::source::Span) -> R<()> {
+    if ok {
+        return Ok(());
+    }
+    let shown = crate::eval::value::fmt_f(x);
+    Err(error(
+        "rtc::param::out_of_range",
+        sp,
+        format!("`{}(x)` needs `x` {rule}, but `x` is {shown}", s.name),
+    )
+    .with_label(format!("evaluates to {shown}"))
+    .with_help(format!("pass `{}` a value that is {rule}", s.name))
+    .into())
+}
+
+/// A result that overflowed to infinity (or is NaN): stopped at the call, not in geometry.
+fn finite(s: CallSite, x: f64, v: f64) -> R<Value> {
+    if v.is_finite() {
+        return Ok(Value::Float(v));
+    }
+    Err(error(
+        "rtc::value::nan",
+        s.span,
+        format!("`{}` has no finite result here", s.name),
+    )
+    .with_label(format!(
+        "{}({}) is too large for a number",
+        s.name,
+        crate::eval::value::fmt_f(x)
+    ))
+    .with_help("keep results below about 1.8e308, e.g. `exp(x)` needs x < 709")
+    .into())
+}
+
 fn unit_arg(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<f64> {
     let (x, sp) = one(it, s, a)?;
-    super::check((-1.0..=1.0).contains(&x), "x", "in [-1, 1]", x, sp)?;
+    domain(s, (-1.0..=1.0).contains(&x), "in [-1, 1]", x, sp)?;
     Ok(x)
 }
 fn asin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -99,7 +132,7 @@ fn atan2(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 fn sqrt(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
-    super::check(x >= 0.0, "x", ">= 0", x, sp)?;
+    domain(s, x >= 0.0, ">= 0", x, sp)?;
     Ok(Value::Float(x.sqrt()))
 }
 fn abs(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -137,11 +170,12 @@ fn round(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     to_int(x.round(), sp)
 }
 fn exp(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Float(one(it, s, a)?.0.exp()))
+    let x = one(it, s, a)?.0;
+    finite(s, x, x.exp())
 }
 fn ln(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
-    super::positive("x", x, sp)?;
+    domain(s, x > 0.0, "> 0", x, sp)?;
     Ok(Value::Float(x.ln()))
 }
 fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -162,9 +196,9 @@ fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value> {
     let items: Vec<(Value, crate::source::Span)> = match a.as_slice() {
-        [one] => match &one.value {
-            Value::List(l) => l.iter().map(|v| (v.clone(), one.span)).collect(),
-            _ => vec![(one.value.clone(), one.span)],
+        [one] => match super::lists::items(&one.value) {
+            Some(l) => l.iter().map(|v| (v.clone(), one.span)).collect(),
+            None => vec![(one.value.clone(), one.span)],
         },
         _ => a.into_iter().map(|x| (x.value, x.span)).collect(),
     };
@@ -238,37 +272,6 @@ fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         );
     }
     Ok(Value::Vec3(v.normalize()))
-}
-fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
-    let (v, sp) = p.req("list")?;
-    Ok(Value::Int(match v {
-        Value::List(l) => l.len() as i64,
-        Value::Vec3(_) => 3,
-        Value::Str(s) => s.chars().count() as i64,
-        Value::Range(r) => r.len().min(i64::MAX as u64) as i64,
-        other => return Err(types::mismatch(it, "List", &other, sp).into()),
-    }))
-}
-fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
-    let (v, sp) = p.req("list")?;
-    let Value::List(l) = v else {
-        return Err(types::mismatch(it, "List", &v, sp).into());
-    };
-    let mut acc = Value::Int(0);
-    for x in l.iter() {
-        acc = crate::eval::ops::binary(
-            it,
-            crate::syntax::ast::BinOp::Add,
-            acc,
-            x.clone(),
-            sp,
-            sp,
-            sp,
-        )?;
-    }
-    Ok(acc)
 }
 fn float(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(one(it, s, a)?.0))

@@ -1,11 +1,12 @@
 //! Built-in functions and constants, and [`Params`], the schema-checked argument reader every
 //! built-in uses (unknown names with did-you-mean, arity, missing values, types and ranges).
 
+pub mod lists;
 mod looks;
 mod math;
 mod scene;
 
-pub use looks::{mat_warnings, set_mat_field};
+pub use looks::{MAT_FIELDS, mat_warnings, set_mat_field};
 
 use std::rc::Rc;
 
@@ -26,6 +27,7 @@ fn table() -> Vec<(&'static str, Value)> {
     let mut t: Vec<(&'static str, Value)> = Vec::new();
     let fns: Vec<(&'static str, BuiltinFn)> = [
         math::FNS,
+        lists::FNS,
         looks::FNS,
         scene::FNS,
         super::shapes::FNS,
@@ -163,11 +165,6 @@ impl Params {
             .unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
     }
 
-    /// The call site.
-    pub fn site(&self) -> CallSite {
-        self.site
-    }
-
     /// An optional argument.
     pub fn get(&mut self, name: &str) -> Option<(Value, Span)> {
         let i = self.idx(name);
@@ -272,9 +269,4 @@ pub fn positive(name: &str, v: f64, span: Span) -> R<()> {
 /// `0 <= v <= 1`.
 pub fn unit_interval(name: &str, v: f64, span: Span) -> R<()> {
     check((0.0..=1.0).contains(&v), name, "in [0, 1]", v, span)
-}
-
-/// A fresh empty list value.
-pub fn empty_list() -> Value {
-    Value::List(Rc::new(Vec::new()))
 }

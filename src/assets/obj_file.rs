@@ -1,0 +1,193 @@
+//! Reading an OBJ file and its material libraries through tobj. rtc checks both before tobj
+//! parses them, for input on which tobj 4.0.5 panics (both found by fuzzing, `fuzz/`):
+//! - a material colour line with fewer than three numbers (`Kd 1 0`: `parse_float3` unwraps);
+//! - a face's texture or normal index beyond the file's size, or relative to before the first
+//!   element (`f 1//6148914691236517207 ...`, `f 1/-4 ...` after three `vt`): tobj's index
+//!   arithmetic overflows (a panic with overflow checks, silently wrong normals without).
+
+use std::cell::RefCell;
+use std::path::Path;
+
+use tobj::{LoadError, LoadOptions, Model};
+
+/// The materials of an OBJ file, or why its material library could not be used.
+pub type Materials = Result<Vec<tobj::Material>, String>;
+
+/// The models in the OBJ file at `path` and its materials (`mtllib` paths are relative to it).
+pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), LoadError> {
+    let text = std::fs::read(path).map_err(|_| LoadError::OpenFileFailed)?;
+    if let Some(e) = bad_face_index(&text) {
+        return Err(e);
+    }
+    let problem: RefCell<Option<String>> = RefCell::new(None);
+    let (models, materials) = tobj::load_obj_buf(&mut text.as_slice(), opts, |lib| {
+        let full = path
+            .parent()
+            .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib));
+        let text = std::fs::read(&full).map_err(|_| LoadError::OpenFileFailed)?;
+        if let Some(what) = short_colour_line(&text) {
+            problem
+                .borrow_mut()
+                .get_or_insert_with(|| format!("`{}` {what}", lib.display()));
+            return Err(LoadError::MaterialParseError);
+        }
+        tobj::load_mtl_buf(&mut text.as_slice())
+    })?;
+    let materials = materials.map_err(|e| match problem.take() {
+        Some(p) => p,
+        None => e.to_string(),
+    });
+    Ok((models, materials))
+}
+
+/// The error tobj should give for the first face or line element whose index its arithmetic
+/// cannot hold: larger than the file has bytes (so larger than any element count), or relative
+/// (negative) to before the first element defined so far. (tobj reads 0 as "no index".) Like tobj it reads the lines
+/// before the first byte that is not UTF-8, and splits words as `str::split_whitespace`.
+/// (`obj_error::locate` then finds the line.) Bytes, not `str`: this scan costs ~2% of a load.
+fn bad_face_index(text: &[u8]) -> Option<LoadError> {
+    let text = match std::str::from_utf8(text) {
+        Ok(_) => text,
+        Err(e) => {
+            let head = &text[..e.valid_up_to()];
+            &head[..head.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1)]
+        }
+    };
+    let mut scan = FaceScan {
+        limit: text.len() as u64,
+        counts: [0; 3],
+    };
+    for line in text.split(|&b| b == b'\n') {
+        let bad = if line.is_ascii() {
+            let is_space = |b: &u8| matches!(b, b' ' | b'\t' | b'\r' | 0x0b | 0x0c);
+            scan.line(line.split(is_space).filter(|w| !w.is_empty()))
+        } else {
+            let line = std::str::from_utf8(line).ok()?;
+            scan.line(line.split_whitespace().map(str::as_bytes))
+        };
+        if bad.is_some() {
+            return bad;
+        }
+    }
+    None
+}
+
+/// Element counts so far, for [`bad_face_index`].
+struct FaceScan {
+    limit: u64,
+    /// `v`, `vt` and `vn` lines so far.
+    counts: [u64; 3],
+}
+
+impl FaceScan {
+    fn line<'a>(&mut self, mut words: impl Iterator<Item = &'a [u8]>) -> Option<LoadError> {
+        match words.next()? {
+            b"v" => self.counts[0] += 1,
+            b"vt" => self.counts[1] += 1,
+            b"vn" => self.counts[2] += 1,
+            b"f" | b"l" => {
+                for corner in words {
+                    for (k, part) in corner.split(|&b| b == b'/').take(3).enumerate() {
+                        let Some(i) = integer(part) else { continue };
+                        let size = i.unsigned_abs();
+                        if size > self.limit || (i < 0 && size > self.counts[k]) {
+                            return Some(match k {
+                                0 => LoadError::FaceVertexOutOfBounds,
+                                1 => LoadError::FaceTexCoordOutOfBounds,
+                                _ => LoadError::FaceNormalOutOfBounds,
+                            });
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+        None
+    }
+}
+
+/// `s` as tobj reads an index (`isize::from_str`: an optional sign and digits), if it is one.
+fn integer(s: &[u8]) -> Option<i64> {
+    let (negative, digits) = match s {
+        [b'-', d @ ..] => (true, d),
+        [b'+', d @ ..] => (false, d),
+        d => (false, d),
+    };
+    if digits.is_empty() {
+        return None;
+    }
+    let mut v: i64 = 0;
+    for &c in digits {
+        if !c.is_ascii_digit() {
+            return None;
+        }
+        v = v.checked_mul(10)?.checked_add(i64::from(c - b'0'))?;
+    }
+    Some(if negative { -v } else { v })
+}
+
+/// "line N: `Kd` needs three numbers (r g b)" for the first colour line that has fewer, among
+/// the lines tobj reads: it stops at the first line that is not UTF-8.
+fn short_colour_line(text: &[u8]) -> Option<String> {
+    for (i, line) in text.split(|&b| b == b'\n').enumerate() {
+        let line = std::str::from_utf8(line).ok()?;
+        let mut words = line.split_whitespace();
+        let Some(key) = words.next() else { continue };
+        if matches!(key, "Ka" | "Kd" | "Ks" | "Ke") && words.count() < 3 {
+            return Some(format!(
+                "line {}: `{key}` needs three numbers (r g b)",
+                i + 1
+            ));
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{bad_face_index, integer, short_colour_line};
+    use tobj::LoadError;
+
+    #[test]
+    fn face_indices_tobj_cannot_hold_are_found() {
+        let tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n";
+        let bad = |faces: &str| bad_face_index(format!("{tri}{faces}").as_bytes());
+        assert_eq!(bad("f 1 2 3\nf -1 -2 -3\nf 1//1 2 3\nf 0 1//0 2\n"), None);
+        assert_eq!(bad("f -4 -2 -1\n"), Some(LoadError::FaceVertexOutOfBounds));
+        assert_eq!(
+            bad("f 1 2 6148914691236517206\n"),
+            Some(LoadError::FaceVertexOutOfBounds)
+        );
+        assert_eq!(
+            bad("f 1/-1 2 3\n"),
+            Some(LoadError::FaceTexCoordOutOfBounds)
+        );
+        assert_eq!(bad("l 1//-2 2\n"), Some(LoadError::FaceNormalOutOfBounds));
+        // Words split as tobj splits them (vertical tab and Unicode spaces included), and
+        // nothing after a line that is not UTF-8, where tobj stops.
+        assert_eq!(bad("f\x0b-9 1 2\n"), Some(LoadError::FaceVertexOutOfBounds));
+        assert_eq!(
+            bad("f 1\u{3000}-9 2\n"),
+            Some(LoadError::FaceVertexOutOfBounds)
+        );
+        assert_eq!(bad_face_index(b"v 0 0 0\n\xff\nf -9 1 1\n"), None);
+        assert_eq!(integer(b"+12"), Some(12));
+        assert_eq!(integer(b"99999999999999999999"), None);
+    }
+
+    #[test]
+    fn short_colour_lines_are_found_with_their_number() {
+        let text = b"newmtl a\nKd 1 0 0\n  Ks 0.5\nKa\n";
+        assert_eq!(
+            short_colour_line(text).as_deref(),
+            Some("line 3: `Ks` needs three numbers (r g b)")
+        );
+        assert_eq!(short_colour_line(b"newmtl a\nKd 1 0 0 # red\nNs 8\n"), None);
+        // tobj parses the lines before one that is not UTF-8 (found by the obj_mtl fuzzer).
+        assert_eq!(
+            short_colour_line(b"Ks 0.5\r\nK\xff\n").as_deref(),
+            Some("line 1: `Ks` needs three numbers (r g b)")
+        );
+        assert_eq!(short_colour_line(b"K\xff\nKs 0.5\n"), None);
+    }
+}

@@ -1,0 +1,233 @@
+//! List functions: `len`, `sum`, `flatten`, `concat`, `reverse`, `zip`, `enumerate`, `any`,
+//! `all`, `reduce` and `iterate` (the language's answer to `while`). A `Vec3` counts as a list
+//! of three `Float`s everywhere a list is read, so `sum([1, 2, 3])` is 6.
+
+use std::rc::Rc;
+
+use super::{BuiltinFn, Params};
+use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::error::{R, error};
+use crate::eval::interp::Interp;
+use crate::eval::types;
+use crate::eval::value::Value;
+use crate::source::Span;
+use crate::syntax::ast::BinOp;
+
+/// List functions by name.
+pub const FNS: &[(&str, BuiltinFn)] = &[
+    ("len", len),
+    ("sum", sum),
+    ("flatten", flatten),
+    ("concat", concat),
+    ("reverse", reverse),
+    ("zip", zip),
+    ("enumerate", enumerate),
+    ("any", any),
+    ("all", all),
+    ("reduce", reduce),
+    ("iterate", iterate),
+];
+
+/// The elements of a list-like value: a `List`, or a `Vec3` as three `Float`s.
+pub fn items(v: &Value) -> Option<Rc<Vec<Value>>> {
+    match v {
+        Value::List(l) => Some(l.clone()),
+        Value::Vec3(x) => Some(Rc::new(x.to_array().map(Value::Float).to_vec())),
+        _ => None,
+    }
+}
+
+/// The list argument `name`, or a type error that says a list was expected.
+fn list_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Rc<Vec<Value>>, Span)> {
+    let (v, sp) = p.req(name)?;
+    match items(&v) {
+        Some(l) => Ok((l, sp)),
+        None => Err(types::mismatch(it, "List", &v, sp).into()),
+    }
+}
+
+/// A function argument, checked to be callable.
+fn fn_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Value, Span)> {
+    let (f, sp) = p.req(name)?;
+    if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
+        return Err(types::mismatch(it, "Fn", &f, sp).into());
+    }
+    Ok((f, sp))
+}
+
+/// Calls `f` with positional arguments.
+pub fn call(it: &mut Interp, f: &Value, args: &[Value], fs: Span, site: Span) -> R<Value> {
+    let a = args
+        .iter()
+        .map(|v| ArgVal {
+            name: None,
+            value: v.clone(),
+            span: fs,
+        })
+        .collect();
+    it.call_value(f.clone(), a, site, fs)
+}
+
+fn list(it: &Interp, v: Vec<Value>, span: Span) -> R<Value> {
+    it.check_list_len(v.len(), span)?;
+    Ok(Value::List(Rc::new(v)))
+}
+
+fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (v, sp) = p.req("list")?;
+    Ok(Value::Int(match v {
+        Value::List(l) => l.len() as i64,
+        Value::Vec3(_) => 3,
+        Value::Str(s) => s.chars().count() as i64,
+        Value::Range(r) => r.len().min(i64::MAX as u64) as i64,
+        other => return Err(types::mismatch(it, "List", &other, sp).into()),
+    }))
+}
+
+/// `sum(list)`: the elements added with `+`, so numbers, angles, vectors and colours all sum
+/// (the first element starts the sum; `sum([])` is `0`).
+fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (l, sp) = list_arg(it, &mut p, "list")?;
+    let mut iter = l.iter();
+    let Some(first) = iter.next() else {
+        return Ok(Value::Int(0));
+    };
+    let mut acc = first.clone();
+    for x in iter {
+        acc = crate::eval::ops::binary(it, BinOp::Add, acc, x.clone(), sp, sp, sp)?;
+    }
+    Ok(acc)
+}
+
+/// `flatten(list)`: the elements of the inner lists in order (one level; other elements stay).
+fn flatten(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (l, sp) = list_arg(it, &mut p, "list")?;
+    let mut out = Vec::new();
+    for x in l.iter() {
+        match x {
+            Value::List(inner) => out.extend(inner.iter().cloned()),
+            other => out.push(other.clone()),
+        }
+    }
+    list(it, out, sp)
+}
+
+/// `concat(a, b, ...)`: the lists one after another.
+fn concat(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut out = Vec::new();
+    for x in a {
+        let Some(l) = items(&x.value) else {
+            return Err(types::mismatch(it, "List", &x.value, x.span).into());
+        };
+        out.extend(l.iter().cloned());
+        it.check_list_len(out.len(), s.span)?;
+    }
+    list(it, out, s.span)
+}
+
+fn reverse(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (l, sp) = list_arg(it, &mut p, "list")?;
+    list(it, l.iter().rev().cloned().collect(), sp)
+}
+
+/// `zip(a, b)`: pairs `[a[i], b[i]]` up to the shorter length.
+fn zip(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["a", "b"], a)?;
+    let (x, sp) = list_arg(it, &mut p, "a")?;
+    let (y, _) = list_arg(it, &mut p, "b")?;
+    let pairs = x
+        .iter()
+        .zip(y.iter())
+        .map(|(a, b)| Value::List(Rc::new(vec![a.clone(), b.clone()])))
+        .collect();
+    list(it, pairs, sp)
+}
+
+/// `enumerate(list)`: pairs `[i, list[i]]`.
+fn enumerate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list"], a)?;
+    let (l, sp) = list_arg(it, &mut p, "list")?;
+    let pairs = l
+        .iter()
+        .enumerate()
+        .map(|(i, x)| Value::List(Rc::new(vec![Value::Int(i as i64), x.clone()])))
+        .collect();
+    list(it, pairs, sp)
+}
+
+/// `any` and `all`: over `Bool`s, or over what a predicate `f` says of each element.
+fn any_all(it: &mut Interp, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Value> {
+    let mut p = Params::new(s, &["list", "f"], a)?;
+    let (l, sp) = list_arg(it, &mut p, "list")?;
+    let f = match p.get("f") {
+        Some((f, fs)) if matches!(f, Value::Fn(_) | Value::Builtin(_)) => Some((f, fs)),
+        Some((other, fs)) => return Err(types::mismatch(it, "Fn", &other, fs).into()),
+        None => None,
+    };
+    for x in l.iter() {
+        let (v, vs) = match &f {
+            Some((f, fs)) => (call(it, f, std::slice::from_ref(x), *fs, s.span)?, *fs),
+            None => (x.clone(), sp),
+        };
+        if types::boolean(it, &v, vs)? == want {
+            return Ok(Value::Bool(want));
+        }
+    }
+    Ok(Value::Bool(!want))
+}
+
+fn any(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    any_all(it, s, a, true)
+}
+
+fn all(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    any_all(it, s, a, false)
+}
+
+/// `reduce(list, init, f)`: `f(f(f(init, l[0]), l[1]), ...)`, the accumulation a loop with a
+/// mutable variable would do.
+fn reduce(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["list", "init", "f"], a)?;
+    let (l, _) = list_arg(it, &mut p, "list")?;
+    let (mut acc, _) = p.req("init")?;
+    let (f, fs) = fn_arg(it, &mut p, "f")?;
+    for x in l.iter() {
+        acc = call(it, &f, &[acc, x.clone()], fs, s.span)?;
+    }
+    Ok(acc)
+}
+
+/// `iterate(start, next, while)`: the list `start, next(start), next(next(start)), ...` for as
+/// long as `while` holds for the element: a `while` loop as a value. Every step counts against
+/// the loop budget.
+fn iterate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["start", "next", "while"], a)?;
+    let (mut x, _) = p.req("start")?;
+    let (next, ns) = fn_arg(it, &mut p, "next")?;
+    let (cond, cs) = fn_arg(it, &mut p, "while")?;
+    let mut out = Vec::new();
+    loop {
+        let keep = call(it, &cond, std::slice::from_ref(&x), cs, s.span)?;
+        if !types::boolean(it, &keep, cs)? {
+            break;
+        }
+        it.loop_iters += 1;
+        if it.loop_iters > it.opts.max_loop_iterations {
+            return Err(error("rtc::budget::loop", s.span, "loop budget exhausted")
+                .with_label(format!(
+                    "`iterate` ran past the budget of {} iterations",
+                    it.opts.max_loop_iterations
+                ))
+                .with_help("make sure `while` becomes false")
+                .into());
+        }
+        out.push(x.clone());
+        it.check_list_len(out.len(), s.span)?;
+        x = call(it, &next, &[x], ns, s.span)?;
+    }
+    Ok(Value::List(Rc::new(out)))
+}

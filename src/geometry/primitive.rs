@@ -1,0 +1,382 @@
+//! A prepared object: its geometry in object space, its transform, its material, its bounds.
+//! Nodes nest for CSG; every level moves rays in and hits out through its own transform.
+
+use std::sync::Arc;
+
+use glam::{DAffine3, DMat3, DVec2, DVec3};
+
+use super::shape::Leaf;
+use super::{Aabb, Hit, Ray, csg, mesh::Mesh, sphere};
+use crate::ir::{CsgOp, MaterialId};
+
+/// A hit with everything shading needs, in the space of the ray that was given.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GeoHit {
+    /// Ray parameter.
+    pub t: f64,
+    /// Unit shading normal (interpolated on smooth meshes), outward.
+    pub normal: DVec3,
+    /// Unit geometric normal, outward.
+    pub geometric_normal: DVec3,
+    /// Surface coordinates.
+    pub uv: DVec2,
+    /// The hit point in the leaf object's own space.
+    pub local_point: DVec3,
+    /// The surface hit (see [`SurfaceId`]).
+    pub surface: SurfaceId,
+    /// The material to shade with.
+    pub material: MaterialId,
+}
+
+/// A boundary crossing of a solid node (for CSG).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PrimitiveCrossing {
+    /// The hit.
+    pub hit: GeoHit,
+    /// Outside → inside.
+    pub entering: bool,
+}
+
+/// A mesh placed by an object.
+#[derive(Clone, Debug)]
+pub struct MeshRef {
+    /// The shared data (instanced by path and smoothing).
+    pub data: Arc<Mesh>,
+    /// Material id of each of the file's MTL materials, when the object uses them.
+    pub mtl: Option<Vec<MaterialId>>,
+}
+
+/// Geometry of one node, in object space.
+#[derive(Clone, Debug)]
+pub enum Geom {
+    /// A single shape (see [`Leaf`]).
+    Leaf(Leaf),
+    /// A triangle mesh.
+    Mesh(MeshRef),
+    /// A CSG node.
+    Csg {
+        /// The operation.
+        op: CsgOp,
+        /// Operands.
+        children: Vec<Primitive>,
+    },
+}
+
+/// Object-to-parent placement.
+#[derive(Clone, Debug)]
+pub struct Placement {
+    /// Parent → object.
+    pub to_object: DAffine3,
+    /// Object → parent.
+    pub to_parent: DAffine3,
+    /// Normal matrix (inverse transpose of the linear part of `to_parent`).
+    pub normal_matrix: DMat3,
+}
+
+/// A prepared object.
+#[derive(Clone, Debug)]
+pub struct Primitive {
+    /// Geometry in object space.
+    pub geom: Geom,
+    /// `None` for the identity.
+    pub placement: Option<Placement>,
+    /// Material of this node (inherited by CSG children that name none).
+    pub material: MaterialId,
+    /// Bounds in the parent's space (infinite for unbounded geometry).
+    pub bounds: Aabb,
+    /// The surface a leaf or mesh node is, once the world has numbered them.
+    pub surface: SurfaceId,
+}
+
+/// A surface of the world: one leaf shape or mesh, wherever it sits (a top-level object or an
+/// operand deep inside CSG). Hits carry it; the world tells its object and mapping frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SurfaceId(pub u32);
+
+impl Primitive {
+    /// Wraps geometry with a transform (which must be invertible) and a material.
+    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
+        let local = geom.bounds();
+        let placement = (transform != DAffine3::IDENTITY).then(|| Placement {
+            to_object: transform.inverse(),
+            to_parent: transform,
+            normal_matrix: transform.matrix3.inverse().transpose(),
+        });
+        let bounds = match &placement {
+            None => local,
+            Some(p) => local.transformed(&p.to_parent),
+        };
+        Primitive {
+            geom,
+            placement,
+            material,
+            bounds,
+            surface: SurfaceId::default(),
+        }
+    }
+
+    /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
+    pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
+        match (&self.geom, &self.placement) {
+            (Geom::Leaf(Leaf::Sphere { center, radius }), None) => Some((*center, *radius)),
+            _ => None,
+        }
+    }
+
+    /// The ray in object space (same `t`).
+    #[inline]
+    fn local(&self, ray: &Ray) -> Ray {
+        match &self.placement {
+            None => *ray,
+            Some(p) => Ray::new(
+                p.to_object.transform_point3(ray.origin),
+                p.to_object.transform_vector3(ray.dir),
+            ),
+        }
+    }
+
+    /// Moves a hit from object space to the parent's space.
+    #[inline]
+    fn out(&self, mut h: GeoHit) -> GeoHit {
+        if let Some(p) = &self.placement {
+            h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
+            h.geometric_normal =
+                (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
+        }
+        h
+    }
+
+    fn leaf(&self, ray: &Ray, h: Hit) -> GeoHit {
+        GeoHit {
+            t: h.t,
+            normal: h.normal,
+            geometric_normal: h.normal,
+            uv: h.uv,
+            local_point: ray.at(h.t),
+            surface: self.surface,
+            material: self.material,
+        }
+    }
+
+    /// Nearest hit in (t_min, t_max).
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+        // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
+        if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
+            let r = self.local(ray);
+            return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
+                let local_point = r.at(t);
+                let normal = (local_point - *center).normalize();
+                self.out(GeoHit {
+                    t,
+                    normal,
+                    geometric_normal: normal,
+                    uv: DVec2::ZERO,
+                    local_point,
+                    surface: self.surface,
+                    material: self.material,
+                })
+            });
+        }
+        // Meshes clip against their bounds themselves (and need the entry point anyway).
+        if self.bounds.is_empty()
+            || (!matches!(self.geom, Geom::Mesh(_))
+                && self.bounds.is_finite()
+                && self.bounds.hit_interval(ray, t_min, t_max).is_none())
+        {
+            return None;
+        }
+        let r = self.local(ray);
+        match &self.geom {
+            Geom::Leaf(l) => l
+                .intersect(&r, t_min, t_max)
+                .map(|h| self.out(self.leaf(&r, h))),
+            Geom::Mesh(m) => m
+                .data
+                .intersect(&r, t_min, t_max)
+                .map(|h| self.out(self.mesh_hit(&r, m, h))),
+            Geom::Csg { op, children } => {
+                csg_intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
+            }
+        }
+    }
+
+    /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
+    pub fn finish(&self, h: &mut GeoHit) {
+        if let Geom::Leaf(l @ Leaf::Sphere { .. }) = &self.geom {
+            h.uv = l.frame().spherical_uv(h.local_point);
+        }
+    }
+
+    /// True when anything of this node lies in (t_min, t_max).
+    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match &self.geom {
+            Geom::Leaf(Leaf::Sphere { center, radius }) => {
+                sphere::hit_t(*center, *radius, &self.local(ray), t_min, t_max).is_some()
+            }
+            Geom::Mesh(m) => {
+                if self.bounds.hit_interval(ray, t_min, t_max).is_none() {
+                    return false;
+                }
+                m.data.occluded(&self.local(ray), t_min, t_max)
+            }
+            _ => self.intersect(ray, t_min, t_max).is_some(),
+        }
+    }
+
+    fn mesh_hit(&self, r: &Ray, m: &MeshRef, h: super::mesh::MeshHit) -> GeoHit {
+        let material = match (&m.mtl, h.material) {
+            (Some(ids), Some(i)) => ids.get(i as usize).copied().unwrap_or(self.material),
+            _ => self.material,
+        };
+        GeoHit {
+            t: h.t,
+            normal: h.shading,
+            geometric_normal: h.geometric,
+            uv: h.uv,
+            local_point: r.at(h.t),
+            surface: self.surface,
+            material,
+        }
+    }
+
+    /// Whether the ray's line starts (at t → −∞) inside this solid.
+    pub fn inside_at_start(&self, ray: &Ray) -> bool {
+        let r = self.local(ray);
+        match &self.geom {
+            Geom::Leaf(l) => l.inside_at_start(&r),
+            Geom::Csg { op, children } => {
+                csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r)))
+            }
+            Geom::Mesh(_) => false,
+        }
+    }
+
+    /// Every boundary crossing along the whole line of `ray`, sorted by `t` (solids only).
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+        if self.bounds.is_empty()
+            || (self.bounds.is_finite()
+                && self
+                    .bounds
+                    .hit_interval(ray, f64::NEG_INFINITY, f64::INFINITY)
+                    .is_none())
+        {
+            return;
+        }
+        let r = self.local(ray);
+        let start = out.len();
+        match &self.geom {
+            Geom::Leaf(l) => {
+                let mut tmp = Vec::new();
+                l.crossings(&r, &mut tmp);
+                for c in tmp {
+                    out.push(PrimitiveCrossing {
+                        hit: self.out(self.leaf(&r, c.hit)),
+                        entering: c.entering,
+                    });
+                }
+            }
+            Geom::Mesh(m) => {
+                let mut hits = Vec::new();
+                m.data.all_hits(&r, &mut hits);
+                for (h, entering) in hits {
+                    out.push(PrimitiveCrossing {
+                        hit: self.out(self.mesh_hit(&r, m, h)),
+                        entering,
+                    });
+                }
+            }
+            Geom::Csg { op, children } => {
+                let mut tmp = Vec::new();
+                csg_crossings(*op, children, &r, &mut tmp);
+                out.extend(tmp.into_iter().map(|c| PrimitiveCrossing {
+                    hit: self.out(c.hit),
+                    entering: c.entering,
+                }));
+            }
+        }
+        out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
+    }
+
+    /// Point membership (closed solids; surfaces contain nothing), in the parent's space.
+    pub fn contains(&self, p: DVec3) -> bool {
+        let q = match &self.placement {
+            None => p,
+            Some(pl) => pl.to_object.transform_point3(p),
+        };
+        match &self.geom {
+            Geom::Leaf(l) => l.contains(q),
+            Geom::Mesh(m) => mesh_contains(&m.data, q),
+            Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
+        }
+    }
+}
+
+/// A CSG node's own boundary crossings along the whole line, in order.
+fn csg_crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+    let mut all: Vec<(usize, GeoHit, bool)> = Vec::new();
+    let mut tmp = Vec::new();
+    for (i, c) in children.iter().enumerate() {
+        tmp.clear();
+        c.crossings(ray, &mut tmp);
+        all.extend(tmp.iter().map(|x| (i, x.hit, x.entering)));
+    }
+    all.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
+    let starts = children.iter().map(|c| c.inside_at_start(ray)).collect();
+    csg::boundary(op, starts, &all, |i, mut hit, entering| {
+        if csg::flips_normal(op, i) {
+            hit.normal = -hit.normal;
+            hit.geometric_normal = -hit.geometric_normal;
+        }
+        out.push(PrimitiveCrossing { hit, entering });
+    });
+}
+
+/// A CSG node's nearest hit in (t_min, t_max). A union keeps its operands' inner surfaces
+/// (visible through transparent materials); merge, intersection and difference show only the
+/// result's boundary.
+fn csg_intersect(
+    op: CsgOp,
+    children: &[Primitive],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<GeoHit> {
+    if op == CsgOp::Union {
+        let mut best: Option<GeoHit> = None;
+        let mut far = t_max;
+        for c in children {
+            if let Some(h) = c.intersect(ray, t_min, far) {
+                far = h.t;
+                best = Some(h);
+            }
+        }
+        return best;
+    }
+    let mut out = Vec::new();
+    csg_crossings(op, children, ray, &mut out);
+    out.into_iter()
+        .map(|c| c.hit)
+        .find(|h| h.t > t_min && h.t < t_max)
+}
+
+/// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
+fn mesh_contains(m: &Mesh, p: DVec3) -> bool {
+    let dir = DVec3::new(0.5773, 0.5774, 0.5771);
+    let mut hits = Vec::new();
+    m.all_hits(&Ray::new(p, dir), &mut hits);
+    hits.iter().filter(|(h, _)| h.t > 0.0).count() % 2 == 1
+}
+
+impl Geom {
+    /// Object-space bounds (infinite for planes; CSG per its operation).
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Geom::Leaf(l) => l.bounds(),
+            Geom::Mesh(m) => m.data.bounds(),
+            Geom::Csg { op, children } => {
+                let b: Vec<Aabb> = children.iter().map(|c| c.bounds).collect();
+                csg::bounds(*op, &b)
+            }
+        }
+    }
+}

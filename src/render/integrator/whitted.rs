@@ -1,0 +1,271 @@
+//! Whitted ray tracing: local shading plus mirror reflection and refraction, recursing up to the
+//! scene's `max_depth` bounces.
+//!
+//! Combination rule: `I = local + kr·trace(reflected) + kt·trace(refracted)` with `kr = reflect`
+//! and `kt = refract` of the material (course files set `reflect = ks`, so ks is the mirror weight
+//! there; COURSE.md §2.5). Under total internal reflection the refracted share `kt` goes to the
+//! reflected ray, so weights ≤ 1 never create energy. Inside/outside comes from the sign of
+//! `dot(normal, dir)` (normals are outward); media are tracked on a small stack so nested
+//! transparent objects refract by the ratio of the indices on both sides of each interface.
+
+use glam::DVec3;
+
+use crate::geometry::{Ray, SurfaceHit};
+use crate::ir::{Color, Material, ShadingModel};
+use crate::opt::{Effects, Prepared};
+use crate::render::shading::{self, Ctx, Surface};
+use crate::render::{bump, offset, texture};
+
+/// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
+#[derive(Clone, Copy, Debug)]
+pub struct Media {
+    etas: [f64; 8],
+    len: usize,
+}
+
+impl PartialEq for Media {
+    fn eq(&self, o: &Media) -> bool {
+        self.etas[..self.len] == o.etas[..o.len]
+    }
+}
+
+impl Default for Media {
+    fn default() -> Media {
+        Media::OUTSIDE
+    }
+}
+
+impl Media {
+    /// Not inside anything (index 1).
+    pub const OUTSIDE: Media = Media {
+        etas: [1.0; 8],
+        len: 0,
+    };
+
+    /// The index of the innermost medium.
+    pub fn current(&self) -> f64 {
+        if self.len == 0 {
+            1.0
+        } else {
+            self.etas[self.len - 1]
+        }
+    }
+
+    /// After entering a medium of index `eta` (a full stack forgets its outermost entry).
+    pub fn enter(mut self, eta: f64) -> Media {
+        if self.len == self.etas.len() {
+            self.etas.copy_within(1.., 0);
+            self.len -= 1;
+        }
+        self.etas[self.len] = eta;
+        self.len += 1;
+        self
+    }
+
+    /// After leaving a medium of index `eta`: its innermost entry is removed (unchanged when the
+    /// ray was not known to be inside it, e.g. a camera placed inside glass).
+    pub fn leave(mut self, eta: f64) -> Media {
+        if let Some(i) = self.etas[..self.len].iter().rposition(|e| *e == eta) {
+            self.etas.copy_within(i + 1..self.len, i);
+            self.len -= 1;
+        }
+        self
+    }
+}
+
+/// Snell's law: the refracted direction of unit `d` at a surface with unit normal `n` facing the
+/// incoming ray, going from index `n1` into `n2`; `None` on total internal reflection.
+pub fn refract(d: DVec3, n: DVec3, n1: f64, n2: f64) -> Option<DVec3> {
+    let r = n1 / n2;
+    let cos_i = (-d.dot(n)).min(1.0);
+    let k = 1.0 - r * r * (1.0 - cos_i * cos_i);
+    if k < 0.0 {
+        return None;
+    }
+    Some((r * d + (r * cos_i - k.sqrt()) * n).normalize())
+}
+
+/// The mirror direction of unit `d` about unit `n`.
+pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
+    d - 2.0 * d.dot(n) * n
+}
+
+/// Where a path is: how often it has bounced and which media it is inside. (State a path
+/// carries down the recursion lives here, such as a throughput weight for an insignificance
+/// cut-off.)
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Path {
+    /// Bounces so far (0 for a camera ray).
+    pub depth: u32,
+    /// The media the ray travels in.
+    pub media: Media,
+}
+
+impl Path {
+    /// A camera ray's path: no bounce yet, outside everything.
+    pub const CAMERA: Path = Path {
+        depth: 0,
+        media: Media::OUTSIDE,
+    };
+
+    fn bounce(self, media: Media) -> Path {
+        Path {
+            depth: self.depth + 1,
+            media,
+        }
+    }
+}
+
+/// The shaded-image integrator: Whitted recursion over the prepared scene.
+pub struct Whitted<'a> {
+    scene: &'a Prepared,
+    effects: Effects,
+    shading: ShadingModel,
+    max_depth: u32,
+    background: Color,
+}
+
+impl<'a> Whitted<'a> {
+    /// The integrator for `scene`'s settings.
+    pub fn new(scene: &'a Prepared) -> Whitted<'a> {
+        let s = scene.settings();
+        Whitted {
+            scene,
+            effects: scene.effects(),
+            shading: s.shading,
+            max_depth: s.max_depth,
+            background: s.background,
+        }
+    }
+
+    /// The colour seen along `ray` by a path in state `path`.
+    pub fn trace(&self, ray: &Ray, path: Path, ctx: &mut Ctx) -> Color {
+        let scene = self.scene;
+        let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) else {
+            return self.background;
+        };
+        let mat = scene.material(hit.material);
+        let inside = hit.normal.dot(ray.dir) > 0.0;
+        let facing = if inside { -hit.normal } else { hit.normal };
+        let s = Surface {
+            p: hit.point,
+            n: self.bumped(&hit, facing, mat),
+            v: -ray.dir,
+            color: self.base_color(&hit, mat),
+            mat,
+            uv: hit.uv,
+            depth: path.depth,
+        };
+        let mut c = match mat.shading.unwrap_or(self.shading) {
+            ShadingModel::Phong => shading::phong::shade(scene, &s, ctx),
+            ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx),
+            ShadingModel::Hatching => shading::hatching::shade(scene, &s, ctx),
+        };
+        if path.depth >= self.max_depth {
+            return c;
+        }
+        let mut kr = if self.effects.reflection {
+            mat.reflect
+        } else {
+            0.0
+        };
+        let kt = if self.effects.refraction {
+            mat.refract
+        } else {
+            0.0
+        };
+        let eps = offset::eps(scene, hit.point);
+        let media = path.media;
+        if kt > 0.0 {
+            let (n1, after) = if inside {
+                (mat.eta, media.leave(mat.eta))
+            } else {
+                (media.current(), media.enter(mat.eta))
+            };
+            match refract(ray.dir, facing, n1, after.current()) {
+                Some(dir) => {
+                    ctx.stats.secondary_rays += 1;
+                    let r = Ray::new(hit.point - eps * facing, dir);
+                    c += kt * self.trace(&r, path.bounce(after), ctx);
+                }
+                None => kr += kt,
+            }
+        }
+        if kr > 0.0 {
+            ctx.stats.secondary_rays += 1;
+            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing));
+            c += kr * self.trace(&r, path.bounce(media), ctx);
+        }
+        c
+    }
+
+    /// Material colour, or the texture's where the material has one.
+    fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
+        match mat.texture {
+            Some(t) if self.effects.textures => {
+                let frame = self.scene.world().frame(hit);
+                texture::color(&self.scene.textures()[t.0 as usize], hit, frame)
+            }
+            _ => mat.color,
+        }
+    }
+
+    /// The shading normal: `facing`, tilted by the material's bump map where it has one.
+    fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
+        match mat.bump {
+            Some(b) if self.effects.bump => bump::perturb(
+                &self.scene.textures()[b.texture.0 as usize],
+                b.scale,
+                hit,
+                self.scene.world().frame(hit),
+                facing,
+            ),
+            _ => facing,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn head_on_refraction_is_undeviated() {
+        let d = DVec3::new(0.0, 0.0, -1.0);
+        let t = refract(d, DVec3::Z, 1.0, 1.5).unwrap();
+        assert!((t - d).length() < 1e-15);
+    }
+
+    #[test]
+    fn snell_holds_and_total_internal_reflection_past_the_critical_angle() {
+        let n = DVec3::Y;
+        for deg in [10.0f64, 30.0, 41.0, 42.0, 60.0, 89.0] {
+            let a = deg.to_radians();
+            let d = DVec3::new(a.sin(), -a.cos(), 0.0);
+            // Into glass: always refracts, sin θt = sin θi / 1.5.
+            let t = refract(d, n, 1.0, 1.5).unwrap();
+            assert!((t.x - a.sin() / 1.5).abs() < 1e-12);
+            // Out of glass: the critical angle is asin(1/1.5) ≈ 41.81°.
+            let out = refract(d, n, 1.5, 1.0);
+            assert_eq!(out.is_none(), deg > 41.82, "{deg}");
+            if let Some(t) = out {
+                assert!((t.x - a.sin() * 1.5).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn media_stack_tracks_nesting() {
+        let m = Media::OUTSIDE.enter(1.5).enter(1.33);
+        assert_eq!(m.current(), 1.33);
+        assert_eq!(m.leave(1.33).current(), 1.5);
+        assert_eq!(m.leave(1.5).current(), 1.33);
+        assert_eq!(m.leave(1.5).leave(1.33), Media::OUTSIDE);
+        assert_eq!(Media::OUTSIDE.leave(2.0), Media::OUTSIDE);
+        let mut deep = Media::OUTSIDE;
+        for i in 0..20 {
+            deep = deep.enter(f64::from(i));
+        }
+        assert_eq!(deep.current(), 19.0);
+    }
+}
