@@ -11,7 +11,10 @@ use std::time::{Duration, Instant};
 use glam::{DVec3, Vec3A, Vec4};
 use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb as BAabb;
-use obvhs::bvh2::builder::build_bvh2;
+use obvhs::bvh2::Bvh2;
+use obvhs::bvh2::leaf_collapser::collapse as collapse_leaves;
+use obvhs::bvh2::reinsertion::ReinsertionOptimizer;
+use obvhs::ploc::PlocBuilder;
 
 use super::Aabb;
 
@@ -171,7 +174,7 @@ impl Bvh {
                 max_prims_per_leaf: quality.max_prims_per_leaf.min(MAX_LEAF),
                 ..quality
             };
-            let bvh2 = build_bvh2(boxes, quality, &mut core);
+            let bvh2 = build_binary(boxes, quality, &mut core);
             nodes = collapse(&bvh2.nodes);
             order = bvh2
                 .primitive_indices
@@ -190,6 +193,35 @@ impl Bvh {
     pub fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
     }
+}
+
+/// obvhs's `build_bvh2` without its debug-build validation, which asserts a depth below 96 (its
+/// own traversal stack): boxes that cannot be split (the same triangle many times) make deeper
+/// trees, which rtc's traversal handles (its stack grows), so a debug or test build must not
+/// panic on them (the obj_mtl fuzzer found a 10 kB OBJ that did, `tests/bvh_degenerate.rs`).
+fn build_binary(boxes: &[BAabb], config: BvhBuildParams, core: &mut Duration) -> Bvh2 {
+    let start = Instant::now();
+    let mut bvh2 = PlocBuilder::with_capacity(boxes.len()).build(
+        config.ploc_search_distance,
+        boxes,
+        (0..boxes.len() as u32).collect(),
+        config.sort_precision,
+        config.search_depth_threshold,
+    );
+    let mut reinsertion = ReinsertionOptimizer::default();
+    reinsertion.run(&mut bvh2, config.reinsertion_batch_ratio, None);
+    collapse_leaves(
+        &mut bvh2,
+        config.max_prims_per_leaf.clamp(1, 255),
+        config.collapse_traversal_cost,
+    );
+    reinsertion.run(
+        &mut bvh2,
+        config.reinsertion_batch_ratio * config.post_collapse_reinsertion_batch_ratio_multiplier,
+        None,
+    );
+    *core += start.elapsed();
+    bvh2
 }
 
 /// Collapses a binary tree (root at 0, children of an inner node at `first_index` and
