@@ -58,6 +58,10 @@ enum Command {
         /// Print rays traced, rays per second, world build time and memory to stderr.
         #[arg(long)]
         stats: bool,
+        /// Stop after this many seconds (counted from the start; the render stops at its next
+        /// band of rows): no image is written, the exit code is 1.
+        #[arg(long, value_name = "SECONDS", value_parser = seconds)]
+        time_limit: Option<f64>,
     },
 }
 
@@ -84,7 +88,17 @@ fn main() -> ExitCode {
             threads,
             format,
             stats,
-        } => render(&file, output, threads, format, stats),
+            time_limit,
+        } => render(
+            &file,
+            output,
+            RunOptions {
+                threads,
+                show_stats: stats,
+                time_limit,
+            },
+            format,
+        ),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -164,16 +178,31 @@ fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     outcome
 }
 
-fn render(
-    file: &Path,
-    output: Option<PathBuf>,
+/// How `rtc render` runs, besides the scene and the output.
+struct RunOptions {
     threads: usize,
-    format: Format,
     show_stats: bool,
-) -> Outcome {
+    /// Seconds the whole command may take.
+    time_limit: Option<f64>,
+}
+
+/// A `--time-limit` value: a finite number of seconds, at least 0.
+fn seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s >= 0.0 => Ok(s),
+        _ => Err(format!(
+            "`{text}` is not a number of seconds (write e.g. `--time-limit 60` or `2.5`)"
+        )),
+    }
+}
+
+fn render(file: &Path, output: Option<PathBuf>, run: RunOptions, format: Format) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
     let load_start = std::time::Instant::now();
+    let deadline = run
+        .time_limit
+        .map(|s| load_start + std::time::Duration::from_secs_f64(s));
     let loaded = load(file, &mut sources);
     let load_time = load_start.elapsed();
     let color = format == Format::Human && std::io::stderr().is_terminal();
@@ -200,10 +229,17 @@ fn render(
         }
     };
     print(prepared.warnings(), &sources);
-    let options = rtc::render::RenderOptions { threads };
-    let result = rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
+    let options = rtc::render::RenderOptions {
+        threads: run.threads,
+    };
+    let progress = cli::progress::Bar::on_stderr(deadline);
+    let result = rtc::render::render(&prepared, &options, &progress)
+        .map_err(|d| match run.time_limit {
+            Some(limit) if d.code == rtc::render::CANCELLED => time_limit_reached(&scene, limit),
+            _ => d,
+        })
         .and_then(|film| {
-            if show_stats {
+            if run.show_stats {
                 eprintln!(
                     "{}",
                     cli::stats::describe(&film, &prepared.stats(), load_time, start.elapsed())
@@ -226,6 +262,23 @@ fn render(
             }
         }
     }
+}
+
+/// The diagnostic for a render stopped by `--time-limit`, at the camera (what sets the work).
+fn time_limit_reached(scene: &Scene, limit: f64) -> Diagnostic {
+    let c = &scene.camera;
+    Diagnostic::error(
+        "rtc::render::time_limit",
+        c.span,
+        format!(
+            "the render did not finish within the time limit of {limit} s; no image was written"
+        ),
+    )
+    .with_label(format!("this {}×{} image", c.width, c.height))
+    .with_help(format!(
+        "allow more time (`--time-limit {}`), or render fewer pixels or samples per pixel",
+        (limit * 4.0).max(10.0).ceil()
+    ))
 }
 
 /// `-o` wins, then the scene's own `output`, then the input name with `.png`.

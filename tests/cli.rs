@@ -1,21 +1,10 @@
 //! The command line as a user meets it: exit codes, output naming, no clobbering, `--stats`.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod cli_support;
 
-fn rtc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rtc"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the rtc binary runs")
-}
+use std::path::Path;
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rtc-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use cli_support::{rtc, scratch};
 
 #[test]
 fn unknown_extension_and_missing_file_are_io_errors() {

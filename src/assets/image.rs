@@ -6,6 +6,7 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 
 use crate::diag::Diagnostic;
+use crate::ir::limits::MAX_TEXTURE_PIXELS;
 use crate::source::Span;
 
 /// A decoded image with channels in [0, 1].
@@ -23,6 +24,8 @@ pub struct ImageError {
     pub message: String,
     /// True when the file could not be opened at all.
     pub missing: bool,
+    /// True when the image has more than [`MAX_TEXTURE_PIXELS`] pixels.
+    pub too_large: bool,
 }
 
 impl Picture {
@@ -38,16 +41,33 @@ impl Picture {
 
     /// Decodes an image file (PNG, JPEG, HDR or EXR, by extension).
     pub fn load(path: &Path) -> Result<Picture, ImageError> {
-        let reader = image::ImageReader::open(path).map_err(|e| ImageError {
-            message: e.to_string(),
-            missing: true,
-        })?;
-        // The format comes from the extension, and the decoder's default limits (512 MiB) are
-        // the budget for untrusted sizes.
-        let decoded = reader.decode().map_err(|e| ImageError {
+        let open = || {
+            image::ImageReader::open(path).map_err(|e| ImageError {
+                message: e.to_string(),
+                missing: true,
+                too_large: false,
+            })
+        };
+        let malformed = |e: image::ImageError| ImageError {
             message: e.to_string(),
             missing: false,
-        })?;
+            too_large: false,
+        };
+        // The budget is checked on the header's size before decoding (a small file can claim
+        // a huge image); the decoder's own limits (512 MiB) stay as a second guard.
+        let (w, h) = open()?.into_dimensions().map_err(malformed)?;
+        let pixels = u64::from(w) * u64::from(h);
+        if pixels > MAX_TEXTURE_PIXELS {
+            return Err(ImageError {
+                message: format!(
+                    "it is {w}×{h} = {pixels} pixels; at most {MAX_TEXTURE_PIXELS} are decoded"
+                ),
+                missing: false,
+                too_large: true,
+            });
+        }
+        // The format comes from the extension.
+        let decoded = open()?.decode().map_err(malformed)?;
         let (w, h) = (decoded.width(), decoded.height());
         // 8-bit images convert exactly as byte/255 in f64, like the course framework.
         let texels: Vec<DVec3> =
@@ -68,6 +88,7 @@ impl Picture {
         Picture::new(w, h, texels).ok_or_else(|| ImageError {
             message: "the image has no pixels".into(),
             missing: false,
+            too_large: false,
         })
     }
 
@@ -94,8 +115,17 @@ impl Picture {
 
 impl ImageError {
     /// The diagnostic for this error on the image `path` named at `span`:
-    /// `rtc::texture::{not_found, malformed}`.
+    /// `rtc::texture::{not_found, too_large, malformed}`.
     pub fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
+        if self.too_large {
+            return Diagnostic::error(
+                "rtc::texture::too_large",
+                span,
+                format!("the image `{}` is too large", path.display()),
+            )
+            .with_label(self.message.clone())
+            .with_help("scale the image down to at most 8192×8192 pixels");
+        }
         let (code, what) = if self.missing {
             ("rtc::texture::not_found", "cannot read the image")
         } else {

@@ -11,7 +11,7 @@ use glam::{DVec3, Vec2, Vec3, Vec3A};
 
 use super::obj_error::{MeshError, locate};
 use crate::ir::Material;
-use crate::ir::limits::MAX_TRIANGLES;
+use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
 
 /// Faces meeting at less than this angle share smoothed normals; sharper edges stay creased.
 pub const CREASE_ANGLE_DEG: f64 = 60.0;
@@ -53,6 +53,9 @@ impl MeshAsset {
             single_index: false,
             ..Default::default()
         };
+        if let Ok(meta) = std::fs::metadata(path) {
+            within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
+        }
         let (models, mtl) = super::obj_file::read(path, &opts).map_err(|e| locate(path, e))?;
         let mut warnings = Vec::new();
         let materials = match mtl {
@@ -163,7 +166,7 @@ impl MeshAsset {
         if tris.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
         }
-        within_budget(tris.len(), MAX_TRIANGLES)?;
+        within_budget(tris.len() as u64, MAX_TRIANGLES as u64, "triangles")?;
         let usable = |n: &Option<[Vec3; 3]>| {
             n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO))
         };
@@ -228,14 +231,15 @@ impl MeshAsset {
 }
 
 /// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget).
-fn within_budget(count: usize, max: usize) -> Result<(), MeshError> {
+/// `count` of `what` (bytes of the file, triangles) within the budget `max`.
+fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
     if count <= max {
         return Ok(());
     }
     Err(MeshError {
         too_large: true,
         ..MeshError::new(
-            format!("it has {count} triangles; at most {max} are supported in one file"),
+            format!("it has {count} {what}; at most {max} are supported in one file"),
             None,
         )
     })
@@ -301,8 +305,9 @@ mod tests {
     /// The triangle budget lets the limit through and rejects one more, flagged as too large.
     #[test]
     fn the_triangle_budget_is_enforced() {
-        assert!(within_budget(MAX_TRIANGLES, MAX_TRIANGLES).is_ok());
-        let e = within_budget(11, 10).unwrap_err();
+        let max = MAX_TRIANGLES as u64;
+        assert!(within_budget(max, max, "triangles").is_ok());
+        let e = within_budget(11, 10, "triangles").unwrap_err();
         assert!(e.too_large && !e.missing, "{e:?}");
         assert!(e.message.contains("11 triangles") && e.message.contains("at most 10"));
     }

@@ -19,9 +19,36 @@ pub const MAX_LIGHT_SAMPLES_PER_AXIS: u32 = 256;
 /// Widest or tallest image, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 16384;
 
-/// Largest image, in pixels (the film holds 24 bytes per pixel per channel: 3 GiB).
-pub const MAX_PIXELS: u64 = 1 << 27;
+/// Most memory a render's image may take, in bytes: the film and the 8-bit image, as counted
+/// by [`image_bytes`]. A larger image is refused before anything is built (`rtc check` and
+/// `rtc render` both say so), not when an allocation fails halfway.
+pub const MAX_IMAGE_BYTES: u64 = 4 << 30;
+
+/// Film bytes per pixel per pass: one f64 RGB colour (the film's one channel).
+pub const FILM_BYTES_PER_PIXEL: u64 = 24;
+
+/// Bytes per pixel of the 8-bit RGB image the film is quantised to.
+pub const IMAGE_BYTES_PER_PIXEL: u64 = 3;
+
+/// The memory a `width`×`height` render holds at its peak: 24 bytes of film per pixel, twice
+/// under adaptive sampling (the coarse pass is kept while the fine pass runs), plus 3 bytes per
+/// pixel of 8-bit image. A 16384×16384 image needs 7 GiB on a grid and is refused; 8192×8192
+/// needs 1.7 GiB (3.3 GiB adaptive).
+pub fn image_bytes(width: u32, height: u32, adaptive: bool) -> u64 {
+    let passes = if adaptive { 2 } else { 1 };
+    // Saturating: u32::MAX × u32::MAX pixels are past any budget, not an overflow.
+    (u64::from(width) * u64::from(height))
+        .saturating_mul(passes * FILM_BYTES_PER_PIXEL + IMAGE_BYTES_PER_PIXEL)
+}
 
 /// Most triangles one mesh file may have (about 7 GB of geometry and BVH; the BVH itself indexes
 /// up to 2²⁶ primitives).
 pub const MAX_TRIANGLES: usize = 50_000_000;
+
+/// Largest OBJ file rtc reads, in bytes (checked before reading; a file within
+/// [`MAX_TRIANGLES`] is about 2 GB of text).
+pub const MAX_MESH_FILE_BYTES: u64 = 4 << 30;
+
+/// Most pixels of one texture image (checked from the file's header, before decoding): each
+/// decoded texel takes 24 bytes, so 2²⁶ pixels (8192×8192) are 1.5 GiB.
+pub const MAX_TEXTURE_PIXELS: u64 = 1 << 26;

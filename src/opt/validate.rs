@@ -6,7 +6,7 @@
 
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::ir::limits::{
-    MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, MAX_PIXELS,
+    MAX_DEPTH, MAX_IMAGE_BYTES, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, image_bytes,
 };
 use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling, Scene, Shape};
 
@@ -33,7 +33,7 @@ pub fn scene(scene: &Scene, out: &mut Diagnostics) {
     if let Err(d) = camera(&scene.camera) {
         out.push(d);
     }
-    if let Err(d) = image_size(&scene.camera) {
+    if let Err(d) = image_size(&scene.camera, &scene.settings.sampling) {
         out.push(d);
     }
     if let Err(d) = settings(&scene.settings) {
@@ -122,18 +122,42 @@ pub fn camera(c: &Camera) -> Result<(), Diagnostic> {
     Ok(())
 }
 
-fn image_size(c: &Camera) -> Result<(), Diagnostic> {
-    let pixels = u64::from(c.width) * u64::from(c.height);
-    if pixels <= MAX_PIXELS {
+/// The image's film and bytes within [`MAX_IMAGE_BYTES`]; the help names the largest image of
+/// the same shape that fits.
+fn image_size(c: &Camera, sampling: &Sampling) -> Result<(), Diagnostic> {
+    let adaptive = matches!(sampling, Sampling::Adaptive { .. });
+    let bytes = image_bytes(c.width, c.height, adaptive);
+    if bytes <= MAX_IMAGE_BYTES {
         return Ok(());
     }
+    // Both sides scaled by the same factor, then the width trimmed to fit exactly.
+    let max_pixels = MAX_IMAGE_BYTES / image_bytes(1, 1, adaptive);
+    let scale = (max_pixels as f64 / (f64::from(c.width) * f64::from(c.height))).sqrt();
+    let side = |n: u32| ((f64::from(n) * scale) as u64).clamp(1, max_pixels);
+    let h = side(c.height);
+    let w = side(c.width).min(max_pixels / h);
+    let gib = |b: u64| b as f64 / f64::from(1u32 << 30);
+    let sampling = if adaptive {
+        ", with adaptive sampling,"
+    } else {
+        ""
+    };
     Err(Diagnostic::error(
         "rtc::render::limit",
         c.span,
-        format!("the image has {pixels} pixels, more than the {MAX_PIXELS} rtc renders"),
+        format!(
+            "a {}×{} image{sampling} needs {:.1} GiB, more than the {:.0} GiB rtc allows",
+            c.width,
+            c.height,
+            gib(bytes),
+            gib(MAX_IMAGE_BYTES)
+        ),
     )
-    .with_label("this camera")
-    .with_help("render a smaller image, e.g. 4096×4096"))
+    .with_label("this camera's resolution")
+    .with_help(format!(
+        "render at most {w}×{h} (the same shape); each pixel takes {} bytes",
+        image_bytes(1, 1, adaptive)
+    )))
 }
 
 /// Settings within `ir::limits`: bounces and samples per pixel.
