@@ -4,8 +4,7 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use super::quartic::quadratic;
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, circle};
 
 /// An orthonormal frame along a segment: `base`, unit `axis`, length `height`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -104,14 +103,7 @@ impl Cylinder {
         let w = ray.origin - f.base;
         let wp = w - w.dot(f.axis) * f.axis;
         let dp = ray.dir - ray.dir.dot(f.axis) * f.axis;
-        let a = dp.length_squared();
-        if a > 0.0
-            && let Some((t0, t1)) = quadratic(
-                a,
-                2.0 * wp.dot(dp),
-                wp.length_squared() - self.radius * self.radius,
-            )
-        {
+        if let Some((t0, t1)) = circle::roots(wp, dp, circle::DirSquared::of(dp), self.radius) {
             for (i, t) in [t0, t1].into_iter().enumerate() {
                 let p = ray.at(t);
                 let y = (p - f.base).dot(f.axis);

@@ -8,6 +8,7 @@ pub mod aabb;
 pub mod blob;
 pub mod bvh;
 mod bvh_traverse;
+pub mod circle;
 pub mod cone;
 pub mod csg;
 pub mod cuboid;

@@ -4,37 +4,29 @@ use std::f64::consts::PI;
 
 use glam::{DVec2, DVec3};
 
+use super::circle::{self, DirSquared};
 use super::{Aabb, Crossing, Hit, Ray};
 
 /// Ray parameter of the nearest intersection in (t_min, t_max), without normal or uv: the hot
 /// path for candidate and shadow tests (uv costs an `acos` and an `atan2`).
 ///
-/// Uses the numerically stable quadratic (no cancellation between −b and √disc).
+/// Uses the cancellation-free quadratic of [`circle::roots`], which keeps its hits from far away.
 #[inline]
 pub fn hit_t(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<f64> {
-    hit_t_with(center, radius, ray.dir.length_squared(), ray, t_min, t_max)
+    hit_t_with(center, radius, DirSquared::of(ray.dir), ray, t_min, t_max)
 }
 
-/// [`hit_t`] with `a = |dir|²` computed once per ray by the caller (bit-identical results).
+/// [`hit_t`] with `|dir|²` computed once per ray by the caller (bit-identical results).
 #[inline]
 pub fn hit_t_with(
     center: DVec3,
     radius: f64,
-    a: f64,
+    dir: DirSquared,
     ray: &Ray,
     t_min: f64,
     t_max: f64,
 ) -> Option<f64> {
-    let oc = ray.origin - center;
-    let half_b = oc.dot(ray.dir);
-    let c = oc.length_squared() - radius * radius;
-    let disc = half_b * half_b - a * c;
-    if disc < 0.0 {
-        return None;
-    }
-    let q = -half_b - disc.sqrt().copysign(half_b);
-    let (t0, t1) = (q / a, c / q);
-    let (t0, t1) = if t0 > t1 { (t1, t0) } else { (t0, t1) };
+    let (t0, t1) = circle::roots(ray.origin - center, ray.dir, dir, radius)?;
     if t0 > t_min && t0 < t_max {
         Some(t0)
     } else if t1 > t_min && t1 < t_max {
@@ -45,30 +37,8 @@ pub fn hit_t_with(
 }
 
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).
-///
-/// Uses the numerically stable quadratic (no cancellation between −b and √disc).
 pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-    let oc = ray.origin - center;
-    let a = ray.dir.length_squared();
-    let half_b = oc.dot(ray.dir);
-    let c = oc.length_squared() - radius * radius;
-    let disc = half_b * half_b - a * c;
-    if disc < 0.0 {
-        return None;
-    }
-    let sq = disc.sqrt();
-    let q = -half_b - sq.copysign(half_b);
-    let (mut t0, mut t1) = (q / a, c / q);
-    if t0 > t1 {
-        std::mem::swap(&mut t0, &mut t1);
-    }
-    let t = if t0 > t_min && t0 < t_max {
-        t0
-    } else if t1 > t_min && t1 < t_max {
-        t1
-    } else {
-        return None;
-    };
+    let t = hit_t(center, radius, ray, t_min, t_max)?;
     let normal = (ray.at(t) - center).normalize();
     Some(Hit {
         t,
@@ -95,12 +65,11 @@ pub fn bounds(center: DVec3, radius: f64) -> Aabb {
 
 /// Both boundary crossings along the whole line of `ray` (entering first).
 pub fn crossings(center: DVec3, radius: f64, ray: &Ray, out: &mut Vec<Crossing>) {
-    let oc = ray.origin - center;
-    let a = ray.dir.length_squared();
-    let Some((t0, t1)) = super::quartic::quadratic(
-        a,
-        2.0 * oc.dot(ray.dir),
-        oc.length_squared() - radius * radius,
+    let Some((t0, t1)) = circle::roots(
+        ray.origin - center,
+        ray.dir,
+        DirSquared::of(ray.dir),
+        radius,
     ) else {
         return;
     };

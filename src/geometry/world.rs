@@ -190,9 +190,9 @@ impl World {
         let mut far = t_max;
         let mut best_sphere = None;
         if !self.spheres.is_empty() {
-            let a = ray.dir.length_squared();
+            let dir = super::circle::DirSquared::of(ray.dir);
             for s in &self.spheres {
-                if let Some(t) = sphere::hit_t_with(s.center, s.radius, a, ray, t_min, far) {
+                if let Some(t) = sphere::hit_t_with(s.center, s.radius, dir, ray, t_min, far) {
                     far = t;
                     best_sphere = Some(s.node);
                 }
@@ -252,10 +252,11 @@ impl World {
 
     /// True when anything lies in (t_min, t_max) along the ray (shadow rays: any hit ends it).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        let dir = super::circle::DirSquared::of(ray.dir);
         if self
             .spheres
             .iter()
-            .any(|s| sphere::hit_t(s.center, s.radius, ray, t_min, t_max).is_some())
+            .any(|s| sphere::hit_t_with(s.center, s.radius, dir, ray, t_min, t_max).is_some())
         {
             return true;
         }
