@@ -6,7 +6,7 @@
 use glam::DVec3;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{LightKind, Object, RenderMode, Scene, Shape};
+use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
 use crate::opt::Effects;
 
 /// Every finding about an evaluated scene: the lints, then what preparing it reports.
@@ -34,7 +34,11 @@ fn no_lights(scene: &Scene, out: &mut Diagnostics) {
                 scene.camera.span,
                 "the scene has no lights",
             )
-            .with_label("with no light the image is black (Phong's ambient term is per light)")
+            .with_label(if scene.settings.ambient == AmbientConvention::Once {
+                "only the ambient term lights the image: no diffuse shading, highlights or shadows"
+            } else {
+                "with no light the image is black (Phong's ambient term is per light)"
+            })
             .with_help("add a light, e.g. `point_light { position: [5, 8, 5] }`"),
         );
     }

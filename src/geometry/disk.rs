@@ -58,6 +58,11 @@ impl Disk {
         })
     }
 
+    /// Error bound of a computed point `p` on it: its residual off its plane.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        super::plane::point_error(self.center, self.normal, p)
+    }
+
     /// Object-space bounds (tight per axis: radius·√(1 − n_i²)).
     pub fn bounds(&self) -> Aabb {
         let ext = self.radius

@@ -21,6 +21,7 @@ pub mod primitive;
 pub mod quad;
 pub mod quartic;
 pub mod ray;
+pub mod rounding;
 pub mod shape;
 pub mod sphere;
 pub mod torus;

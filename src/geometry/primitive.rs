@@ -6,7 +6,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
 use super::shape::Leaf;
-use super::{Aabb, Hit, Ray, csg, mesh::Mesh, sphere};
+use super::{Aabb, Hit, Ray, csg, mesh::Mesh, rounding, sphere};
 use crate::ir::{CsgOp, MaterialId};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
@@ -22,6 +22,12 @@ pub struct GeoHit {
     pub uv: DVec2,
     /// The hit point in the leaf object's own space.
     pub local_point: DVec3,
+    /// The hit point in the space of the ray that was given, moved out from `local_point`
+    /// through every transform on the way (so `error` bounds it).
+    pub point: DVec3,
+    /// Per-axis bound on how far `point` may lie from the true surface (see
+    /// [`super::rounding`]).
+    pub error: DVec3,
     /// The surface hit (see [`SurfaceId`]).
     pub surface: SurfaceId,
     /// The material to shade with.
@@ -123,6 +129,24 @@ impl Primitive {
         }
     }
 
+    /// The ray in object space (same `t`), and `t_min` raised past the rounding of moving its
+    /// origin there (pbrt-v4 moves the origin to the edge of that error along the ray): a ray
+    /// spawned just outside a surface must not meet it again because the transform moved its
+    /// origin by more than the spawn offset.
+    #[inline]
+    fn local_after(&self, ray: &Ray, t_min: f64) -> (Ray, f64) {
+        match &self.placement {
+            None => (*ray, t_min),
+            Some(p) => {
+                let (origin, err) =
+                    rounding::transform_point(&p.to_object, ray.origin, DVec3::ZERO);
+                let dir = p.to_object.transform_vector3(ray.dir);
+                let lift = dir.abs().dot(err) / dir.length_squared();
+                (Ray::new(origin, dir), t_min + lift)
+            }
+        }
+    }
+
     /// The ray in object space (same `t`).
     #[inline]
     fn local(&self, ray: &Ray) -> Ray {
@@ -139,6 +163,7 @@ impl Primitive {
     #[inline]
     fn out(&self, mut h: GeoHit) -> GeoHit {
         if let Some(p) = &self.placement {
+            (h.point, h.error) = rounding::transform_point(&p.to_parent, h.point, h.error);
             h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
             h.geometric_normal =
                 (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
@@ -146,13 +171,16 @@ impl Primitive {
         h
     }
 
-    fn leaf(&self, ray: &Ray, h: Hit) -> GeoHit {
+    fn leaf(&self, l: &Leaf, ray: &Ray, h: Hit) -> GeoHit {
+        let local_point = ray.at(h.t);
         GeoHit {
             t: h.t,
             normal: h.normal,
             geometric_normal: h.normal,
             uv: h.uv,
-            local_point: ray.at(h.t),
+            local_point,
+            point: local_point,
+            error: l.point_error(local_point),
             surface: self.surface,
             material: self.material,
         }
@@ -162,7 +190,7 @@ impl Primitive {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
         // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
         if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
-            let r = self.local(ray);
+            let (r, t_min) = self.local_after(ray, t_min);
             return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
                 let local_point = r.at(t);
                 let normal = (local_point - *center).normalize();
@@ -172,6 +200,8 @@ impl Primitive {
                     geometric_normal: normal,
                     uv: DVec2::ZERO,
                     local_point,
+                    point: local_point,
+                    error: sphere::point_error(*center, *radius, local_point),
                     surface: self.surface,
                     material: self.material,
                 })
@@ -185,11 +215,11 @@ impl Primitive {
         {
             return None;
         }
-        let r = self.local(ray);
+        let (r, t_min) = self.local_after(ray, t_min);
         match &self.geom {
             Geom::Leaf(l) => l
                 .intersect(&r, t_min, t_max)
-                .map(|h| self.out(self.leaf(&r, h))),
+                .map(|h| self.out(self.leaf(l, &r, h))),
             Geom::Mesh(m) => m
                 .data
                 .intersect(&r, t_min, t_max)
@@ -211,13 +241,15 @@ impl Primitive {
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.geom {
             Geom::Leaf(Leaf::Sphere { center, radius }) => {
-                sphere::hit_t(*center, *radius, &self.local(ray), t_min, t_max).is_some()
+                let (r, t_min) = self.local_after(ray, t_min);
+                sphere::hit_t(*center, *radius, &r, t_min, t_max).is_some()
             }
             Geom::Mesh(m) => {
                 if self.bounds.hit_interval(ray, t_min, t_max).is_none() {
                     return false;
                 }
-                m.data.occluded(&self.local(ray), t_min, t_max)
+                let (r, t_min) = self.local_after(ray, t_min);
+                m.data.occluded(&r, t_min, t_max)
             }
             _ => self.intersect(ray, t_min, t_max).is_some(),
         }
@@ -228,12 +260,15 @@ impl Primitive {
             (Some(ids), Some(i)) => ids.get(i as usize).copied().unwrap_or(self.material),
             _ => self.material,
         };
+        let local_point = r.at(h.t);
         GeoHit {
             t: h.t,
             normal: h.shading,
             geometric_normal: h.geometric,
             uv: h.uv,
-            local_point: r.at(h.t),
+            local_point,
+            point: local_point,
+            error: h.error,
             surface: self.surface,
             material,
         }
@@ -270,7 +305,7 @@ impl Primitive {
                 l.crossings(&r, &mut tmp);
                 for c in tmp {
                     out.push(PrimitiveCrossing {
-                        hit: self.out(self.leaf(&r, c.hit)),
+                        hit: self.out(self.leaf(l, &r, c.hit)),
                         entering: c.entering,
                     });
                 }
@@ -322,7 +357,17 @@ fn csg_crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<Pri
     }
     all.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
     let starts = children.iter().map(|c| c.inside_at_start(ray)).collect();
-    csg::boundary(op, starts, &all, |i, mut hit, entering| {
+    let same = |a: &GeoHit, b: &GeoHit| {
+        rounding::same_event(
+            a.point,
+            a.error,
+            a.geometric_normal,
+            b.point,
+            b.error,
+            b.geometric_normal,
+        )
+    };
+    csg::boundary(op, starts, &all, same, |i, mut hit, entering| {
         if csg::flips_normal(op, i) {
             hit.normal = -hit.normal;
             hit.geometric_normal = -hit.geometric_normal;

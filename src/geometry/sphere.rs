@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 use glam::{DVec2, DVec3};
 
 use super::circle::{self, DirSquared};
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, rounding};
 
 /// Ray parameter of the nearest intersection in (t_min, t_max), without normal or uv: the hot
 /// path for candidate and shadow tests (uv costs an `acos` and an `atan2`).
@@ -34,6 +34,13 @@ pub fn hit_t_with(
     } else {
         None
     }
+}
+
+/// Error bound of a computed point `p` on the sphere: its residual `| |p − c| − r |` plus the
+/// rounding of evaluating it (see [`super::rounding`]).
+pub fn point_error(center: DVec3, radius: f64, p: DVec3) -> DVec3 {
+    let len = (p - center).length();
+    rounding::from_residual(len - radius, 6, len + radius)
 }
 
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).

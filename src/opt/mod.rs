@@ -86,7 +86,6 @@ pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
         memory_bytes: w.memory_bytes + mesh_stats.memory_bytes,
     };
     Ok(Prepared {
-        extent: prepared::extent(&world, scene.camera.eye),
         camera: scene.camera.clone(),
         world,
         materials,

@@ -4,8 +4,6 @@
 
 use std::time::Duration;
 
-use glam::DVec3;
-
 use super::effects::{Content, Effects};
 use super::textures::TextureMap;
 use super::validate;
@@ -58,7 +56,6 @@ pub struct Prepared {
     pub(super) settings: RenderSettings,
     pub(super) content: Content,
     pub(super) effects: Effects,
-    pub(super) extent: f64,
     pub(super) warnings: Vec<Diagnostic>,
     pub(super) stats: Stats,
 }
@@ -114,12 +111,6 @@ impl Prepared {
         self.effects
     }
 
-    /// The scene's scale: the largest coordinate magnitude of its finite bounds and the eye
-    /// (what ray offsets scale with).
-    pub fn extent(&self) -> f64 {
-        self.extent
-    }
-
     /// Warnings found while preparing (a mesh whose MTL file is missing).
     pub fn warnings(&self) -> &[Diagnostic] {
         &self.warnings
@@ -152,15 +143,4 @@ impl Prepared {
         self.settings = settings;
         Ok(())
     }
-}
-
-/// The largest coordinate magnitude of the world's finite bounds and of `eye`.
-pub(super) fn extent(world: &World, eye: DVec3) -> f64 {
-    let b = world.bounds();
-    let extent = if b.is_empty() || !b.is_finite() {
-        0.0
-    } else {
-        b.min.abs().max(b.max.abs()).max_element()
-    };
-    extent.max(eye.abs().max_element())
 }

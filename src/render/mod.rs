@@ -17,7 +17,8 @@
 //!   light keeps its ambient term; lights behind the surface (N·L ≤ 0) add nothing.
 //! - `I = local + reflect·trace(R) + refract·trace(T)`, up to `max_depth` bounces; total internal
 //!   reflection moves the refracted share to R ([`integrator::whitted`]).
-//! - Secondary and shadow rays start `offset::EPS_REL · max(|P|∞, scene extent)` along the normal.
+//! - Secondary and shadow rays start just outside the hit point's floating-point error bound, on
+//!   the side they leave to; shadow rays are aimed at the light from there ([`offset`]).
 //! - Depth images: white at the nearest, black at the farthest hit of the image (or a fixed range).
 //! - Random numbers (lens, area lights) are keyed by (pixel, sample, seed) ([`sampler`]), so the
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile

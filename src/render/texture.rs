@@ -69,6 +69,8 @@ mod tests {
             geometric_normal: DVec3::Y,
             uv: DVec2::ZERO,
             local_point: p,
+            surface_point: p,
+            error: DVec3::ZERO,
             material: crate::ir::MaterialId(0),
             surface: SurfaceId(0),
         }

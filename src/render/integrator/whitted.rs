@@ -13,8 +13,9 @@ use glam::DVec3;
 use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::{Color, Material, ShadingModel};
 use crate::opt::{Effects, Prepared};
+use crate::render::offset::SpawnPoint;
 use crate::render::shading::{self, Ctx, Surface};
-use crate::render::{bump, offset, texture};
+use crate::render::{bump, texture};
 
 /// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
 #[derive(Clone, Copy, Debug)]
@@ -147,8 +148,10 @@ impl<'a> Whitted<'a> {
         let mat = scene.material(hit.material);
         let inside = hit.normal.dot(ray.dir) > 0.0;
         let facing = if inside { -hit.normal } else { hit.normal };
+        let spawn = SpawnPoint::of(&hit);
         let s = Surface {
             p: hit.point,
+            spawn,
             n: self.bumped(&hit, facing, mat),
             v: -ray.dir,
             color: self.base_color(&hit, mat),
@@ -174,7 +177,6 @@ impl<'a> Whitted<'a> {
         } else {
             0.0
         };
-        let eps = offset::eps(scene, hit.point);
         let media = path.media;
         if kt > 0.0 {
             let (n1, after) = if inside {
@@ -185,7 +187,7 @@ impl<'a> Whitted<'a> {
             match refract(ray.dir, facing, n1, after.current()) {
                 Some(dir) => {
                     ctx.stats.secondary_rays += 1;
-                    let r = Ray::new(hit.point - eps * facing, dir);
+                    let r = spawn.ray(dir);
                     c += kt * self.trace(&r, path.bounce(after), ctx);
                 }
                 None => kr += kt,
@@ -193,7 +195,7 @@ impl<'a> Whitted<'a> {
         }
         if kr > 0.0 {
             ctx.stats.secondary_rays += 1;
-            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing));
+            let r = spawn.ray(reflect(ray.dir, facing));
             c += kr * self.trace(&r, path.bounce(media), ctx);
         }
         c

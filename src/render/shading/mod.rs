@@ -8,9 +8,8 @@ pub mod phong;
 use glam::DVec3;
 
 use super::film::Stats;
-use super::offset;
+use super::offset::SpawnPoint;
 use super::sampler::Rng;
-use crate::geometry::Ray;
 use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
 
@@ -26,6 +25,8 @@ pub struct Ctx {
 pub struct Surface<'m> {
     /// The hit point.
     pub p: DVec3,
+    /// Where shadow rays leave the surface (the point with its error bound).
+    pub spawn: SpawnPoint,
     /// Unit normal facing the incoming ray (flipped for hits from inside).
     pub n: DVec3,
     /// Unit vector towards the viewer (−ray direction).
@@ -46,6 +47,8 @@ pub struct LightSample {
     pub l: DVec3,
     /// Distance to the sample.
     pub dist: f64,
+    /// The sample's position (shadow rays aim at it).
+    pub position: DVec3,
     /// The light's colour times the sample's share (1/samples).
     pub color: Color,
 }
@@ -81,20 +84,23 @@ pub fn light_sample(
     LightSample {
         l: if dist > 0.0 { d / dist } else { s.n },
         dist,
+        position: pos,
         color: light.color / f64::from(light.samples),
     }
 }
 
 /// True when nothing blocks the way from the surface to the light sample (always true without
-/// shadows). The shadow ray starts `eps` along the normal on the viewer's side.
+/// shadows). The shadow ray leaves the surface's error box towards the light and is aimed at the
+/// sample from there ([`SpawnPoint::ray_to`]), so a light lying on a surface is not shadowed by it.
 pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
     if !scene.effects().shadows {
         return true;
     }
     stats.shadow_rays += 1;
-    let eps = offset::eps(scene, s.p);
-    let ray = Ray::new(s.p + eps * s.n, ls.l);
-    !scene.world().occluded(&ray, 0.0, ls.dist - eps)
+    match s.spawn.ray_to(ls.position) {
+        Some((ray, t_max)) => !scene.world().occluded(&ray, 0.0, t_max),
+        None => true,
+    }
 }
 
 /// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.
