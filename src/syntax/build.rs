@@ -11,6 +11,7 @@ use crate::source::{FileId, Span};
 use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
+use crate::syntax::numbers::{self, NumberError};
 use crate::syntax::pratt;
 
 /// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
@@ -540,49 +541,31 @@ impl Builder {
     /// A plain number `3`, `0.5`, `2e6` (no unit) as `Int` or `Float`; a too-large integer or
     /// a float that overflows to infinity is an error.
     fn plain_number(&self, p: &P, text: &str) -> ExprKind {
-        if !text.contains(['.', 'e', 'E']) {
-            return match text.parse::<i64>() {
-                Ok(v) => ExprKind::Int(v),
-                Err(_) => {
-                    self.number_error(
-                        p,
-                        "integer literal is too large",
-                        format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
-                    );
-                    ExprKind::Int(0)
-                }
-            };
+        match numbers::plain(text) {
+            Ok(kind) => kind,
+            Err(NumberError::IntTooLarge) => {
+                self.number_error(
+                    p,
+                    "integer literal is too large",
+                    format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
+                );
+                ExprKind::Int(0)
+            }
+            Err(NumberError::TooLarge) => {
+                self.number_error(
+                    p,
+                    "number is too large",
+                    "numbers must be below about 1.8e308".to_owned(),
+                );
+                ExprKind::Float(0.0)
+            }
         }
-        let v = text.parse::<f64>().unwrap_or(f64::NAN);
-        if !v.is_finite() {
-            self.number_error(
-                p,
-                "number is too large",
-                "numbers must be below about 1.8e308".to_owned(),
-            );
-            return ExprKind::Float(0.0);
-        }
-        ExprKind::Float(v)
     }
 
     /// `number`: an Int, a Float or an Angle (`30deg`, `0.5rad`, `0.25turn`, `45°`).
     fn number(&self, p: &P) -> ExprKind {
-        let text = p.as_str();
-        let (digits, to_radians): (&str, fn(f64) -> f64) =
-            if let Some(d) = text.strip_suffix("deg").or_else(|| text.strip_suffix('°')) {
-                (d, f64::to_radians)
-            } else if let Some(d) = text.strip_suffix("rad") {
-                (d, |v| v)
-            } else if let Some(d) = text.strip_suffix("turn") {
-                (d, |v| v * std::f64::consts::TAU)
-            } else {
-                return self.plain_number(p, text);
-            };
-        match self.plain_number(p, digits) {
-            ExprKind::Int(i) => ExprKind::Angle(to_radians(i as f64)),
-            ExprKind::Float(f) => ExprKind::Angle(to_radians(f)),
-            other => other,
-        }
+        let (digits, unit) = numbers::split_unit(p.as_str());
+        numbers::apply_unit(self.plain_number(p, digits), unit)
     }
 
     /// `vec_lit`: `[x, y, z]` of plain numbers, read from the token's text.
@@ -590,11 +573,7 @@ impl Builder {
         let text = p.as_str();
         let mut out = [0.0; 3];
         for (slot, part) in out.iter_mut().zip(text[1..text.len() - 1].split(',')) {
-            *slot = match self.plain_number(p, part.trim()) {
-                ExprKind::Int(i) => i as f64,
-                ExprKind::Float(f) => f,
-                _ => 0.0,
-            };
+            *slot = numbers::component(&self.plain_number(p, part.trim()));
         }
         ExprKind::Vec3(out)
     }

@@ -194,7 +194,7 @@ fn join_or(words: &[String]) -> String {
 }
 
 /// Words that cannot be names (the grammar's `keyword` rule).
-const KEYWORDS: &[&str] = &[
+pub const KEYWORDS: &[&str] = &[
     "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
     "step", "div",
 ];
