@@ -89,7 +89,7 @@ impl Builder {
     /// A statement pair (`import_stmt`, `let_stmt`, `fn_def` or `expr`).
     pub fn stmt(&self, p: P) -> Stmt {
         match p.as_rule() {
-            Rule::import_stmt => Stmt::Import(self.import(p)),
+            Rule::import_stmt => Stmt::Import(Box::new(self.import(p))),
             Rule::let_stmt => Stmt::Let(self.let_stmt(p)),
             Rule::fn_def => Stmt::Fn(Rc::new(self.fn_def(p))),
             _ => Stmt::Expr(self.expr(p)),
@@ -175,7 +175,7 @@ impl Builder {
             match q.as_rule() {
                 Rule::pub_kw => public = true,
                 Rule::ident => name = Some(self.name(&q)),
-                Rule::type_ann => ty = Some(self.type_ann(q)),
+                Rule::type_ann => ty = Some(Box::new(self.type_ann(q))),
                 _ => value = Some(self.expr(q)),
             }
         }
@@ -637,7 +637,7 @@ impl Builder {
                     };
                     Box::new(Expr { kind, span })
                 });
-                ExprKind::If(Box::new(cond), then, els)
+                ExprKind::If(Box::new(cond), Box::new(then), els)
             }
             Rule::for_expr => {
                 let mut gens = Vec::new();
@@ -658,7 +658,11 @@ impl Builder {
                         _ => body = Some(self.block(q)),
                     }
                 }
-                ExprKind::For(gens, filter, body.expect("grammar: for body"))
+                ExprKind::For(
+                    gens.into_boxed_slice(),
+                    filter,
+                    Box::new(body.expect("grammar: for body")),
+                )
             }
             Rule::fn_lit => {
                 let span = self.span(&p);

@@ -29,20 +29,28 @@
 
 use crate::source::{FileId, Span};
 use crate::syntax::ast::{Arg, Expr, ExprKind, Let, Name, Stmt, UnOp};
-use crate::syntax::errors::KEYWORDS;
+use crate::syntax::errors::is_keyword;
 use crate::syntax::intern::Sym;
 use crate::syntax::numbers;
 
 /// Reads the statement line starting at byte `pos` of `text`, with `end` as the end of input.
 /// Returns the statement and the offset after its line (where pest's `stmt_line` would end),
 /// or `None` when the line is not of the fast forms.
-pub fn statement(file: FileId, text: &str, pos: usize, end: usize) -> Option<(Stmt, usize)> {
+pub fn statement<'t>(
+    file: FileId,
+    text: &'t str,
+    pos: usize,
+    end: usize,
+    memo: &mut Memo<'t>,
+) -> Option<(Stmt, usize)> {
+    memo.args.clear();
     let mut r = Reader {
         text,
         bytes: text.as_bytes(),
         at: pos,
         end,
         file,
+        memo,
     };
     r.blank_lines();
     r.spaces();
@@ -68,13 +76,49 @@ pub fn statement(file: FileId, text: &str, pos: usize, end: usize) -> Option<(St
     Some((stmt, r.at))
 }
 
+/// What the fast path keeps between the statements of one file.
+pub struct Memo<'t> {
+    /// Recent names: a generated file repeats a handful of names, and this small
+    /// direct-mapped table finds them without hashing into the interner.
+    names: [Option<(&'t str, Sym)>; 64],
+    /// Arguments being read (nested calls stack theirs on top), so that each call's argument
+    /// list is allocated once at its exact size.
+    args: Vec<Arg>,
+}
+
+impl Default for Memo<'_> {
+    fn default() -> Self {
+        Memo {
+            names: [None; 64],
+            args: Vec::new(),
+        }
+    }
+}
+
+impl<'t> Memo<'t> {
+    /// The interned name `text` (not empty).
+    fn sym(&mut self, text: &'t str) -> Sym {
+        let b = text.as_bytes();
+        let slot = (b[0] as usize * 31 + b[b.len() - 1] as usize + b.len() * 7) % 64;
+        match self.names[slot] {
+            Some((known, sym)) if known == text => sym,
+            _ => {
+                let sym = Sym::new(text);
+                self.names[slot] = Some((text, sym));
+                sym
+            }
+        }
+    }
+}
+
 /// A cursor over the input with `end` as its end.
-struct Reader<'t> {
+struct Reader<'t, 'n> {
     text: &'t str,
     bytes: &'t [u8],
     at: usize,
     end: usize,
     file: FileId,
+    memo: &'n mut Memo<'t>,
 }
 
 fn is_name_start(c: u8) -> bool {
@@ -85,7 +129,7 @@ fn is_name_char(c: u8) -> bool {
     c.is_ascii_alphanumeric() || c == b'_'
 }
 
-impl Reader<'_> {
+impl Reader<'_, '_> {
     fn peek(&self) -> Option<u8> {
         (self.at < self.end).then(|| self.bytes[self.at])
     }
@@ -171,11 +215,11 @@ impl Reader<'_> {
     fn name(&mut self) -> Option<Name> {
         let (s, e) = self.word()?;
         let text = &self.text[s..e];
-        if KEYWORDS.contains(&text) {
+        if is_keyword(text) {
             return None;
         }
         Some(Name {
-            sym: Sym::new(text),
+            sym: self.memo.sym(text),
             span: self.span(s, e),
         })
     }
@@ -240,8 +284,8 @@ impl Reader<'_> {
                 let kind = match text {
                     "true" => ExprKind::Bool(true),
                     "false" => ExprKind::Bool(false),
-                    _ if KEYWORDS.contains(&text) => return None,
-                    _ => ExprKind::Ident(Sym::new(text)),
+                    _ if is_keyword(text) => return None,
+                    _ => ExprKind::Ident(self.memo.sym(text)),
                 };
                 Expr {
                     kind,
@@ -279,13 +323,14 @@ impl Reader<'_> {
     fn call_args(&mut self) -> Option<Vec<Arg>> {
         self.at += 1;
         self.spaces();
-        let mut args = Vec::new();
         if self.peek() == Some(b')') {
             self.at += 1;
-            return Some(args);
+            return Some(Vec::new());
         }
+        let mark = self.memo.args.len();
         loop {
-            args.push(self.arg()?);
+            let arg = self.arg()?;
+            self.memo.args.push(arg);
             self.spaces();
             match self.peek()? {
                 b',' => {
@@ -294,7 +339,7 @@ impl Reader<'_> {
                 }
                 b')' => {
                     self.at += 1;
-                    return Some(args);
+                    return Some(self.memo.args.drain(mark..).collect());
                 }
                 _ => return None,
             }

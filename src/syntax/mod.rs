@@ -74,13 +74,15 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
             .unwrap_or(0)
     });
     let mut diags = scan.warnings;
-    let mut stmts: Vec<ast::Stmt> = Vec::new();
+    // Every statement starts a top-level line: one allocation for the statement list.
+    let mut stmts: Vec<ast::Stmt> = Vec::with_capacity(scan.top_level_lines.len());
     let mut fast_statements = 0;
+    let mut memo = fast::Memo::default();
     let (version, mut pos) = header(file, text, &mut diags);
     while pos < cutoff {
         // Simple one-line statements (most of a generated file) skip pest; see fast.rs.
         if path == Path::FastFirst
-            && let Some((stmt, next)) = fast::statement(file, text, pos, cutoff)
+            && let Some((stmt, next)) = fast::statement(file, text, pos, cutoff, &mut memo)
         {
             stmts.push(stmt);
             fast_statements += 1;
@@ -201,9 +203,10 @@ fn starts_statement(text: &str, at: usize) -> bool {
 
 fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
     let mut depth = 0usize;
-    for (i, c) in text.char_indices() {
+    // Brackets are ASCII, so bytes (not chars) suffice and keep the offsets.
+    for (i, c) in text.bytes().enumerate() {
         match c {
-            '(' | '[' | '{' => {
+            b'(' | b'[' | b'{' => {
                 depth += 1;
                 if depth > MAX_NESTING {
                     return Some(
@@ -217,7 +220,7 @@ fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
                     );
                 }
             }
-            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            b')' | b']' | b'}' => depth = depth.saturating_sub(1),
             _ => {}
         }
     }

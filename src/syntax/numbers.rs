@@ -15,7 +15,7 @@ pub enum NumberError {
 /// A plain number `3`, `0.5`, `2e6` (no unit, no sign except the one a vector literal carries):
 /// `Int` without `.`, `e` or `E`, `Float` otherwise.
 pub fn plain(text: &str) -> Result<ExprKind, NumberError> {
-    if !text.contains(['.', 'e', 'E']) {
+    if !text.bytes().any(|b| matches!(b, b'.' | b'e' | b'E')) {
         return text
             .parse::<i64>()
             .map(ExprKind::Int)
