@@ -73,12 +73,21 @@ impl<'a> Interp<'a> {
     }
 
     /// Looks a name up: locals of this frame, then module items, then built-ins.
+    #[inline]
     pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
-        for (k, v) in self.locals[self.frame_base..].iter().rev() {
-            if *k == sym {
-                return Ok(v.clone());
-            }
+        match self.locals[self.frame_base..]
+            .iter()
+            .rev()
+            .find(|(k, _)| *k == sym)
+        {
+            Some((_, v)) => Ok(v.clone()),
+            None => self.lookup_global(sym, span),
         }
+    }
+
+    /// Looks up a name that is not a local: module items, then built-ins.
+    #[inline(never)]
+    fn lookup_global(&self, sym: Sym, span: Span) -> R<Value> {
         if let Some(b) = self.scope.items.borrow().get(&sym) {
             return if b.poisoned {
                 Err(EvalError::Poisoned)
@@ -315,6 +324,9 @@ impl<'a> Interp<'a> {
         }
         let l = self.eval(a)?;
         let r = self.eval(b)?;
+        if let Some(v) = super::ops::arithmetic(op, &l, &r) {
+            return Ok(v);
+        }
         super::ops::binary(self, op, l, r, a.span, b.span, span)
     }
 
