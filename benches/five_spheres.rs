@@ -6,7 +6,7 @@
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use rtc::render::{RenderOptions, render_film};
+use rtc::render::{RenderOptions, render_scene};
 use rtc::source::SourceMap;
 
 fn main() {
@@ -22,18 +22,16 @@ fn main() {
         .and_then(|r| r.parse().ok())
         .unwrap_or(7);
     for threads in [1, 0] {
-        let opts = RenderOptions {
-            threads,
-            progress: false,
-        };
+        let opts = RenderOptions { threads };
         let mut times: Vec<Duration> = Vec::with_capacity(reps);
         let mut stats = None;
         for _ in 0..reps {
             let t = Instant::now();
-            let film = match render_film(&scene, &opts) {
+            let film = match render_scene(&scene, &opts) {
                 Ok(f) => f,
                 Err(d) => {
-                    eprintln!("render failed: {}", d.message);
+                    let first = d.items.first().map_or("", |d| d.message.as_str());
+                    eprintln!("render failed: {first}");
                     std::process::exit(1);
                 }
             };

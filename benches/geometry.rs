@@ -14,7 +14,8 @@ use std::time::{Duration, Instant};
 use glam::{DAffine3, DVec3};
 use rayon::prelude::*;
 use rtc::geometry::{Ray, World};
-use rtc::ir::{Camera, Material, MaterialId, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::opt::Prepared;
 use rtc::source::Span;
 
 const REPS: usize = 5;
@@ -213,16 +214,16 @@ fn median(mut v: Vec<Duration>) -> Duration {
     v[v.len() / 2]
 }
 
-fn build(path: &Path, smooth: bool) -> (Duration, World) {
-    // Load afresh each time: the process-wide mesh cache would make repeats free.
-    rtc::geometry::mesh_cache::clear();
+fn build(path: &Path, smooth: bool) -> (Duration, Prepared) {
+    // Load afresh each time: the process-wide asset cache would make repeats free.
+    rtc::assets::clear_cache();
     let start = Instant::now();
-    let w = World::build(&scene_of(path, smooth), MaterialId(0)).expect("model loads");
-    (start.elapsed(), w)
+    let p = rtc::opt::prepare(&scene_of(path, smooth)).expect("model loads");
+    (start.elapsed(), p)
 }
 
-fn report_world(name: &str, load: Duration, w: &World) {
-    let s = w.stats();
+fn report_world(name: &str, load: Duration, p: &Prepared) {
+    let s = p.stats();
     println!(
         "{name}: {} triangles; load+build {:.3} s (BVH build {:.3} s); geometry memory ≈ {:.1} MB",
         s.unique_triangles,
@@ -244,9 +245,10 @@ fn scene_b(name: &str, file: &str) {
         loads.push(t);
         world = Some(w);
     }
-    let w = world.expect("built");
-    report_world(name, median(loads), &w);
-    let cam = camera(&w);
+    let p = world.expect("built");
+    report_world(name, median(loads), &p);
+    let w = p.world();
+    let cam = camera(w);
     for threads in [1, 2] {
         let mut tp = Vec::new();
         let mut tb = Vec::new();
@@ -254,10 +256,10 @@ fn scene_b(name: &str, file: &str) {
         let mut cpu_p = Vec::new();
         for _ in 0..REPS {
             let c0 = cpu_time();
-            let (t, _) = trace(&w, &cam, 800, 1, false, threads);
+            let (t, _) = trace(w, &cam, 800, 1, false, threads);
             cpu_p.push(Duration::from_secs_f64(cpu_time() - c0));
             tp.push(t);
-            let (t, c) = trace(&w, &cam, 800, 1, true, threads);
+            let (t, c) = trace(w, &cam, 800, 1, true, threads);
             tb.push(t);
             last = c;
         }
@@ -294,11 +296,11 @@ fn duck() {
         let mut last = None;
         for _ in 0..REPS {
             let start = Instant::now();
-            let (load, w) = build(&path, true);
-            let cam = camera(&w);
-            let (_, c) = trace(&w, &cam, 400, 3, true, threads);
+            let (load, p) = build(&path, true);
+            let cam = camera(p.world());
+            let (_, c) = trace(p.world(), &cam, 400, 3, true, threads);
             totals.push(start.elapsed());
-            last = Some((load, c, w));
+            last = Some((load, c, p));
         }
         let (load, c, w) = last.expect("ran");
         if threads == 1 {
@@ -326,8 +328,10 @@ fn x16() {
         let c0 = cpu_time();
         let (_, w) = build(&path, false);
         cpus.push(Duration::from_secs_f64(cpu_time() - c0));
-        let cam = camera(&w);
-        let first = w.intersect(&cam.ray(400.0, 400.0, 800, 800), 0.0, f64::INFINITY);
+        let cam = camera(w.world());
+        let first = w
+            .world()
+            .intersect(&cam.ray(400.0, 400.0, 800, 800), 0.0, f64::INFINITY);
         firsts.push(start.elapsed());
         last = Some((w, first.is_some()));
     }
@@ -338,8 +342,8 @@ fn x16() {
         median(firsts).as_secs_f64(),
         median(cpus).as_secs_f64()
     );
-    let cam = camera(&w);
-    let (t, c) = trace(&w, &cam, 800, 1, true, 2);
+    let cam = camera(w.world());
+    let (t, c) = trace(w.world(), &cam, 800, 1, true, 2);
     println!(
         "  800×800 primary+shadow, 2 threads: {:.3} s = {:.2} Mray/s",
         t.as_secs_f64(),

@@ -1,11 +1,20 @@
-//! Scene lints: findings that need the evaluated scene (lights that light nothing, camera inside an
-//! object, effects that cannot show). They never change the scene.
+//! `rtc check` as a library function: the scene lints (lights that light nothing, a camera
+//! inside an object, effects that cannot show) and the preparation stage's findings (shapes,
+//! transforms, CSG operands, meshes, textures decoded, ids, limits), so a clean check means the
+//! render will start. Nothing here changes the scene.
 
 use glam::DVec3;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{LightKind, Object, RenderMode, Scene, Shape};
 use crate::opt::Effects;
+
+/// Every finding about an evaluated scene: the lints, then what preparing it reports.
+pub fn check(scene: &Scene) -> Diagnostics {
+    let mut out = lint(scene);
+    out.extend(crate::opt::validate(scene));
+    out
+}
 
 /// Runs every scene lint.
 pub fn lint(scene: &Scene) -> Diagnostics {

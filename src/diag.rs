@@ -2,6 +2,9 @@
 
 use crate::source::Span;
 
+/// Diagnostic code for files that cannot be read or written (the CLI exits with 2 on these).
+pub const IO_ERROR: &str = "rtc::io";
+
 /// How bad a diagnostic is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
@@ -123,15 +126,6 @@ impl Diagnostic {
         self
     }
 
-    /// Appends a trace frame (callers push outward as the error unwinds).
-    pub fn with_frame(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
-        self.trace.push(TraceFrame {
-            span,
-            message: message.into(),
-        });
-        self
-    }
-
     /// True for errors.
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
@@ -172,6 +166,19 @@ impl Diagnostics {
     /// Moves all of `other`'s findings into `self`.
     pub fn extend(&mut self, other: Diagnostics) {
         self.items.extend(other.items);
+    }
+}
+
+/// A number as messages show it: integers without a fraction (`-1`, `64`), others with up to
+/// six decimals and no trailing zeros (`1.5`, `0.333333`).
+pub fn number(f: f64) -> String {
+    if f == f.trunc() && f.abs() < 1e15 {
+        format!("{}", f as i64)
+    } else if f.abs() >= 1e15 {
+        format!("{f:e}")
+    } else {
+        let s = format!("{f:.6}");
+        s.trim_end_matches('0').trim_end_matches('.').to_owned()
     }
 }
 

@@ -1,5 +1,5 @@
 //! The scene IR: plain data produced by the language evaluator and the legacy front ends, consumed
-//! by the optimizer and the renderer. No parsing types and no render types live here.
+//! by the preparation stage (`opt`). No parsing types and no render types live here.
 //!
 //! Conventions: world units are free (the course uses pixels), `f64` everywhere, colours are linear
 //! RGB with no upper clamp, every item carries the [`Span`] of the source that made it.
@@ -9,6 +9,11 @@ use std::path::PathBuf;
 use glam::{DAffine3, DVec3};
 
 use crate::source::Span;
+
+pub mod limits;
+mod loaded;
+
+pub use loaded::Loaded;
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;
@@ -343,7 +348,7 @@ pub enum Shape {
         /// Iso-value.
         threshold: f64,
     },
-    /// A triangle mesh from an OBJ file (loaded by the optimizer; instanced by path).
+    /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
     Mesh {
         /// Resolved path.
         path: PathBuf,
@@ -445,6 +450,26 @@ pub enum Encoding {
     Srgb,
 }
 
+impl RenderSettings {
+    /// The course formats' defaults (COURSE.md): no shadows and no bounces unless the file asks,
+    /// one sample per pixel. The same as [`RenderSettings::default`], the IR's neutral settings.
+    pub fn course_defaults() -> RenderSettings {
+        RenderSettings::default()
+    }
+
+    /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
+    /// bounces, so a glass or mirror material shows without further settings, and sRGB output.
+    pub fn language_defaults() -> RenderSettings {
+        RenderSettings {
+            shadows: true,
+            max_depth: 5,
+            encoding: Encoding::Srgb,
+            ..RenderSettings::course_defaults()
+        }
+    }
+}
+
+/// The IR's neutral settings, which are the course defaults: nothing costly unless asked for.
 impl Default for RenderSettings {
     fn default() -> RenderSettings {
         RenderSettings {
@@ -507,6 +532,15 @@ pub enum RenderMode {
     Normal,
     /// Distance along the ray mapped to grey: near white, far black.
     Depth(DepthRange),
+}
+
+impl RenderMode {
+    /// The modes a scene names without parameters, by their names in the language (`depth`
+    /// takes a range and is a function of its own).
+    pub const NAMED: &'static [(&'static str, RenderMode)] = &[
+        ("shaded", RenderMode::Shaded),
+        ("normal", RenderMode::Normal),
+    ];
 }
 
 /// The distance range of a depth image.

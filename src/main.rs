@@ -12,9 +12,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use rtc::diag::IO_ERROR;
 use rtc::diag::{Diagnostic, Diagnostics};
 use rtc::eval::EvalOptions;
-use rtc::frontend::{IO_ERROR, Loaded};
+use rtc::ir::Loaded;
 use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
@@ -94,7 +95,7 @@ fn main() -> ExitCode {
 
 /// Loads a scene and runs the scene lints on it.
 fn load(file: &Path, sources: &mut SourceMap) -> Loaded {
-    let mut loaded = rtc::frontend::load(file, sources, &EvalOptions::default());
+    let mut loaded = rtc::loader::load(file, sources, &EvalOptions::default());
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::lint(scene));
     }
@@ -123,12 +124,9 @@ fn count_line(diags: &Diagnostics) -> String {
 fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
-    let mut loaded = load(file, &mut sources);
-    // Loading meshes and checking CSG operands is what `render` would do first; `check` does it
-    // too so that a clean check means the render will start.
+    let mut loaded = rtc::loader::load(file, &mut sources, &EvalOptions::default());
     if let Some(scene) = &loaded.scene {
-        let geometry = rtc::geometry::validate_scene_geometry(scene);
-        loaded.diagnostics.extend(geometry);
+        loaded.diagnostics.extend(rtc::check::check(scene));
     }
     let diags = &loaded.diagnostics;
     let outcome = outcome_of(diags, deny_warnings);
@@ -192,20 +190,27 @@ fn render(
         return outcome;
     };
     let path = output_path(file, output, &scene);
-    let options = rtc::render::RenderOptions {
-        threads,
-        progress: std::io::stderr().is_terminal(),
-    };
     let start = std::time::Instant::now();
-    let result = rtc::render::render_film(&scene, &options).and_then(|film| {
-        if show_stats {
-            eprintln!(
-                "{}",
-                cli::stats::describe(&film, load_time, start.elapsed())
-            );
+    let prepared = match rtc::opt::prepare(&scene) {
+        Ok(p) => p,
+        Err(diags) => {
+            print(&diags.items, &sources);
+            eprintln!("{}", count_line(&diags));
+            return outcome_of(&diags, false);
         }
-        rtc::render::output::save(&film.to_image(), &path)
-    });
+    };
+    print(prepared.warnings(), &sources);
+    let options = rtc::render::RenderOptions { threads };
+    let result = rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
+        .and_then(|film| {
+            if show_stats {
+                eprintln!(
+                    "{}",
+                    cli::stats::describe(&film, &prepared.stats(), load_time, start.elapsed())
+                );
+            }
+            rtc::render::output::save(&film.to_image(), &path)
+        });
     match result {
         Ok(()) => {
             eprintln!("wrote {}", path.display());

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use proptest::prelude::*;
 use rtc::compat::{load_in_source, load_yaml_source};
-use rtc::frontend::Loaded;
+use rtc::ir::Loaded;
 use rtc::source::SourceMap;
 
 const RT1: &str = include_str!("data/course/in/rt1.in");

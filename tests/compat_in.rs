@@ -4,7 +4,7 @@ use std::path::Path;
 
 use glam::DVec3;
 use rtc::compat::{erase_spans, load_in, load_in_source, load_yaml};
-use rtc::frontend::Loaded;
+use rtc::ir::Loaded;
 use rtc::ir::{LightKind, Projection, Scene, Shape};
 use rtc::source::SourceMap;
 
@@ -84,22 +84,15 @@ fn rt1_in_and_scene01_yaml_render_the_same_bytes() {
         &mut sources,
     );
     let options = rtc::render::RenderOptions::default();
-    let ra = rtc::render::render(&a.scene.expect("rt1 scene"), &options);
-    let rb = rtc::render::render(&b.scene.expect("scene01 scene"), &options);
-    match (ra, rb) {
-        (Ok(ia), Ok(ib)) => {
-            assert_eq!(ia.dimensions(), (400, 400));
-            assert!(
-                ia.as_raw() == ib.as_raw(),
-                "rt1.in and scene01.yaml render differently"
-            );
-        }
-        // Until the renderer branch is merged, `render` is the contract placeholder.
-        (Err(ea), Err(eb)) if ea.code == "rtc::unsupported" && eb.code == "rtc::unsupported" => {
-            eprintln!("skipped: the renderer is not merged into this branch yet");
-        }
-        (ra, rb) => panic!("render failed: {:?} / {:?}", ra.err(), rb.err()),
-    }
+    let ia =
+        rtc::render::render_image(&a.scene.expect("rt1 scene"), &options).expect("rt1 renders");
+    let ib = rtc::render::render_image(&b.scene.expect("scene01 scene"), &options)
+        .expect("scene01 renders");
+    assert_eq!(ia.dimensions(), (400, 400));
+    assert!(
+        ia.as_raw() == ib.as_raw(),
+        "rt1.in and scene01.yaml render differently"
+    );
 }
 
 #[test]

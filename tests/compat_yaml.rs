@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 use rtc::compat::{load_yaml, load_yaml_source};
-use rtc::frontend::Loaded;
+use rtc::ir::Loaded;
 use rtc::ir::{
     DepthRange, Mapping, Projection, RenderMode, Sampling, ShadingModel, Shape, Texture,
 };

@@ -6,8 +6,8 @@ mod geometry_support;
 use geometry_support::{object, scene};
 use glam::{DAffine3, DVec3};
 use rtc::diag::Diagnostic;
-use rtc::geometry::{World, validate_scene_geometry};
-use rtc::ir::{CsgOp, MaterialId, Object, Shape};
+use rtc::ir::{CsgOp, Object, Shape};
+use rtc::opt::{prepare, validate};
 use rtc::source::{FileId, Span};
 
 fn at(mut o: Object, start: usize) -> Object {
@@ -74,7 +74,7 @@ fn csg_on_open_surfaces_is_an_error_at_the_operand() {
         ),
         10,
     );
-    let d = validate_scene_geometry(&scene(vec![at(csg(vec![ball(), open_cyl]), 0)])).items;
+    let d = validate(&scene(vec![at(csg(vec![ball(), open_cyl]), 0)])).items;
     let e = only(&d, "rtc::csg::open_operand");
     assert!(e.is_error());
     assert_eq!(
@@ -98,7 +98,7 @@ fn csg_on_open_surfaces_is_an_error_at_the_operand() {
         ),
         20,
     );
-    let d = validate_scene_geometry(&scene(vec![csg(vec![ball(), tri])])).items;
+    let d = validate(&scene(vec![csg(vec![ball(), tri])])).items;
     let e = only(&d, "rtc::csg::open_operand");
     assert_eq!(
         e.label.as_deref(),
@@ -110,7 +110,7 @@ fn csg_on_open_surfaces_is_an_error_at_the_operand() {
         "open.obj",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n",
     );
-    let d = validate_scene_geometry(&scene(vec![csg(vec![ball(), at(mesh(open), 30)])])).items;
+    let d = validate(&scene(vec![csg(vec![ball(), at(mesh(open), 30)])])).items;
     let e = only(&d, "rtc::csg::open_operand");
     assert!(
         e.label
@@ -124,7 +124,7 @@ fn csg_on_open_surfaces_is_an_error_at_the_operand() {
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
     );
     assert!(
-        validate_scene_geometry(&scene(vec![csg(vec![ball(), mesh(closed)])]))
+        validate(&scene(vec![csg(vec![ball(), mesh(closed)])]))
             .items
             .is_empty()
     );
@@ -135,7 +135,7 @@ fn missing_and_malformed_obj_files_are_reported_with_the_line() {
     let missing = at(mesh("/nonexistent/dir/nothing.obj".into()), 40);
     let bad_vertex = obj_file("badv.obj", "# ok\nv 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n");
     let bad_face = obj_file("badf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 x\n");
-    let d = validate_scene_geometry(&scene(vec![
+    let d = validate(&scene(vec![
         missing,
         at(mesh(bad_vertex), 50),
         at(mesh(bad_face), 60),
@@ -160,10 +160,11 @@ fn missing_and_malformed_obj_files_are_reported_with_the_line() {
         "{}",
         bad[1].message
     );
-    // World::build refuses with the first error, never panics.
-    let err =
-        World::build(&scene(vec![mesh("/nonexistent.obj".into())]), MaterialId(0)).unwrap_err();
-    assert_eq!(err.code, "rtc::mesh::not_found");
+    // Preparing refuses with the errors, never panics.
+    let Err(errs) = prepare(&scene(vec![mesh("/nonexistent.obj".into())])) else {
+        panic!("a missing mesh cannot be prepared");
+    };
+    assert_eq!(errs.items[0].code, "rtc::mesh::not_found");
 }
 
 #[test]
@@ -210,7 +211,7 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
         ),
         100,
     );
-    let d = validate_scene_geometry(&scene(vec![flat, nested, zero, bent])).items;
+    let d = validate(&scene(vec![flat, nested, zero, bent])).items;
     assert_eq!(d.len(), 4, "{d:#?}");
     let sing: Vec<_> = d
         .iter()
@@ -223,11 +224,12 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
         Some(Span::new(FileId(0), 80, 85)),
         "found inside the CSG"
     );
+    // Shape rules and codes are geometry::shape's, the same the language and course files get.
     assert_eq!(
-        only(&d, "rtc::geometry::degenerate").span,
+        only(&d, "rtc::param::out_of_range").span,
         Some(Span::new(FileId(0), 90, 95))
     );
-    only(&d, "rtc::geometry::polygon_not_planar");
+    only(&d, "rtc::param::not_planar");
     // A mirrored (negative) scale is fine.
     let mirrored = object(
         Shape::Box {
@@ -236,9 +238,5 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
         },
         DAffine3::from_scale(DVec3::new(-1.0, 1.0, 1.0)),
     );
-    assert!(
-        validate_scene_geometry(&scene(vec![mirrored]))
-            .items
-            .is_empty()
-    );
+    assert!(validate(&scene(vec![mirrored])).items.is_empty());
 }

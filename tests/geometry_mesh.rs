@@ -8,7 +8,7 @@ use std::path::PathBuf;
 
 use geometry_support::{Rng, hemisphere, object, ray_at_box, scene, world};
 use glam::{DAffine3, DVec3, Vec3};
-use rtc::geometry::{Ray, World};
+use rtc::geometry::Ray;
 use rtc::ir::{CsgOp, MaterialId, Shape};
 
 /// A fresh directory for this test's files.
@@ -218,8 +218,9 @@ fn one_file_placed_many_times_is_loaded_once() {
             )
         })
         .collect();
-    let w = world(objects);
-    let s = w.stats();
+    let prepared = rtc::opt::prepare(&scene(objects)).expect("meshes load");
+    let s = prepared.stats();
+    let w = prepared.world();
     assert_eq!(s.meshes, 1);
     assert_eq!(s.unique_triangles, faces.len());
     assert_eq!(s.instanced_triangles, 5 * faces.len());
@@ -228,7 +229,7 @@ fn one_file_placed_many_times_is_loaded_once() {
     for i in 0..5 {
         let ray = Ray::new(DVec3::new(3.0 * i as f64, 0.0, 10.0), -DVec3::Z);
         let h = w.intersect(&ray, 0.0, f64::INFINITY).expect("instance hit");
-        assert_eq!(h.object, i);
+        assert_eq!(w.object(&h), i);
         assert!((h.t - 9.0).abs() < 1e-5);
     }
 }
@@ -244,37 +245,35 @@ fn mtl_materials_become_rtc_materials() {
         },
         DAffine3::IDENTITY,
     )]);
-    // A renderer appends its fallback material right after the scene's (id 3 here): MTL
-    // materials must be numbered after it.
-    let w = World::build(&sc, MaterialId(3)).expect("duck loads");
-    assert_eq!(w.first_extra_material(), MaterialId(4));
-    assert_eq!(w.stats().unique_triangles, 3712);
-    let extra = w.extra_materials();
+    // The material table: the scene's three, the fallback for objects that name none (id 3),
+    // then the MTL materials.
+    let p = rtc::opt::prepare(&sc).expect("duck loads");
+    assert_eq!(p.stats().unique_triangles, 3712);
+    let extra = &p.materials()[4..];
     assert!(extra.len() >= 3, "{}", extra.len());
     // "horns": Kd 1 0 0, Ks 0.5, Ns 60 (devilduk.mtl).
-    assert!(
-        extra
-            .iter()
-            .any(|m| m.color == DVec3::new(1.0, 0.0, 0.0) && m.ks == 0.5 && m.n == 60.0)
-    );
+    let horns =
+        |m: &rtc::ir::Material| m.color == DVec3::new(1.0, 0.0, 0.0) && m.ks == 0.5 && m.n == 60.0;
+    assert!(extra.iter().any(horns));
+    let w = p.world();
     let b = w.bounds();
     let mut rng = Rng(9);
     let mut from_mtl = 0;
+    let mut seen: Vec<MaterialId> = Vec::new();
     for _ in 0..2_000 {
         let ray = ray_at_box(&mut rng, b.min, b.max);
         if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
-            assert!((h.material.0 as usize) < 4 + extra.len());
-            assert_ne!(
-                h.material,
-                MaterialId(0),
-                "use_mtl faces take their MTL material"
-            );
-            if h.material.0 >= 4 {
-                from_mtl += 1;
-                let _ = w.material(&sc, h.material);
+            assert!((h.material.0 as usize) < p.materials().len());
+            assert!(h.material.0 >= 4, "use_mtl faces take their MTL material");
+            from_mtl += 1;
+            if !seen.contains(&h.material) {
+                seen.push(h.material);
             }
         }
     }
+    // Faces keep their own groups' materials: the red horns and at least one other.
+    assert!(seen.iter().any(|&id| horns(p.material(id))), "{seen:?}");
+    assert!(seen.len() >= 2, "{seen:?}");
     assert!(from_mtl > 100, "{from_mtl}");
 }
 
@@ -301,8 +300,9 @@ fn closed_mesh_works_in_csg() {
         DAffine3::IDENTITY,
     );
     let sc = scene(vec![node]);
-    assert!(rtc::geometry::validate_scene_geometry(&sc).items.is_empty());
-    let w = World::build(&sc, MaterialId(0)).unwrap();
+    assert!(rtc::opt::validate(&sc).items.is_empty());
+    let p = rtc::opt::prepare(&sc).unwrap();
+    let w = p.world();
     let inside =
         |p: DVec3| p.cmpge(DVec3::ZERO).all() && p.cmple(DVec3::ONE).all() && (p - c).length() > r;
     let mut rng = Rng(21);
@@ -359,7 +359,7 @@ fn rays_leaving_a_mesh_with_the_render_offset_do_not_rehit_it() {
                 continue;
             }
             tested += 1;
-            let eps = rtc::render::plan::EPS_REL * h.point.abs().max_element();
+            let eps = rtc::render::offset::EPS_REL * h.point.abs().max_element();
             let out = Ray::new(h.point + eps * n, d);
             assert!(
                 !w.occluded(&out, 0.0, f64::INFINITY),

@@ -11,7 +11,7 @@ mod common;
 
 use common::{Diff, data, diff};
 use rtc::ir::{AmbientConvention, DepthRange, RenderMode, Sampling, Scene};
-use rtc::render::{Image, RenderOptions, render};
+use rtc::render::{Image, RenderOptions, render_image};
 use rtc::source::SourceMap;
 
 fn load(yaml: &str) -> Scene {
@@ -23,11 +23,8 @@ fn load(yaml: &str) -> Scene {
 }
 
 fn draw(scene: &Scene) -> Image {
-    let opts = RenderOptions {
-        threads: 2,
-        progress: false,
-    };
-    render(scene, &opts).unwrap()
+    let opts = RenderOptions { threads: 2 };
+    render_image(scene, &opts).unwrap()
 }
 
 fn exact(scene: &Scene, reference: &str) {

@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use rtc::eval::{EvalOptions, load_source};
-use rtc::render::{RenderOptions, render};
+use rtc::render::{RenderOptions, render_image};
 use rtc::source::SourceMap;
 
 /// The colour of a 1×1 render of an empty scene with this `render` block body.
@@ -24,7 +24,7 @@ fn pixel(render_fields: &str) -> [u8; 3] {
     let scene = loaded
         .scene
         .unwrap_or_else(|| panic!("{src}: {:?}", loaded.diagnostics.items));
-    let image = render(&scene, &RenderOptions::default()).expect("render");
+    let image = render_image(&scene, &RenderOptions::default()).expect("render");
     image.get_pixel(0, 0).0
 }
 

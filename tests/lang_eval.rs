@@ -10,7 +10,7 @@ use rtc::source::SourceMap;
 
 const CAM: &str = "camera { eye: [0, 2, 8] }\npoint_light { position: [5, 5, 5] }\n";
 
-fn eval_with(src: &str, opts: &EvalOptions) -> rtc::frontend::Loaded {
+fn eval_with(src: &str, opts: &EvalOptions) -> rtc::ir::Loaded {
     let mut sm = SourceMap::new();
     load_source(Path::new("tests/lang/inline.rtc"), src, &mut sm, opts)
 }

@@ -114,6 +114,13 @@ fn opts() -> EvalOptions {
     }
 }
 
+/// The codes of every diagnostic `src` gets.
+fn codes(src: &str) -> Vec<&'static str> {
+    let mut sm = SourceMap::new();
+    let loaded = load_source(Path::new("tests/lang/fuzz.rtc"), src, &mut sm, &opts());
+    loaded.diagnostics.items.iter().map(|d| d.code).collect()
+}
+
 fn run(src: &str) {
     if std::env::var("FUZZ_TRACE").is_ok() {
         eprintln!("CASE {src:?}");
@@ -145,14 +152,54 @@ proptest! {
     }
 }
 
+/// Inputs built to exhaust a stack, a loop or memory end in one clear error each (with its
+/// code), not a crash or a hang.
 #[test]
 fn adversarial_inputs_are_rejected_cleanly() {
-    run(&format!("rtc 1\nlet a = {}1\n", "-".repeat(100_000)));
-    run(&format!("rtc 1\nlet a = 1{}\n", " + 1".repeat(50_000)));
-    run(&format!("rtc 1\nlet a = {}\n", "[".repeat(10_000)));
-    run("rtc 1\nfn f(n) { f(n) + f(n) }\nf(1)\n");
-    run("rtc 1\nfor i in 0..1000000000000 { }\n");
-    run("rtc 1\nlet l = for i in 0..100000 { [i, i] }\n");
-    run("rtc 1\nlet r = 0..1 step 0\n");
-    run("rtc 1\nsphere(radius: 1e400)\n");
+    let cases: [(String, &[&str]); 8] = [
+        (
+            format!("rtc 1\nlet a = {}1\n", "-".repeat(100_000)),
+            &["rtc::budget::nesting"],
+        ),
+        (
+            format!("rtc 1\nlet a = 1{}\n", " + 1".repeat(50_000)),
+            &["rtc::budget::nesting"],
+        ),
+        // Ten thousand open brackets: the parser may report the nesting or the missing `]`.
+        (
+            format!("rtc 1\nlet a = {}\n", "[".repeat(10_000)),
+            &["rtc::syntax::unclosed", "rtc::budget::nesting"],
+        ),
+        (
+            "rtc 1\nfn f(n) { f(n) + f(n) }\nf(1)\n".into(),
+            &["rtc::budget::recursion"],
+        ),
+        (
+            "rtc 1\nfor i in 0..1000000000000 { }\n".into(),
+            &["rtc::budget::loop"],
+        ),
+        (
+            "rtc 1\nlet l = for i in 0..100000 { [i, i] }\n".into(),
+            &["rtc::budget::loop"],
+        ),
+        (
+            "rtc 1\nlet r = 0..1 step 0\n".into(),
+            &["rtc::value::range_step"],
+        ),
+        // A literal too large for a Float is refused where it is written.
+        (
+            "rtc 1\nsphere(radius: 1e400)\n".into(),
+            &["rtc::syntax::number"],
+        ),
+    ];
+    for (src, expected) in &cases {
+        run(src);
+        let got = codes(src);
+        let shown = &src[..src.len().min(40)];
+        assert_eq!(got.len(), 1, "{shown:?}: {got:?}");
+        assert!(
+            expected.contains(&got[0]),
+            "{shown:?}: {got:?}, expected one of {expected:?}"
+        );
+    }
 }

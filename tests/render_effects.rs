@@ -5,15 +5,13 @@ mod common;
 use common::{empty, light, mat, scene01_shadows, sphere};
 use glam::{DAffine3, DVec3};
 use proptest::prelude::*;
+use rtc::ir::limits::MAX_DEPTH;
 use rtc::ir::{LightKind, Material, Object, Sampling, Scene, Shape, Texture};
-use rtc::render::{RenderOptions, render, render_film};
+use rtc::render::{RenderOptions, render_image, render_scene};
 use rtc::source::Span;
 
 fn opts(threads: usize) -> RenderOptions {
-    RenderOptions {
-        threads,
-        progress: false,
-    }
+    RenderOptions { threads }
 }
 
 /// Clear glass: no local shading, all light transmitted.
@@ -52,7 +50,7 @@ fn a_ray_through_a_glass_sphere_centre_is_undeviated() {
     );
     s.settings.max_depth = 4;
     tiny_view(&mut s, DVec3::ZERO, DVec3::NEG_Z, 1e-4);
-    let film = render_film(&s, &opts(1)).unwrap();
+    let film = render_scene(&s, &opts(1)).unwrap();
     assert_eq!(
         film.get(1, 1),
         DVec3::new(1.0, 0.0, 0.0),
@@ -60,7 +58,7 @@ fn a_ray_through_a_glass_sphere_centre_is_undeviated() {
     );
     // A ray 5 units off the axis bends away and misses the 1-unit target.
     tiny_view(&mut s, DVec3::new(5.0, 0.0, 0.0), DVec3::NEG_Z, 1e-4);
-    let off = render_film(&s, &opts(1)).unwrap();
+    let off = render_scene(&s, &opts(1)).unwrap();
     assert_eq!(off.get(1, 1), DVec3::ZERO);
 }
 
@@ -77,7 +75,7 @@ fn total_internal_reflection_beyond_the_critical_angle() {
         s.settings.background = DVec3::ONE;
         s.settings.max_depth = 6;
         tiny_view(&mut s, DVec3::new(0.0, 90.0, 0.0), DVec3::X, 1e-4);
-        let c = render_film(&s, &opts(1)).unwrap().get(1, 1);
+        let c = render_scene(&s, &opts(1)).unwrap().get(1, 1);
         if trapped {
             assert_eq!(c, DVec3::ZERO, "eta {eta}");
         } else {
@@ -114,9 +112,9 @@ fn nested_media_refract_by_the_ratio_of_both_sides() {
         s.settings.max_depth = 8;
         s
     };
-    let without = render(&scene(None), &opts(2)).unwrap();
-    let same = render(&scene(Some(1.5)), &opts(2)).unwrap();
-    let other = render(&scene(Some(1.2)), &opts(2)).unwrap();
+    let without = render_image(&scene(None), &opts(2)).unwrap();
+    let same = render_image(&scene(Some(1.5)), &opts(2)).unwrap();
+    let other = render_image(&scene(Some(1.2)), &opts(2)).unwrap();
     let differ = |a: &rtc::render::Image, b: &rtc::render::Image| {
         a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count()
     };
@@ -151,8 +149,8 @@ proptest! {
             let (refract, reflect) = (a, (1.0 - a) * b);
             sphere(&mut s, [x, y, z], r, glass(eta, refract, reflect));
         }
-        let film = render_film(&s, &opts(1)).unwrap();
-        for c in &film.pixels {
+        let film = render_scene(&s, &opts(1)).unwrap();
+        for c in film.color() {
             prop_assert!(c.cmple(s.settings.background + 1e-12).all(), "{c:?}");
         }
     }
@@ -182,13 +180,13 @@ fn random_scene() -> Scene {
 #[test]
 fn same_bytes_for_one_and_two_threads() {
     let s = random_scene();
-    let one = render(&s, &opts(1)).unwrap();
-    let two = render(&s, &opts(2)).unwrap();
+    let one = render_image(&s, &opts(1)).unwrap();
+    let two = render_image(&s, &opts(2)).unwrap();
     assert!(one == two);
     let mut other_seed = s.clone();
     other_seed.settings.seed = 8;
     assert!(
-        render(&other_seed, &opts(2)).unwrap() != two,
+        render_image(&other_seed, &opts(2)).unwrap() != two,
         "the seed matters"
     );
 }
@@ -207,9 +205,9 @@ fn area_lights_soften_shadow_edges() {
     // shadows) or at the ambient level trunc(255·0.2·0.4) = 20; a penumbra lies in between.
     let mut unshadowed = hard.clone();
     unshadowed.settings.shadows = false;
-    let lit = render(&unshadowed, &opts(2)).unwrap();
+    let lit = render_image(&unshadowed, &opts(2)).unwrap();
     let partial = |s: &Scene| {
-        let img = render(s, &opts(2)).unwrap();
+        let img = render_image(s, &opts(2)).unwrap();
         img.pixels()
             .zip(lit.pixels())
             .filter(|(p, l)| p[0] == p[1] && p[1] == p[2] && l[0] == l[1] && l[1] == l[2])
@@ -231,16 +229,16 @@ fn adaptive_sampling_refines_only_at_edges_and_matches_the_fine_grid_there() {
         max: 4,
         threshold: 0.1,
     };
-    let film = render_film(&coarse, &opts(2)).unwrap();
+    let film = render_scene(&coarse, &opts(2)).unwrap();
     let refined = film.stats.refined_pixels;
     assert!(refined > 1000 && refined < 40_000, "{refined}");
     let mut fine = coarse.clone();
     fine.settings.sampling = Sampling::Grid { factor: 4 };
-    let fine = render(&fine, &opts(2)).unwrap();
+    let fine = render_image(&fine, &opts(2)).unwrap();
     let adaptive = film.to_image();
     let mut one = scene01_shadows();
     one.settings.sampling = Sampling::Grid { factor: 1 };
-    let one = render(&one, &opts(2)).unwrap();
+    let one = render_image(&one, &opts(2)).unwrap();
     // Every pixel equals either the 1-sample or the 4×4 render.
     for ((a, f), o) in adaptive.pixels().zip(fine.pixels()).zip(one.pixels()) {
         assert!(a == f || a == o);
@@ -260,7 +258,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         span: Span::default(),
     });
     assert_eq!(
-        render(&s, &opts(1)).unwrap_err().code,
+        render_image(&s, &opts(1)).unwrap_err().items[0].code,
         "rtc::render::material"
     );
     let mut s = empty([200.0, 200.0, 1000.0]);
@@ -270,22 +268,30 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
     };
     sphere(&mut s, [0.0, 0.0, 0.0], 1.0, m);
     assert_eq!(
-        render(&s, &opts(1)).unwrap_err().code,
+        render_image(&s, &opts(1)).unwrap_err().items[0].code,
         "rtc::render::texture"
     );
-    let mut s = empty([200.0, 200.0, 1000.0]);
-    s.camera.up = DVec3::Z;
-    assert_eq!(
-        render(&s, &opts(1)).unwrap_err().code,
-        "rtc::render::camera"
-    );
+    // Cameras that cannot make rays: `up` along the view, an empty image, no field of view.
+    let bad_cameras: [fn(&mut rtc::ir::Camera); 3] = [
+        |c| c.up = DVec3::Z,
+        |c| c.width = 0,
+        |c| c.projection = rtc::ir::Projection::Perspective { fov_y: 0.0 },
+    ];
+    for spoil in bad_cameras {
+        let mut s = empty([200.0, 200.0, 1000.0]);
+        spoil(&mut s.camera);
+        assert_eq!(
+            render_image(&s, &opts(1)).unwrap_err().items[0].code,
+            "rtc::render::camera"
+        );
+    }
 }
 
 #[test]
 fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
     let mut s = common::scene01();
     s.settings.shading = rtc::ir::ShadingModel::Hatching;
-    let img = render(&s, &opts(2)).unwrap();
+    let img = render_image(&s, &opts(2)).unwrap();
     let colours: Vec<[u8; 3]> = s
         .materials
         .iter()
@@ -310,7 +316,7 @@ fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
 
 #[test]
 fn deep_recursion_between_mirrors_and_oversized_settings() {
-    // Two mirrors facing each other: the ray along the axis bounces the full 1000 times
+    // Two mirrors facing each other: the ray along the axis bounces the full MAX_DEPTH times
     // (curved mirrors send the off-axis rays away sooner).
     let mut s = empty([0.0, 0.0, 0.0]);
     s.lights.push(light([0.0, 50.0, 0.0], [1.0, 1.0, 1.0]));
@@ -320,13 +326,17 @@ fn deep_recursion_between_mirrors_and_oversized_settings() {
     };
     sphere(&mut s, [-200.0, 0.0, 0.0], 100.0, mirror());
     sphere(&mut s, [200.0, 0.0, 0.0], 100.0, mirror());
-    s.settings.max_depth = 1000;
+    s.settings.max_depth = MAX_DEPTH;
     tiny_view(&mut s, DVec3::ZERO, DVec3::X, 1e-6);
-    let film = render_film(&s, &opts(2)).unwrap();
-    assert!(film.stats.secondary_rays >= 1000, "{:?}", film.stats);
-    let code = |s: &Scene| render(s, &opts(1)).unwrap_err().code;
+    let film = render_scene(&s, &opts(2)).unwrap();
+    assert!(
+        film.stats.secondary_rays >= u64::from(MAX_DEPTH),
+        "{:?}",
+        film.stats
+    );
+    let code = |s: &Scene| render_image(s, &opts(1)).unwrap_err().items[0].code;
     let mut deep = s.clone();
-    deep.settings.max_depth = 1001;
+    deep.settings.max_depth = MAX_DEPTH + 1;
     assert_eq!(code(&deep), "rtc::render::limit");
     let mut huge = s.clone();
     huge.camera.width = u32::MAX;
@@ -335,4 +345,158 @@ fn deep_recursion_between_mirrors_and_oversized_settings() {
     let mut dense = s.clone();
     dense.settings.sampling = Sampling::Grid { factor: 100_000 };
     assert_eq!(code(&dense), "rtc::render::limit");
+}
+
+/// A textured sphere inside a CSG node or a union maps its texture about its own centre, as it
+/// does on its own: the mapping frame travels with the hit. (The renderer used to look up the
+/// top-level object's shape, so a sphere inside CSG mapped about the origin: nearly every
+/// textured pixel differed.)
+#[test]
+fn a_textured_sphere_maps_the_same_inside_csg() {
+    let textured = |s: &mut Scene| {
+        let t = s.add_texture(Texture::Image {
+            path: common::data("textures/earthmap1k.png"),
+            mapping: rtc::ir::Mapping::Spherical,
+            span: Span::default(),
+        });
+        s.add_material(Material {
+            texture: Some(t),
+            ..mat([1.0, 1.0, 1.0], 0.3, 0.7, 0.0, 1.0)
+        })
+    };
+    let ball = |m| Object {
+        shape: Shape::Sphere {
+            center: DVec3::new(260.0, 230.0, 100.0),
+            radius: 120.0,
+        },
+        transform: DAffine3::IDENTITY,
+        material: Some(m),
+        span: Span::default(),
+    };
+    let render_with = |wrap: &dyn Fn(Object) -> Object| {
+        let mut s = empty([200.0, 200.0, 1000.0]);
+        s.lights
+            .push(light([-200.0, 600.0, 1500.0], [1.0, 1.0, 1.0]));
+        let m = textured(&mut s);
+        s.objects.push(wrap(ball(m)));
+        render_image(&s, &opts(2)).unwrap()
+    };
+    let csg = |op, other: Shape| {
+        move |b: Object| Object {
+            shape: Shape::Csg {
+                op,
+                children: vec![
+                    b,
+                    Object {
+                        shape: other.clone(),
+                        transform: DAffine3::IDENTITY,
+                        material: None,
+                        span: Span::default(),
+                    },
+                ],
+            },
+            transform: DAffine3::IDENTITY,
+            material: None,
+            span: Span::default(),
+        }
+    };
+    let alone = render_with(&|b| b);
+    let around = Shape::Box {
+        min: DVec3::splat(-1000.0),
+        max: DVec3::splat(1000.0),
+    };
+    let far = Shape::Sphere {
+        center: DVec3::new(-5000.0, 0.0, 0.0),
+        radius: 1.0,
+    };
+    let textured_pixels = alone.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+    assert!(textured_pixels > 10_000, "{textured_pixels}");
+    for (name, wrap) in [
+        ("intersection", csg(rtc::ir::CsgOp::Intersection, around)),
+        ("union", csg(rtc::ir::CsgOp::Union, far)),
+    ] {
+        let inside = render_with(&wrap);
+        // Hits inside CSG come from the crossing computation, whose `t` may differ in the last
+        // bits: a texel boundary may fall on the other side of a few pixels, no more.
+        let differing = alone
+            .pixels()
+            .zip(inside.pixels())
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(
+            differing * 200 < textured_pixels,
+            "{name}: {differing} of {textured_pixels} pixels differ"
+        );
+    }
+}
+
+/// One preparation serves renders at several qualities (what `rtc accuracy` needs): the render
+/// after `set_quality` equals preparing the scene with those settings from the start.
+#[test]
+fn a_prepared_scene_renders_at_other_qualities() {
+    let mut s = scene01_shadows();
+    s.materials[0].reflect = 0.5;
+    let mut prepared = rtc::opt::prepare(&s).unwrap();
+    let quality = rtc::opt::Quality {
+        sampling: Sampling::Grid { factor: 2 },
+        max_depth: 2,
+    };
+    prepared.set_quality(quality).unwrap();
+    let again = rtc::render::render(&prepared, &opts(2), &rtc::render::Silent).unwrap();
+    let mut direct = s.clone();
+    direct.settings.sampling = quality.sampling;
+    direct.settings.max_depth = quality.max_depth;
+    assert_eq!(again.to_image(), render_image(&direct, &opts(2)).unwrap());
+    assert_ne!(again.to_image(), render_image(&s, &opts(2)).unwrap());
+    let past = rtc::opt::Quality {
+        max_depth: MAX_DEPTH + 1,
+        ..quality
+    };
+    assert_eq!(
+        prepared.set_quality(past).unwrap_err().code,
+        "rtc::render::limit"
+    );
+}
+
+/// Progress goes to the caller's callback (rows of every pass), and the callback can cancel.
+#[test]
+fn progress_reaches_the_callback_and_cancels() {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    struct Count {
+        total: AtomicU64,
+        done: AtomicU64,
+        stop_after: u64,
+    }
+    impl rtc::render::Progress for Count {
+        fn start(&self, rows: u64) {
+            self.total.store(rows, Ordering::Relaxed);
+        }
+        fn advance(&self, rows: u64) {
+            self.done.fetch_add(rows, Ordering::Relaxed);
+        }
+        fn cancelled(&self) -> bool {
+            self.done.load(Ordering::Relaxed) >= self.stop_after
+        }
+    }
+    let mut s = scene01_shadows();
+    s.settings.sampling = Sampling::Adaptive {
+        min: 1,
+        max: 2,
+        threshold: 0.1,
+    };
+    let prepared = rtc::opt::prepare(&s).unwrap();
+    let count = |stop_after| Count {
+        total: AtomicU64::new(0),
+        done: AtomicU64::new(0),
+        stop_after,
+    };
+    let all = count(u64::MAX);
+    rtc::render::render(&prepared, &opts(2), &all).unwrap();
+    // Two passes (coarse and refined) over 400 rows.
+    assert_eq!(all.total.load(Ordering::Relaxed), 800);
+    assert_eq!(all.done.load(Ordering::Relaxed), 800);
+    let early = count(40);
+    let err = rtc::render::render(&prepared, &opts(2), &early).unwrap_err();
+    assert_eq!(err.code, "rtc::render::cancelled");
+    assert!(early.done.load(Ordering::Relaxed) < 800);
 }

@@ -1,4 +1,5 @@
 //! Binary-only parts of the command line.
 
+pub mod progress;
 pub mod report;
 pub mod stats;

@@ -2,13 +2,13 @@
 
 use std::time::Duration;
 
+use rtc::opt::Stats;
 use rtc::render::film::Film;
 
 /// A few lines describing the world and the rays of a finished render: `load` is the time to
-/// read and evaluate the scene, `elapsed` the render's (world build included).
-pub fn describe(film: &Film, load: Duration, elapsed: Duration) -> String {
+/// read and evaluate the scene, `elapsed` the preparation's and render's together.
+pub fn describe(film: &Film, w: &Stats, load: Duration, elapsed: Duration) -> String {
     let s = &film.stats;
-    let w = &film.world;
     let rays = s.camera_rays + s.secondary_rays + s.shadow_rays;
     let secs = elapsed.as_secs_f64().max(1e-9);
     let mut out = format!(

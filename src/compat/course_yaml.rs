@@ -3,11 +3,12 @@
 
 use std::path::Path;
 
-use crate::compat::build::{self, Draft};
+use crate::compat::course::{self, Draft};
 use crate::compat::yaml_objects;
-use crate::compat::yaml_tree::{self, Node, NodeKind};
+use crate::compat::yaml_tree::{self, YamlKind, YamlNode};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
+use crate::ir::limits::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::ir::{
     DepthRange, GoochParams, Light, LightKind, RenderMode, Sampling, Scene, ShadingModel,
 };
@@ -26,10 +27,6 @@ const TOP_KEYS: &[&str] = &[
     "GoochParameters",
     "Models",
 ];
-
-/// Largest accepted reflection depth and supersampling factor (beyond them a render never ends).
-const MAX_DEPTH: u32 = 1000;
-const MAX_FACTOR: u32 = 64;
 
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
 pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> Option<Scene> {
@@ -86,10 +83,10 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
 
 /// The items of a list; a non-list is reported and yields nothing. An empty value (`Objects:`
 /// with nothing under it) is an empty list.
-fn list<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> &'n [Node] {
+fn list<'n>(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> &'n [YamlNode] {
     match &node.kind {
-        NodeKind::Seq(items) => items,
-        NodeKind::Scalar {
+        YamlKind::Seq(items) => items,
+        YamlKind::Scalar {
             text,
             quoted: false,
         } if text.is_empty() || text == "~" || text == "null" => &[],
@@ -108,7 +105,7 @@ fn list<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> &'n [Node] {
     }
 }
 
-fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir::Camera> {
+fn camera(node: &YamlNode, span: Span, diags: &mut Diagnostics) -> Option<crate::ir::Camera> {
     let mut m = MapView::new(node, "`Camera`", diags)?;
     let eye = m.require(&["eye"], "`Camera`", "eye: [200, 200, 1000]", diags);
     let center = m.require(&["center"], "`Camera`", "center: [200, 200, 0]", diags);
@@ -159,11 +156,11 @@ fn camera(node: &Node, span: Span, diags: &mut Diagnostics) -> Option<crate::ir:
         );
         return None;
     }
-    Some(build::course_camera(eye, center, up, size, span))
+    Some(course::course_camera(eye, center, up, size, span))
 }
 
-fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
-    let NodeKind::Seq(items) = &node.kind else {
+fn view_size(node: &YamlNode, diags: &mut Diagnostics) -> Option<[u32; 2]> {
+    let YamlKind::Seq(items) = &node.kind else {
         diags.push(
             Diagnostic::error(
                 "rtc::yaml::type",
@@ -190,12 +187,12 @@ fn view_size(node: &Node, diags: &mut Diagnostics) -> Option<[u32; 2]> {
         );
         return None;
     }
-    let w = val::integer(&items[0], "the image width", 1, build::MAX_VIEW, diags);
-    let h = val::integer(&items[1], "the image height", 1, build::MAX_VIEW, diags);
+    let w = val::integer(&items[0], "the image width", 1, MAX_IMAGE_SIDE, diags);
+    let h = val::integer(&items[1], "the image height", 1, MAX_IMAGE_SIDE, diags);
     Some([w?, h?])
 }
 
-fn light(node: &Node, diags: &mut Diagnostics) -> Option<Light> {
+fn light(node: &YamlNode, diags: &mut Diagnostics) -> Option<Light> {
     let mut m = MapView::new(node, "a light", diags)?;
     let position = m.require(
         &["position"],
@@ -237,9 +234,9 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
         }
     }
     if let Some(e) = top.get(&["MaxRecursionDepth"], diags)
-        && let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, MAX_DEPTH, diags)
+        && let Some(d) = val::integer(e.value, "`MaxRecursionDepth`", 0, u32::MAX, diags)
     {
-        s.max_depth = d;
+        s.max_depth = capped_depth(d, e.value.span, diags);
     }
     if let Some(e) = top.get(&["SuperSampling"], diags)
         && let Some(factor) = super_sampling(e.value, diags)
@@ -254,7 +251,25 @@ fn settings(top: &mut MapView<'_>, draft: &mut Draft, diags: &mut Diagnostics) {
     }
 }
 
-fn spelling(key: &Node, official: &str, diags: &mut Diagnostics) {
+/// A depth past [`MAX_DEPTH`] is read as the cap, with a warning: course files were written for
+/// renderers without one, and their images do not change past a few bounces.
+fn capped_depth(depth: u32, span: Span, diags: &mut Diagnostics) -> u32 {
+    if depth <= MAX_DEPTH {
+        return depth;
+    }
+    diags.push(
+        Diagnostic::warning(
+            "rtc::compat::capped",
+            span,
+            format!("`MaxRecursionDepth` {depth} is more than rtc traces; it traces {MAX_DEPTH}"),
+        )
+        .with_label(format!("read as {MAX_DEPTH}"))
+        .with_help(format!("write `MaxRecursionDepth: {MAX_DEPTH}` or less")),
+    );
+    MAX_DEPTH
+}
+
+fn spelling(key: &YamlNode, official: &str, diags: &mut Diagnostics) {
     let written = key.scalar().unwrap_or("");
     diags.push(
         Diagnostic::warning(
@@ -274,7 +289,7 @@ enum Mode {
     Gooch,
 }
 
-fn render_mode(node: &Node, diags: &mut Diagnostics) -> Option<Mode> {
+fn render_mode(node: &YamlNode, diags: &mut Diagnostics) -> Option<Mode> {
     let Some(text) = node.scalar().map(str::trim) else {
         diags.push(
             Diagnostic::error(
@@ -337,9 +352,15 @@ fn render_mode(node: &Node, diags: &mut Diagnostics) -> Option<Mode> {
     Some(mode)
 }
 
-fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
+fn super_sampling(node: &YamlNode, diags: &mut Diagnostics) -> Option<u32> {
     if node.scalar().is_some() {
-        let f = val::integer(node, "`SuperSampling`", 1, MAX_FACTOR, diags)?;
+        let f = val::integer(
+            node,
+            "`SuperSampling`",
+            1,
+            MAX_PIXEL_SAMPLES_PER_AXIS,
+            diags,
+        )?;
         diags.push(
             Diagnostic::warning(
                 "rtc::yaml::spelling",
@@ -354,7 +375,7 @@ fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
     let mut m = MapView::new(node, "`SuperSampling`", diags)?;
     let factor = m
         .require(&["factor"], "`SuperSampling`", "factor: 4", diags)
-        .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_FACTOR, diags));
+        .and_then(|e| val::integer(e.value, "`factor`", 1, MAX_PIXEL_SAMPLES_PER_AXIS, diags));
     if let Some(p) = m.get(&["pattern"], diags)
         && !p
             .value
@@ -377,7 +398,7 @@ fn super_sampling(node: &Node, diags: &mut Diagnostics) -> Option<u32> {
     factor
 }
 
-fn gooch(node: &Node, used: bool, diags: &mut Diagnostics) -> Option<GoochParams> {
+fn gooch(node: &YamlNode, used: bool, diags: &mut Diagnostics) -> Option<GoochParams> {
     let mut m = MapView::new(node, "`GoochParameters`", diags)?;
     let mut p = GoochParams::default();
     for (name, slot) in [

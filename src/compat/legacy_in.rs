@@ -7,7 +7,7 @@ use std::path::Path;
 
 use glam::DVec3;
 
-use crate::compat::build::{self, CourseMaterial, Draft};
+use crate::compat::course::{self, CourseMaterial, Draft};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{Light, LightKind};
 use crate::source::{FileId, Span};
@@ -266,7 +266,7 @@ impl<'t> Reader<'t, '_> {
                 let refract = extra[1].unwrap_or(0.0);
                 let eta = extra[2].unwrap_or(1.0);
                 if refract > 0.0 && eta <= 0.0 {
-                    self.diags.push(build::out_of_range(
+                    self.diags.push(course::out_of_range(
                         span,
                         &eta.to_string(),
                         "eta",
@@ -292,7 +292,7 @@ impl<'t> Reader<'t, '_> {
                 let span = kw.join(self.span(self.pos, self.pos));
                 if r <= 0.0 {
                     self.diags
-                        .push(build::out_of_range(r_span, text, "radius", "positive"));
+                        .push(course::out_of_range(r_span, text, "radius", "positive"));
                     return Ok(());
                 }
                 let Some(material) = &self.material else {
@@ -304,10 +304,8 @@ impl<'t> Reader<'t, '_> {
                     return Ok(());
                 };
                 let id = draft.scene.add_material(material.to_ir());
-                draft
-                    .scene
-                    .objects
-                    .push(build::sphere_object(center, r, None, Some(id), span));
+                let sphere = course::sphere_object(center, r, None, Some(id), span);
+                draft.scene.objects.push(sphere);
             }
         }
         Ok(())
@@ -330,7 +328,7 @@ impl<'t> Reader<'t, '_> {
         let (text, v, span) = self.number(kind, kw, what)?;
         if v < 0.0 {
             self.diags
-                .push(build::out_of_range(span, text, what, "0 or more"));
+                .push(course::out_of_range(span, text, what, "0 or more"));
         }
         Ok(v)
     }
@@ -414,7 +412,7 @@ impl<'t> Reader<'t, '_> {
             );
             return Err(Failed);
         };
-        match build::check_number(word, value, span, what, self.diags) {
+        match course::check_number(word, value, span, what, self.diags) {
             Some(v) => Ok((word, v, span)),
             None => Err(Failed),
         }

@@ -4,15 +4,19 @@
 //! Mapping decisions (COURSE.md §4): the course camera ([`crate::ir::Projection::Course`]; no
 //! `Camera` means eye = `Eye`, centre (200, 200, 0), up +Y, 400×400); `reflect = ks` unless the
 //! file gives `reflect`; ambient per light; textured spheres sit at the origin with
-//! [`build::sphere_orientation`]; assets resolve next to the scene, then in the working directory.
+//! [`course::sphere_orientation`]; assets resolve in the asset service's one search order
+//! (`assets::search`).
 //!
 //! Diagnostic codes: `rtc::io` (unreadable file); `rtc::in::{unknown_record, expected_record,
 //! expected_number, extra_number, truncated, unclosed, no_material, duplicate_eye}`;
 //! `rtc::yaml::{syntax, empty, extra_document, too_large, type, arity, missing_key, duplicate_key,
 //! unknown_key, spelling, unknown_value, unknown_object, unused}`; shared `rtc::compat::{not_finite,
-//! out_of_range, degenerate, missing_file, no_camera, camera_override, encoding}`.
+//! out_of_range, degenerate, no_camera, camera_override, encoding, capped}`; the asset
+//! service's `rtc::asset::missing` for a texture or mesh file that is not found. Shapes are
+//! checked by geometry's rules when the scene is prepared (`rtc::param::*`, the codes the scene
+//! language uses), not here: one home for shape validity.
 
-pub mod build;
+pub mod course;
 pub mod course_yaml;
 pub mod legacy_in;
 pub mod spans;
@@ -23,7 +27,7 @@ pub mod yaml_values;
 use std::path::Path;
 
 use crate::diag::{Diagnostic, Diagnostics, Severity};
-use crate::frontend::Loaded;
+use crate::ir::Loaded;
 use crate::source::{FileId, SourceMap, Span};
 
 pub use spans::erase_spans;
@@ -54,7 +58,7 @@ pub fn load_yaml(path: &Path, sources: &mut SourceMap) -> Loaded {
 pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loaded {
     let file = sources.add(path, text);
     let mut diags = Diagnostics::default();
-    let mut draft = build::Draft::default();
+    let mut draft = course::Draft::default();
     legacy_in::parse(text, file, path, &mut draft, &mut diags);
     let scene = draft.finish(
         start_of(file),
@@ -100,7 +104,7 @@ fn read(path: &Path) -> Result<(String, Option<usize>), Loaded> {
         diagnostics.push(
             Diagnostic::new(
                 Severity::Error,
-                "rtc::io",
+                crate::diag::IO_ERROR,
                 None,
                 format!("cannot read `{}`: {e}", path.display()),
             )

@@ -6,8 +6,8 @@ use std::path::Path;
 
 use glam::{DAffine3, DVec3};
 
-use crate::compat::build::{self, CourseMaterial, SceneParts};
-use crate::compat::yaml_tree::{Node, NodeKind};
+use crate::compat::course::{self, CourseMaterial, SceneParts};
+use crate::compat::yaml_tree::{YamlKind, YamlNode};
 use crate::compat::yaml_values::{self as val, MapView, Triple};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::ir::{Mapping, MaterialId, Object, Shape, Texture};
@@ -20,7 +20,7 @@ const MATERIAL_KEYS: &[&str] = &[
 ];
 
 /// Reads one entry of `Objects` into `parts`; unknown types are skipped with a warning.
-pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
     let Some(mut m) = MapView::new(node, "an object", diags) else {
         return;
     };
@@ -66,7 +66,7 @@ pub fn object(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Dia
 }
 
 /// Reads one entry of the student `Models` list (a mesh without a `type` key).
-pub fn model(node: &Node, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub fn model(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
     if let Some(m) = MapView::new(node, "a model", diags) {
         mesh(m, node, scene, parts, diags, false);
     }
@@ -122,7 +122,7 @@ fn direction(
 
 fn sphere(
     mut m: MapView<'_>,
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
@@ -160,23 +160,18 @@ fn sphere(
         .is_some_and(|mat| mat.texture.is_some());
     let orientation = (pole.is_some() || angle.is_some() || textured)
         .then(|| (pole.unwrap_or(DVec3::Y), angle.unwrap_or(0.0)));
-    parts.objects.push(build::sphere_object(
-        position,
-        radius,
-        orientation,
-        Some(material),
-        node.span,
-    ));
+    let sphere = course::sphere_object(position, radius, orientation, Some(material), node.span);
+    parts.objects.push(sphere);
 }
 
 /// `radius: r` or `radius: [r, [x, y, z]]` (the list form also gives the texture's north pole).
-fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Option<f64> {
+fn radius(node: &YamlNode, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Option<f64> {
     match &node.kind {
-        NodeKind::Seq(items) if items.len() == 2 => {
+        YamlKind::Seq(items) if items.len() == 2 => {
             *pole = pole_vector(&items[1], diags);
             val::positive(&items[0], "the radius", diags)
         }
-        NodeKind::Seq(items) => {
+        YamlKind::Seq(items) => {
             diags.push(
                 Diagnostic::error(
                     "rtc::yaml::arity",
@@ -192,7 +187,7 @@ fn radius(node: &Node, pole: &mut Option<DVec3>, diags: &mut Diagnostics) -> Opt
     }
 }
 
-fn pole_vector(node: &Node, diags: &mut Diagnostics) -> Option<DVec3> {
+fn pole_vector(node: &YamlNode, diags: &mut Diagnostics) -> Option<DVec3> {
     let v = val::triple(node, "the pole", Triple::Point, diags)?;
     if v.length() == 0.0 {
         diags.push(
@@ -228,16 +223,8 @@ fn plane(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 }
 
 fn aabb(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
-    let head = m.head();
     let min = point(m, &["min"], "this box", diags)?;
     let max = point(m, &["max"], "this box", diags)?;
-    if min.cmpge(max).any() {
-        diags.push(
-            Diagnostic::error("rtc::compat::degenerate", head, "the box is empty")
-                .with_label("every coordinate of `min` must be below the one of `max`"),
-        );
-        return None;
-    }
     Some(Shape::Box { min, max })
 }
 
@@ -271,24 +258,12 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 }
 
 fn cylinder(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
-    let head = m.head();
     let base = point(m, &["p1", "center1", "base"], "this cylinder", diags);
     let top = point(m, &["p2", "center2", "top"], "this cylinder", diags);
     let radius = m
         .require(&["radius", "r"], "this cylinder", "radius: 25", diags)
         .and_then(|e| val::positive(e.value, "the radius", diags));
     let (base, top, radius) = (base?, top?, radius?);
-    if base == top {
-        diags.push(
-            Diagnostic::error(
-                "rtc::compat::degenerate",
-                head,
-                "the cylinder has no length",
-            )
-            .with_label("its two end points are the same"),
-        );
-        return None;
-    }
     Some(Shape::Cylinder {
         base,
         top,
@@ -301,7 +276,7 @@ fn cylinder(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
 /// material the OBJ's own MTL materials are used.
 fn mesh(
     mut m: MapView<'_>,
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     parts: &mut SceneParts,
     diags: &mut Diagnostics,
@@ -310,13 +285,7 @@ fn mesh(
     let file = m.require(&["file", "filename"], "this mesh", "file: model.obj", diags);
     let path = file.and_then(|e| {
         let name = val::string(e.value, "`file`", diags)?;
-        match build::resolve_asset(scene, name) {
-            Ok(p) => Some(p),
-            Err(tried) => {
-                diags.push(build::missing_asset(e.value.span, name, "mesh", &tried));
-                None
-            }
-        }
+        course::find_asset(scene, name, e.value.span, "mesh", diags)
     });
     let position = match m.get(&["position"], diags) {
         Some(e) => val::triple(e.value, "`position`", Triple::Point, diags),
@@ -324,7 +293,7 @@ fn mesh(
     };
     let scale = match m.get(&["scale", "size"], diags) {
         Some(e) => match &e.value.kind {
-            NodeKind::Seq(_) => val::triple(e.value, "`scale`", Triple::Point, diags),
+            YamlKind::Seq(_) => val::triple(e.value, "`scale`", Triple::Point, diags),
             _ => val::positive(e.value, "`scale`", diags).map(DVec3::splat),
         },
         None => Some(DVec3::ONE),
@@ -344,7 +313,7 @@ fn mesh(
         return;
     };
     if scale.min_element() <= 0.0 {
-        diags.push(build::out_of_range(
+        diags.push(course::out_of_range(
             node.span,
             &format!("{scale}"),
             "the mesh scale",
@@ -352,7 +321,7 @@ fn mesh(
         ));
         return;
     }
-    parts.objects.push(Object {
+    let mesh = Object {
         shape: Shape::Mesh {
             path,
             smooth: false,
@@ -365,7 +334,8 @@ fn mesh(
         ),
         material,
         span: node.span,
-    });
+    };
+    parts.objects.push(mesh);
 }
 
 /// The required `material:` of an object; `None` after an error.
@@ -383,7 +353,7 @@ fn material_entry(
 
 /// A course material map: `color` or `texture`, `ka kd ks n`, optional `reflect refract eta`.
 fn material(
-    node: &Node,
+    node: &YamlNode,
     scene: &Path,
     mapping: Mapping,
     parts: &mut SceneParts,
@@ -421,17 +391,12 @@ fn material(
     }
     let texture = texture.and_then(|e| {
         let name = val::string(e.value, "`texture`", diags)?;
-        match build::resolve_asset(scene, name) {
-            Ok(path) => Some(parts.add_texture(Texture::Image {
-                path,
-                mapping,
-                span: e.value.span,
-            })),
-            Err(tried) => {
-                diags.push(build::missing_asset(e.value.span, name, "texture", &tried));
-                None
-            }
-        }
+        let path = course::find_asset(scene, name, e.value.span, "texture", diags)?;
+        Some(parts.add_texture(Texture::Image {
+            path,
+            mapping,
+            span: e.value.span,
+        }))
     });
     let coef = |m: &mut MapView<'_>, name: &str, example: &str, diags: &mut Diagnostics| {
         m.require(&[name], "the material", example, diags)
@@ -474,7 +439,7 @@ fn material(
         let span = eta_entry.map_or(node.span, |e| e.value.span);
         let text = format!("{eta}");
         if refract > 0.0 {
-            diags.push(build::out_of_range(
+            diags.push(course::out_of_range(
                 span,
                 &text,
                 "`eta`",

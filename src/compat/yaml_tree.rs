@@ -14,16 +14,16 @@ const MAX_NODES: usize = 1_000_000;
 
 /// One YAML node with its span.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Node {
+pub struct YamlNode {
     /// What the node holds.
-    pub kind: NodeKind,
+    pub kind: YamlKind,
     /// Where it was written.
     pub span: Span,
 }
 
 /// The three YAML node shapes.
 #[derive(Clone, Debug, PartialEq)]
-pub enum NodeKind {
+pub enum YamlKind {
     /// A scalar's text after escape processing; `quoted` is false for plain scalars.
     Scalar {
         /// The text.
@@ -33,26 +33,26 @@ pub enum NodeKind {
         quoted: bool,
     },
     /// A sequence.
-    Seq(Vec<Node>),
+    Seq(Vec<YamlNode>),
     /// A mapping, in source order (duplicates kept; the reader reports them).
-    Map(Vec<(Node, Node)>),
+    Map(Vec<(YamlNode, YamlNode)>),
 }
 
-impl Node {
+impl YamlNode {
     /// A short description of the node's shape for messages ("a list", "a map", "`abc`").
     pub fn describe(&self) -> String {
         match &self.kind {
-            NodeKind::Scalar { text, .. } if text.is_empty() => "nothing".to_string(),
-            NodeKind::Scalar { text, .. } => format!("`{}`", shorten(text)),
-            NodeKind::Seq(items) => format!("a list of {}", items.len()),
-            NodeKind::Map(_) => "a map".to_string(),
+            YamlKind::Scalar { text, .. } if text.is_empty() => "nothing".to_string(),
+            YamlKind::Scalar { text, .. } => format!("`{}`", shorten(text)),
+            YamlKind::Seq(items) => format!("a list of {}", items.len()),
+            YamlKind::Map(_) => "a map".to_string(),
         }
     }
 
     /// The scalar text, if this is a scalar.
     pub fn scalar(&self) -> Option<&str> {
         match &self.kind {
-            NodeKind::Scalar { text, .. } => Some(text),
+            YamlKind::Scalar { text, .. } => Some(text),
             _ => None,
         }
     }
@@ -68,7 +68,7 @@ fn shorten(text: &str) -> String {
 
 /// The first document of a YAML text, or `None` after a syntax error (reported in `diags`).
 /// A second document is reported as a warning, as the course reader did.
-pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -> Option<Node> {
+pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -> Option<YamlNode> {
     let mut builder = Builder {
         text,
         file,
@@ -159,8 +159,14 @@ fn unclosed_bracket(text: &str) -> Option<usize> {
 }
 
 enum Open {
-    Seq(Vec<Node>, Span, usize, bool),
-    Map(Vec<(Node, Node)>, Option<Node>, Span, usize, bool),
+    Seq(Vec<YamlNode>, Span, usize, bool),
+    Map(
+        Vec<(YamlNode, YamlNode)>,
+        Option<YamlNode>,
+        Span,
+        usize,
+        bool,
+    ),
 }
 
 struct Builder<'t> {
@@ -168,9 +174,9 @@ struct Builder<'t> {
     file: FileId,
     stack: Vec<Open>,
     /// Anchored nodes with their subtree sizes.
-    anchors: HashMap<usize, (Node, usize)>,
+    anchors: HashMap<usize, (YamlNode, usize)>,
     nodes: usize,
-    root: Option<Node>,
+    root: Option<YamlNode>,
 }
 
 impl Builder<'_> {
@@ -197,8 +203,8 @@ impl Builder<'_> {
         match event {
             Event::Scalar(text, style, anchor, _) => {
                 let quoted = !matches!(style, ScalarStyle::Plain);
-                let node = Node {
-                    kind: NodeKind::Scalar {
+                let node = YamlNode {
+                    kind: YamlKind::Scalar {
                         text: text.into_owned(),
                         quoted,
                     },
@@ -222,8 +228,8 @@ impl Builder<'_> {
                         Some(n) => n.span,
                         None => start,
                     };
-                    let node = Node {
-                        kind: NodeKind::Seq(items),
+                    let node = YamlNode {
+                        kind: YamlKind::Seq(items),
                         span: start.join(end),
                     };
                     self.finish_node(node, anchor)?;
@@ -236,8 +242,8 @@ impl Builder<'_> {
                         Some((_, v)) => v.span,
                         None => start,
                     };
-                    let node = Node {
-                        kind: NodeKind::Map(entries),
+                    let node = YamlNode {
+                        kind: YamlKind::Map(entries),
                         span: start.join(end),
                     };
                     self.finish_node(node, anchor)?;
@@ -255,7 +261,7 @@ impl Builder<'_> {
                 let Some((target, _)) = self.anchors.get(&id) else {
                     return Ok(());
                 };
-                let node = Node {
+                let node = YamlNode {
                     kind: target.kind.clone(),
                     span,
                 };
@@ -281,7 +287,7 @@ impl Builder<'_> {
         Ok(())
     }
 
-    fn finish_node(&mut self, node: Node, anchor: usize) -> Result<(), Box<Diagnostic>> {
+    fn finish_node(&mut self, node: YamlNode, anchor: usize) -> Result<(), Box<Diagnostic>> {
         self.spend(1, node.span)?;
         if anchor != 0 {
             self.anchors
@@ -304,11 +310,11 @@ impl Builder<'_> {
 }
 
 /// Number of nodes in a subtree, for the alias-expansion budget.
-fn deep_count(node: &Node) -> usize {
+fn deep_count(node: &YamlNode) -> usize {
     match &node.kind {
-        NodeKind::Scalar { .. } => 1,
-        NodeKind::Seq(items) => 1 + items.iter().map(deep_count).sum::<usize>(),
-        NodeKind::Map(entries) => {
+        YamlKind::Scalar { .. } => 1,
+        YamlKind::Seq(items) => 1 + items.iter().map(deep_count).sum::<usize>(),
+        YamlKind::Map(entries) => {
             1 + entries
                 .iter()
                 .map(|(k, v)| deep_count(k) + deep_count(v))
@@ -321,7 +327,7 @@ fn deep_count(node: &Node) -> usize {
 mod tests {
     use super::*;
 
-    fn parse(text: &str) -> (Option<Node>, Diagnostics) {
+    fn parse(text: &str) -> (Option<YamlNode>, Diagnostics) {
         let mut diags = Diagnostics::default();
         let node = parse_first_document(text, FileId(0), &mut diags);
         (node, diags)
@@ -332,10 +338,10 @@ mod tests {
         let text = "Eye: [1, 2, 3]\nLights:\n- position: [4,5,6]\n";
         let (node, diags) = parse(text);
         assert!(diags.items.is_empty());
-        let NodeKind::Map(entries) = node.expect("a document").kind else {
+        let YamlKind::Map(entries) = node.expect("a document").kind else {
             panic!("not a map")
         };
-        let NodeKind::Seq(eye) = &entries[0].1.kind else {
+        let YamlKind::Seq(eye) = &entries[0].1.kind else {
             panic!("not a list")
         };
         let two = eye[1].span;

@@ -1,16 +1,16 @@
-//! Typed reads from [`Node`]s with precise diagnostics: numbers, integers, booleans, triples, and a
+//! Typed reads from [`YamlNode`]s with precise diagnostics: numbers, integers, booleans, triples, and a
 //! map view that tracks which keys were read (unread keys become warnings, as in pbrt).
 
 use glam::DVec3;
 
-use crate::compat::build;
-use crate::compat::yaml_tree::{Node, NodeKind};
+use crate::compat::course;
+use crate::compat::yaml_tree::{YamlKind, YamlNode};
 use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::source::Span;
 
 /// The keys of one YAML map, with the ones already read marked.
 pub struct MapView<'n> {
-    entries: &'n [(Node, Node)],
+    entries: &'n [(YamlNode, YamlNode)],
     used: Vec<bool>,
     /// Span of the whole map, for missing-key errors.
     pub span: Span,
@@ -19,15 +19,15 @@ pub struct MapView<'n> {
 /// A key that was found: its span and value.
 pub struct Entry<'n> {
     /// The key as written.
-    pub key: &'n Node,
+    pub key: &'n YamlNode,
     /// The value.
-    pub value: &'n Node,
+    pub value: &'n YamlNode,
 }
 
 impl<'n> MapView<'n> {
     /// Views a map node; anything else is reported (`what` names the expected map).
-    pub fn new(node: &'n Node, what: &str, diags: &mut Diagnostics) -> Option<MapView<'n>> {
-        let NodeKind::Map(entries) = &node.kind else {
+    pub fn new(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> Option<MapView<'n>> {
+        let YamlKind::Map(entries) = &node.kind else {
             diags.push(
                 Diagnostic::error(
                     "rtc::yaml::type",
@@ -173,7 +173,7 @@ impl<'n> MapView<'n> {
 }
 
 /// A number (any scalar style; the course reader converted quoted text too).
-pub fn number(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub fn number(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let not_a_number = |diags: &mut Diagnostics| {
         diags.push(
             Diagnostic::error(
@@ -198,14 +198,14 @@ pub fn number(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let Some(value) = value else {
         return not_a_number(diags);
     };
-    build::check_number(t, value, node.span, what, diags)
+    course::check_number(t, value, node.span, what, diags)
 }
 
 /// A number that must be 0 or more (coefficients).
-pub fn non_negative(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub fn non_negative(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let v = number(node, what, diags)?;
     if v < 0.0 {
-        diags.push(build::out_of_range(
+        diags.push(course::out_of_range(
             node.span,
             node.scalar().unwrap_or("").trim(),
             what,
@@ -217,10 +217,10 @@ pub fn non_negative(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<
 }
 
 /// A number that must be greater than 0 (radii, sizes).
-pub fn positive(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub fn positive(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let v = number(node, what, diags)?;
     if v <= 0.0 {
-        diags.push(build::out_of_range(
+        diags.push(course::out_of_range(
             node.span,
             node.scalar().unwrap_or("").trim(),
             what,
@@ -233,7 +233,7 @@ pub fn positive(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<f64>
 
 /// A whole number in `min..=max`.
 pub fn integer(
-    node: &Node,
+    node: &YamlNode,
     what: &str,
     min: u32,
     max: u32,
@@ -254,11 +254,15 @@ pub fn integer(
         return None;
     }
     if v < f64::from(min) || v > f64::from(max) {
-        diags.push(build::out_of_range(
+        diags.push(course::out_of_range(
             node.span,
             text,
             what,
-            &format!("between {min} and {max}"),
+            &if max == u32::MAX {
+                format!("at least {min}")
+            } else {
+                format!("between {min} and {max}")
+            },
         ));
         return None;
     }
@@ -266,7 +270,7 @@ pub fn integer(
 }
 
 /// `true`/`false` (also `yes`/`no`/`on`/`off`, any case, as YAML 1.1 readers took them).
-pub fn boolean(node: &Node, what: &str, diags: &mut Diagnostics) -> Option<bool> {
+pub fn boolean(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<bool> {
     let text = node.scalar().map(|t| t.trim().to_ascii_lowercase());
     match text.as_deref() {
         Some("true" | "yes" | "on") => Some(true),
@@ -299,8 +303,8 @@ pub enum Triple {
 }
 
 /// A list of exactly three numbers.
-pub fn triple(node: &Node, what: &str, kind: Triple, diags: &mut Diagnostics) -> Option<DVec3> {
-    let NodeKind::Seq(items) = &node.kind else {
+pub fn triple(node: &YamlNode, what: &str, kind: Triple, diags: &mut Diagnostics) -> Option<DVec3> {
+    let YamlKind::Seq(items) = &node.kind else {
         let example = if kind == Triple::Color {
             "[1, 0.5, 0]"
         } else {
@@ -353,7 +357,7 @@ pub fn triple(node: &Node, what: &str, kind: Triple, diags: &mut Diagnostics) ->
 }
 
 /// A scalar string.
-pub fn string<'n>(node: &'n Node, what: &str, diags: &mut Diagnostics) -> Option<&'n str> {
+pub fn string<'n>(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> Option<&'n str> {
     match node.scalar() {
         Some(t) if !t.trim().is_empty() => Some(t.trim()),
         _ => {

@@ -17,26 +17,26 @@ use super::value::{Closure, Record, Value};
 /// Evaluation state for one run (the scene file and everything it imports).
 pub struct Interp<'a> {
     /// Budgets.
-    pub opts: &'a EvalOptions,
+    pub(super) opts: &'a EvalOptions,
     /// Every file read so far.
-    pub sources: &'a mut SourceMap,
+    pub(super) sources: &'a mut SourceMap,
     /// Findings recorded so far (errors recovered at statement boundaries, warnings, prints).
-    pub diags: Vec<Diagnostic>,
+    pub(super) diags: Vec<Diagnostic>,
     warned: HashSet<(&'static str, Span)>,
     /// Local bindings of all active frames; the current frame starts at `frame_base`.
-    pub locals: Vec<(Sym, Value)>,
+    pub(super) locals: Vec<(Sym, Value)>,
     /// First local of the current function frame.
-    pub frame_base: usize,
+    pub(super) frame_base: usize,
     /// The module whose items are visible.
-    pub scope: Rc<Scope>,
+    pub(super) scope: Rc<Scope>,
     /// Loop iterations so far (budget).
-    pub loop_iters: u64,
+    pub(super) loop_iters: u64,
     /// Nested user calls (budget).
-    pub depth: u32,
+    pub(super) depth: u32,
     /// Evaluated modules by key (`std.x` or resolved path).
-    pub modules: HashMap<PathBuf, Rc<Module>>,
+    pub(super) modules: HashMap<PathBuf, Rc<Module>>,
     /// Modules being evaluated, outermost first, with the import that started each (cycles).
-    pub loading: Vec<(PathBuf, Span)>,
+    pub(super) loading: Vec<(PathBuf, Span)>,
 }
 
 impl<'a> Interp<'a> {

@@ -230,7 +230,7 @@ impl Lowerer {
                 s.default_material = r.material.as_ref().map(|m| self.material(m));
                 s
             }
-            None => super::builtins::language_settings(),
+            None => ir::RenderSettings::language_defaults(),
         };
         Ok(ir::Scene {
             camera,

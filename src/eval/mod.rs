@@ -1,30 +1,30 @@
 //! Evaluation of `.rtc` files to the IR: names, types, loops, functions, modules, budgets.
 
-pub mod assets;
-pub mod bounds;
-pub mod builtins;
-pub mod call;
-pub mod error;
-pub mod fxhash;
-pub mod interp;
-pub mod lower;
-pub mod members;
-pub mod methods;
+pub(crate) mod assets;
+pub(crate) mod bounds;
+pub(crate) mod builtins;
+pub(crate) mod call;
+pub(crate) mod error;
+pub(crate) mod fxhash;
+pub(crate) mod interp;
+pub(crate) mod lower;
+pub(crate) mod members;
+pub(crate) mod methods;
 pub mod modules;
-pub mod ops;
-pub mod program;
+pub(crate) mod ops;
+pub(crate) mod program;
 pub mod rng;
-pub mod shapes;
-pub mod transform;
-pub mod types;
-pub mod value;
-pub mod with;
+pub(crate) mod shapes;
+pub(crate) mod transform;
+pub(crate) mod types;
+pub(crate) mod value;
+pub(crate) mod with;
 
 use std::path::Path;
 use std::rc::Rc;
 
 use crate::diag::{Diagnostic, Severity};
-use crate::frontend::Loaded;
+use crate::ir::Loaded;
 use crate::source::SourceMap;
 
 /// Budgets that keep evaluation finite; each overrun is a clear error.
@@ -67,7 +67,7 @@ pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) ->
             loaded.diagnostics.push(
                 Diagnostic::new(
                     Severity::Error,
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     None,
                     format!("cannot read `{}`: {e}", path.display()),
                 )
@@ -133,7 +133,7 @@ pub fn load_source(
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
             .unwrap_or_else(|_| {
                 Loaded::failure(
-                    crate::frontend::IO_ERROR,
+                    crate::diag::IO_ERROR,
                     "cannot start the evaluation thread",
                     "free some memory and retry",
                 )

@@ -123,18 +123,5 @@ pub fn std_modules_exporting(name: &str) -> Vec<&'static str> {
 /// Resolves `rel` against `dir` without touching the file system (paths stay as the user would
 /// write them, so messages are stable).
 pub fn resolve(dir: &Path, rel: &str) -> PathBuf {
-    let joined = dir.join(rel);
-    let mut out = PathBuf::new();
-    for c in joined.components() {
-        match c {
-            std::path::Component::CurDir => {}
-            std::path::Component::ParentDir
-                if out.file_name().is_some() && !out.ends_with("..") =>
-            {
-                out.pop();
-            }
-            other => out.push(other.as_os_str()),
-        }
-    }
-    out
+    crate::assets::search::join(dir, rel)
 }

@@ -4,7 +4,7 @@ use std::rc::Rc;
 
 use glam::{DAffine3, DVec3};
 
-use super::builtins::{BuiltinFn, Params, check, positive};
+use super::builtins::{BuiltinFn, Params, positive};
 use super::call::{ArgVal, CallSite};
 use super::error::{R, error};
 use super::interp::Interp;
@@ -32,6 +32,20 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("intersection", intersection),
     ("difference", difference),
 ];
+
+/// Checks a shape by geometry's rules (the one home of shape validity, `geometry::shape`) and
+/// makes it a value; a flaw is reported on the span of the parameter it blames (from `spans`),
+/// else on the call.
+fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
+    if let Err(flaw) = crate::geometry::shape::check(&shape) {
+        let span = spans
+            .iter()
+            .find(|(name, _)| *name == flaw.param)
+            .map_or(s.span, |(_, sp)| *sp);
+        return Err(flaw.diagnostic(span).into());
+    }
+    Ok(prim(shape, s.span))
+}
 
 fn prim(shape: Shape, span: Span) -> Value {
     Value::Object(Rc::new(Obj {
@@ -66,15 +80,14 @@ fn sphere(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["center", "radius"], a)?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
-    positive("radius", radius, rs)?;
-    Ok(prim(Shape::Sphere { center, radius }, s.span))
+    checked(Shape::Sphere { center, radius }, s, &[("radius", rs)])
 }
 
 fn plane(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["point", "normal"], a)?;
     let point = p.vec3_or(it, "point", DVec3::ZERO)?;
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
-    Ok(prim(Shape::Plane { point, normal }, s.span))
+    checked(Shape::Plane { point, normal }, s, &[])
 }
 
 fn box_(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -84,21 +97,7 @@ fn box_(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Some((v, sp)) => (types::vec3(it, &v, sp)?, sp),
         None => (DVec3::splat(0.5), s.span),
     };
-    if !max.cmpgt(min).all() {
-        return Err(error(
-            "rtc::param::out_of_range",
-            ms,
-            "`max` must be greater than `min` on every axis",
-        )
-        .with_label(format!(
-            "max = {} but min = {}",
-            Value::Vec3(max).show(),
-            Value::Vec3(min).show()
-        ))
-        .with_help("swap the corners or fix the smaller coordinate")
-        .into());
-    }
-    Ok(prim(Shape::Box { min, max }, s.span))
+    checked(Shape::Box { min, max }, s, &[("max", ms)])
 }
 
 fn triangle(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -106,20 +105,13 @@ fn triangle(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (va, _) = p.vec3(it, "a")?;
     let (vb, _) = p.vec3(it, "b")?;
     let (vc, cs) = p.vec3(it, "c")?;
-    if (vb - va).cross(vc - va).length_squared() == 0.0 {
-        return Err(
-            error("rtc::param::degenerate", cs, "the triangle has zero area")
-                .with_label("its corners lie on one line")
-                .with_help("move one corner off the line through the other two")
-                .into(),
-        );
-    }
-    Ok(prim(
+    checked(
         Shape::Triangle {
             vertices: [va, vb, vc],
         },
-        s.span,
-    ))
+        s,
+        &[("c", cs)],
+    )
 }
 
 fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -127,15 +119,7 @@ fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let corner = p.vec3_or(it, "corner", DVec3::ZERO)?;
     let (u, _) = p.vec3(it, "u")?;
     let (v, vs) = p.vec3(it, "v")?;
-    if u.cross(v).length_squared() == 0.0 {
-        return Err(
-            error("rtc::param::degenerate", vs, "the quad has zero area")
-                .with_label("`u` and `v` are parallel or zero")
-                .with_help("use two edges that span a parallelogram")
-                .into(),
-        );
-    }
-    Ok(prim(Shape::Quad { corner, u, v }, s.span))
+    checked(Shape::Quad { corner, u, v }, s, &[("v", vs)])
 }
 
 fn polygon(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -145,21 +129,11 @@ fn polygon(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Value::List(l) => l.to_vec(),
         other => return Err(types::mismatch(it, "List", other, sp).into()),
     };
-    if items.len() < 3 {
-        return Err(error(
-            "rtc::param::out_of_range",
-            sp,
-            format!("a polygon needs at least 3 points, found {}", items.len()),
-        )
-        .with_label("too few points")
-        .with_help("list three or more corners")
-        .into());
-    }
     let mut points = Vec::with_capacity(items.len());
     for x in &items {
         points.push(types::vec3(it, x, sp)?);
     }
-    Ok(prim(Shape::Polygon { points }, s.span))
+    checked(Shape::Polygon { points }, s, &[("points", sp)])
 }
 
 fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -167,19 +141,20 @@ fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
-    positive("radius", radius, rs)?;
-    Ok(prim(
+    checked(
         Shape::Disk {
             center,
             normal,
             radius,
         },
-        s.span,
-    ))
+        s,
+        &[("radius", rs)],
+    )
 }
 
-/// Reads `base`/`top`, or `center`/`axis`/`height` (centred on `center` along `axis`).
-fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3)> {
+/// Reads `base`/`top`, or `center`/`axis`/`height` (centred on `center` along `axis`), with the
+/// span to blame for the top.
+fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
     let base = p.get("base");
     let top = p.get("top");
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
@@ -189,25 +164,20 @@ fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3)> {
     Ok(match (base, top) {
         (Some((b, bs)), Some((t, ts))) => {
             let (b, t) = (types::vec3(it, &b, bs)?, types::vec3(it, &t, ts)?);
-            if b == t {
-                return Err(error("rtc::param::degenerate", ts, "`top` equals `base`")
-                    .with_label("zero height")
-                    .with_help("move `top` away from `base`")
-                    .into());
-            }
-            (b, t)
+            (b, t, ts)
         }
         (Some((b, bs)), None) => {
             let b = types::vec3(it, &b, bs)?;
-            (b, b + axis * height)
+            (b, b + axis * height, hs)
         }
         (None, Some((t, ts))) => {
             let t = types::vec3(it, &t, ts)?;
-            (t - axis * height, t)
+            (t - axis * height, t, ts)
         }
         (None, None) => (
             center - axis * (height / 2.0),
             center + axis * (height / 2.0),
+            hs,
         ),
     })
 }
@@ -221,18 +191,18 @@ fn cylinder(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         a,
     )?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
-    positive("radius", radius, rs)?;
-    let (base, top) = ends(it, &mut p)?;
+    let (base, top, top_span) = ends(it, &mut p)?;
     let capped = p.bool_or(it, "capped", true)?;
-    Ok(prim(
+    checked(
         Shape::Cylinder {
             base,
             top,
             radius,
             capped,
         },
-        s.span,
-    ))
+        s,
+        &[("radius", rs), ("top", top_span)],
+    )
 }
 
 fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -252,21 +222,9 @@ fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )?;
     let (br, bs) = p.num_or(it, "base_radius", 1.0)?;
     let (tr, ts) = p.num_or(it, "top_radius", 0.0)?;
-    check(br >= 0.0, "base_radius", ">= 0", br, bs)?;
-    check(tr >= 0.0, "top_radius", ">= 0", tr, ts)?;
-    if br == 0.0 && tr == 0.0 {
-        return Err(error(
-            "rtc::param::degenerate",
-            bs,
-            "a cone needs a non-zero radius at one end",
-        )
-        .with_label("both radii are 0")
-        .with_help("set `base_radius` greater than 0")
-        .into());
-    }
-    let (base, top) = ends(it, &mut p)?;
+    let (base, top, top_span) = ends(it, &mut p)?;
     let capped = p.bool_or(it, "capped", true)?;
-    Ok(prim(
+    checked(
         Shape::Cone {
             base,
             top,
@@ -274,32 +232,25 @@ fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             top_radius: tr,
             capped,
         },
-        s.span,
-    ))
+        s,
+        &[("base_radius", bs), ("top_radius", ts), ("top", top_span)],
+    )
 }
 
 fn torus(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["major_radius", "minor_radius", "center"], a)?;
     let (major, ms) = p.num(it, "major_radius")?;
     let (minor, ns) = p.num(it, "minor_radius")?;
-    positive("major_radius", major, ms)?;
-    positive("minor_radius", minor, ns)?;
-    check(
-        minor < major,
-        "minor_radius",
-        &format!("< major_radius ({})", super::value::fmt_f(major)),
-        minor,
-        ns,
-    )?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    Ok(prim(
+    checked(
         Shape::Torus {
             center,
             major_radius: major,
             minor_radius: minor,
         },
-        s.span,
-    ))
+        s,
+        &[("major_radius", ms), ("minor_radius", ns)],
+    )
 }
 
 fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -308,16 +259,6 @@ fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let Value::List(items) = &v else {
         return Err(types::mismatch(it, "List", &v, sp).into());
     };
-    if items.is_empty() {
-        return Err(error(
-            "rtc::param::out_of_range",
-            sp,
-            "a blob needs at least one component",
-        )
-        .with_label("empty list")
-        .with_help("add `{ center: [0, 0, 0], radius: 1, strength: 1 }`")
-        .into());
-    }
     let mut components = Vec::with_capacity(items.len());
     for c in items.iter() {
         let site = CallSite {
@@ -331,8 +272,7 @@ fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
         let mut cp = Params::new(site, &["center", "radius", "strength"], vec![arg])?;
         let center = cp.vec3_or(it, "center", DVec3::ZERO)?;
-        let (radius, rs) = cp.num_or(it, "radius", 1.0)?;
-        positive("radius", radius, rs)?;
+        let (radius, _) = cp.num_or(it, "radius", 1.0)?;
         let (strength, _) = cp.num_or(it, "strength", 1.0)?;
         components.push(BlobComponent {
             center,
@@ -341,14 +281,19 @@ fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         });
     }
     let (threshold, ts) = p.num_or(it, "threshold", 0.5)?;
-    positive("threshold", threshold, ts)?;
-    Ok(prim(
+    checked(
         Shape::Blob {
             components,
             threshold,
         },
-        s.span,
-    ))
+        s,
+        &[
+            ("components", sp),
+            ("radius", sp),
+            ("strength", sp),
+            ("threshold", ts),
+        ],
+    )
 }
 
 fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -429,19 +374,8 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
-    if children.len() < 2 {
-        return Err(error(
-            "rtc::csg::operands",
-            sp,
-            format!(
-                "`{}` needs at least two objects, found {}",
-                s.name,
-                children.len()
-            ),
-        )
-        .with_label("too few operands")
-        .with_help("pass a list of two or more objects")
-        .into());
+    if let Err(flaw) = crate::geometry::shape::csg_operands(children.len()) {
+        return Err(flaw.diagnostic(sp).into());
     }
     for c in &children {
         require_closed(it, c, sp)?;
@@ -483,17 +417,13 @@ fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     csg_node(it, CsgOp::Difference, children, sp, s)
 }
 
-/// CSG needs solids with an inside: open surfaces are rejected.
+/// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
+/// `geometry::shape::encloses_volume`).
 pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {
-        ObjShape::Prim(
-            Shape::Triangle { .. }
-            | Shape::Quad { .. }
-            | Shape::Polygon { .. }
-            | Shape::Disk { .. },
-        ) => true,
-        ObjShape::Prim(Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. }) => !capped,
+        // A mesh file's closedness is checked when the preparation stage loads it.
+        ObjShape::Prim(s) => !crate::geometry::shape::encloses_volume(s, &|_, _| true),
         ObjShape::Group(ch) => {
             for c in ch.iter() {
                 require_closed(it, c, span)?;

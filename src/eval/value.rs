@@ -354,14 +354,7 @@ pub fn obj_kind(o: &Obj) -> &'static str {
 
 /// Formats a float without noise: integers without a fraction, otherwise up to 6 digits.
 pub fn fmt_f(f: f64) -> String {
-    if f == f.trunc() && f.abs() < 1e15 {
-        format!("{}", f as i64)
-    } else if f.abs() >= 1e15 {
-        format!("{f:e}")
-    } else {
-        let s = format!("{f:.6}");
-        s.trim_end_matches('0').trim_end_matches('.').to_owned()
-    }
+    crate::diag::number(f)
 }
 
 /// "an `Int`", "a `Float`": a type name with its article, for messages.

@@ -31,7 +31,7 @@ pub const MAX_PRIMITIVES: usize = 1 << LEAF_START_BITS;
 
 /// One node: eight child boxes as structure-of-arrays and eight child references.
 #[derive(Clone, Debug)]
-pub(super) struct Node {
+pub(super) struct WideNode {
     /// Child box planes: `planes[axis]` the minima and `planes[3 + axis]` the maxima, each as
     /// two 4-lane vectors (lanes 0–3 and 4–7), so the node test is plain SSE.
     pub planes: [[Vec4; 2]; 6],
@@ -39,10 +39,10 @@ pub(super) struct Node {
     pub child: [u32; WIDTH],
 }
 
-impl Node {
-    fn empty() -> Node {
+impl WideNode {
+    fn empty() -> WideNode {
         let (lo, hi) = (Vec4::splat(f32::INFINITY), Vec4::splat(f32::NEG_INFINITY));
-        Node {
+        WideNode {
             planes: [[lo; 2], [lo; 2], [lo; 2], [hi; 2], [hi; 2], [hi; 2]],
             child: [EMPTY; WIDTH],
         }
@@ -73,7 +73,7 @@ pub(super) fn leaf_range(child: u32) -> std::ops::Range<usize> {
 /// A wide BVH over a list of boxes; primitive slots in callbacks index [`Bvh::order`].
 #[derive(Clone, Debug)]
 pub struct Bvh {
-    pub(super) nodes: Vec<Node>,
+    pub(super) nodes: Vec<WideNode>,
     /// The caller's primitive index for each BVH slot (leaves hold contiguous slot ranges).
     pub order: Vec<u32>,
     /// Time spent building.
@@ -97,7 +97,7 @@ pub struct BvhRay {
     pub(super) origin: [Vec4; 3],
     /// Safe reciprocal direction, splatted likewise.
     pub(super) inv: [Vec4; 3],
-    /// Per axis, the index into [`Node::planes`] of the slab the ray enters by (the minimum
+    /// Per axis, the index into [`WideNode::planes`] of the slab the ray enters by (the minimum
     /// for a forward axis, the maximum for a backward one); the exit slab is the other.
     pub(super) entry_plane: [usize; 3],
     pub(super) t_min: f32,
@@ -188,15 +188,15 @@ impl Bvh {
 
     /// Approximate heap bytes.
     pub fn memory(&self) -> usize {
-        self.nodes.len() * std::mem::size_of::<Node>() + self.order.len() * 4
+        self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
     }
 }
 
 /// Collapses a binary tree (root at 0, children of an inner node at `first_index` and
 /// `first_index + 1`) into wide nodes, breadth first: each wide node takes the binary node's
 /// children and keeps opening its largest inner child until it has [`WIDTH`] of them.
-fn collapse(bin: &[obvhs::bvh2::node::Bvh2Node]) -> Vec<Node> {
-    let mut out = vec![Node::empty()];
+fn collapse(bin: &[obvhs::bvh2::node::Bvh2Node]) -> Vec<WideNode> {
+    let mut out = vec![WideNode::empty()];
     let Some(root) = bin.first() else {
         return Vec::new();
     };
@@ -233,7 +233,7 @@ fn collapse(bin: &[obvhs::bvh2::node::Bvh2Node]) -> Vec<Node> {
             out[w].child[lane] = if node.is_leaf() {
                 leaf_child(node)
             } else {
-                out.push(Node::empty());
+                out.push(WideNode::empty());
                 let id = out.len() - 1;
                 work.push_back((k, id));
                 id as u32

@@ -4,7 +4,7 @@
 
 use glam::Vec4;
 
-use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, Node, WIDTH, leaf_range};
+use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, WIDTH, WideNode, leaf_range};
 
 /// Slab distances are rounded in f32; widening the exit by a few ulps (Ize 2013, 1 + 2γ₃)
 /// keeps a box that the exact ray grazes from being culled. (A negative exit is narrowed
@@ -17,7 +17,7 @@ const STACK: usize = 48;
 /// Entry distances of the eight children and the mask of those the ray meets in
 /// `[ray.t_min, t_max]`.
 #[inline(always)]
-fn test(node: &Node, ray: &BvhRay, t_max: f32) -> ([f32; WIDTH], u32) {
+fn test(node: &WideNode, ray: &BvhRay, t_max: f32) -> ([f32; WIDTH], u32) {
     let mut near = [Vec4::splat(ray.t_min); 2];
     let mut far = [Vec4::splat(t_max); 2];
     for axis in 0..3 {

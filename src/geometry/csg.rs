@@ -1,14 +1,16 @@
-//! Constructive solid geometry: classification along the whole ray.
+//! Constructive solid geometry: the rules, apart from the objects they combine.
 //!
 //! Every operand reports all its boundary crossings along the ray's line (not only the first
 //! hit) with whether the ray enters or leaves there, and whether the line starts inside it (a
 //! half-space can). Walking the merged crossings in order keeps each operand's inside state;
 //! wherever the combined state flips, the node itself has a boundary. States are *set* from
 //! `entering`, not toggled, so a crossing reported twice (a mesh edge shared by two
-//! triangles) cannot corrupt the classification.
+//! triangles) cannot corrupt the classification. The traversal that gathers the crossings is
+//! `Primitive`'s; this file holds the membership, boundary and bounds rules.
 
-use super::Ray;
-use super::node::{GeoHit, Node, NodeCrossing};
+use glam::DVec3;
+
+use super::Aabb;
 use crate::ir::CsgOp;
 
 /// Combines operand memberships under `op` (for `Difference` the first is the base).
@@ -20,57 +22,88 @@ pub fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
     }
 }
 
-/// The node's own boundary crossings along the whole line, in order.
-pub fn crossings(op: CsgOp, children: &[Node], ray: &Ray, out: &mut Vec<NodeCrossing>) {
-    let mut all: Vec<(usize, NodeCrossing)> = Vec::new();
-    let mut tmp = Vec::new();
-    for (i, c) in children.iter().enumerate() {
-        tmp.clear();
-        c.crossings(ray, &mut tmp);
-        all.extend(tmp.iter().map(|x| (i, *x)));
-    }
-    all.sort_by(|a, b| a.1.hit.t.total_cmp(&b.1.hit.t));
-    let mut states: Vec<bool> = children.iter().map(|c| c.inside_at_start(ray)).collect();
+/// The node's own boundary among its operands' crossings: `crossings` are `(operand, hit,
+/// entering)` sorted along the ray, `states` each operand's membership where the line starts.
+/// Calls `boundary(operand, hit, entering)` for every crossing where the combined membership
+/// flips, in order.
+pub fn boundary<H: Copy>(
+    op: CsgOp,
+    mut states: Vec<bool>,
+    crossings: &[(usize, H, bool)],
+    mut boundary: impl FnMut(usize, H, bool),
+) {
     let mut inside = combine(op, states.iter().copied());
-    for (i, c) in all {
-        states[i] = c.entering;
+    for &(i, hit, entering) in crossings {
+        states[i] = entering;
         let now = combine(op, states.iter().copied());
         if now != inside {
-            let mut hit = c.hit;
-            // A subtracted operand's surface faces the other way on the result.
-            if op == CsgOp::Difference && i > 0 {
-                hit.normal = -hit.normal;
-                hit.geometric_normal = -hit.geometric_normal;
-            }
-            out.push(NodeCrossing { hit, entering: now });
+            boundary(i, hit, now);
             inside = now;
         }
     }
 }
 
-/// Nearest hit in (t_min, t_max). A union keeps its operands' inner surfaces (visible through
-/// transparent materials); merge, intersection and difference show only the result's boundary.
-pub fn intersect(
-    op: CsgOp,
-    children: &[Node],
-    ray: &Ray,
-    t_min: f64,
-    t_max: f64,
-) -> Option<GeoHit> {
-    if op == CsgOp::Union {
-        let mut best: Option<GeoHit> = None;
-        let mut far = t_max;
-        for c in children {
-            if let Some(h) = c.intersect(ray, t_min, far) {
-                far = h.t;
-                best = Some(h);
-            }
-        }
-        return best;
+/// Whether a boundary crossing on operand `i` shows that operand's surface turned inside out
+/// (a subtracted operand's surface faces the other way on the result).
+pub fn flips_normal(op: CsgOp, i: usize) -> bool {
+    op == CsgOp::Difference && i > 0
+}
+
+/// Bounds of a CSG node from its operands' bounds (all in the node's space): an intersection is
+/// bounded by the overlap of its operands, a difference by its base, a union or merge by all
+/// operands. An empty intersection gives [`Aabb::EMPTY`], which no ray meets.
+pub fn bounds(op: CsgOp, children: &[Aabb]) -> Aabb {
+    let infinite = Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY);
+    match op {
+        CsgOp::Union | CsgOp::Merge => children.iter().fold(Aabb::EMPTY, |b, c| b.union(*c)),
+        CsgOp::Intersection => children.iter().fold(infinite, |b, c| b.intersection(*c)),
+        CsgOp::Difference => children.first().copied().unwrap_or(Aabb::EMPTY),
     }
-    let mut out = Vec::new();
-    crossings(op, children, ray, &mut out);
-    out.into_iter()
-        .map(|c| c.hit)
-        .find(|h| h.t > t_min && h.t < t_max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn b(lo: f64, hi: f64) -> Aabb {
+        Aabb::new(DVec3::splat(lo), DVec3::splat(hi))
+    }
+
+    #[test]
+    fn intersection_is_the_overlap_and_difference_the_base() {
+        assert_eq!(
+            bounds(CsgOp::Intersection, &[b(0.0, 2.0), b(1.0, 3.0)]),
+            b(1.0, 2.0)
+        );
+        assert_eq!(
+            bounds(CsgOp::Difference, &[b(0.0, 2.0), b(-5.0, 5.0)]),
+            b(0.0, 2.0)
+        );
+        assert_eq!(
+            bounds(CsgOp::Union, &[b(0.0, 2.0), b(1.0, 3.0)]),
+            b(0.0, 3.0)
+        );
+        assert!(bounds(CsgOp::Intersection, &[b(0.0, 1.0), b(2.0, 3.0)]).is_empty());
+    }
+
+    #[test]
+    fn boundary_reports_only_where_membership_flips() {
+        // Two overlapping intervals [0, 2] and [1, 3] along the line.
+        let crossings = [
+            (0, 0.0, true),
+            (1, 1.0, true),
+            (0, 2.0, false),
+            (1, 3.0, false),
+        ];
+        let run = |op| {
+            let mut out = Vec::new();
+            boundary(op, vec![false, false], &crossings, |_, t, e| {
+                out.push((t, e))
+            });
+            out
+        };
+        assert_eq!(run(CsgOp::Union), vec![(0.0, true), (3.0, false)]);
+        assert_eq!(run(CsgOp::Intersection), vec![(1.0, true), (2.0, false)]);
+        assert_eq!(run(CsgOp::Difference), vec![(0.0, true), (1.0, false)]);
+    }
 }

@@ -1,34 +1,32 @@
-//! Geometry: rays, hits, bounds, one file per shape family, and the [`World`] the renderer queries.
+//! Geometry: rays, hits, bounds, one file per shape family, CSG, meshes, BVHs, and the [`World`]
+//! the renderer queries. [`shape`] is the one home of a shape's validity and bounds.
 //!
 //! Shapes intersect in their own object space; [`World`] moves rays in and hits out through each
 //! object's affine transform (normals by the inverse transpose).
 
 pub mod aabb;
-#[path = "box.rs"]
-pub mod aabox;
 pub mod blob;
-pub mod build;
 pub mod bvh;
 mod bvh_traverse;
 pub mod cone;
 pub mod csg;
+pub mod cuboid;
 pub mod cylinder;
 pub mod disk;
 pub mod mesh;
-pub mod mesh_cache;
-pub mod mesh_error;
-pub mod node;
 pub mod plane;
 pub mod polygon;
+pub mod primitive;
 pub mod quad;
 pub mod quartic;
 pub mod ray;
+pub mod shape;
 pub mod sphere;
 pub mod torus;
 pub mod triangle;
 pub mod world;
 
 pub use aabb::Aabb;
-pub use build::validate_scene_geometry;
-pub use ray::{Crossing, Hit, Ray};
+pub use primitive::{Primitive, SurfaceId};
+pub use ray::{Crossing, Hit, MappingFrame, Ray};
 pub use world::{SurfaceHit, World, WorldStats};

@@ -1,6 +1,8 @@
-//! Rays and object-space hit records.
+//! Rays, object-space hit records and the frame texture mappings read hits in.
 
 use glam::{DVec2, DVec3};
+
+use super::sphere;
 
 /// A ray `origin + t·dir`. `dir` is unit length in world space; in object space it may not be.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +34,43 @@ pub struct Hit {
     pub normal: DVec3,
     /// Surface coordinates in [0, 1]².
     pub uv: DVec2,
+}
+
+/// The frame in which texture mappings read a hit's position: a sphere's own centre (and its
+/// equirectangular uv), or the object-space origin for every other shape. The world keeps it
+/// per surface (`World::frame`), so a sphere inside a CSG node maps about its own centre.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum MappingFrame {
+    /// About the object-space origin.
+    Object,
+    /// About a sphere's centre, with its radius.
+    Sphere {
+        /// The sphere's centre (object space).
+        center: DVec3,
+        /// Its radius.
+        radius: f64,
+    },
+}
+
+impl MappingFrame {
+    /// The object-space point `p` as mappings read it: relative to the frame's centre.
+    pub fn point(&self, p: DVec3) -> DVec3 {
+        match *self {
+            MappingFrame::Object => p - DVec3::ZERO,
+            MappingFrame::Sphere { center, .. } => p - center,
+        }
+    }
+
+    /// Equirectangular (u, v) of the object-space point `p` about the frame's centre (+Y is the
+    /// north pole): a sphere's own uv, else the direction from the origin.
+    pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
+        match *self {
+            MappingFrame::Sphere { center, radius } => {
+                sphere::uv(((p - center) / radius).normalize())
+            }
+            MappingFrame::Object => sphere::uv(p.try_normalize().unwrap_or(DVec3::Y)),
+        }
+    }
 }
 
 /// A place where a ray crosses the boundary of a closed solid (for CSG classification).

@@ -1,18 +1,15 @@
 //! The world the renderer queries: every object prepared for intersection in world space,
 //! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
-use std::sync::OnceLock;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
-use super::build::Builder;
 use super::bvh::{Bvh, BvhRay, to_f32_box};
-use super::node::{GeoHit, Geom, Node};
-use super::{Aabb, Ray, sphere};
-use crate::diag::Diagnostic;
-use crate::ir::{Material, MaterialId, Scene};
+use super::primitive::{GeoHit, Geom, Primitive, SurfaceId};
+use super::{Aabb, MappingFrame, Ray, sphere};
+use crate::ir::MaterialId;
 
 /// A world-space hit with everything shading needs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,36 +25,35 @@ pub struct SurfaceHit {
     pub geometric_normal: DVec3,
     /// Surface coordinates.
     pub uv: DVec2,
-    /// Hit point in the object's own space (for solid textures).
+    /// Hit point in the leaf object's own space (for solid textures).
     pub local_point: DVec3,
-    /// The material to shade with (ids past `Scene::materials` are MTL materials: see
-    /// [`World::material`]).
+    /// The material to shade with (an index into the prepared scene's material table, which
+    /// holds a mesh's MTL materials after the scene's).
     pub material: MaterialId,
-    /// Index of the top-level object in `Scene::objects`.
-    pub object: u32,
+    /// The surface hit: [`World::object`] and [`World::frame`] tell its object and mapping
+    /// frame (kept out of the hit so it stays small: hits are copied on every candidate).
+    pub surface: SurfaceId,
 }
 
-/// Counters for `rtc render --stats`.
+/// What the world knows about one surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct SurfaceInfo {
+    /// The top-level object it belongs to (an index into the scene's objects).
+    object: u32,
+    /// The frame texture mappings read its hits in.
+    frame: MappingFrame,
+}
+
+/// What building the world took (for `rtc render --stats`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WorldStats {
     /// Top-level objects.
     pub objects: usize,
     /// Objects outside the BVH (unbounded).
     pub unbounded: usize,
-    /// Distinct mesh files loaded.
-    pub meshes: usize,
-    /// Triangles stored (each loaded file once).
-    pub unique_triangles: usize,
-    /// Triangles in the scene counting every instance.
-    pub instanced_triangles: usize,
-    /// Time to prepare the world (mesh loading included).
-    pub build_time: Duration,
-    /// Time spent building BVHs (top level and meshes).
+    /// Time spent building the top-level BVH.
     pub bvh_build_time: Duration,
-    /// Time spent loading mesh files (parsing, normals and their BVHs), wherever it happened:
-    /// a mesh whose `.bounds` the scene asked for was loaded while evaluating it.
-    pub mesh_load_time: Duration,
-    /// Approximate heap bytes of the geometry and BVHs.
+    /// Approximate heap bytes of the objects and the top-level BVH (meshes not included).
     pub memory_bytes: usize,
 }
 
@@ -74,9 +70,11 @@ struct LooseSphere {
 pub struct World {
     /// Whether hits need surface coordinates (textures, bumps, hatching); see [`World::need_uv`].
     need_uv: bool,
-    nodes: Vec<Node>,
+    nodes: Vec<Primitive>,
     /// Scene object index of each node.
     object_of: Vec<u32>,
+    /// Every leaf and mesh node by its [`SurfaceId`].
+    surfaces: Vec<SurfaceInfo>,
     /// Top level over the bounded nodes (`None` when a linear scan is as fast).
     bvh: Option<Bvh>,
     /// Nodes tested beside the BVH (all of them when there is no BVH), except `spheres`.
@@ -84,8 +82,6 @@ pub struct World {
     /// Untransformed spheres among the loose nodes, tested first with a t-only quadratic; only
     /// the winner computes its full hit (the course scenes are all spheres).
     spheres: Vec<LooseSphere>,
-    extra_materials: Vec<Material>,
-    material_base: u32,
     stats: WorldStats,
 }
 
@@ -94,42 +90,16 @@ pub struct World {
 const MIN_BVH_OBJECTS: usize = 12;
 
 impl World {
-    /// Prepares a scene; `fallback` is the material for objects that name none. Returns the
-    /// first error; [`super::validate_scene_geometry`] lists them all.
-    #[allow(clippy::result_large_err)] // the contract's signature: a plain `Diagnostic`
-    pub fn build(scene: &Scene, fallback: MaterialId) -> Result<World, Diagnostic> {
-        let start = Instant::now();
-        // MTL materials are numbered after the scene's and after `fallback` (a renderer may
-        // append its fallback material to the scene's list), so `extra_materials()` can be
-        // appended to that list as is.
-        let material_base = (scene.materials.len() as u32).max(fallback.0.saturating_add(1));
-        let mut b = Builder::new(material_base);
-        let mut nodes = Vec::with_capacity(scene.objects.len());
-        let mut object_of = Vec::with_capacity(scene.objects.len());
-        for (i, o) in scene.objects.iter().enumerate() {
-            match b.object(o, fallback) {
-                Some(n) => {
-                    nodes.push(n);
-                    object_of.push(i as u32);
-                }
-                None => break,
-            }
-        }
-        if let Some(d) = b.diagnostics.items.iter().find(|d| d.is_error()) {
-            return Err(d.clone());
+    /// The world of prepared objects; `object_of[i]` is the scene object `nodes[i]` came from.
+    pub fn new(mut nodes: Vec<Primitive>, object_of: Vec<u32>) -> World {
+        let mut surfaces = Vec::new();
+        for (n, &object) in nodes.iter_mut().zip(&object_of) {
+            number_surfaces(n, object, &mut surfaces);
         }
         let mut stats = WorldStats {
             objects: nodes.len(),
             ..WorldStats::default()
         };
-        for m in b.meshes() {
-            stats.meshes += 1;
-            stats.unique_triangles += m.triangle_count();
-            stats.bvh_build_time += m.build_time();
-            stats.mesh_load_time += m.load_time();
-            stats.memory_bytes += m.memory();
-        }
-        stats.instanced_triangles = nodes.iter().map(instanced_triangles).sum();
         let mut boxes = Vec::new();
         let mut ids = Vec::new();
         let mut loose = Vec::new();
@@ -158,8 +128,7 @@ impl World {
             loose.sort_unstable();
             None
         };
-        stats.memory_bytes += nodes.len() * std::mem::size_of::<Node>();
-        stats.build_time = start.elapsed();
+        stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>();
         let (spheres, loose): (Vec<u32>, Vec<u32>) = loose
             .into_iter()
             .partition(|&i| nodes[i as usize].plain_sphere().is_some());
@@ -174,17 +143,16 @@ impl World {
                 })
             })
             .collect();
-        Ok(World {
+        World {
             need_uv: true,
             spheres,
             nodes,
             object_of,
+            surfaces,
             bvh,
             loose,
-            extra_materials: b.extra_materials,
-            material_base,
             stats,
-        })
+        }
     }
 
     /// Number of top-level objects.
@@ -200,30 +168,6 @@ impl World {
     /// Build counters.
     pub fn stats(&self) -> WorldStats {
         self.stats
-    }
-
-    /// The material behind a hit's id: the scene's, or one converted from a mesh's MTL file.
-    /// An id from neither (not one this world produced) gives the default material.
-    pub fn material<'a>(&'a self, scene: &'a Scene, id: MaterialId) -> &'a Material {
-        static DEFAULT: OnceLock<Material> = OnceLock::new();
-        let fallback = || DEFAULT.get_or_init(Material::default);
-        match id.0.checked_sub(self.material_base) {
-            Some(i) => self
-                .extra_materials
-                .get(i as usize)
-                .unwrap_or_else(fallback),
-            None => scene.materials.get(id.0 as usize).unwrap_or_else(fallback),
-        }
-    }
-
-    /// Materials added from MTL files, with ids from [`World::first_extra_material`] on.
-    pub fn extra_materials(&self) -> &[Material] {
-        &self.extra_materials
-    }
-
-    /// The id of the first MTL material: `max(scene materials, fallback + 1)`.
-    pub fn first_extra_material(&self) -> MaterialId {
-        MaterialId(self.material_base)
     }
 
     /// Tells the world whether hits must carry uv; renderers that use no textures, bump maps or
@@ -301,7 +245,7 @@ impl World {
                 uv: h.uv,
                 local_point: h.local_point,
                 material: h.material,
-                object: self.object_of[i as usize],
+                surface: h.surface,
             }
         })
     }
@@ -336,6 +280,21 @@ impl World {
         }
     }
 
+    /// The top-level object (an index into the scene's objects) a hit belongs to.
+    pub fn object(&self, hit: &SurfaceHit) -> u32 {
+        self.surfaces
+            .get(hit.surface.0 as usize)
+            .map_or(0, |s| s.object)
+    }
+
+    /// The frame texture mappings read a hit's `local_point` in: its leaf shape's (a sphere's
+    /// own centre, even inside CSG), else the object-space origin.
+    pub fn frame(&self, hit: &SurfaceHit) -> MappingFrame {
+        self.surfaces
+            .get(hit.surface.0 as usize)
+            .map_or(MappingFrame::Object, |s| s.frame)
+    }
+
     /// Whether a world point is inside the solid object `object` (CSG checks and tests).
     pub fn contains(&self, object: u32, p: DVec3) -> bool {
         self.object_of
@@ -345,7 +304,25 @@ impl World {
     }
 }
 
-fn instanced_triangles(n: &Node) -> usize {
+/// Numbers the leaf and mesh nodes of `n` (a node of top-level object `object`) from
+/// `surfaces.len()` on, recording each one's object and mapping frame.
+fn number_surfaces(n: &mut Primitive, object: u32, surfaces: &mut Vec<SurfaceInfo>) {
+    let frame = match &mut n.geom {
+        Geom::Leaf(l) => l.frame(),
+        Geom::Mesh(_) => MappingFrame::Object,
+        Geom::Csg { children, .. } => {
+            for c in children {
+                number_surfaces(c, object, surfaces);
+            }
+            return;
+        }
+    };
+    n.surface = SurfaceId(surfaces.len() as u32);
+    surfaces.push(SurfaceInfo { object, frame });
+}
+
+/// Triangles a prepared object places, counting every instance.
+pub fn instanced_triangles(n: &Primitive) -> usize {
     match &n.geom {
         Geom::Mesh(m) => m.data.triangle_count(),
         Geom::Csg { children, .. } => children.iter().map(instanced_triangles).sum(),

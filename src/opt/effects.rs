@@ -1,8 +1,10 @@
-//! The effects set: which costly effects a scene calls for, so the render plan skips the rest.
+//! The effects set: which costly effects a scene calls for, so the renderer skips the rest.
 
 use std::fmt;
 
-use crate::ir::{LightKind, Object, RenderMode, Sampling, Scene, ShadingModel, Shape};
+use crate::ir::{
+    Camera, LightKind, Object, RenderMode, RenderSettings, Sampling, Scene, ShadingModel, Shape,
+};
 
 /// Which effects a scene uses. Each flag gates work in the renderer.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -33,43 +35,48 @@ pub struct Effects {
     pub meshes: bool,
 }
 
-impl Effects {
-    /// Computes the effects a scene calls for.
-    pub fn of(scene: &Scene) -> Effects {
-        let s = &scene.settings;
-        let shaded = s.mode == RenderMode::Shaded;
-        let bounces = shaded && s.max_depth > 0;
+/// What a scene holds that costs time to render, before its settings decide what is used.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Content {
+    reflective: bool,
+    refractive: bool,
+    textured: bool,
+    bumped: bool,
+    area_lights: bool,
+    lights: bool,
+    gooch_material: bool,
+    hatching_material: bool,
+    csg: bool,
+    meshes: bool,
+}
+
+impl Content {
+    /// What `scene` holds (its own materials; a mesh's MTL materials are not counted, so they
+    /// reflect or refract only where a scene material does).
+    pub fn of(scene: &Scene) -> Content {
         let mats = &scene.materials;
-        let model_used = |want: fn(&ShadingModel) -> bool| {
-            shaded
-                && (want(&s.shading) || mats.iter().any(|m| m.shading.as_ref().is_some_and(want)))
+        let material_model = |want: fn(&ShadingModel) -> bool| {
+            mats.iter().any(|m| m.shading.as_ref().is_some_and(want))
         };
-        let mut e = Effects {
-            shadows: shaded && s.shadows && !scene.lights.is_empty(),
-            reflection: bounces && mats.iter().any(|m| m.reflect > 0.0),
-            refraction: bounces && mats.iter().any(|m| m.refract > 0.0),
-            textures: shaded && mats.iter().any(|m| m.texture.is_some()),
-            bump: shaded && mats.iter().any(|m| m.bump.is_some()),
-            soft_shadows: false,
-            supersampling: match s.sampling {
-                Sampling::Grid { factor } => factor > 1,
-                Sampling::Adaptive { max, .. } => max > 1,
-            },
-            depth_of_field: scene.camera.aperture > 0.0,
-            gooch: model_used(|m| matches!(m, ShadingModel::Gooch(_))),
-            hatching: model_used(|m| matches!(m, ShadingModel::Hatching)),
+        let mut c = Content {
+            reflective: mats.iter().any(|m| m.reflect > 0.0),
+            refractive: mats.iter().any(|m| m.refract > 0.0),
+            textured: mats.iter().any(|m| m.texture.is_some()),
+            bumped: mats.iter().any(|m| m.bump.is_some()),
+            area_lights: scene
+                .lights
+                .iter()
+                .any(|l| matches!(l.kind, LightKind::Area { .. })),
+            lights: !scene.lights.is_empty(),
+            gooch_material: material_model(|m| matches!(m, ShadingModel::Gooch(_))),
+            hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
             csg: false,
             meshes: false,
         };
-        e.soft_shadows = e.shadows
-            && scene
-                .lights
-                .iter()
-                .any(|l| matches!(l.kind, LightKind::Area { .. }));
         for o in &scene.objects {
-            e.visit(o);
+            c.visit(o);
         }
-        e
+        c
     }
 
     fn visit(&mut self, o: &Object) {
@@ -80,6 +87,46 @@ impl Effects {
             }
             Shape::Mesh { .. } => self.meshes = true,
             _ => {}
+        }
+    }
+}
+
+impl Effects {
+    /// Computes the effects a scene calls for.
+    pub fn of(scene: &Scene) -> Effects {
+        Effects::new(&Content::of(scene), &scene.settings, &scene.camera)
+    }
+
+    /// The effects of a scene holding `content`, rendered with `settings` through `camera`.
+    pub fn new(content: &Content, s: &RenderSettings, camera: &Camera) -> Effects {
+        let shaded = s.mode == RenderMode::Shaded;
+        let bounces = shaded && s.max_depth > 0;
+        let model_used = |want: fn(&ShadingModel) -> bool, in_material: bool| {
+            shaded && (want(&s.shading) || in_material)
+        };
+        let shadows = shaded && s.shadows && content.lights;
+        Effects {
+            shadows,
+            reflection: bounces && content.reflective,
+            refraction: bounces && content.refractive,
+            textures: shaded && content.textured,
+            bump: shaded && content.bumped,
+            soft_shadows: shadows && content.area_lights,
+            supersampling: match s.sampling {
+                Sampling::Grid { factor } => factor > 1,
+                Sampling::Adaptive { max, .. } => max > 1,
+            },
+            depth_of_field: camera.aperture > 0.0,
+            gooch: model_used(
+                |m| matches!(m, ShadingModel::Gooch(_)),
+                content.gooch_material,
+            ),
+            hatching: model_used(
+                |m| matches!(m, ShadingModel::Hatching),
+                content.hatching_material,
+            ),
+            csg: content.csg,
+            meshes: content.meshes,
         }
     }
 

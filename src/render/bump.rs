@@ -6,12 +6,18 @@
 
 use glam::{DVec2, DVec3};
 
-use super::texture::{self, Loaded};
-use crate::geometry::SurfaceHit;
-use crate::ir::Shape;
+use super::texture;
+use crate::geometry::{MappingFrame, SurfaceHit};
+use crate::opt::TextureMap;
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
-pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVec3) -> DVec3 {
+pub fn perturb(
+    tex: &TextureMap,
+    scale: f64,
+    hit: &SurfaceHit,
+    frame: MappingFrame,
+    n: DVec3,
+) -> DVec3 {
     let up = if n.y.abs() > 0.999 {
         DVec3::X
     } else {
@@ -20,8 +26,8 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
     let t = up.cross(n).normalize();
     let b = t.cross(n);
     let (dh_du, dh_dv) = match tex {
-        Loaded::Image(pic, mapping) => {
-            let uv = texture::uv(*mapping, hit, shape);
+        TextureMap::Image(pic, mapping) => {
+            let uv = texture::uv(*mapping, hit, frame);
             let (du, dv) = pic.texel_size();
             let h = |o: DVec2| pic.nearest(uv + o).y;
             let h0 = h(DVec2::ZERO);
@@ -30,12 +36,10 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
                 (h(DVec2::new(0.0, dv)) - h0) / dv,
             )
         }
-        Loaded::Checker(_, _, size) | Loaded::Stripes(_, _, size) => {
+        TextureMap::Checker(_, _, size) | TextureMap::Stripes(_, _, size) => {
             let step = size / 8.0;
             let lum = |p: DVec3| {
-                let mut moved = *hit;
-                moved.local_point = p;
-                let c = tex.color(&moved, shape);
+                let c = texture::solid(tex, hit, frame, p);
                 (c.x + c.y + c.z) / 3.0
             };
             let h0 = lum(hit.local_point);
@@ -55,8 +59,14 @@ pub fn perturb(tex: &Loaded, scale: f64, hit: &SurfaceHit, shape: &Shape, n: DVe
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::SurfaceId;
     use crate::ir::{Mapping, MaterialId};
-    use crate::render::texture::Picture;
+    use crate::opt::Picture;
+
+    const SPHERE: MappingFrame = MappingFrame::Sphere {
+        center: DVec3::ZERO,
+        radius: 1.0,
+    };
 
     fn hit_at(n: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -67,26 +77,25 @@ mod tests {
             uv: crate::geometry::sphere::uv(n),
             local_point: n,
             material: MaterialId(0),
-            object: 0,
+            surface: SurfaceId(0),
         }
     }
 
     #[test]
     fn flat_height_keeps_the_normal_and_a_ramp_tilts_it() {
-        let sphere = Shape::Sphere {
-            center: DVec3::ZERO,
-            radius: 1.0,
-        };
         let n = DVec3::new(1.0, 0.2, -0.3).normalize();
         let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
-        let flat = Loaded::Image(flat, Mapping::Spherical);
-        assert_eq!(perturb(&flat, 1.0, &hit_at(n), &sphere, n), n);
+        let flat = TextureMap::Image(flat.into(), Mapping::Spherical);
+        assert_eq!(perturb(&flat, 1.0, &hit_at(n), SPHERE, n), n);
         // Height grows with u (eastwards): the normal tilts westwards, against T.
         let ramp: Vec<DVec3> = (0..64)
             .map(|i| DVec3::splat(f64::from(i % 64) / 63.0))
             .collect();
-        let ramp = Loaded::Image(Picture::new(64, 1, ramp).unwrap(), Mapping::Spherical);
-        let tilted = perturb(&ramp, 0.01, &hit_at(n), &sphere, n);
+        let ramp = TextureMap::Image(
+            Picture::new(64, 1, ramp).unwrap().into(),
+            Mapping::Spherical,
+        );
+        let tilted = perturb(&ramp, 0.01, &hit_at(n), SPHERE, n);
         let t = DVec3::Y.cross(n).normalize();
         assert!((tilted.length() - 1.0).abs() < 1e-12);
         assert!(tilted.dot(t) < 0.0);

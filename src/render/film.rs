@@ -1,9 +1,31 @@
-//! The film: one floating-point colour per pixel, turned into bytes by the scene's
-//! [`Encoding`]: linear (clamp to [0, 1] and truncate `255·c`, COURSE.md §1.4/§2.5: trunc, not
-//! round) or sRGB (the IEC 61966-2-1 curve, rounded to the nearest level).
+//! The film: per pixel, one floating-point value per named channel. The colour channel turns
+//! into bytes by the scene's [`Encoding`]: linear (clamp to [0, 1] and truncate `255·c`,
+//! COURSE.md §1.4/§2.5: trunc, not round) or sRGB (the IEC 61966-2-1 curve, rounded to the
+//! nearest level). A later output (an AOV such as depth or albedo, an EXR layer) is a new
+//! [`Channel`] an integrator fills, not a new code path: the tile driver, the averaging and the
+//! film carry any number of channels.
 
 use super::Image;
 use crate::ir::{Color, Encoding};
+
+/// Most channels one film holds.
+pub const MAX_CHANNELS: usize = 8;
+
+/// What a film channel holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Channel {
+    /// The image's linear RGB (shaded colour, or the encoded normal or depth of those modes).
+    Color,
+}
+
+impl Channel {
+    /// The channel's name in files and messages.
+    pub fn name(self) -> &'static str {
+        match self {
+            Channel::Color => "color",
+        }
+    }
+}
 
 /// Per-render counters (integers, so sums are identical for any thread count).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -35,26 +57,68 @@ pub struct Film {
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
-    /// Colours row by row from the top (unclamped averages of the samples).
-    pub pixels: Vec<Color>,
+    channels: Vec<Channel>,
+    /// Per channel, its values row by row from the top (unclamped averages of the samples).
+    layers: Vec<Vec<Color>>,
     /// What it took.
     pub stats: Stats,
-    /// The world's build statistics (objects, triangles, BVH time, memory).
-    pub world: crate::geometry::WorldStats,
-    /// How [`Film::to_image`] quantises.
+    /// How [`Film::to_image`] quantises the colour channel.
     pub encoding: Encoding,
 }
 
 impl Film {
-    /// The colour of pixel (x, y), y = 0 at the top.
-    pub fn get(&self, x: u32, y: u32) -> Color {
-        self.pixels[y as usize * self.width as usize + x as usize]
+    /// A film from `values` interleaved per pixel (`channels.len()` values each, row by row).
+    pub fn new(
+        width: u32,
+        height: u32,
+        channels: &[Channel],
+        values: Vec<Color>,
+        stats: Stats,
+        encoding: Encoding,
+    ) -> Film {
+        let n = channels.len().max(1);
+        let layers = if n == 1 {
+            vec![values]
+        } else {
+            (0..n)
+                .map(|c| values.iter().skip(c).step_by(n).copied().collect())
+                .collect()
+        };
+        Film {
+            width,
+            height,
+            channels: channels.to_vec(),
+            layers,
+            stats,
+            encoding,
+        }
     }
 
-    /// Quantises to 8-bit RGB with the film's encoding.
+    /// The channels this film holds.
+    pub fn channels(&self) -> &[Channel] {
+        &self.channels
+    }
+
+    /// A channel's values row by row from the top, if the film holds it.
+    pub fn channel(&self, c: Channel) -> Option<&[Color]> {
+        let i = self.channels.iter().position(|x| *x == c)?;
+        self.layers.get(i).map(Vec::as_slice)
+    }
+
+    /// The colour channel (every integrator fills it).
+    pub fn color(&self) -> &[Color] {
+        self.channel(Channel::Color).unwrap_or(&[])
+    }
+
+    /// The colour of pixel (x, y), y = 0 at the top.
+    pub fn get(&self, x: u32, y: u32) -> Color {
+        self.color()[y as usize * self.width as usize + x as usize]
+    }
+
+    /// Quantises the colour channel to 8-bit RGB with the film's encoding.
     pub fn to_image(&self) -> Image {
         let bytes = self
-            .pixels
+            .color()
             .iter()
             .flat_map(|c| encode(*c, self.encoding))
             .collect();
@@ -98,6 +162,24 @@ mod tests {
     fn quantisation_truncates_and_clamps() {
         assert_eq!(to_bytes(DVec3::new(1.0, 0.999, 0.5)), [255, 254, 127]);
         assert_eq!(to_bytes(DVec3::new(7.0, -1.0, f64::NAN)), [255, 0, 0]);
+    }
+
+    #[test]
+    fn interleaved_values_split_into_channels() {
+        let v = |x: f64| DVec3::splat(x);
+        let film = Film::new(
+            2,
+            1,
+            &[Channel::Color, Channel::Color],
+            vec![v(1.0), v(2.0), v(3.0), v(4.0)],
+            Stats::default(),
+            Encoding::Linear,
+        );
+        assert_eq!(
+            film.layers,
+            vec![vec![v(1.0), v(3.0)], vec![v(2.0), v(4.0)]]
+        );
+        assert_eq!(film.get(1, 0), v(3.0));
     }
 
     #[test]

@@ -6,8 +6,7 @@ use std::io::Write;
 use image::ImageEncoder;
 use std::path::{Path, PathBuf};
 
-use crate::diag::{Diagnostic, Severity};
-use crate::frontend::IO_ERROR;
+use crate::diag::{Diagnostic, IO_ERROR, Severity};
 
 use super::Image;
 

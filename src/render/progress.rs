@@ -1,41 +1,28 @@
-//! A progress bar with ETA on stderr, shown only when asked for and stderr is a terminal.
+//! Progress and cancellation: the renderer reports rows done to a callback its caller
+//! implements (the CLI draws a bar; `rtc watch` or a time budget would cancel), and prints
+//! nothing itself.
 
-use std::io::IsTerminal;
+/// What a render tells its caller while it runs. Every method may be called from any render
+/// thread.
+pub trait Progress: Sync {
+    /// The render will report `rows` rows in all (every pass over the image counts its rows).
+    fn start(&self, _rows: u64) {}
 
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+    /// `rows` more rows are done.
+    fn advance(&self, _rows: u64) {}
 
-/// Progress over image rows; a no-op when hidden.
-pub struct Progress {
-    bar: Option<ProgressBar>,
-}
+    /// The render ended (finished or cancelled).
+    fn finish(&self) {}
 
-impl Progress {
-    /// A bar over `rows` rows, visible only if `wanted` and stderr is a terminal.
-    pub fn new(wanted: bool, rows: u64) -> Progress {
-        if !wanted || !std::io::stderr().is_terminal() {
-            return Progress { bar: None };
-        }
-        let style = ProgressStyle::with_template(
-            "{spinner} rendering [{bar:40}] {percent:>3}% {elapsed} elapsed, ETA {eta}",
-        )
-        .unwrap_or_else(|_| ProgressStyle::default_bar())
-        .progress_chars("=> ");
-        let bar = ProgressBar::with_draw_target(Some(rows), ProgressDrawTarget::stderr())
-            .with_style(style);
-        Progress { bar: Some(bar) }
-    }
-
-    /// Marks `rows` more rows done (thread-safe).
-    pub fn advance(&self, rows: u64) {
-        if let Some(b) = &self.bar {
-            b.inc(rows);
-        }
-    }
-
-    /// Removes the bar.
-    pub fn finish(&self) {
-        if let Some(b) = &self.bar {
-            b.finish_and_clear();
-        }
+    /// Polled before each band of rows: `true` stops the render, which then returns the error
+    /// `rtc::render::cancelled` (and no film).
+    fn cancelled(&self) -> bool {
+        false
     }
 }
+
+/// Reports nothing and never cancels.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Silent;
+
+impl Progress for Silent {}

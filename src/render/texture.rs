@@ -1,157 +1,53 @@
-//! Textures: images are decoded once before rendering; lookups are nearest-pixel as the course
-//! framework does (COURSE.md §2.5); checker and stripes are solid textures in object space.
+//! Texture lookups at a hit: images nearest-pixel as the course framework does (COURSE.md
+//! §2.5) through a surface mapping; checker and stripes are solid textures in object space.
+//! Every coordinate comes from the hit (its uv, its object-space point and its mapping frame),
+//! so a lookup never needs the shape.
 
 use glam::{DVec2, DVec3};
 
-use crate::diag::Diagnostic;
-use crate::geometry::{SurfaceHit, sphere};
-use crate::ir::{Color, Mapping, Scene, Shape, Texture};
+use crate::geometry::{MappingFrame, SurfaceHit};
+use crate::ir::{Color, Mapping};
+use crate::opt::TextureMap;
 
-/// A decoded image with channels in [0, 1].
-#[derive(Clone, Debug)]
-pub struct Picture {
-    width: u32,
-    height: u32,
-    texels: Vec<DVec3>,
+/// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
+pub fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Color {
+    solid(tex, hit, frame, hit.local_point)
 }
 
-impl Picture {
-    /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
-    pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
-        let ok = width > 0 && height > 0 && texels.len() == width as usize * height as usize;
-        ok.then_some(Picture {
-            width,
-            height,
-            texels,
-        })
-    }
-
-    /// The size of one texel in (u, v).
-    pub fn texel_size(&self) -> (f64, f64) {
-        (1.0 / f64::from(self.width), 1.0 / f64::from(self.height))
-    }
-
-    /// The texel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top row; u, v are clamped to [0, 1].
-    pub fn nearest(&self, uv: DVec2) -> Color {
-        let pick = |t: f64, n: u32| {
-            let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-            ((t * f64::from(n - 1)) as u32).min(n - 1) as usize
-        };
-        let (x, y) = (pick(uv.x, self.width), pick(uv.y, self.height));
-        self.texels[y * self.width as usize + x]
-    }
-}
-
-/// A texture ready for lookups.
-#[derive(Clone, Debug)]
-pub enum Loaded {
-    /// An image with its surface mapping.
-    Image(Picture, Mapping),
-    /// A 3-D checkerboard.
-    Checker(Color, Color, f64),
-    /// Stripes along object-space x.
-    Stripes(Color, Color, f64),
-}
-
-/// Decodes every texture of a scene once.
-pub fn load_all(scene: &Scene) -> Result<Vec<Loaded>, Diagnostic> {
-    scene.textures.iter().map(load).collect()
-}
-
-fn load(t: &Texture) -> Result<Loaded, Diagnostic> {
-    Ok(match t {
-        Texture::Image {
-            path,
-            mapping,
-            span,
-        } => {
-            let img = image::open(path).map_err(|e| {
-                Diagnostic::error(
-                    "rtc::render::texture",
-                    *span,
-                    format!("cannot read texture `{}`", path.display()),
-                )
-                .with_label(e.to_string())
-                .with_help("check the file name; it is resolved relative to the scene file")
-            })?;
-            let (w, h) = (img.width(), img.height());
-            // 8-bit images convert exactly as byte/255 in f64, like the course framework.
-            let texels: Vec<DVec3> = if img.color().bytes_per_pixel() == img.color().channel_count()
-            {
-                let to = |b: u8| f64::from(b) / 255.0;
-                img.to_rgb8()
-                    .pixels()
-                    .map(|p| DVec3::new(to(p[0]), to(p[1]), to(p[2])))
-                    .collect()
+/// The colour of `tex` at `hit`, with solid textures read at object-space point `p` (bump
+/// mapping reads them at points near the hit).
+pub fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
+    match tex {
+        TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, frame)),
+        TextureMap::Checker(a, b, size) => {
+            // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor flips
+            // the parity pixel by pixel; snapping to a tiny fraction of a cell first keeps the
+            // whole face in one cell.
+            let q = p / *size;
+            let c = ((q * 1e6).round() / 1e6).floor();
+            if (c.x + c.y + c.z).rem_euclid(2.0) < 0.5 {
+                *a
             } else {
-                img.to_rgb32f()
-                    .pixels()
-                    .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2])))
-                    .collect()
-            };
-            let pic = Picture::new(w, h, texels).ok_or_else(|| {
-                Diagnostic::error("rtc::render::texture", *span, "the texture image is empty")
-                    .with_label("this image has no pixels")
-            })?;
-            Loaded::Image(pic, *mapping)
-        }
-        Texture::Checker { a, b, size } => Loaded::Checker(*a, *b, positive(*size)),
-        Texture::Stripes { a, b, size } => Loaded::Stripes(*a, *b, positive(*size)),
-    })
-}
-
-fn positive(size: f64) -> f64 {
-    if size > 0.0 && size.is_finite() {
-        size
-    } else {
-        1.0
-    }
-}
-
-impl Loaded {
-    /// The colour at a hit on an object of shape `shape`.
-    pub fn color(&self, hit: &SurfaceHit, shape: &Shape) -> Color {
-        match self {
-            Loaded::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, shape)),
-            Loaded::Checker(a, b, size) => {
-                // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor
-                // flips the parity pixel by pixel; snapping to a tiny fraction of a cell first
-                // keeps the whole face in one cell.
-                let q = hit.local_point / *size;
-                let c = ((q * 1e6).round() / 1e6).floor();
-                if (c.x + c.y + c.z).rem_euclid(2.0) < 0.5 {
-                    *a
-                } else {
-                    *b
-                }
+                *b
             }
-            Loaded::Stripes(a, b, size) => {
-                if (hit.local_point.x / *size).floor().rem_euclid(2.0) < 0.5 {
-                    *a
-                } else {
-                    *b
-                }
+        }
+        TextureMap::Stripes(a, b, size) => {
+            if (p.x / *size).floor().rem_euclid(2.0) < 0.5 {
+                *a
+            } else {
+                *b
             }
         }
     }
 }
 
-/// Surface coordinates of a hit under a mapping (object space; +Y is the north pole).
-pub fn uv(mapping: Mapping, hit: &SurfaceHit, shape: &Shape) -> DVec2 {
-    let centre = match shape {
-        Shape::Sphere { center, .. } => *center,
-        _ => DVec3::ZERO,
-    };
-    let p = hit.local_point - centre;
+/// Surface coordinates of a hit under a mapping, in its surface's mapping `frame` (+Y is the
+/// north pole).
+pub fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
+    let p = frame.point(hit.local_point);
     match mapping {
         Mapping::Uv => hit.uv,
-        Mapping::Spherical => {
-            if matches!(shape, Shape::Sphere { .. }) {
-                hit.uv
-            } else {
-                sphere::uv(p.try_normalize().unwrap_or(DVec3::Y))
-            }
-        }
+        Mapping::Spherical => frame.spherical_uv(hit.local_point),
         Mapping::Planar => DVec2::new(p.x - p.x.floor(), p.z - p.z.floor()),
         Mapping::Cylindrical => {
             let phi = (-p.z).atan2(p.x).rem_euclid(std::f64::consts::TAU);
@@ -163,20 +59,7 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit, shape: &Shape) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn nearest_uses_truncated_scaled_coordinates() {
-        // 3×2 image: texel value encodes its index.
-        let texels = (0..6).map(|i| DVec3::splat(f64::from(i))).collect();
-        let p = Picture::new(3, 2, texels).unwrap();
-        assert_eq!(p.nearest(DVec2::new(0.0, 0.0)).x, 0.0);
-        assert_eq!(p.nearest(DVec2::new(0.49, 0.0)).x, 0.0); // int(0.98) = 0
-        assert_eq!(p.nearest(DVec2::new(0.5, 0.0)).x, 1.0);
-        assert_eq!(p.nearest(DVec2::new(1.0, 1.0)).x, 5.0);
-        assert_eq!(p.nearest(DVec2::new(0.99, 0.99)).x, 1.0); // (int(1.98), int(0.99)) = (1, 0)
-        assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
-        assert!(Picture::new(0, 2, vec![]).is_none());
-    }
+    use crate::geometry::SurfaceId;
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {
@@ -187,22 +70,22 @@ mod tests {
             uv: DVec2::ZERO,
             local_point: p,
             material: crate::ir::MaterialId(0),
-            object: 0,
+            surface: SurfaceId(0),
         }
+    }
+
+    fn at(tex: &TextureMap, hit: &SurfaceHit) -> Color {
+        color(tex, hit, MappingFrame::Object)
     }
 
     #[test]
     fn checker_on_a_cell_face_does_not_speckle() {
         // Hits on a floor at y = 0 land a rounding error above or below it; both must give the
         // colour of one cell (the gallery floor showed salt-and-pepper before).
-        let plane = Shape::Plane {
-            point: DVec3::ZERO,
-            normal: DVec3::Y,
-        };
-        let checker = Loaded::Checker(DVec3::X, DVec3::Z, 1.0);
+        let checker = TextureMap::Checker(DVec3::X, DVec3::Z, 1.0);
         for x in [0.25, 1.5, -3.75, 123.5] {
-            let above = checker.color(&hit_at(DVec3::new(x, 1e-13, 0.5)), &plane);
-            let below = checker.color(&hit_at(DVec3::new(x, -1e-13, 0.5)), &plane);
+            let above = at(&checker, &hit_at(DVec3::new(x, 1e-13, 0.5)));
+            let below = at(&checker, &hit_at(DVec3::new(x, -1e-13, 0.5)));
             assert_eq!(above, below, "x = {x}");
         }
     }
@@ -210,30 +93,35 @@ mod tests {
     #[test]
     fn checker_and_stripes_alternate_in_object_space() {
         let (a, b) = (DVec3::X, DVec3::Z);
-        let plane = Shape::Plane {
-            point: DVec3::ZERO,
-            normal: DVec3::Y,
+        let checker = TextureMap::Checker(a, b, 2.0);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(0.5, 0.5, 0.5))), a);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(2.5, 0.5, 0.5))), b);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(2.5, 2.5, 0.5))), a);
+        assert_eq!(at(&checker, &hit_at(DVec3::new(-0.5, 0.5, 0.5))), b);
+        let stripes = TextureMap::Stripes(a, b, 1.0);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(0.2, 9.0, -4.0))), a);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(1.2, 9.0, -4.0))), b);
+        assert_eq!(at(&stripes, &hit_at(DVec3::new(-0.2, 0.0, 0.0))), b);
+    }
+
+    #[test]
+    fn mappings_read_a_sphere_about_its_own_centre() {
+        // The same point of a sphere centred at c, as a hit framed by that sphere: every
+        // mapping sees it relative to c (a sphere inside a CSG node used to map about the
+        // origin).
+        let c = DVec3::new(5.0, -2.0, 1.0);
+        let on = DVec3::new(0.0, 0.0, -1.0);
+        let framed = MappingFrame::Sphere {
+            center: c,
+            radius: 1.0,
         };
-        let checker = Loaded::Checker(a, b, 2.0);
-        assert_eq!(checker.color(&hit_at(DVec3::new(0.5, 0.5, 0.5)), &plane), a);
-        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 0.5, 0.5)), &plane), b);
-        assert_eq!(checker.color(&hit_at(DVec3::new(2.5, 2.5, 0.5)), &plane), a);
-        assert_eq!(
-            checker.color(&hit_at(DVec3::new(-0.5, 0.5, 0.5)), &plane),
-            b
-        );
-        let stripes = Loaded::Stripes(a, b, 1.0);
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(0.2, 9.0, -4.0)), &plane),
-            a
-        );
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(1.2, 9.0, -4.0)), &plane),
-            b
-        );
-        assert_eq!(
-            stripes.color(&hit_at(DVec3::new(-0.2, 0.0, 0.0)), &plane),
-            b
-        );
+        let at_origin = MappingFrame::Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        };
+        for m in [Mapping::Spherical, Mapping::Planar, Mapping::Cylindrical] {
+            let (a, b) = (hit_at(c + on), hit_at(on));
+            assert_eq!(uv(m, &a, framed), uv(m, &b, at_origin), "{m:?}");
+        }
     }
 }

@@ -1,10 +1,12 @@
 //! The tile driver: bands of rows rendered in parallel with rayon. Each pixel's value depends
 //! only on the pixel (randomness is keyed by pixel and sample), and bands write disjoint slices,
-//! so the bytes are identical for any thread count.
+//! so the bytes are identical for any thread count and any cut into bands.
 
 use rayon::prelude::*;
 
 use super::film::Stats;
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use super::progress::Progress;
 use super::sampler::Rng;
 use super::shading::Ctx;
@@ -14,7 +16,7 @@ use crate::ir::Color;
 /// Rows per task: small enough to balance load over the cores, large enough to amortise scheduling.
 const BAND: usize = 4;
 
-/// Stack per render thread: Whitted recursion up to `plan::MAX_DEPTH` bounces needs more than
+/// Stack per render thread: Whitted recursion up to `ir::limits::MAX_DEPTH` bounces needs more than
 /// the default 2 MiB (it is virtual memory; only what is touched is used).
 const STACK_BYTES: usize = 64 << 20;
 
@@ -34,33 +36,43 @@ pub fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
         })
 }
 
-/// Computes `f(x, y, ctx)` for every pixel of a `width`×`height` image, row by row from the top.
+/// Computes `f(x, y, ctx, out)` for every pixel of a `width`×`height` image, row by row from
+/// the top; `f` writes the pixel's `channels` values into `out`. Values come back interleaved
+/// per pixel. Before each band the callback is asked whether to stop: a cancelled render is the
+/// error `rtc::render::cancelled`.
 pub fn run<F>(
     pool: &rayon::ThreadPool,
     width: u32,
     height: u32,
-    progress: &Progress,
+    channels: usize,
+    progress: &dyn Progress,
     f: F,
-) -> (Vec<Color>, Stats)
+) -> Result<(Vec<Color>, Stats), Diagnostic>
 where
-    F: Fn(u32, u32, &mut Ctx) -> Color + Sync,
+    F: Fn(u32, u32, &mut Ctx, &mut [Color]) + Sync,
 {
     let w = width as usize;
-    let mut pixels = vec![Color::ZERO; w * height as usize];
+    let row = w * channels;
+    let mut values = vec![Color::ZERO; row * height as usize];
+    let stop = AtomicBool::new(false);
     let stats = pool.install(|| {
-        pixels
-            .par_chunks_mut(w * BAND)
+        values
+            .par_chunks_mut(row * BAND)
             .enumerate()
             .map(|(band, chunk)| {
                 let mut ctx = Ctx {
                     rng: Rng::new(0, 0, 0, 0),
                     stats: Stats::default(),
                 };
-                for (i, px) in chunk.iter_mut().enumerate() {
-                    let (x, y) = ((i % w) as u32, (band * BAND + i / w) as u32);
-                    *px = f(x, y, &mut ctx);
+                if stop.load(Ordering::Relaxed) || progress.cancelled() {
+                    stop.store(true, Ordering::Relaxed);
+                    return ctx.stats;
                 }
-                progress.advance((chunk.len() / w) as u64);
+                for (i, px) in chunk.chunks_exact_mut(channels).enumerate() {
+                    let (x, y) = ((i % w) as u32, (band * BAND + i / w) as u32);
+                    f(x, y, &mut ctx, px);
+                }
+                progress.advance((chunk.len() / row) as u64);
                 ctx.stats
             })
             .reduce(Stats::default, |mut a, b| {
@@ -68,5 +80,14 @@ where
                 a
             })
     });
-    (pixels, stats)
+    if stop.load(Ordering::Relaxed) {
+        progress.finish();
+        return Err(Diagnostic::new(
+            Severity::Error,
+            "rtc::render::cancelled",
+            None,
+            "the render was cancelled",
+        ));
+    }
+    Ok((values, stats))
 }

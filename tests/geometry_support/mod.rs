@@ -3,7 +3,7 @@
 
 use glam::{DAffine3, DQuat, DVec3};
 use rtc::geometry::{Ray, World};
-use rtc::ir::{Camera, Material, MaterialId, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
 use rtc::source::Span;
 
 /// SplitMix64: tiny, deterministic, good enough for test rays.
@@ -87,8 +87,10 @@ pub fn scene(objects: Vec<Object>) -> Scene {
     }
 }
 
+/// The prepared world of a scene holding `objects`.
 pub fn world(objects: Vec<Object>) -> World {
-    World::build(&scene(objects), MaterialId(0)).expect("world builds")
+    let prepared = rtc::opt::prepare(&scene(objects)).expect("world builds");
+    prepared.world().clone()
 }
 
 /// A skewed, mirrored (negative determinant) placement.

@@ -11,6 +11,9 @@ use crate::eval::interp::Interp;
 use crate::eval::types;
 use crate::eval::value::{RenderVal, Value};
 use crate::ir;
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_IMAGE_SIDE, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS,
+};
 use crate::source::Span;
 
 /// Scene-level constructors.
@@ -26,11 +29,12 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
 
 /// Named enumeration values.
 pub fn constants() -> Vec<(&'static str, Value)> {
+    let modes = ir::RenderMode::NAMED
+        .iter()
+        .map(|(name, mode)| (*name, Value::Mode(*mode)));
     vec![
         ("phong", Value::Shading(ir::ShadingModel::Phong)),
         ("hatching", Value::Shading(ir::ShadingModel::Hatching)),
-        ("shaded", Value::Mode(ir::RenderMode::Shaded)),
-        ("normal", Value::Mode(ir::RenderMode::Normal)),
         ("per_light", Value::Ambient(ir::AmbientConvention::PerLight)),
         ("once", Value::Ambient(ir::AmbientConvention::Once)),
         ("linear", Value::Encoding(ir::Encoding::Linear)),
@@ -39,6 +43,9 @@ pub fn constants() -> Vec<(&'static str, Value)> {
         ("spherical", Value::Mapping(ir::Mapping::Spherical)),
         ("cylindrical", Value::Mapping(ir::Mapping::Cylindrical)),
     ]
+    .into_iter()
+    .chain(modes)
+    .collect()
 }
 
 fn int_in(it: &Interp, v: &Value, sp: Span, name: &str, lo: i64, hi: i64) -> R<i64> {
@@ -83,8 +90,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         None => (640, 480),
         Some((v, sp)) => match &v {
             Value::List(l) if l.len() == 2 => (
-                int_in(it, &l[0], sp, "resolution", 1, 16384)?,
-                int_in(it, &l[1], sp, "resolution", 1, 16384)?,
+                int_in(it, &l[0], sp, "resolution", 1, MAX_IMAGE_SIDE.into())?,
+                int_in(it, &l[1], sp, "resolution", 1, MAX_IMAGE_SIDE.into())?,
             ),
             _ => {
                 return Err(error(
@@ -173,11 +180,32 @@ fn area_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let samples = match p.get("samples") {
         None => [4, 4],
         Some((Value::List(l), sp)) if l.len() == 2 => [
-            int_in(it, &l[0], sp, "samples", 1, 1024)? as u32,
-            int_in(it, &l[1], sp, "samples", 1, 1024)? as u32,
+            int_in(
+                it,
+                &l[0],
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32,
+            int_in(
+                it,
+                &l[1],
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32,
         ],
         Some((Value::Int(n), sp)) => {
-            let n = int_in(it, &Value::Int(n), sp, "samples", 1, 1024)? as u32;
+            let n = int_in(
+                it,
+                &Value::Int(n),
+                sp,
+                "samples",
+                1,
+                MAX_LIGHT_SAMPLES_PER_AXIS.into(),
+            )? as u32;
             [n, n]
         }
         Some((other, sp)) => {
@@ -225,12 +253,12 @@ fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max", "threshold"], a)?;
     let min = match p.get("min") {
-        Some((v, sp)) => int_in(it, &v, sp, "min", 1, 64)?,
+        Some((v, sp)) => int_in(it, &v, sp, "min", 1, MAX_PIXEL_SAMPLES_PER_AXIS.into())?,
         None => 1,
     };
     let max = match p.get("max") {
-        Some((v, sp)) => int_in(it, &v, sp, "max", min, 64)?,
-        None => (min * 4).min(64),
+        Some((v, sp)) => int_in(it, &v, sp, "max", min, MAX_PIXEL_SAMPLES_PER_AXIS.into())?,
+        None => (min * 4).min(MAX_PIXEL_SAMPLES_PER_AXIS.into()),
     };
     let (threshold, ts) = p.num_or(it, "threshold", 0.02)?;
     positive("threshold", threshold, ts)?;
@@ -274,7 +302,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "encoding",
     ];
     let mut p = Params::new(s, names, a)?;
-    let mut st = language_settings();
+    let mut st = ir::RenderSettings::language_defaults();
     if let Some((v, sp)) = p.get("shading") {
         st.shading = match v {
             Value::Shading(m) => m,
@@ -307,15 +335,22 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             }
         };
     }
-    st.shadows = p.bool_or(it, "shadows", true)?;
+    st.shadows = p.bool_or(it, "shadows", st.shadows)?;
     if let Some((v, sp)) = p.get("max_depth") {
-        st.max_depth = int_in(it, &v, sp, "max_depth", 0, 64)? as u32;
+        st.max_depth = int_in(it, &v, sp, "max_depth", 0, MAX_DEPTH.into())? as u32;
     }
     if let Some((v, sp)) = p.get("supersampling") {
         st.sampling = match v {
             Value::Sampling(x) => x,
             Value::Int(_) => ir::Sampling::Grid {
-                factor: int_in(it, &v, sp, "supersampling", 1, 64)? as u32,
+                factor: int_in(
+                    it,
+                    &v,
+                    sp,
+                    "supersampling",
+                    1,
+                    MAX_PIXEL_SAMPLES_PER_AXIS.into(),
+                )? as u32,
             },
             other => {
                 return Err(enum_mismatch(
@@ -377,17 +412,6 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         }
     }
     Ok(Value::Render(Rc::new(rv)))
-}
-
-/// The render settings of a `.rtc` scene before its `render` block: shadows on, five bounces,
-/// sRGB output.
-pub fn language_settings() -> ir::RenderSettings {
-    ir::RenderSettings {
-        shadows: true,
-        max_depth: 5,
-        encoding: ir::Encoding::Srgb,
-        ..ir::RenderSettings::default()
-    }
 }
 
 fn enum_mismatch(

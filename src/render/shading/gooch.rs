@@ -8,15 +8,15 @@ use glam::DVec3;
 
 use super::{Ctx, Surface, highlight, light_sample, visible};
 use crate::ir::{Color, GoochParams};
-use crate::render::plan::Plan;
+use crate::opt::Prepared;
 
 /// The Gooch colour of a surface point.
-pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) -> Color {
+pub fn shade(scene: &Prepared, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) -> Color {
     let kd_c = s.mat.kd * s.color;
     let cool = DVec3::new(0.0, 0.0, g.b) + g.alpha * kd_c;
     let warm = DVec3::new(g.y, g.y, 0.0) + g.beta * kd_c;
     let mut c = Color::ZERO;
-    for (i, light) in plan.lights.iter().enumerate() {
+    for (i, light) in scene.lights().iter().enumerate() {
         let share = 1.0 / f64::from(light.samples);
         for k in 0..light.samples {
             let ls = light_sample(light, i, k, s, &ctx.rng);
@@ -25,7 +25,7 @@ pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) -
             if n_dot_l <= 0.0 {
                 // Facing away: the blend already leans cool; no highlight from behind.
                 c += share * tone;
-            } else if visible(plan, s, &ls, &mut ctx.stats) {
+            } else if visible(scene, s, &ls, &mut ctx.stats) {
                 c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
             } else {
                 c += share * cool;

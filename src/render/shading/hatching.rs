@@ -7,7 +7,7 @@ use glam::DVec2;
 
 use super::{Ctx, Surface, light_sample, visible};
 use crate::ir::Color;
-use crate::render::plan::Plan;
+use crate::opt::Prepared;
 
 /// Lines per unit of surface coordinate.
 const FREQUENCY: f64 = 80.0;
@@ -15,15 +15,15 @@ const FREQUENCY: f64 = 80.0;
 const WIDTH: f64 = 0.35;
 
 /// The hatched colour of a surface point.
-pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
+pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
     let mut tone = 0.0;
-    for (i, light) in plan.lights.iter().enumerate() {
+    for (i, light) in scene.lights().iter().enumerate() {
         let lum = (light.color.x + light.color.y + light.color.z) / 3.0;
         tone += s.mat.ka * lum;
         for k in 0..light.samples {
             let ls = light_sample(light, i, k, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
-            if n_dot_l > 0.0 && visible(plan, s, &ls, &mut ctx.stats) {
+            if n_dot_l > 0.0 && visible(scene, s, &ls, &mut ctx.stats) {
                 tone += s.mat.kd * n_dot_l * lum / f64::from(light.samples);
             }
         }

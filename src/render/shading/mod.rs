@@ -1,19 +1,18 @@
 //! Shading models: what a surface point looks like under the lights, before reflection and
-//! refraction are added by the integrator.
+//! refraction are added by the Whitted integrator.
 
-pub mod depth;
 pub mod gooch;
 pub mod hatching;
-pub mod normal;
 pub mod phong;
 
 use glam::DVec3;
 
 use super::film::Stats;
-use super::plan::{LightPlan, Plan};
+use super::offset;
 use super::sampler::Rng;
 use crate::geometry::Ray;
 use crate::ir::{Color, LightKind, Material};
+use crate::opt::{Prepared, PreparedLight};
 
 /// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
 pub struct Ctx {
@@ -53,7 +52,7 @@ pub struct LightSample {
 
 /// The `k`-th sample of light `index` for a surface point (stratified and jittered on area lights).
 pub fn light_sample(
-    light: &LightPlan,
+    light: &PreparedLight,
     index: usize,
     k: u32,
     s: &Surface<'_>,
@@ -88,14 +87,14 @@ pub fn light_sample(
 
 /// True when nothing blocks the way from the surface to the light sample (always true without
 /// shadows). The shadow ray starts `eps` along the normal on the viewer's side.
-pub fn visible(plan: &Plan<'_>, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
-    if !plan.effects.shadows {
+pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
+    if !scene.effects().shadows {
         return true;
     }
     stats.shadow_rays += 1;
-    let eps = plan.eps(s.p);
+    let eps = offset::eps(scene, s.p);
     let ray = Ray::new(s.p + eps * s.n, ls.l);
-    !plan.world.occluded(&ray, 0.0, ls.dist - eps)
+    !scene.world().occluded(&ray, 0.0, ls.dist - eps)
 }
 
 /// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.

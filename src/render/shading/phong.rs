@@ -5,17 +5,17 @@
 
 use super::{Ctx, Surface, highlight, light_sample, visible};
 use crate::ir::{AmbientConvention, Color};
-use crate::render::plan::Plan;
+use crate::opt::Prepared;
 
 /// The Phong colour of a surface point.
-pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
+pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
     let m = s.mat;
     let mut c = Color::ZERO;
-    if plan.ambient == AmbientConvention::Once {
+    if scene.settings().ambient == AmbientConvention::Once {
         c += m.ka * s.color;
     }
-    for (i, light) in plan.lights.iter().enumerate() {
-        if plan.ambient == AmbientConvention::PerLight {
+    for (i, light) in scene.lights().iter().enumerate() {
+        if scene.settings().ambient == AmbientConvention::PerLight {
             c += m.ka * s.color * light.color;
         }
         for k in 0..light.samples {
@@ -26,7 +26,7 @@ pub fn shade(plan: &Plan<'_>, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
             if n_dot_l <= 0.0 {
                 continue;
             }
-            if !visible(plan, s, &ls, &mut ctx.stats) {
+            if !visible(scene, s, &ls, &mut ctx.stats) {
                 continue;
             }
             c += (m.kd * n_dot_l) * s.color * ls.color + highlight(s, ls.l, n_dot_l) * ls.color;

@@ -13,8 +13,6 @@ use crate::source::Span;
 
 /// Largest magnitude accepted for any number; beyond it f64 rendering math loses all precision.
 pub const MAX_ABS: f64 = 1e12;
-/// Largest image side accepted from `viewSize`.
-pub const MAX_VIEW: u32 = 16384;
 
 /// Reports NaN, infinities and absurd magnitudes; `text` is the number as written.
 pub fn check_number(
@@ -174,57 +172,23 @@ pub fn sphere_object(
     }
 }
 
-/// Finds an asset named in a scene: relative to the scene file's folder first, then to the current
-/// directory, then by file name in `textures/` and `models/` folders beside the scene's folder or up
-/// to two levels above it (the course data layout).
-/// On failure returns every path tried.
-pub fn resolve_asset(scene: &Path, name: &str) -> Result<PathBuf, Vec<PathBuf>> {
-    let given = Path::new(name);
-    if given.is_absolute() {
-        return if given.is_file() {
-            Ok(given.to_path_buf())
-        } else {
-            Err(vec![given.to_path_buf()])
-        };
-    }
+/// Finds an asset named in a course file at `scene` (the asset service's one search order), or
+/// reports it missing: a `kind` file ("mesh", "texture") named at `span`.
+pub fn find_asset(
+    scene: &Path,
+    name: &str,
+    span: Span,
+    kind: &str,
+    diags: &mut Diagnostics,
+) -> Option<PathBuf> {
     let dir = scene.parent().unwrap_or(Path::new(""));
-    let mut tried = vec![dir.join(given), given.to_path_buf()];
-    if let Some(file_name) = given.file_name() {
-        // The course data keeps scenes in `yaml/` (and `yaml/<group>/`) next to `textures/` and
-        // `models/`; students named assets relative to wherever their binary ran.
-        let mut up = dir.to_path_buf();
-        for _ in 0..3 {
-            up = up.join("..");
-            tried.push(up.join("textures").join(file_name));
-            tried.push(up.join("models").join(file_name));
+    match crate::assets::search::find(dir, name) {
+        Ok(path) => Some(path),
+        Err(missing) => {
+            diags.push(missing.diagnostic(span, kind, scene));
+            None
         }
     }
-    match tried.iter().find(|p| p.is_file()) {
-        Some(found) => Ok(found.clone()),
-        None => Err(tried),
-    }
-}
-
-/// The error for an asset that [`resolve_asset`] could not find.
-pub fn missing_asset(span: Span, name: &str, kind: &str, tried: &[PathBuf]) -> Diagnostic {
-    let list: Vec<String> = tried
-        .iter()
-        .take(2)
-        .map(|p| p.display().to_string())
-        .collect();
-    let more = if tried.len() > 2 {
-        ", and in `textures/` and `models/` folders up to three levels above the scene"
-    } else {
-        ""
-    };
-    Diagnostic::error(
-        "rtc::compat::missing_file",
-        span,
-        format!("{kind} file `{name}` not found"),
-    )
-    .with_label("no such file")
-    .with_note(format!("looked for `{}`{more}", list.join("` and `")))
-    .with_help("give the path relative to the scene file")
 }
 
 /// Everything a course file defines, collected before the checks that need the whole file.
@@ -243,7 +207,7 @@ pub struct Draft {
 }
 
 /// The parts of a [`Scene`] other than the camera and lights.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct SceneParts {
     /// Materials, one per object.
     pub materials: Vec<Material>,
@@ -253,6 +217,17 @@ pub struct SceneParts {
     pub objects: Vec<Object>,
     /// Settings.
     pub settings: RenderSettings,
+}
+
+impl Default for SceneParts {
+    fn default() -> SceneParts {
+        SceneParts {
+            materials: Vec::new(),
+            textures: Vec::new(),
+            objects: Vec::new(),
+            settings: RenderSettings::course_defaults(),
+        }
+    }
 }
 
 impl SceneParts {

@@ -1,7 +1,10 @@
 //! OBJ loading errors with the offending line, found by re-reading the file when tobj (which
-//! reports no positions) rejects it.
+//! reports no positions) rejects it, and the one diagnostic each kind of error becomes.
 
 use std::path::Path;
+
+use crate::diag::{Diagnostic, Severity};
+use crate::source::Span;
 
 /// Why a mesh could not be loaded.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -25,6 +28,51 @@ impl MeshError {
             missing: false,
             too_large: false,
         }
+    }
+}
+
+impl MeshError {
+    /// The diagnostic for this error on the mesh `path` placed at `span`:
+    /// `rtc::mesh::{not_found, too_large, malformed}`.
+    pub fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
+        if self.missing {
+            return Diagnostic::error(
+                "rtc::mesh::not_found",
+                span,
+                format!("cannot read the mesh file `{}`", path.display()),
+            )
+            .with_label("this mesh")
+            .with_help("check the path and the file's permissions");
+        }
+        if self.too_large {
+            return Diagnostic::error(
+                "rtc::mesh::too_large",
+                span,
+                format!(
+                    "the mesh file `{}` is too large: {}",
+                    path.display(),
+                    self.message
+                ),
+            )
+            .with_label("this mesh")
+            .with_help("simplify the model or split it into several OBJ files");
+        }
+        let at = self
+            .line
+            .map(|l| format!(" at line {l}"))
+            .unwrap_or_default();
+        let mut d = Diagnostic::new(
+            Severity::Error,
+            "rtc::mesh::malformed",
+            Some(span),
+            format!("the mesh file `{}` is malformed{at}", path.display()),
+        )
+        .with_label("this mesh")
+        .with_note(self.message.clone());
+        if let Some(l) = self.line {
+            d = d.with_note(format!("{}:{l}", path.display()));
+        }
+        d
     }
 }
 

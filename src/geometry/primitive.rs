@@ -5,11 +5,8 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
-use super::{
-    Aabb, Crossing, Hit, Ray, aabox::Cuboid, blob::Blob, cone::Cone, csg, cylinder::Cylinder,
-    disk::Disk, mesh::MeshData, plane, polygon::Polygon, quad::Quad, sphere, torus::Torus,
-    triangle::Triangle,
-};
+use super::shape::Leaf;
+use super::{Aabb, Hit, Ray, csg, mesh::Mesh, sphere};
 use crate::ir::{CsgOp, MaterialId};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
@@ -25,13 +22,15 @@ pub struct GeoHit {
     pub uv: DVec2,
     /// The hit point in the leaf object's own space.
     pub local_point: DVec3,
+    /// The surface hit (see [`SurfaceId`]).
+    pub surface: SurfaceId,
     /// The material to shade with.
     pub material: MaterialId,
 }
 
 /// A boundary crossing of a solid node (for CSG).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NodeCrossing {
+pub struct PrimitiveCrossing {
     /// The hit.
     pub hit: GeoHit,
     /// Outside → inside.
@@ -42,7 +41,7 @@ pub struct NodeCrossing {
 #[derive(Clone, Debug)]
 pub struct MeshRef {
     /// The shared data (instanced by path and smoothing).
-    pub data: Arc<MeshData>,
+    pub data: Arc<Mesh>,
     /// Material id of each of the file's MTL materials, when the object uses them.
     pub mtl: Option<Vec<MaterialId>>,
 }
@@ -50,38 +49,8 @@ pub struct MeshRef {
 /// Geometry of one node, in object space.
 #[derive(Clone, Debug)]
 pub enum Geom {
-    /// A sphere.
-    Sphere {
-        /// Centre.
-        center: DVec3,
-        /// Radius.
-        radius: f64,
-    },
-    /// A half-space bounded by a plane.
-    Plane {
-        /// A point on it.
-        point: DVec3,
-        /// Unit outward normal.
-        normal: DVec3,
-    },
-    /// A box.
-    Box(Cuboid),
-    /// A triangle.
-    Triangle(Triangle),
-    /// A parallelogram.
-    Quad(Quad),
-    /// A planar polygon.
-    Polygon(Polygon),
-    /// A disk.
-    Disk(Disk),
-    /// A cylinder.
-    Cylinder(Cylinder),
-    /// A cone or frustum.
-    Cone(Cone),
-    /// A torus.
-    Torus(Torus),
-    /// Metaballs.
-    Blob(Blob),
+    /// A single shape (see [`Leaf`]).
+    Leaf(Leaf),
     /// A triangle mesh.
     Mesh(MeshRef),
     /// A CSG node.
@@ -89,7 +58,7 @@ pub enum Geom {
         /// The operation.
         op: CsgOp,
         /// Operands.
-        children: Vec<Node>,
+        children: Vec<Primitive>,
     },
 }
 
@@ -106,7 +75,7 @@ pub struct Placement {
 
 /// A prepared object.
 #[derive(Clone, Debug)]
-pub struct Node {
+pub struct Primitive {
     /// Geometry in object space.
     pub geom: Geom,
     /// `None` for the identity.
@@ -115,11 +84,18 @@ pub struct Node {
     pub material: MaterialId,
     /// Bounds in the parent's space (infinite for unbounded geometry).
     pub bounds: Aabb,
+    /// The surface a leaf or mesh node is, once the world has numbered them.
+    pub surface: SurfaceId,
 }
 
-impl Node {
+/// A surface of the world: one leaf shape or mesh, wherever it sits (a top-level object or an
+/// operand deep inside CSG). Hits carry it; the world tells its object and mapping frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct SurfaceId(pub u32);
+
+impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
-    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Node {
+    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();
         let placement = (transform != DAffine3::IDENTITY).then(|| Placement {
             to_object: transform.inverse(),
@@ -130,24 +106,25 @@ impl Node {
             None => local,
             Some(p) => local.transformed(&p.to_parent),
         };
-        Node {
+        Primitive {
             geom,
             placement,
             material,
             bounds,
+            surface: SurfaceId::default(),
+        }
+    }
+
+    /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
+    pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
+        match (&self.geom, &self.placement) {
+            (Geom::Leaf(Leaf::Sphere { center, radius }), None) => Some((*center, *radius)),
+            _ => None,
         }
     }
 
     /// The ray in object space (same `t`).
     #[inline]
-    /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
-    pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
-        match (&self.geom, &self.placement) {
-            (Geom::Sphere { center, radius }, None) => Some((*center, *radius)),
-            _ => None,
-        }
-    }
-
     fn local(&self, ray: &Ray) -> Ray {
         match &self.placement {
             None => *ray,
@@ -176,6 +153,7 @@ impl Node {
             geometric_normal: h.normal,
             uv: h.uv,
             local_point: ray.at(h.t),
+            surface: self.surface,
             material: self.material,
         }
     }
@@ -183,7 +161,7 @@ impl Node {
     /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
         // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
-        if let Geom::Sphere { center, radius } = &self.geom {
+        if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
             let r = self.local(ray);
             return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
                 let local_point = r.at(t);
@@ -194,6 +172,7 @@ impl Node {
                     geometric_normal: normal,
                     uv: DVec2::ZERO,
                     local_point,
+                    surface: self.surface,
                     material: self.material,
                 })
             });
@@ -207,44 +186,31 @@ impl Node {
             return None;
         }
         let r = self.local(ray);
-        let simple = |h: Option<Hit>| h.map(|h| self.out(self.leaf(&r, h)));
         match &self.geom {
-            Geom::Sphere { center, radius } => {
-                simple(sphere::intersect(*center, *radius, &r, t_min, t_max))
-            }
-            Geom::Plane { point, normal } => {
-                simple(plane::intersect(*point, *normal, &r, t_min, t_max))
-            }
-            Geom::Box(b) => simple(b.intersect(&r, t_min, t_max)),
-            Geom::Triangle(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Quad(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Polygon(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Disk(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Cylinder(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Cone(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Torus(x) => simple(x.intersect(&r, t_min, t_max)),
-            Geom::Blob(x) => simple(x.intersect(&r, t_min, t_max)),
+            Geom::Leaf(l) => l
+                .intersect(&r, t_min, t_max)
+                .map(|h| self.out(self.leaf(&r, h))),
             Geom::Mesh(m) => m
                 .data
                 .intersect(&r, t_min, t_max)
                 .map(|h| self.out(self.mesh_hit(&r, m, h))),
             Geom::Csg { op, children } => {
-                csg::intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
+                csg_intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
             }
         }
     }
 
     /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
     pub fn finish(&self, h: &mut GeoHit) {
-        if let Geom::Sphere { center, radius } = &self.geom {
-            h.uv = sphere::uv(((h.local_point - *center) / *radius).normalize());
+        if let Geom::Leaf(l @ Leaf::Sphere { .. }) = &self.geom {
+            h.uv = l.frame().spherical_uv(h.local_point);
         }
     }
 
     /// True when anything of this node lies in (t_min, t_max).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.geom {
-            Geom::Sphere { center, radius } => {
+            Geom::Leaf(Leaf::Sphere { center, radius }) => {
                 sphere::hit_t(*center, *radius, &self.local(ray), t_min, t_max).is_some()
             }
             Geom::Mesh(m) => {
@@ -268,20 +234,8 @@ impl Node {
             geometric_normal: h.geometric,
             uv: h.uv,
             local_point: r.at(h.t),
+            surface: self.surface,
             material,
-        }
-    }
-
-    /// Whether the node is a closed solid (or a half-space), so CSG can classify against it.
-    pub fn is_solid(&self) -> bool {
-        match &self.geom {
-            Geom::Sphere { .. } | Geom::Plane { .. } | Geom::Box(_) => true,
-            Geom::Torus(_) | Geom::Blob(_) => true,
-            Geom::Cylinder(c) => c.is_closed(),
-            Geom::Cone(c) => c.is_closed(),
-            Geom::Mesh(m) => m.data.is_closed(),
-            Geom::Csg { children, .. } => children.iter().all(Node::is_solid),
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
         }
     }
 
@@ -289,19 +243,16 @@ impl Node {
     pub fn inside_at_start(&self, ray: &Ray) -> bool {
         let r = self.local(ray);
         match &self.geom {
-            Geom::Plane { point, normal } => {
-                let dn = normal.dot(r.dir);
-                dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
-            }
+            Geom::Leaf(l) => l.inside_at_start(&r),
             Geom::Csg { op, children } => {
                 csg::combine(*op, children.iter().map(|c| c.inside_at_start(&r)))
             }
-            _ => false,
+            Geom::Mesh(_) => false,
         }
     }
 
     /// Every boundary crossing along the whole line of `ray`, sorted by `t` (solids only).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<NodeCrossing>) {
+    pub fn crossings(&self, ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
         if self.bounds.is_empty()
             || (self.bounds.is_finite()
                 && self
@@ -313,40 +264,22 @@ impl Node {
         }
         let r = self.local(ray);
         let start = out.len();
-        let mut simple = |f: &dyn Fn(&mut Vec<Crossing>)| {
-            let mut tmp = Vec::new();
-            f(&mut tmp);
-            for c in tmp {
-                out.push(NodeCrossing {
-                    hit: self.out(self.leaf(&r, c.hit)),
-                    entering: c.entering,
-                });
-            }
-        };
         match &self.geom {
-            Geom::Sphere { center, radius } => {
-                simple(&|o| sphere::crossings(*center, *radius, &r, o))
-            }
-            Geom::Plane { point, normal } => simple(&|o| {
-                if let Some(h) =
-                    plane::intersect(*point, *normal, &r, f64::NEG_INFINITY, f64::INFINITY)
-                {
-                    o.push(Crossing {
-                        hit: h,
-                        entering: normal.dot(r.dir) < 0.0,
+            Geom::Leaf(l) => {
+                let mut tmp = Vec::new();
+                l.crossings(&r, &mut tmp);
+                for c in tmp {
+                    out.push(PrimitiveCrossing {
+                        hit: self.out(self.leaf(&r, c.hit)),
+                        entering: c.entering,
                     });
                 }
-            }),
-            Geom::Box(b) => simple(&|o| b.crossings(&r, o)),
-            Geom::Cylinder(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Cone(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Torus(x) => simple(&|o| x.crossings(&r, o)),
-            Geom::Blob(x) => simple(&|o| x.crossings(&r, o)),
+            }
             Geom::Mesh(m) => {
                 let mut hits = Vec::new();
                 m.data.all_hits(&r, &mut hits);
                 for (h, entering) in hits {
-                    out.push(NodeCrossing {
+                    out.push(PrimitiveCrossing {
                         hit: self.out(self.mesh_hit(&r, m, h)),
                         entering,
                     });
@@ -354,13 +287,12 @@ impl Node {
             }
             Geom::Csg { op, children } => {
                 let mut tmp = Vec::new();
-                csg::crossings(*op, children, &r, &mut tmp);
-                out.extend(tmp.into_iter().map(|c| NodeCrossing {
+                csg_crossings(*op, children, &r, &mut tmp);
+                out.extend(tmp.into_iter().map(|c| PrimitiveCrossing {
                     hit: self.out(c.hit),
                     entering: c.entering,
                 }));
             }
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => {}
         }
         out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
     }
@@ -372,22 +304,63 @@ impl Node {
             Some(pl) => pl.to_object.transform_point3(p),
         };
         match &self.geom {
-            Geom::Sphere { center, radius } => sphere::contains(*center, *radius, q),
-            Geom::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
-            Geom::Box(b) => b.contains(q),
-            Geom::Cylinder(c) => c.is_closed() && c.contains(q),
-            Geom::Cone(c) => c.is_closed() && c.contains(q),
-            Geom::Torus(t) => t.contains(q),
-            Geom::Blob(b) => b.contains(q),
+            Geom::Leaf(l) => l.contains(q),
             Geom::Mesh(m) => mesh_contains(&m.data, q),
             Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
-            Geom::Triangle(_) | Geom::Quad(_) | Geom::Polygon(_) | Geom::Disk(_) => false,
         }
     }
 }
 
+/// A CSG node's own boundary crossings along the whole line, in order.
+fn csg_crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+    let mut all: Vec<(usize, GeoHit, bool)> = Vec::new();
+    let mut tmp = Vec::new();
+    for (i, c) in children.iter().enumerate() {
+        tmp.clear();
+        c.crossings(ray, &mut tmp);
+        all.extend(tmp.iter().map(|x| (i, x.hit, x.entering)));
+    }
+    all.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
+    let starts = children.iter().map(|c| c.inside_at_start(ray)).collect();
+    csg::boundary(op, starts, &all, |i, mut hit, entering| {
+        if csg::flips_normal(op, i) {
+            hit.normal = -hit.normal;
+            hit.geometric_normal = -hit.geometric_normal;
+        }
+        out.push(PrimitiveCrossing { hit, entering });
+    });
+}
+
+/// A CSG node's nearest hit in (t_min, t_max). A union keeps its operands' inner surfaces
+/// (visible through transparent materials); merge, intersection and difference show only the
+/// result's boundary.
+fn csg_intersect(
+    op: CsgOp,
+    children: &[Primitive],
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<GeoHit> {
+    if op == CsgOp::Union {
+        let mut best: Option<GeoHit> = None;
+        let mut far = t_max;
+        for c in children {
+            if let Some(h) = c.intersect(ray, t_min, far) {
+                far = h.t;
+                best = Some(h);
+            }
+        }
+        return best;
+    }
+    let mut out = Vec::new();
+    csg_crossings(op, children, ray, &mut out);
+    out.into_iter()
+        .map(|c| c.hit)
+        .find(|h| h.t > t_min && h.t < t_max)
+}
+
 /// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
-fn mesh_contains(m: &MeshData, p: DVec3) -> bool {
+fn mesh_contains(m: &Mesh, p: DVec3) -> bool {
     let dir = DVec3::new(0.5773, 0.5774, 0.5771);
     let mut hits = Vec::new();
     m.all_hits(&Ray::new(p, dir), &mut hits);
@@ -398,21 +371,11 @@ impl Geom {
     /// Object-space bounds (infinite for planes; CSG per its operation).
     pub fn bounds(&self) -> Aabb {
         match self {
-            Geom::Sphere { center, radius } => sphere::bounds(*center, *radius),
-            Geom::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
-            Geom::Box(b) => b.bounds(),
-            Geom::Triangle(x) => x.bounds(),
-            Geom::Quad(x) => x.bounds(),
-            Geom::Polygon(x) => x.bounds(),
-            Geom::Disk(x) => x.bounds(),
-            Geom::Cylinder(x) => x.bounds(),
-            Geom::Cone(x) => x.bounds(),
-            Geom::Torus(x) => x.bounds(),
-            Geom::Blob(x) => x.bounds(),
+            Geom::Leaf(l) => l.bounds(),
             Geom::Mesh(m) => m.data.bounds(),
             Geom::Csg { op, children } => {
                 let b: Vec<Aabb> = children.iter().map(|c| c.bounds).collect();
-                crate::opt::bounds::csg_bounds(*op, &b)
+                csg::bounds(*op, &b)
             }
         }
     }

@@ -10,10 +10,11 @@
 
 use glam::DVec3;
 
-use super::plan::Plan;
-use super::shading::{self, Ctx, Surface};
 use crate::geometry::{Ray, SurfaceHit};
-use crate::ir::{Color, ShadingModel};
+use crate::ir::{Color, Material, ShadingModel};
+use crate::opt::{Effects, Prepared};
+use crate::render::shading::{self, Ctx, Surface};
+use crate::render::{bump, offset, texture};
 
 /// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
 #[derive(Clone, Copy, Debug)]
@@ -89,13 +90,61 @@ pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n
 }
 
-impl Plan<'_> {
-    /// The colour seen along `ray`, which has already bounced `depth` times.
-    pub fn trace(&self, ray: &Ray, depth: u32, media: Media, ctx: &mut Ctx) -> Color {
-        let Some(hit) = self.world.intersect(ray, 0.0, f64::INFINITY) else {
+/// Where a path is: how often it has bounced and which media it is inside. (State a path
+/// carries down the recursion lives here, such as a throughput weight for an insignificance
+/// cut-off.)
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Path {
+    /// Bounces so far (0 for a camera ray).
+    pub depth: u32,
+    /// The media the ray travels in.
+    pub media: Media,
+}
+
+impl Path {
+    /// A camera ray's path: no bounce yet, outside everything.
+    pub const CAMERA: Path = Path {
+        depth: 0,
+        media: Media::OUTSIDE,
+    };
+
+    fn bounce(self, media: Media) -> Path {
+        Path {
+            depth: self.depth + 1,
+            media,
+        }
+    }
+}
+
+/// The shaded-image integrator: Whitted recursion over the prepared scene.
+pub struct Whitted<'a> {
+    scene: &'a Prepared,
+    effects: Effects,
+    shading: ShadingModel,
+    max_depth: u32,
+    background: Color,
+}
+
+impl<'a> Whitted<'a> {
+    /// The integrator for `scene`'s settings.
+    pub fn new(scene: &'a Prepared) -> Whitted<'a> {
+        let s = scene.settings();
+        Whitted {
+            scene,
+            effects: scene.effects(),
+            shading: s.shading,
+            max_depth: s.max_depth,
+            background: s.background,
+        }
+    }
+
+    /// The colour seen along `ray` by a path in state `path`.
+    pub fn trace(&self, ray: &Ray, path: Path, ctx: &mut Ctx) -> Color {
+        let scene = self.scene;
+        let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) else {
             return self.background;
         };
-        let mat = &self.materials[hit.material.0 as usize];
+        let mat = scene.material(hit.material);
         let inside = hit.normal.dot(ray.dir) > 0.0;
         let facing = if inside { -hit.normal } else { hit.normal };
         let s = Surface {
@@ -105,14 +154,14 @@ impl Plan<'_> {
             color: self.base_color(&hit, mat),
             mat,
             uv: hit.uv,
-            depth,
+            depth: path.depth,
         };
         let mut c = match mat.shading.unwrap_or(self.shading) {
-            ShadingModel::Phong => shading::phong::shade(self, &s, ctx),
-            ShadingModel::Gooch(g) => shading::gooch::shade(self, &s, &g, ctx),
-            ShadingModel::Hatching => shading::hatching::shade(self, &s, ctx),
+            ShadingModel::Phong => shading::phong::shade(scene, &s, ctx),
+            ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx),
+            ShadingModel::Hatching => shading::hatching::shade(scene, &s, ctx),
         };
-        if depth >= self.max_depth {
+        if path.depth >= self.max_depth {
             return c;
         }
         let mut kr = if self.effects.reflection {
@@ -125,7 +174,8 @@ impl Plan<'_> {
         } else {
             0.0
         };
-        let eps = self.eps(hit.point);
+        let eps = offset::eps(scene, hit.point);
+        let media = path.media;
         if kt > 0.0 {
             let (n1, after) = if inside {
                 (mat.eta, media.leave(mat.eta))
@@ -136,7 +186,7 @@ impl Plan<'_> {
                 Some(dir) => {
                     ctx.stats.secondary_rays += 1;
                     let r = Ray::new(hit.point - eps * facing, dir);
-                    c += kt * self.trace(&r, depth + 1, after, ctx);
+                    c += kt * self.trace(&r, path.bounce(after), ctx);
                 }
                 None => kr += kt,
             }
@@ -144,35 +194,32 @@ impl Plan<'_> {
         if kr > 0.0 {
             ctx.stats.secondary_rays += 1;
             let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing));
-            c += kr * self.trace(&r, depth + 1, media, ctx);
+            c += kr * self.trace(&r, path.bounce(media), ctx);
         }
         c
     }
 
     /// Material colour, or the texture's where the material has one.
-    fn base_color(&self, hit: &SurfaceHit, mat: &crate::ir::Material) -> Color {
+    fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
         match mat.texture {
             Some(t) if self.effects.textures => {
-                let shape = &self.scene.objects[hit.object as usize].shape;
-                self.textures[t.0 as usize].color(hit, shape)
+                let frame = self.scene.world().frame(hit);
+                texture::color(&self.scene.textures()[t.0 as usize], hit, frame)
             }
             _ => mat.color,
         }
     }
 
     /// The shading normal: `facing`, tilted by the material's bump map where it has one.
-    fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &crate::ir::Material) -> DVec3 {
+    fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
         match mat.bump {
-            Some(b) if self.effects.bump => {
-                let shape = &self.scene.objects[hit.object as usize].shape;
-                super::bump::perturb(
-                    &self.textures[b.texture.0 as usize],
-                    b.scale,
-                    hit,
-                    shape,
-                    facing,
-                )
-            }
+            Some(b) if self.effects.bump => bump::perturb(
+                &self.scene.textures()[b.texture.0 as usize],
+                b.scale,
+                hit,
+                self.scene.world().frame(hit),
+                facing,
+            ),
             _ => facing,
         }
     }

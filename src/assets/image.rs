@@ -1,0 +1,143 @@
+//! Texture images: decoded once into linear channels in [0, 1]; lookups are nearest-pixel as
+//! the course framework does (COURSE.md §2.5).
+
+use std::path::Path;
+
+use glam::{DVec2, DVec3};
+
+use crate::diag::Diagnostic;
+use crate::source::Span;
+
+/// A decoded image with channels in [0, 1].
+#[derive(Clone, Debug)]
+pub struct Picture {
+    width: u32,
+    height: u32,
+    texels: Vec<DVec3>,
+}
+
+/// Why an image could not be decoded.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ImageError {
+    /// What went wrong (the decoder's message).
+    pub message: String,
+    /// True when the file could not be opened at all.
+    pub missing: bool,
+}
+
+impl Picture {
+    /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
+    pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
+        let ok = width > 0 && height > 0 && texels.len() == width as usize * height as usize;
+        ok.then_some(Picture {
+            width,
+            height,
+            texels,
+        })
+    }
+
+    /// Decodes an image file (PNG, JPEG, HDR or EXR, by extension).
+    pub fn load(path: &Path) -> Result<Picture, ImageError> {
+        let reader = image::ImageReader::open(path).map_err(|e| ImageError {
+            message: e.to_string(),
+            missing: true,
+        })?;
+        // The format comes from the extension, and the decoder's default limits (512 MiB) are
+        // the budget for untrusted sizes.
+        let decoded = reader.decode().map_err(|e| ImageError {
+            message: e.to_string(),
+            missing: false,
+        })?;
+        let (w, h) = (decoded.width(), decoded.height());
+        // 8-bit images convert exactly as byte/255 in f64, like the course framework.
+        let texels: Vec<DVec3> =
+            if decoded.color().bytes_per_pixel() == decoded.color().channel_count() {
+                let to = |b: u8| f64::from(b) / 255.0;
+                decoded
+                    .to_rgb8()
+                    .pixels()
+                    .map(|p| DVec3::new(to(p[0]), to(p[1]), to(p[2])))
+                    .collect()
+            } else {
+                decoded
+                    .to_rgb32f()
+                    .pixels()
+                    .map(|p| DVec3::new(f64::from(p[0]), f64::from(p[1]), f64::from(p[2])))
+                    .collect()
+            };
+        Picture::new(w, h, texels).ok_or_else(|| ImageError {
+            message: "the image has no pixels".into(),
+            missing: false,
+        })
+    }
+
+    /// The size of one texel in (u, v).
+    pub fn texel_size(&self) -> (f64, f64) {
+        (1.0 / f64::from(self.width), 1.0 / f64::from(self.height))
+    }
+
+    /// The texel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top row; u, v are clamped to [0, 1].
+    pub fn nearest(&self, uv: DVec2) -> DVec3 {
+        let pick = |t: f64, n: u32| {
+            let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+            ((t * f64::from(n - 1)) as u32).min(n - 1) as usize
+        };
+        let (x, y) = (pick(uv.x, self.width), pick(uv.y, self.height));
+        self.texels[y * self.width as usize + x]
+    }
+
+    /// Approximate heap bytes.
+    pub fn memory(&self) -> usize {
+        self.texels.len() * std::mem::size_of::<DVec3>()
+    }
+}
+
+impl ImageError {
+    /// The diagnostic for this error on the image `path` named at `span`:
+    /// `rtc::texture::{not_found, malformed}`.
+    pub fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
+        let (code, what) = if self.missing {
+            ("rtc::texture::not_found", "cannot read the image")
+        } else {
+            ("rtc::texture::malformed", "cannot decode the image")
+        };
+        Diagnostic::error(code, span, format!("{what} `{}`", path.display()))
+            .with_label(self.message.clone())
+            .with_help("check that the file is a complete PNG, JPEG, HDR or EXR image")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nearest_uses_truncated_scaled_coordinates() {
+        // 3×2 image: texel value encodes its index.
+        let texels = (0..6).map(|i| DVec3::splat(f64::from(i))).collect();
+        let p = Picture::new(3, 2, texels).unwrap();
+        assert_eq!(p.nearest(DVec2::new(0.0, 0.0)).x, 0.0);
+        assert_eq!(p.nearest(DVec2::new(0.49, 0.0)).x, 0.0); // int(0.98) = 0
+        assert_eq!(p.nearest(DVec2::new(0.5, 0.0)).x, 1.0);
+        assert_eq!(p.nearest(DVec2::new(1.0, 1.0)).x, 5.0);
+        assert_eq!(p.nearest(DVec2::new(0.99, 0.99)).x, 1.0); // (int(1.98), int(0.99)) = (1, 0)
+        assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
+        assert!(Picture::new(0, 2, vec![]).is_none());
+    }
+
+    #[test]
+    fn a_truncated_png_is_malformed_not_missing() {
+        let dir = std::env::temp_dir().join(format!("rtc-truncated-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("half.png");
+        let whole = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/course/textures/bluegrid.png"),
+        )
+        .unwrap();
+        std::fs::write(&path, &whole[..whole.len() / 2]).unwrap();
+        let e = Picture::load(&path).unwrap_err();
+        assert!(!e.missing, "{e:?}");
+        assert!(Picture::load(&dir.join("none.png")).unwrap_err().missing);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

@@ -1,0 +1,44 @@
+//! The asset service: every file a scene names besides its own text. Paths are resolved in one
+//! documented order for the scene language and the course formats ([`search`]); OBJ meshes with
+//! their MTL materials ([`obj`], [`mtl`]) and texture images ([`image`]) are read and decoded
+//! once per process ([`cache`]) whoever asks first: evaluation (a mesh's `.bounds`), `rtc check`
+//! or the preparation stage. Loading errors become diagnostics here, one kind per problem.
+//!
+//! The service depends only on the IR (materials it creates) and the diagnostic leaves; it knows
+//! nothing of BVHs or rendering: geometry builds its structures from the plain data loaded here.
+
+pub mod cache;
+pub mod image;
+pub mod mtl;
+pub mod obj;
+pub mod obj_error;
+pub mod search;
+
+use std::path::Path;
+use std::sync::Arc;
+
+pub use self::image::{ImageError, Picture};
+pub use obj::MeshAsset;
+pub use obj_error::MeshError;
+pub use search::{ASSET_PATH_VAR, NotFound};
+
+use cache::{Cache, FileKey};
+
+static MESHES: Cache<MeshAsset> = Cache::new();
+static PICTURES: Cache<Picture> = Cache::new();
+
+/// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process.
+pub fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
+    MESHES.get_or_load(FileKey::of(path, smooth), || MeshAsset::load(path, smooth))
+}
+
+/// The image at `path`, decoded once per process.
+pub fn picture(path: &Path) -> Result<Arc<Picture>, ImageError> {
+    PICTURES.get_or_load(FileKey::of(path, false), || Picture::load(path))
+}
+
+/// Forgets every cached asset (benchmarks use it to time loading afresh).
+pub fn clear_cache() {
+    MESHES.clear();
+    PICTURES.clear();
+}

@@ -1,0 +1,31 @@
+//! What a front end returns: the scene when there were no errors, and every finding either way.
+
+use crate::diag::{Diagnostic, Diagnostics, IO_ERROR, Severity};
+
+use super::Scene;
+
+/// What a front end produced: a scene when there were no errors, and every finding either way.
+#[derive(Debug, Default)]
+pub struct Loaded {
+    /// The evaluated scene; `None` when errors prevent one.
+    pub scene: Option<Scene>,
+    /// Errors, warnings and notes from every stage that ran.
+    pub diagnostics: Diagnostics,
+}
+
+impl Loaded {
+    /// A result holding a single error without a source location (I/O, usage).
+    pub fn failure(code: &'static str, message: impl Into<String>, help: &str) -> Loaded {
+        let mut diagnostics = Diagnostics::default();
+        diagnostics.push(Diagnostic::new(Severity::Error, code, None, message).with_help(help));
+        Loaded {
+            scene: None,
+            diagnostics,
+        }
+    }
+
+    /// True when any diagnostic is an I/O problem rather than a scene error.
+    pub fn has_io_error(&self) -> bool {
+        self.diagnostics.items.iter().any(|d| d.code == IO_ERROR)
+    }
+}

@@ -1,0 +1,240 @@
+//! IR objects → prepared [`Primitive`]s: shape checks (by `geometry::shape`), transforms,
+//! materials, mesh loading through the asset service with instancing (one BVH per file and
+//! smoothing, shared by every object placing it), MTL material ids, and diagnostics for
+//! everything that cannot be drawn.
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use std::time::Duration;
+
+use crate::assets::{self, MeshAsset};
+use crate::diag::{Diagnostic, Diagnostics};
+use crate::geometry::mesh::{Mesh, MeshParts};
+use crate::geometry::primitive::{Geom, MeshRef, Primitive};
+use crate::geometry::shape;
+use crate::ir::{Material, MaterialId, Object, Shape};
+
+/// What the meshes placed so far took.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct MeshStats {
+    /// Distinct files (and smoothing) placed.
+    pub meshes: usize,
+    /// Their triangles, each file once.
+    pub unique_triangles: usize,
+    /// Time their BVHs took.
+    pub bvh_build_time: Duration,
+    /// Time reading the files and building their BVHs took.
+    pub load_time: Duration,
+    /// Approximate heap bytes of their triangles and BVHs.
+    pub memory_bytes: usize,
+}
+
+/// Prepares objects, collecting every problem instead of stopping at the first.
+pub struct Builder {
+    /// Number of materials in the scene; MTL materials get ids from here on.
+    base: u32,
+    /// MTL materials added by meshes, in id order after the scene's.
+    pub extra_materials: Vec<Material>,
+    /// Meshes this world placed already: a file placed N times is asked of the process-wide
+    /// cache once, and its load warnings are reported once.
+    cache: HashMap<(PathBuf, bool), (Arc<MeshAsset>, Arc<Mesh>)>,
+    mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
+    /// Findings so far.
+    pub diagnostics: Diagnostics,
+}
+
+impl Builder {
+    /// A builder for `scene`; MTL materials get ids from `first_extra` on.
+    pub fn new(first_extra: u32) -> Builder {
+        Builder {
+            base: first_extra,
+            extra_materials: Vec::new(),
+            cache: HashMap::new(),
+            mtl_ids: HashMap::new(),
+            diagnostics: Diagnostics::default(),
+        }
+    }
+
+    /// What the meshes placed so far took.
+    pub fn stats(&self) -> MeshStats {
+        let mut s = MeshStats::default();
+        for (asset, m) in self.cache.values() {
+            s.meshes += 1;
+            s.unique_triangles += m.triangle_count();
+            s.bvh_build_time += m.build_time();
+            s.load_time += asset.load_time + m.build_time();
+            s.memory_bytes += m.memory();
+        }
+        s
+    }
+
+    fn error(&mut self, o: &Object, code: &'static str, msg: String, label: &str, help: &str) {
+        let mut d = Diagnostic::error(code, o.span, msg).with_label(label);
+        if !help.is_empty() {
+            d = d.with_help(help);
+        }
+        self.diagnostics.push(d);
+    }
+
+    /// Prepares one object (and its CSG children); `None` after recording an error.
+    pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Primitive> {
+        let material = o.material.unwrap_or(inherited);
+        let t = &o.transform;
+        let det = t.matrix3.determinant();
+        let scale = t
+            .matrix3
+            .x_axis
+            .length()
+            .max(t.matrix3.y_axis.length())
+            .max(t.matrix3.z_axis.length());
+        if !(det.is_finite() && t.translation.is_finite())
+            || det.abs() <= 1e-12 * scale * scale * scale
+        {
+            self.error(
+                o,
+                "rtc::geometry::singular_transform",
+                format!(
+                    "the transform of this {} cannot be inverted",
+                    o.shape.kind_name()
+                ),
+                "this object is flattened to zero thickness (or has a non-finite transform)",
+                "give every scale factor a non-zero value",
+            );
+            return None;
+        }
+        let geom = self.geom(o, material)?;
+        Some(Primitive::new(geom, *t, material))
+    }
+
+    fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {
+        let g = match &o.shape {
+            Shape::Mesh {
+                path,
+                smooth,
+                use_mtl,
+            } => {
+                let (asset, data) = self.mesh(o, path, *smooth)?;
+                let mtl = (*use_mtl && !asset.materials.is_empty()).then(|| self.mtl(&asset));
+                Geom::Mesh(MeshRef { data, mtl })
+            }
+            Shape::Csg { op, children } => {
+                let mut nodes = Vec::with_capacity(children.len());
+                let mut ok = true;
+                for c in children {
+                    match self.object(c, material) {
+                        Some(_) if !shape::encloses_volume(&c.shape, &closed_mesh) => {
+                            ok = false;
+                            let what = match &c.shape {
+                                Shape::Mesh { path, .. } => {
+                                    format!("the mesh `{}` is not closed", path.display())
+                                }
+                                Shape::Cylinder { .. } | Shape::Cone { .. } => {
+                                    format!("this {} is open", c.shape.kind_name())
+                                }
+                                other => {
+                                    format!("a {} is a surface, not a solid", other.kind_name())
+                                }
+                            };
+                            self.diagnostics.push(
+                                Diagnostic::error(
+                                    "rtc::csg::open_operand",
+                                    c.span,
+                                    "CSG needs closed solids",
+                                )
+                                .with_label(what)
+                                .with_secondary(o.span, "in this CSG operation")
+                                .with_help(match &c.shape {
+                                    Shape::Cylinder { .. } | Shape::Cone { .. } => "set `capped: true`",
+                                    Shape::Mesh { .. } => "use a watertight mesh (every edge shared by two faces)",
+                                    _ => "use a closed solid such as a box, sphere or capped cylinder",
+                                }),
+                            );
+                        }
+                        Some(n) => nodes.push(n),
+                        None => ok = false,
+                    }
+                }
+                if let Err(flaw) = shape::check(&o.shape) {
+                    self.diagnostics.push(flaw.diagnostic(o.span));
+                    return None;
+                }
+                if !ok {
+                    return None;
+                }
+                Geom::Csg {
+                    op: *op,
+                    children: nodes,
+                }
+            }
+            leaf_shape => match shape::leaf(leaf_shape) {
+                Ok(l) => Geom::Leaf(l),
+                Err(flaw) => {
+                    self.diagnostics.push(flaw.diagnostic(o.span));
+                    return None;
+                }
+            },
+        };
+        Some(g)
+    }
+
+    fn mesh(
+        &mut self,
+        o: &Object,
+        path: &std::path::Path,
+        smooth: bool,
+    ) -> Option<(Arc<MeshAsset>, Arc<Mesh>)> {
+        let key = (path.to_path_buf(), smooth);
+        if let Some(m) = self.cache.get(&key) {
+            return Some(m.clone());
+        }
+        match assets::mesh(path, smooth) {
+            Ok(asset) => {
+                for w in &asset.warnings {
+                    self.diagnostics.push(
+                        Diagnostic::warning(
+                            "rtc::mesh::missing_mtl",
+                            o.span,
+                            format!("the mesh `{}` loads, but {w}", path.display()),
+                        )
+                        .with_label("drawn with the object's material"),
+                    );
+                }
+                let mesh = Arc::new(Mesh::build(MeshParts {
+                    triangles: &asset.triangles,
+                    normals: &asset.normals,
+                    uvs: &asset.uvs,
+                    material_of: &asset.material_of,
+                }));
+                self.cache.insert(key, (asset.clone(), mesh.clone()));
+                Some((asset, mesh))
+            }
+            Err(e) => {
+                self.diagnostics.push(e.diagnostic(o.span, path));
+                None
+            }
+        }
+    }
+
+    fn mtl(&mut self, data: &MeshAsset) -> Vec<MaterialId> {
+        if let Some(ids) = self.mtl_ids.get(&data.path) {
+            return ids.clone();
+        }
+        let ids: Vec<MaterialId> = data
+            .materials
+            .iter()
+            .map(|m| {
+                self.extra_materials.push(m.clone());
+                MaterialId(self.base + self.extra_materials.len() as u32 - 1)
+            })
+            .collect();
+        self.mtl_ids.insert(data.path.clone(), ids.clone());
+        ids
+    }
+}
+
+/// Whether the mesh file is a closed surface (through the asset cache).
+fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
+    assets::mesh(path, smooth).is_ok_and(|m| m.is_closed())
+}

@@ -1,0 +1,166 @@
+//! The prepared scene: what the preparation stage hands the renderer. It owns everything a
+//! render reads (the world, the whole material table, decoded textures, lights, camera,
+//! settings and the effects they call for), so one preparation serves any number of renders.
+
+use std::time::Duration;
+
+use glam::DVec3;
+
+use super::effects::{Content, Effects};
+use super::textures::TextureMap;
+use super::validate;
+use crate::diag::Diagnostic;
+use crate::geometry::World;
+use crate::ir::{Camera, Color, LightKind, Material, MaterialId, RenderSettings, Sampling};
+
+/// A light prepared for shading: sample positions are generated per shading point.
+#[derive(Clone, Copy, Debug)]
+pub struct PreparedLight {
+    /// The IR geometry.
+    pub kind: LightKind,
+    /// RGB intensity.
+    pub color: Color,
+    /// Number of shadow/shading samples (1 for a point light).
+    pub samples: u32,
+}
+
+/// What preparing took (`rtc render --stats`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Top-level objects.
+    pub objects: usize,
+    /// Objects outside the BVH (unbounded).
+    pub unbounded: usize,
+    /// Distinct mesh files placed.
+    pub meshes: usize,
+    /// Triangles stored (each file once).
+    pub unique_triangles: usize,
+    /// Triangles in the scene counting every instance.
+    pub instanced_triangles: usize,
+    /// Time the whole preparation took (mesh loading included).
+    pub build_time: Duration,
+    /// Time spent building BVHs (top level and meshes).
+    pub bvh_build_time: Duration,
+    /// Time mesh files took to read and their BVHs to build, wherever it happened: a mesh
+    /// whose `.bounds` the scene asked for was read while evaluating it.
+    pub mesh_load_time: Duration,
+    /// Approximate heap bytes of the geometry and BVHs.
+    pub memory_bytes: usize,
+}
+
+/// A scene ready to render (made by [`super::prepare`]).
+pub struct Prepared {
+    pub(super) camera: Camera,
+    pub(super) world: World,
+    pub(super) materials: Vec<Material>,
+    pub(super) textures: Vec<TextureMap>,
+    pub(super) lights: Vec<PreparedLight>,
+    pub(super) settings: RenderSettings,
+    pub(super) content: Content,
+    pub(super) effects: Effects,
+    pub(super) extent: f64,
+    pub(super) warnings: Vec<Diagnostic>,
+    pub(super) stats: Stats,
+}
+
+/// The settings a render may change on a prepared scene: how many samples and bounces.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quality {
+    /// Pixel sampling.
+    pub sampling: Sampling,
+    /// Reflection/refraction bounces.
+    pub max_depth: u32,
+}
+
+impl Prepared {
+    /// The validated camera.
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The intersection structure.
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    /// The material behind a hit's id: the scene's, the fallback for objects that name none,
+    /// then every placed mesh's MTL materials.
+    pub fn material(&self, id: MaterialId) -> &Material {
+        &self.materials[id.0 as usize]
+    }
+
+    /// The whole material table.
+    pub fn materials(&self) -> &[Material] {
+        &self.materials
+    }
+
+    /// Decoded textures by `TextureId`.
+    pub fn textures(&self) -> &[TextureMap] {
+        &self.textures
+    }
+
+    /// The lights.
+    pub fn lights(&self) -> &[PreparedLight] {
+        &self.lights
+    }
+
+    /// How to render.
+    pub fn settings(&self) -> &RenderSettings {
+        &self.settings
+    }
+
+    /// Which costly effects the scene and its settings call for.
+    pub fn effects(&self) -> Effects {
+        self.effects
+    }
+
+    /// The scene's scale: the largest coordinate magnitude of its finite bounds and the eye
+    /// (what ray offsets scale with).
+    pub fn extent(&self) -> f64 {
+        self.extent
+    }
+
+    /// Warnings found while preparing (a mesh whose MTL file is missing).
+    pub fn warnings(&self) -> &[Diagnostic] {
+        &self.warnings
+    }
+
+    /// What preparing took.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// Whether anything draws random numbers (a lens or an area light).
+    pub fn random(&self) -> bool {
+        self.camera.aperture > 0.0
+            || self
+                .lights
+                .iter()
+                .any(|l| matches!(l.kind, LightKind::Area { .. }))
+    }
+
+    /// Renders from now on with other samples and bounces (`rtc accuracy` prepares once and
+    /// renders at many qualities); the effects follow. Errors when past `ir::limits`.
+    pub fn set_quality(&mut self, q: Quality) -> Result<(), Diagnostic> {
+        let settings = RenderSettings {
+            sampling: q.sampling,
+            max_depth: q.max_depth,
+            ..self.settings.clone()
+        };
+        validate::settings(&settings)?;
+        self.effects = Effects::new(&self.content, &settings, &self.camera);
+        self.settings = settings;
+        Ok(())
+    }
+}
+
+/// The largest coordinate magnitude of the world's finite bounds and of `eye`.
+pub(super) fn extent(world: &World, eye: DVec3) -> f64 {
+    let b = world.bounds();
+    let extent = if b.is_empty() || !b.is_finite() {
+        0.0
+    } else {
+        b.min.abs().max(b.max.abs()).max_element()
+    };
+    extent.max(eye.abs().max_element())
+}

@@ -1,0 +1,53 @@
+//! Textures prepared for lookups: images decoded through the asset service, procedural ones
+//! with their sizes made usable.
+
+use std::sync::Arc;
+
+use crate::assets;
+use crate::diag::Diagnostics;
+use crate::ir::{Color, Mapping, Texture};
+
+pub use crate::assets::Picture;
+
+/// A texture ready for lookups (by `TextureId`).
+#[derive(Clone, Debug)]
+pub enum TextureMap {
+    /// A decoded image with its surface mapping.
+    Image(Arc<Picture>, Mapping),
+    /// A 3-D checkerboard of cubes: two colours and the cube edge.
+    Checker(Color, Color, f64),
+    /// Stripes along object-space x: two colours and the stripe width.
+    Stripes(Color, Color, f64),
+}
+
+/// Every texture of a scene, decoded; `None` (with the problems in `out`) when one cannot be.
+pub fn load_all(textures: &[Texture], out: &mut Diagnostics) -> Option<Vec<TextureMap>> {
+    let mut maps = Vec::with_capacity(textures.len());
+    for t in textures {
+        match t {
+            Texture::Image {
+                path,
+                mapping,
+                span,
+            } => match assets::picture(path) {
+                Ok(pic) => maps.push(TextureMap::Image(pic, *mapping)),
+                Err(e) => out.push(e.diagnostic(*span, path)),
+            },
+            Texture::Checker { a, b, size } => {
+                maps.push(TextureMap::Checker(*a, *b, positive(*size)));
+            }
+            Texture::Stripes { a, b, size } => {
+                maps.push(TextureMap::Stripes(*a, *b, positive(*size)));
+            }
+        }
+    }
+    (maps.len() == textures.len()).then_some(maps)
+}
+
+fn positive(size: f64) -> f64 {
+    if size > 0.0 && size.is_finite() {
+        size
+    } else {
+        1.0
+    }
+}

@@ -1,0 +1,164 @@
+//! Scene-level checks of the preparation stage, made once before anything is built: ids that
+//! point into the material and texture tables, the camera, and the limits of `ir::limits` (a
+//! hand-built IR or an API caller may break them; the front ends already keep to them).
+//! Codes: `rtc::render::{material, texture, camera, limit}` (the names predate the preparation
+//! stage; tests and users rely on them).
+
+use crate::diag::{Diagnostic, Diagnostics, Severity};
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, MAX_PIXELS,
+};
+use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling, Scene, Shape};
+
+/// Every scene-level problem of `scene`, in a fixed order.
+pub fn scene(scene: &Scene, out: &mut Diagnostics) {
+    for o in &scene.objects {
+        material_ids(scene, o, out);
+    }
+    for m in &scene.materials {
+        let bad_texture = |t: Option<crate::ir::TextureId>| {
+            t.is_some_and(|t| t.0 as usize >= scene.textures.len())
+        };
+        if bad_texture(m.texture) || bad_texture(m.bump.map(|b| b.texture)) {
+            out.push(
+                Diagnostic::error(
+                    "rtc::render::texture",
+                    m.span,
+                    "this material names a texture that does not exist",
+                )
+                .with_label("this material"),
+            );
+        }
+    }
+    if let Err(d) = camera(&scene.camera) {
+        out.push(d);
+    }
+    if let Err(d) = image_size(&scene.camera) {
+        out.push(d);
+    }
+    if let Err(d) = settings(&scene.settings) {
+        out.push(d);
+    }
+    for l in &scene.lights {
+        if let LightKind::Area { samples, .. } = l.kind
+            && samples.iter().any(|n| *n > MAX_LIGHT_SAMPLES_PER_AXIS)
+        {
+            out.push(
+                Diagnostic::error(
+                    "rtc::render::limit",
+                    l.span,
+                    format!(
+                        "more than {MAX_LIGHT_SAMPLES_PER_AXIS} samples along an edge of this area light"
+                    ),
+                )
+                .with_label("this light")
+                .with_help(format!(
+                    "use at most {MAX_LIGHT_SAMPLES_PER_AXIS} samples per edge"
+                )),
+            );
+        }
+    }
+}
+
+/// Objects (and CSG operands) may only name materials of the scene.
+fn material_ids(scene: &Scene, o: &Object, out: &mut Diagnostics) {
+    if let Some(id) = o
+        .material
+        .filter(|id| id.0 as usize >= scene.materials.len())
+    {
+        out.push(
+            Diagnostic::error(
+                "rtc::render::material",
+                o.span,
+                format!("this object names material #{} which does not exist", id.0),
+            )
+            .with_label("this object"),
+        );
+    }
+    if let Shape::Csg { children, .. } = &o.shape {
+        for c in children {
+            material_ids(scene, c, out);
+        }
+    }
+}
+
+/// A camera that can make rays: an image, a view direction, an `up` across it, a field of view.
+pub fn camera(c: &Camera) -> Result<(), Diagnostic> {
+    let bad = |what: &str, help: &str| {
+        Err(
+            Diagnostic::error("rtc::render::camera", c.span, format!("the camera {what}"))
+                .with_label("this camera")
+                .with_help(help.to_string()),
+        )
+    };
+    if c.width == 0 || c.height == 0 {
+        return bad(
+            "has an empty image",
+            "give a width and height of at least 1 pixel",
+        );
+    }
+    let view = c.center - c.eye;
+    let right = view.cross(c.up);
+    if !view.is_finite() || view.length_squared() == 0.0 {
+        return bad(
+            "looks at its own eye point",
+            "move `center` away from `eye`",
+        );
+    }
+    if !right.is_finite() || right.length_squared() == 0.0 {
+        return bad(
+            "has `up` parallel to the view direction",
+            "choose an `up` that is not parallel to `center - eye`",
+        );
+    }
+    if let Projection::Perspective { fov_y } = c.projection
+        && !(fov_y > 0.0 && fov_y < std::f64::consts::PI)
+    {
+        return bad(
+            "has a field of view outside (0°, 180°)",
+            "use a field of view such as 45deg",
+        );
+    }
+    Ok(())
+}
+
+fn image_size(c: &Camera) -> Result<(), Diagnostic> {
+    let pixels = u64::from(c.width) * u64::from(c.height);
+    if pixels <= MAX_PIXELS {
+        return Ok(());
+    }
+    Err(Diagnostic::error(
+        "rtc::render::limit",
+        c.span,
+        format!("the image has {pixels} pixels, more than the {MAX_PIXELS} rtc renders"),
+    )
+    .with_label("this camera")
+    .with_help("render a smaller image, e.g. 4096×4096"))
+}
+
+/// Settings within `ir::limits`: bounces and samples per pixel.
+pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
+    let too_big = |what: String, help: String| {
+        Err(Diagnostic::new(Severity::Error, "rtc::render::limit", None, what).with_help(help))
+    };
+    if s.max_depth > MAX_DEPTH {
+        return too_big(
+            format!(
+                "a recursion depth of {} is more than {MAX_DEPTH}",
+                s.max_depth
+            ),
+            format!("use a max_depth of at most {MAX_DEPTH}"),
+        );
+    }
+    let factor = match s.sampling {
+        Sampling::Grid { factor } => factor,
+        Sampling::Adaptive { min, max, .. } => min.max(max),
+    };
+    if factor > MAX_PIXEL_SAMPLES_PER_AXIS {
+        return too_big(
+            format!("{factor} samples per axis is more than {MAX_PIXEL_SAMPLES_PER_AXIS}"),
+            format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
+        );
+    }
+    Ok(())
+}
