@@ -291,6 +291,7 @@ fn csg(
         ObjShape::Csg(k, ch)
             if *k == op
                 && o.material.is_none()
+                && o.motion.is_none()
                 && o.transform == glam::DAffine3::IDENTITY
                 && (first || op != CsgOp::Difference) =>
         {
@@ -304,6 +305,7 @@ fn csg(
         shape: ObjShape::Csg(op, Rc::new(children)),
         transform: glam::DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span,
     })))
 }

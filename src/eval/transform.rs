@@ -19,6 +19,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("matrix", matrix),
     ("around", around),
     ("identity", identity),
+    ("look_at", super::motion::look_at_fn),
 ];
 
 /// Names usable as methods on objects and transforms.
