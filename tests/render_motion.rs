@@ -174,7 +174,7 @@ fn a_moving_camera_blurs_a_still_sphere_like_the_sphere_moving_the_other_way() {
 }
 
 #[test]
-fn moving_csg_and_mesh_instances_blur_too() {
+fn a_moving_csg_node_blurs() {
     let src = "rtc 1.1
 camera { eye: [0, 0, 10], center: [0, 0, 0], resolution: [48, 32], shutter: [0, 1] }
 point_light { position: [0, 5, 10] }
@@ -192,4 +192,33 @@ render { supersampling: 2 }
     let a = render_scene(&moving, &RenderOptions::default()).expect("renders");
     let b = render_scene(&still, &RenderOptions::default()).expect("renders");
     assert!(a.color() != b.color());
+}
+
+#[test]
+fn a_moving_mesh_instance_blurs_and_its_twin_stays_sharp() {
+    // Two instances of one mesh share its BVH; only the first moves.
+    let src = "rtc 1.1
+camera { eye: [0, 0, 10], center: [0, 0, 0], resolution: [48, 32], shutter: [0, 1] }
+point_light { position: [0, 5, 10] }
+let duck = mesh(\"tests/data/course/models/devilduk.obj\")
+duck.scale(2 / duck.bounds.size.y).translate([-1.5, 0, 0])MOVE
+duck.scale(2 / duck.bounds.size.y).translate([1.5, 0, 0])
+render { supersampling: 2 }
+";
+    let moving = scene(&src.replace("MOVE", ".moving(translate: [0, 1, 0])"));
+    let still = scene(&src.replace("MOVE", ""));
+    assert!(
+        rtc::opt::prepare(&moving)
+            .expect("prepares")
+            .effects()
+            .motion_blur
+    );
+    let a = render_scene(&moving, &RenderOptions::default()).expect("renders");
+    let b = render_scene(&still, &RenderOptions::default()).expect("renders");
+    let (w, h) = (a.width, a.height);
+    let differs = |x0: u32, x1: u32| (0..h).any(|y| (x0..x1).any(|x| a.get(x, y) != b.get(x, y)));
+    assert!(differs(0, w / 2), "the moving duck blurs");
+    // The still duck's half changes only where the moving duck's shadow or blur reaches; its
+    // own silhouette pixels in the right quarter stay as they were.
+    assert!(!differs(3 * w / 4 + 2, w), "the still duck stays sharp");
 }

@@ -102,3 +102,40 @@ pub struct CameraMotion {
     /// Point looked at at shutter close.
     pub center: DVec3,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_motion_interpolates_translation_and_scale_linearly_and_rotation_by_slerp() {
+        let m = Motion::new(
+            DVec3::new(2.0, 0.0, 0.0),
+            DQuat::from_rotation_y(90f64.to_radians()),
+            DVec3::splat(3.0),
+        );
+        let half = m.delta(0.5);
+        let want = DAffine3::from_scale_rotation_translation(
+            DVec3::splat(2.0),
+            DQuat::from_rotation_y(45f64.to_radians()),
+            DVec3::new(1.0, 0.0, 0.0),
+        );
+        assert!(half.abs_diff_eq(want, 1e-12), "{half:?}");
+        let end = m.delta(1.0);
+        let full = DAffine3::from_scale_rotation_translation(m.scale, m.rotate, m.translate);
+        assert!(end.abs_diff_eq(full, 1e-12));
+        assert_eq!(m.at(DAffine3::IDENTITY, 0.0), DAffine3::IDENTITY);
+        // A motion given before a move turns about the object's own origin.
+        let p = DAffine3::from_translation(DVec3::new(5.0, 0.0, 0.0));
+        let moved = m.transformed(p);
+        let origin = moved.at(p, 1.0).transform_point3(DVec3::ZERO);
+        assert!((origin - DVec3::new(7.0, 0.0, 0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn slerp_takes_the_shorter_arc() {
+        let q = -DQuat::from_rotation_z(60f64.to_radians());
+        let mid = slerp_from_identity(q, 0.5);
+        assert!(mid.abs_diff_eq(DQuat::from_rotation_z(30f64.to_radians()), 1e-12));
+    }
+}
