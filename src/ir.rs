@@ -12,8 +12,10 @@ use crate::source::Span;
 
 pub mod limits;
 mod loaded;
+mod motion;
 
 pub use loaded::Loaded;
+pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;
@@ -81,6 +83,10 @@ pub struct Camera {
     pub aperture: f64,
     /// Distance from the eye to the plane in focus (used when `aperture > 0`).
     pub focus_distance: f64,
+    /// When the film is exposed (`None`: an instant, no motion blur).
+    pub shutter: Option<Shutter>,
+    /// How the camera moves while the shutter is open (`None`: it stands still).
+    pub motion: Option<CameraMotion>,
     /// Where it was defined.
     pub span: Span,
 }
@@ -252,6 +258,9 @@ pub struct Object {
     pub transform: DAffine3,
     /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
     pub material: Option<MaterialId>,
+    /// How it moves while the shutter is open (`None`: it stands still; `transform` is its
+    /// placement at shutter open).
+    pub motion: Option<Motion>,
     /// Where it was defined.
     pub span: Span,
 }

@@ -41,6 +41,8 @@ enum Command {
         /// Treat warnings as errors (`--deny warnings`).
         #[arg(long, value_name = "warnings")]
         deny: Option<DenyLevel>,
+        #[command(flatten)]
+        inputs: SceneInputs,
     },
     /// Render a scene to an image (PNG or PPM).
     Render {
@@ -58,7 +60,65 @@ enum Command {
         /// Print rays traced, rays per second, world build time and memory to stderr.
         #[arg(long)]
         stats: bool,
+        /// Render several frames, `A..B` (B excluded), `A..=B` or with a step `A..=B:STEP`;
+        /// the output name numbers them with `{frame}` or `####`.
+        #[arg(long, value_name = "RANGE", conflicts_with = "frame")]
+        frames: Option<String>,
+        #[command(flatten)]
+        inputs: SceneInputs,
     },
+}
+
+/// What the command line tells the scene before it is evaluated.
+#[derive(clap::Args, Debug, Clone)]
+struct SceneInputs {
+    /// The frame to evaluate: the scene's built-in `frame` (and `time` = frame / fps).
+    #[arg(long, default_value_t = 0, allow_hyphen_values = true)]
+    frame: i64,
+    /// Frames per second, for the built-in `time`.
+    #[arg(long, default_value_t = rtc::eval::DEFAULT_FPS)]
+    fps: f64,
+    /// Overrides a `param` the scene file declares (repeatable): `--set size=3`, `-D size=3`.
+    #[arg(long = "set", short = 'D', value_name = "NAME=VALUE")]
+    set: Vec<String>,
+}
+
+impl SceneInputs {
+    /// The evaluation options for `frame`, or what is wrong with the command line.
+    fn options(&self, frame: i64) -> Result<EvalOptions, String> {
+        if !(self.fps.is_finite() && self.fps > 0.0) {
+            return Err(format!(
+                "`--fps {}`: frames per second must be a positive number",
+                self.fps
+            ));
+        }
+        let mut overrides = Vec::new();
+        for s in &self.set {
+            let Some((name, value)) = s.split_once('=') else {
+                return Err(format!(
+                    "`--set {s}` needs a value: write `--set NAME=VALUE`, e.g. `--set size=3`"
+                ));
+            };
+            let name = name.trim();
+            let ident = name
+                .chars()
+                .next()
+                .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            if !ident {
+                return Err(format!(
+                    "`--set {s}`: `{name}` is not a parameter name (letters, digits and `_`)"
+                ));
+            }
+            overrides.push((name.to_string(), value.to_string()));
+        }
+        Ok(EvalOptions {
+            frame,
+            fps: self.fps,
+            overrides,
+            ..EvalOptions::default()
+        })
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -77,14 +137,33 @@ enum Outcome {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let outcome = match cli.command {
-        Command::Check { file, format, deny } => check(&file, format, deny.is_some()),
+        Command::Check {
+            file,
+            format,
+            deny,
+            inputs,
+        } => match inputs.options(inputs.frame) {
+            Ok(opts) => check(&file, format, deny.is_some(), &opts),
+            Err(msg) => usage_error(&msg),
+        },
         Command::Render {
             file,
             output,
             threads,
             format,
             stats,
-        } => render(&file, output, threads, format, stats),
+            frames,
+            inputs,
+        } => {
+            let job = RenderJob {
+                file: &file,
+                output,
+                threads,
+                format,
+                show_stats: stats,
+            };
+            render_frames(&job, frames.as_deref(), &inputs)
+        }
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -93,9 +172,15 @@ fn main() -> ExitCode {
     }
 }
 
+/// Reports a command-line mistake found before any scene is read (exit code 2).
+fn usage_error(msg: &str) -> Outcome {
+    eprintln!("error: {msg}");
+    Outcome::IoOrUsage
+}
+
 /// Loads a scene and runs the scene lints on it.
-fn load(file: &Path, sources: &mut SourceMap) -> Loaded {
-    let mut loaded = rtc::loader::load(file, sources, &EvalOptions::default());
+fn load(file: &Path, sources: &mut SourceMap, opts: &EvalOptions) -> Loaded {
+    let mut loaded = rtc::loader::load(file, sources, opts);
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::lint(scene));
     }
@@ -121,10 +206,10 @@ fn count_line(diags: &Diagnostics) -> String {
     )
 }
 
-fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
+fn check(file: &Path, format: Format, deny_warnings: bool, opts: &EvalOptions) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
-    let mut loaded = rtc::loader::load(file, &mut sources, &EvalOptions::default());
+    let mut loaded = rtc::loader::load(file, &mut sources, opts);
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::check(scene));
     }
@@ -164,17 +249,68 @@ fn check(file: &Path, format: Format, deny_warnings: bool) -> Outcome {
     outcome
 }
 
-fn render(
-    file: &Path,
+/// What `rtc render` was asked to do, besides the frames.
+struct RenderJob<'a> {
+    file: &'a Path,
     output: Option<PathBuf>,
     threads: usize,
     format: Format,
     show_stats: bool,
+}
+
+/// Renders `--frame N` (one image), or each frame of `--frames` in turn, each evaluated afresh.
+fn render_frames(job: &RenderJob<'_>, frames: Option<&str>, inputs: &SceneInputs) -> Outcome {
+    let Some(range) = frames else {
+        return match inputs.options(inputs.frame) {
+            Ok(opts) => render(job, &opts, None),
+            Err(msg) => usage_error(&msg),
+        };
+    };
+    let frames = match cli::frames::parse_range(range) {
+        Ok(f) => f,
+        Err(msg) => return usage_error(&msg),
+    };
+    if let Some(o) = &job.output
+        && frames.len() > 1
+        && !cli::frames::has_pattern(o)
+    {
+        return usage_error(&format!(
+            "every frame would write `{}`: put `{{frame}}` or `####` in the output name, e.g. `-o shot_####.png`",
+            o.display()
+        ));
+    }
+    let mut written = std::collections::HashMap::new();
+    for frame in frames {
+        let opts = match inputs.options(frame) {
+            Ok(o) => o,
+            Err(msg) => return usage_error(&msg),
+        };
+        let outcome = render(job, &opts, Some(&mut written));
+        if !matches!(outcome, Outcome::Ok) {
+            return outcome;
+        }
+    }
+    Outcome::Ok
+}
+
+/// Renders one frame. `written` (animations) maps each output already written to its frame,
+/// so two frames never write the same file.
+fn render(
+    job: &RenderJob<'_>,
+    opts: &EvalOptions,
+    written: Option<&mut std::collections::HashMap<PathBuf, i64>>,
 ) -> Outcome {
+    let RenderJob {
+        file,
+        threads,
+        format,
+        show_stats,
+        ..
+    } = *job;
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
     let load_start = std::time::Instant::now();
-    let loaded = load(file, &mut sources);
+    let loaded = load(file, &mut sources, opts);
     let load_time = load_start.elapsed();
     let color = format == Format::Human && std::io::stderr().is_terminal();
     let print = |diags: &[Diagnostic], sources: &SourceMap| {
@@ -189,7 +325,20 @@ fn render(
         eprintln!("{}", count_line(&loaded.diagnostics));
         return outcome;
     };
-    let path = output_path(file, output, &scene);
+    let animated = written.is_some();
+    let path = cli::frames::numbered(
+        &output_path(file, job.output.clone(), &scene, animated),
+        opts.frame,
+    );
+    if let Some(written) = written
+        && let Some(other) = written.insert(path.clone(), opts.frame)
+    {
+        return usage_error(&format!(
+            "frames {other} and {} would both write `{}`: put `{{frame}}` or `####` in the output name",
+            opts.frame,
+            path.display()
+        ));
+    }
     let start = std::time::Instant::now();
     let prepared = match rtc::opt::prepare(&scene) {
         Ok(p) => p,
@@ -228,9 +377,16 @@ fn render(
     }
 }
 
-/// `-o` wins, then the scene's own `output`, then the input name with `.png`.
-fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene) -> PathBuf {
+/// `-o` wins, then the scene's own `output`, then the input name with `.png` (with `_####`
+/// before it for an animation). `{frame}` and `####` in the name are numbered by the caller.
+fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene, animated: bool) -> PathBuf {
     output
         .or_else(|| scene.settings.output.clone())
-        .unwrap_or_else(|| file.with_extension("png"))
+        .unwrap_or_else(|| {
+            if animated {
+                cli::frames::default_pattern(file)
+            } else {
+                file.with_extension("png")
+            }
+        })
 }

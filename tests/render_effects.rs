@@ -249,6 +249,7 @@ fn adaptive_sampling_refines_only_at_edges_and_matches_the_fine_grid_there() {
 fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
     let mut s = empty([200.0, 200.0, 1000.0]);
     s.objects.push(Object {
+        motion: None,
         shape: Shape::Sphere {
             center: DVec3::ZERO,
             radius: 1.0,
@@ -365,6 +366,7 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
         })
     };
     let ball = |m| Object {
+        motion: None,
         shape: Shape::Sphere {
             center: DVec3::new(260.0, 230.0, 100.0),
             radius: 120.0,
@@ -383,11 +385,13 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
     };
     let csg = |op, other: Shape| {
         move |b: Object| Object {
+            motion: None,
             shape: Shape::Csg {
                 op,
                 children: vec![
                     b,
                     Object {
+                        motion: None,
                         shape: other.clone(),
                         transform: DAffine3::IDENTITY,
                         material: None,

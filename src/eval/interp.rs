@@ -37,6 +37,10 @@ pub struct Interp<'a> {
     pub(super) modules: HashMap<PathBuf, Rc<Module>>,
     /// Modules being evaluated, outermost first, with the import that started each (cycles).
     pub(super) loading: Vec<(PathBuf, Span)>,
+    /// The command line's `--set` values.
+    pub(super) overrides: Vec<super::params::Override>,
+    /// The `param` names the scene file declared so far.
+    pub(super) params: Vec<Sym>,
 }
 
 impl<'a> Interp<'a> {
@@ -54,6 +58,8 @@ impl<'a> Interp<'a> {
             depth: 0,
             modules: HashMap::new(),
             loading: Vec::new(),
+            overrides: Vec::new(),
+            params: Vec::new(),
         }
     }
 
@@ -98,6 +104,9 @@ impl<'a> Interp<'a> {
         if let Some(v) = super::builtins::global(sym) {
             return Ok(v);
         }
+        if let Some(v) = super::params::frame_builtin(self.opts, sym.as_str()) {
+            return Ok(v);
+        }
         Err(self.unknown_name(sym, span).into())
     }
 
@@ -110,6 +119,7 @@ impl<'a> Interp<'a> {
             .collect();
         names.extend(self.scope.items.borrow().keys().map(|k| k.as_str()));
         names.extend(super::builtins::global_names());
+        names.extend(super::params::FRAME_BUILTINS);
         names.sort_unstable();
         let d = error("rtc::name::unknown", span, format!("unknown name `{sym}`"))
             .with_label("not defined here");
@@ -389,6 +399,9 @@ impl<'a> Interp<'a> {
         for (i, st) in b.stmts.iter().enumerate() {
             match st {
                 Stmt::Let(l) => {
+                    if l.param {
+                        return Err(super::params::misplaced(l).into());
+                    }
                     let v = self.eval(&l.value)?;
                     let v = match &l.ty {
                         Some(t) => super::types::check_ann(self, t, v, l.value.span)?,

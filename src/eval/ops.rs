@@ -320,6 +320,7 @@ fn csg(
         ObjShape::Csg(k, ch)
             if *k == op
                 && o.material.is_none()
+                && o.motion.is_none()
                 && o.transform == glam::DAffine3::IDENTITY
                 && (first || op != CsgOp::Difference) =>
         {
@@ -333,6 +334,7 @@ fn csg(
         shape: ObjShape::Csg(op, Rc::new(children)),
         transform: glam::DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span,
     })))
 }

@@ -20,6 +20,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("matrix", |it, s, a| matrix(it, s, a).map(t)),
     ("around", |it, s, a| around(it, s, a).map(t)),
     ("identity", |it, s, a| identity(it, s, a).map(t)),
+    ("look_at", super::motion::look_at_fn),
 ];
 
 /// Names usable as methods on objects and transforms.

@@ -187,6 +187,8 @@ pub struct Obj {
     pub transform: DAffine3,
     /// Own material.
     pub material: Option<Rc<Mat>>,
+    /// How it moves while the shutter is open (in the space `transform` maps into).
+    pub motion: Option<ir::Motion>,
     /// Where it was made.
     pub span: Span,
 }

@@ -33,6 +33,8 @@ pub struct Effects {
     pub csg: bool,
     /// The scene has meshes.
     pub meshes: bool,
+    /// The shutter is open and something moves (an object or the camera): rays get times.
+    pub motion_blur: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -48,6 +50,7 @@ pub struct Content {
     hatching_material: bool,
     csg: bool,
     meshes: bool,
+    moving: bool,
 }
 
 impl Content {
@@ -72,6 +75,7 @@ impl Content {
             hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
             csg: false,
             meshes: false,
+            moving: scene.camera.motion.is_some(),
         };
         for o in &scene.objects {
             c.visit(o);
@@ -80,6 +84,7 @@ impl Content {
     }
 
     fn visit(&mut self, o: &Object) {
+        self.moving |= o.motion.is_some_and(|m| !m.is_still());
         match &o.shape {
             Shape::Csg { children, .. } => {
                 self.csg = true;
@@ -127,6 +132,7 @@ impl Effects {
             ),
             csg: content.csg,
             meshes: content.meshes,
+            motion_blur: content.moving && camera.shutter.is_some_and(|s| s.is_open()),
         }
     }
 
@@ -141,6 +147,7 @@ impl Effects {
             (self.bump, "bump maps"),
             (self.supersampling, "supersampling"),
             (self.depth_of_field, "depth of field"),
+            (self.motion_blur, "motion blur"),
             (self.gooch, "gooch"),
             (self.hatching, "hatching"),
             (self.csg, "csg"),

@@ -130,9 +130,10 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens or an area light).
+    /// Whether anything draws random numbers (a lens, an area light or an open shutter).
     pub fn random(&self) -> bool {
         self.camera.aperture > 0.0
+            || self.effects.motion_blur
             || self
                 .lights
                 .iter()

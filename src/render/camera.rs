@@ -103,6 +103,32 @@ impl Camera {
     }
 }
 
+/// A camera that moves while the shutter is open: its eye and the point it looks at move
+/// linearly from their positions at shutter open to those at close.
+#[derive(Clone, Debug)]
+pub struct MovingCamera {
+    base: ir::Camera,
+    motion: ir::CameraMotion,
+}
+
+impl MovingCamera {
+    /// The moving camera of `c`, `None` when it stands still.
+    pub fn of(c: &ir::Camera) -> Option<MovingCamera> {
+        c.motion.map(|motion| MovingCamera {
+            base: c.clone(),
+            motion,
+        })
+    }
+
+    /// The camera at shutter fraction `time` (0 = open, 1 = close).
+    pub fn at(&self, time: f64) -> Camera {
+        let mut c = self.base.clone();
+        c.eye = self.base.eye.lerp(self.motion.eye, time);
+        c.center = self.base.center.lerp(self.motion.center, time);
+        Camera::new(&c)
+    }
+}
+
 /// Shirley–Chiu mapping of the unit square onto the unit disk (keeps stratification).
 fn concentric_disk(u: f64, v: f64) -> (f64, f64) {
     let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
@@ -133,6 +159,8 @@ mod tests {
             projection: Projection::Course,
             aperture: 0.0,
             focus_distance: 0.0,
+            shutter: None,
+            motion: None,
             span: Span::default(),
         }
     }

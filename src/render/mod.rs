@@ -36,9 +36,10 @@ pub mod texture;
 pub mod tiles;
 
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::geometry::Ray;
 use crate::ir::{Color, Scene};
 use crate::opt::Prepared;
-use camera::Camera;
+use camera::{Camera, MovingCamera};
 use film::Film;
 use integrator::Integrator;
 use sampler::{Grid, PixelSampler, Rng};
@@ -87,6 +88,8 @@ pub fn render(
         camera,
         random: scene.random(),
         seed: scene.settings().seed,
+        motion_blur: scene.effects().motion_blur,
+        moving_camera: MovingCamera::of(scene.camera()),
     };
     let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
     let channels = integrator.channels();
@@ -144,7 +147,14 @@ pub struct View<'a> {
     pub random: bool,
     /// The scene's seed.
     pub seed: u64,
+    /// Whether camera samples spread over the open shutter (something moves while it is open).
+    pub motion_blur: bool,
+    /// The camera's motion while the shutter is open, if it moves.
+    pub moving_camera: Option<MovingCamera>,
 }
+
+/// The random stream of a camera sample's time (apart from the lens's 0 and the lights').
+const TIME_STREAM: u32 = 0xffff_fffe;
 
 impl View<'_> {
     /// The lens sample of camera sample `index` of pixel (x, y), (½, ½) without a lens.
@@ -154,6 +164,21 @@ impl View<'_> {
         } else {
             (0.5, 0.5)
         }
+    }
+
+    /// The camera ray of one sample: at shutter open, or with motion blur at a time drawn from
+    /// the sample's own stream (Owen-scrambled Sobol' over the pixel's samples, so the times
+    /// are stratified across the shutter and decorrelated from the sub-pixel positions).
+    pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64, lens: (f64, f64), rng: &Rng) -> Ray {
+        if !self.motion_blur {
+            return self.camera.ray(x, y, sx, sy, lens);
+        }
+        let time = rng.get2(TIME_STREAM).0;
+        let camera = match &self.moving_camera {
+            Some(m) => m.at(time),
+            None => self.camera,
+        };
+        camera.ray(x, y, sx, sy, lens).at_time(time)
     }
 
     /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
@@ -184,7 +209,7 @@ impl View<'_> {
             } else {
                 (0.5, 0.5)
             };
-            let ray = self.camera.ray(x, y, sx, sy, lens);
+            let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
             ctx.stats.camera_rays += 1;
             integrator.sample(&ray, ctx, sample);
             for (o, s) in out.iter_mut().zip(sample.iter()) {

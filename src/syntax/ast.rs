@@ -65,6 +65,8 @@ pub struct Import {
 pub struct Let {
     /// Exported with `pub`.
     pub public: bool,
+    /// Declared with `param`: the command line may override its value (`--set name=value`).
+    pub param: bool,
     /// The bound name.
     pub name: Name,
     /// Optional type annotation (boxed: rare, and it would double a statement's size).

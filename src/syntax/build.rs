@@ -168,12 +168,14 @@ impl Builder {
     fn let_stmt(&self, p: P) -> Let {
         let span = self.span(&p);
         let mut public = false;
+        let mut param = false;
         let mut name = None;
         let mut ty = None;
         let mut value = None;
         for q in p.into_inner() {
             match q.as_rule() {
                 Rule::pub_kw => public = true,
+                Rule::param_kw => param = true,
                 Rule::ident => name = Some(self.name(&q)),
                 Rule::type_ann => ty = Some(Box::new(self.type_ann(q))),
                 _ => value = Some(self.expr(q)),
@@ -181,6 +183,7 @@ impl Builder {
         }
         Let {
             public,
+            param,
             name: name.expect("grammar: let name"),
             ty,
             value: value.expect("grammar: let value"),

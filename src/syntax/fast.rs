@@ -250,6 +250,7 @@ impl Reader<'_, '_> {
         let span = self.span(start, value.span.end as usize);
         Some(Stmt::Let(Let {
             public: false,
+            param: false,
             name,
             ty: None,
             value,

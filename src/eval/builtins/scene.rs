@@ -71,6 +71,9 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             "resolution",
             "aperture",
             "focus",
+            "shutter",
+            "eye_close",
+            "center_close",
         ],
         a,
     )?;
@@ -134,6 +137,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }
     let (focus, fcs) = p.num_or(it, "focus", view.length())?;
     positive("focus", focus, fcs)?;
+    let shutter = crate::eval::motion::shutter(&mut p)?;
+    let motion = crate::eval::motion::camera_motion(it, &mut p, eye, center, up)?;
     Ok(Value::Camera(Rc::new(ir::Camera {
         eye,
         center,
@@ -143,6 +148,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         projection: ir::Projection::Perspective { fov_y: fov },
         aperture,
         focus_distance: focus,
+        shutter,
+        motion,
         span: s.span,
     })))
 }

@@ -12,7 +12,7 @@ use crate::ir::{Color, DepthRange};
 use crate::opt::Prepared;
 use crate::render::View;
 use crate::render::progress::Silent;
-use crate::render::sampler::Grid;
+use crate::render::sampler::{Grid, Rng};
 use crate::render::tiles;
 
 /// The depth-image integrator with its distance range.
@@ -70,7 +70,8 @@ fn hit_range(
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for k in 0..grid.len() {
             let (sx, sy) = grid.offset(k);
-            let ray = view.camera.ray(x, y, sx, sy, view.lens(x, y, k));
+            let rng = Rng::new(x, y, k, view.seed);
+            let ray = view.ray(x, y, sx, sy, view.lens(x, y, k), &rng);
             if let Some(hit) = scene.world().intersect(&ray, 0.0, f64::INFINITY) {
                 lo = lo.min(hit.t);
                 hi = hi.max(hit.t);

@@ -155,6 +155,7 @@ impl<'a> Whitted<'a> {
             mat,
             uv: hit.uv,
             depth: path.depth,
+            time: ray.time,
         };
         let mut c = match mat.shading.unwrap_or(self.shading) {
             ShadingModel::Phong => shading::phong::shade(scene, &s, ctx),
@@ -185,7 +186,7 @@ impl<'a> Whitted<'a> {
             match refract(ray.dir, facing, n1, after.current()) {
                 Some(dir) => {
                     ctx.stats.secondary_rays += 1;
-                    let r = Ray::new(hit.point - eps * facing, dir);
+                    let r = Ray::new(hit.point - eps * facing, dir).at_time(ray.time);
                     c += kt * self.trace(&r, path.bounce(after), ctx);
                 }
                 None => kr += kt,
@@ -193,7 +194,7 @@ impl<'a> Whitted<'a> {
         }
         if kr > 0.0 {
             ctx.stats.secondary_rays += 1;
-            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing));
+            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing)).at_time(ray.time);
             c += kr * self.trace(&r, path.bounce(media), ctx);
         }
         c

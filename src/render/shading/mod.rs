@@ -38,6 +38,8 @@ pub struct Surface<'m> {
     pub uv: glam::DVec2,
     /// Recursion depth of the ray that hit it (decorrelates light samples between bounces).
     pub depth: u32,
+    /// The shutter fraction of the ray that hit it (shadow rays see moving objects then).
+    pub time: f64,
 }
 
 /// One sample of one light as seen from a surface point.
@@ -93,7 +95,7 @@ pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut 
     }
     stats.shadow_rays += 1;
     let eps = offset::eps(scene, s.p);
-    let ray = Ray::new(s.p + eps * s.n, ls.l);
+    let ray = Ray::new(s.p + eps * s.n, ls.l).at_time(s.time);
     !scene.world().occluded(&ray, 0.0, ls.dist - eps)
 }
 
