@@ -33,6 +33,12 @@ pub struct Effects {
     pub csg: bool,
     /// The scene has meshes.
     pub meshes: bool,
+    /// Some reflecting or refracting material is glossy (`gloss > 0`) and rays bounce.
+    pub glossy: bool,
+    /// Shadow rays pass through refractive objects (`render { glass_shadows: true }`).
+    pub glass_shadows: bool,
+    /// The lens flare post stage runs (`render { flare: ... }` and some light).
+    pub flare: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -48,6 +54,7 @@ pub struct Content {
     hatching_material: bool,
     csg: bool,
     meshes: bool,
+    glossy: bool,
 }
 
 impl Content {
@@ -72,6 +79,9 @@ impl Content {
             hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
             csg: false,
             meshes: false,
+            glossy: mats
+                .iter()
+                .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
         };
         for o in &scene.objects {
             c.visit(o);
@@ -127,6 +137,9 @@ impl Effects {
             ),
             csg: content.csg,
             meshes: content.meshes,
+            glossy: bounces && content.glossy,
+            glass_shadows: shadows && s.glass_shadows && content.refractive,
+            flare: shaded && s.flare.is_some() && content.lights,
         }
     }
 
@@ -145,6 +158,9 @@ impl Effects {
             (self.hatching, "hatching"),
             (self.csg, "csg"),
             (self.meshes, "meshes"),
+            (self.glossy, "glossy"),
+            (self.glass_shadows, "light through glass"),
+            (self.flare, "lens flare"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -130,9 +130,10 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens or an area light).
+    /// Whether anything draws random numbers (a lens, an area light or a glossy lobe).
     pub fn random(&self) -> bool {
         self.camera.aperture > 0.0
+            || self.effects.glossy
             || self
                 .lights
                 .iter()
