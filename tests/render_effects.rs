@@ -312,7 +312,9 @@ fn hatching_draws_black_ink_on_the_material_colour_denser_in_shade() {
             }
         }
     }
-    assert!(ink[1] > 2.0 * ink[0].max(1.0), "{ink:?}");
+    // Ink covers the darkness share of the paper continuously (lit parts get thin strokes
+    // too), so the halves differ by their mean darkness: 1.77× here.
+    assert!(ink[1] > 1.5 * ink[0].max(1.0), "{ink:?}");
 }
 
 #[test]
