@@ -10,10 +10,12 @@ use glam::{DAffine3, DVec3};
 
 use crate::source::Span;
 
+mod flare;
 pub mod limits;
 mod loaded;
 mod motion;
 
+pub use flare::Flare;
 pub use loaded::Loaded;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
 
@@ -170,6 +172,11 @@ pub struct Material {
     pub refract: f64,
     /// Index of refraction of the material; the outside is 1.
     pub eta: f64,
+    /// Glossiness: reflected and refracted rays spread over a cone of half-angle `gloss·90°`
+    /// around the mirror and refraction directions; 0 is a perfect mirror.
+    pub gloss: f64,
+    /// Rays per glossy lobe at a camera ray's hit (one ray after the first bounce).
+    pub gloss_samples: u32,
     /// Shading model for this material; `None` uses the scene's.
     pub shading: Option<ShadingModel>,
     /// Where it was defined.
@@ -189,6 +196,8 @@ impl Default for Material {
             reflect: 0.0,
             refract: 0.0,
             eta: 1.0,
+            gloss: 0.0,
+            gloss_samples: 8,
             shading: None,
             span: Span::default(),
         }
@@ -445,6 +454,11 @@ pub struct RenderSettings {
     pub output: Option<PathBuf>,
     /// How film colours become 8-bit values.
     pub encoding: Encoding,
+    /// Shadow rays pass through refractive surfaces, attenuated by their `refract` and colour
+    /// (off: glass casts an opaque shadow, as the course references do).
+    pub glass_shadows: bool,
+    /// The lens flare post stage, when asked.
+    pub flare: Option<Flare>,
 }
 
 /// How a linear film colour is quantised to 8 bits.
@@ -493,6 +507,8 @@ impl Default for RenderSettings {
             seed: 0,
             output: None,
             encoding: Encoding::Linear,
+            glass_shadows: false,
+            flare: None,
         }
     }
 }

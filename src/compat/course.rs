@@ -129,6 +129,7 @@ impl CourseMaterial {
             eta: self.eta,
             shading: None,
             span: self.span,
+            ..Material::default()
         }
     }
 }

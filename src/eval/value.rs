@@ -65,6 +65,8 @@ pub enum Value {
     Ambient(ir::AmbientConvention),
     /// An output encoding (`linear`; `srgb` is the colour function, accepted by name).
     Encoding(ir::Encoding),
+    /// Lens flare parameters (`flare { ... }`).
+    Flare(ir::Flare),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -262,6 +264,7 @@ impl Value {
             Value::Mapping(_) => "Mapping",
             Value::Ambient(_) => "Ambient",
             Value::Encoding(_) => "Encoding",
+            Value::Flare(_) => "Flare",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }

@@ -35,6 +35,12 @@ pub struct Effects {
     pub meshes: bool,
     /// The shutter is open and something moves (an object or the camera): rays get times.
     pub motion_blur: bool,
+    /// Some reflecting or refracting material is glossy (`gloss > 0`) and rays bounce.
+    pub glossy: bool,
+    /// Shadow rays pass through refractive objects (`render { glass_shadows: true }`).
+    pub glass_shadows: bool,
+    /// The lens flare post stage runs (`render { flare: ... }` and some light).
+    pub flare: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -51,6 +57,7 @@ pub struct Content {
     csg: bool,
     meshes: bool,
     moving: bool,
+    glossy: bool,
 }
 
 impl Content {
@@ -76,6 +83,9 @@ impl Content {
             csg: false,
             meshes: false,
             moving: scene.camera.motion.is_some(),
+            glossy: mats
+                .iter()
+                .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
         };
         for o in &scene.objects {
             c.visit(o);
@@ -133,6 +143,9 @@ impl Effects {
             csg: content.csg,
             meshes: content.meshes,
             motion_blur: content.moving && camera.shutter.is_some_and(|s| s.is_open()),
+            glossy: bounces && content.glossy,
+            glass_shadows: shadows && s.glass_shadows && content.refractive,
+            flare: shaded && s.flare.is_some() && content.lights,
         }
     }
 
@@ -152,6 +165,9 @@ impl Effects {
             (self.hatching, "hatching"),
             (self.csg, "csg"),
             (self.meshes, "meshes"),
+            (self.glossy, "glossy"),
+            (self.glass_shadows, "light through glass"),
+            (self.flare, "lens flare"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

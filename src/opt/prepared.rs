@@ -130,10 +130,12 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens, an area light or an open shutter).
+    /// Whether anything draws random numbers (a lens, an area light, an open shutter or a
+    /// glossy lobe).
     pub fn random(&self) -> bool {
         self.camera.aperture > 0.0
             || self.effects.motion_blur
+            || self.effects.glossy
             || self
                 .lights
                 .iter()

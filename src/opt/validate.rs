@@ -160,5 +160,23 @@ pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
             format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
         );
     }
+    if let Some(f) = &s.flare {
+        let values = [
+            f64::from(f.ghosts),
+            f.dispersal,
+            f.halo,
+            f64::from(f.streaks),
+            f.threshold,
+            f.intensity,
+        ];
+        for ((name, lo, hi), v) in crate::ir::Flare::RANGES.into_iter().zip(values) {
+            if !(lo..=hi).contains(&v) {
+                return too_big(
+                    format!("the flare's {name} of {v} is outside {lo}..={hi}"),
+                    format!("give the flare a {name} in {lo}..={hi}"),
+                );
+            }
+        }
+    }
     Ok(())
 }

@@ -80,6 +80,27 @@ impl Camera {
         self.height
     }
 
+    /// Where world point `p` appears on the image, in continuous pixel units (x from the left
+    /// edge, y from the top edge; a pixel's centre is at +½), through the pinhole; `None` when
+    /// `p` is not in front of the eye.
+    pub fn project(&self, p: DVec3) -> Option<(f64, f64)> {
+        let d = p - self.eye;
+        let along = d.dot(self.forward);
+        if along <= 0.0 {
+            return None;
+        }
+        let on_plane = self.eye + d * ((self.origin - self.eye).dot(self.forward) / along);
+        let rel = on_plane - self.origin;
+        let px = rel.dot(self.right) / self.right.length_squared();
+        let py = rel.dot(self.up) / self.up.length_squared();
+        Some((px, f64::from(self.height) - py))
+    }
+
+    /// The eye point (the pinhole, the centre of a lens).
+    pub fn eye(&self) -> DVec3 {
+        self.eye
+    }
+
     /// True when the camera has a lens (depth of field), so rays need lens samples.
     pub fn has_lens(&self) -> bool {
         self.aperture > 0.0
@@ -175,6 +196,24 @@ mod tests {
             let t = -r.origin.z / r.dir.z;
             assert!((r.at(t) - want).length() < 1e-9, "{x},{y}: {:?}", r.at(t));
         }
+    }
+
+    #[test]
+    fn project_inverts_the_pixel_ray() {
+        let eye = DVec3::new(3.0, 2.0, 9.0);
+        let c = ir::Camera {
+            center: DVec3::new(0.5, 0.0, 0.0),
+            projection: Projection::Perspective { fov_y: 0.7 },
+            ..course(eye, DVec3::Y, 64, 48)
+        };
+        let cam = Camera::new(&c);
+        for (x, y, sx, sy) in [(0, 0, 0.5, 0.5), (63, 47, 0.1, 0.9), (20, 30, 0.25, 0.75)] {
+            let r = cam.ray(x, y, sx, sy, (0.5, 0.5));
+            let (px, py) = cam.project(r.at(7.0)).unwrap();
+            assert!((px - (f64::from(x) + sx)).abs() < 1e-9, "{px}");
+            assert!((py - (f64::from(y) + 1.0 - sy)).abs() < 1e-9, "{py}");
+        }
+        assert!(cam.project(eye + (eye - c.center)).is_none());
     }
 
     #[test]

@@ -5,8 +5,8 @@
 //! Pipeline: [`tiles`] runs bands of rows on all cores; per pixel the [`sampler`] places the
 //! samples and the [`camera`] makes their rays; the mode's [`integrator`] turns each ray into a
 //! value per film channel (Whitted recursion with a [`shading`] model for shaded images, the
-//! first hit for normal and depth images); the [`film`] averages and quantises; [`output`]
-//! writes PNG or PPM atomically.
+//! first hit for normal and depth images); the [`film`] averages and quantises (after the
+//! [`flare`] post stage, when asked); [`output`] writes PNG or PPM atomically.
 //!
 //! Conventions (each reproduces the course references, see tests/golden.rs):
 //! - Pixel (x, y) is sampled at offsets ((i+½)/f, (j+½)/f) of an f×f grid (f = 1: the centre);
@@ -26,6 +26,7 @@
 pub mod bump;
 pub mod camera;
 pub mod film;
+pub mod flare;
 pub mod integrator;
 pub mod offset;
 pub mod output;
@@ -125,6 +126,11 @@ pub fn render(
         })?;
         values = refined;
         stats.add(&more);
+    }
+    if let (true, Some(f)) = (scene.effects().flare, scene.settings().flare) {
+        // A post stage over the whole image (shaded mode: colour is the only channel).
+        let sources = flare::sources(scene, &camera, &f, &mut stats);
+        flare::apply(&sources, &f, w, h, n, &mut values);
     }
     progress.finish();
     Ok(Film::new(

@@ -25,6 +25,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("gooch", gooch),
     ("adaptive", adaptive),
     ("depth", depth),
+    ("flare", flare),
 ];
 
 /// Named enumeration values.
@@ -257,6 +258,47 @@ fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Shading(ir::ShadingModel::Gooch(g)))
 }
 
+/// `flare { ghosts:, dispersal:, halo:, streaks:, threshold:, intensity: }`: lens flare
+/// parameters, each defaulted and range-checked ([`ir::Flare::RANGES`]).
+fn flare(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    const NAMES: [&str; 6] = [
+        "ghosts",
+        "dispersal",
+        "halo",
+        "streaks",
+        "threshold",
+        "intensity",
+    ];
+    let mut p = Params::new(s, &NAMES, a)?;
+    let mut f = ir::Flare::default();
+    let range = |name: &str| {
+        let (_, lo, hi) = ir::Flare::RANGES
+            .into_iter()
+            .find(|(n, _, _)| *n == name)
+            .expect("every flare parameter has a range");
+        (lo, hi)
+    };
+    for (name, slot) in [("ghosts", &mut f.ghosts), ("streaks", &mut f.streaks)] {
+        if let Some((v, sp)) = p.get(name) {
+            let (lo, hi) = range(name);
+            *slot = int_in(it, &v, sp, name, lo as i64, hi as i64)? as u32;
+        }
+    }
+    for (name, slot) in [
+        ("dispersal", &mut f.dispersal),
+        ("halo", &mut f.halo),
+        ("threshold", &mut f.threshold),
+        ("intensity", &mut f.intensity),
+    ] {
+        let def = *slot;
+        let (v, sp) = p.num_or(it, name, def)?;
+        let (lo, hi) = range(name);
+        check(v >= lo && v <= hi, name, &format!("in {lo}..={hi}"), v, sp)?;
+        *slot = v;
+    }
+    Ok(Value::Flare(f))
+}
+
 fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max", "threshold"], a)?;
     let min = match p.get("min") {
@@ -307,6 +349,8 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "output",
         "material",
         "encoding",
+        "glass_shadows",
+        "flare",
     ];
     let mut p = Params::new(s, names, a)?;
     let mut st = ir::RenderSettings::language_defaults();
@@ -343,6 +387,23 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.shadows = p.bool_or(it, "shadows", st.shadows)?;
+    st.glass_shadows = p.bool_or(it, "glass_shadows", st.glass_shadows)?;
+    if let Some((v, sp)) = p.get("flare") {
+        st.flare = match v {
+            Value::Flare(f) => Some(f),
+            Value::Builtin(b) if b.name == "flare" => Some(ir::Flare::default()),
+            Value::Bool(on) => on.then(ir::Flare::default),
+            other => {
+                return Err(enum_mismatch(
+                    it,
+                    "Flare",
+                    &other,
+                    sp,
+                    "`flare`, `flare { ghosts: 6 }` or `false`",
+                ));
+            }
+        };
+    }
     if let Some((v, sp)) = p.get("max_depth") {
         st.max_depth = int_in(it, &v, sp, "max_depth", 0, MAX_DEPTH.into())? as u32;
     }

@@ -10,7 +10,9 @@
 
 use glam::DVec3;
 
+use super::gloss;
 use crate::geometry::{Ray, SurfaceHit};
+use crate::ir::limits::MAX_GLOSS_SAMPLES;
 use crate::ir::{Color, Material, ShadingModel};
 use crate::opt::{Effects, Prepared};
 use crate::render::shading::{self, Ctx, Surface};
@@ -116,6 +118,21 @@ impl Path {
     }
 }
 
+/// A secondary ray about to be cast: where from, its ideal (mirror or refraction) direction, the
+/// normal of the side it leaves through, and which of the two it is.
+pub struct Outgoing {
+    /// Origin (already offset off the surface).
+    pub from: DVec3,
+    /// The ideal direction (unit).
+    pub dir: DVec3,
+    /// Unit normal of the side the ray leaves through.
+    pub side: DVec3,
+    /// A refracted (not reflected) ray.
+    pub refracted: bool,
+    /// The time of the ray it continues (motion blur).
+    pub time: f64,
+}
+
 /// The shaded-image integrator: Whitted recursion over the prepared scene.
 pub struct Whitted<'a> {
     scene: &'a Prepared,
@@ -185,19 +202,53 @@ impl<'a> Whitted<'a> {
             };
             match refract(ray.dir, facing, n1, after.current()) {
                 Some(dir) => {
-                    ctx.stats.secondary_rays += 1;
-                    let r = Ray::new(hit.point - eps * facing, dir).at_time(ray.time);
-                    c += kt * self.trace(&r, path.bounce(after), ctx);
+                    let out = Outgoing {
+                        from: hit.point - eps * facing,
+                        dir,
+                        side: -facing,
+                        refracted: true,
+                        time: ray.time,
+                    };
+                    c += kt * self.bounce(&out, mat, path.bounce(after), ctx);
                 }
                 None => kr += kt,
             }
         }
         if kr > 0.0 {
-            ctx.stats.secondary_rays += 1;
-            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing)).at_time(ray.time);
-            c += kr * self.trace(&r, path.bounce(media), ctx);
+            let out = Outgoing {
+                from: hit.point + eps * facing,
+                dir: reflect(ray.dir, facing),
+                side: facing,
+                refracted: false,
+                time: ray.time,
+            };
+            c += kr * self.bounce(&out, mat, path.bounce(media), ctx);
         }
         c
+    }
+
+    /// The light arriving along a secondary ray `out` for a path now in state `next`: one ray,
+    /// or the mean of a glossy material's lobe around it ([`gloss`]), `gloss_samples` rays at a
+    /// camera ray's hit and one after that (so rays per pixel grow linearly with depth, not
+    /// exponentially).
+    fn bounce(&self, out: &Outgoing, mat: &Material, next: Path, ctx: &mut Ctx) -> Color {
+        if !self.effects.glossy || mat.gloss <= 0.0 {
+            ctx.stats.secondary_rays += 1;
+            return self.trace(&Ray::new(out.from, out.dir).at_time(out.time), next, ctx);
+        }
+        let depth = next.depth - 1;
+        let n = if depth == 0 {
+            mat.gloss_samples.clamp(1, MAX_GLOSS_SAMPLES)
+        } else {
+            1
+        };
+        let mut sum = Color::ZERO;
+        for k in 0..n {
+            let d = gloss::sample(&ctx.rng, out, mat.gloss, depth, k);
+            ctx.stats.secondary_rays += 1;
+            sum += self.trace(&Ray::new(out.from, d).at_time(out.time), next, ctx);
+        }
+        sum / f64::from(n)
     }
 
     /// Material colour, or the texture's where the material has one.

@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::{Ctx, Surface, highlight, light_sample, visible};
+use super::{Ctx, Surface, highlight, light_sample, transmission};
 use crate::ir::{Color, GoochParams};
 use crate::opt::Prepared;
 
@@ -25,10 +25,20 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) 
             if n_dot_l <= 0.0 {
                 // Facing away: the blend already leans cool; no highlight from behind.
                 c += share * tone;
-            } else if visible(scene, s, &ls, &mut ctx.stats) {
-                c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
             } else {
-                c += share * cool;
+                match transmission(scene, s, &ls, &mut ctx.stats) {
+                    Some(pass) if pass == Color::ONE => {
+                        c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
+                    }
+                    // Through glass: the warm side of the blend in proportion to the light
+                    // that comes through, the highlight tinted by it.
+                    Some(pass) => {
+                        let f = pass.element_sum() / 3.0;
+                        c += share * (cool + f * (tone - cool))
+                            + highlight(s, ls.l, n_dot_l) * ls.color * pass;
+                    }
+                    None => c += share * cool,
+                }
             }
         }
     }

@@ -1,6 +1,7 @@
 //! Shading models: what a surface point looks like under the lights, before reflection and
 //! refraction are added by the Whitted integrator.
 
+pub mod glass_shadow;
 pub mod gooch;
 pub mod hatching;
 pub mod phong;
@@ -97,6 +98,22 @@ pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut 
     let eps = offset::eps(scene, s.p);
     let ray = Ray::new(s.p + eps * s.n, ls.l).at_time(s.time);
     !scene.world().occluded(&ray, 0.0, ls.dist - eps)
+}
+
+/// The share of light sample `ls` reaching `s`, per channel: `Some(ONE)` when nothing blocks
+/// it, `None` when something opaque does, and with light through glass the tint of the glass
+/// in between ([`glass_shadow`]).
+pub fn transmission(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ls: &LightSample,
+    stats: &mut Stats,
+) -> Option<Color> {
+    if scene.effects().glass_shadows {
+        glass_shadow::transmission(scene, s, ls, stats)
+    } else {
+        visible(scene, s, ls, stats).then_some(Color::ONE)
+    }
 }
 
 /// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.

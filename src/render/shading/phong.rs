@@ -3,7 +3,7 @@
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
 //! is `ka·C` once, without light colour.
 
-use super::{Ctx, Surface, highlight, light_sample, visible};
+use super::{Ctx, Surface, highlight, light_sample, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
 
@@ -26,10 +26,12 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
             if n_dot_l <= 0.0 {
                 continue;
             }
-            if !visible(scene, s, &ls, &mut ctx.stats) {
+            let Some(pass) = transmission(scene, s, &ls, &mut ctx.stats) else {
                 continue;
-            }
-            c += (m.kd * n_dot_l) * s.color * ls.color + highlight(s, ls.l, n_dot_l) * ls.color;
+            };
+            // `pass` is exactly ONE without glass in the way, so this is the plain sum then.
+            let lc = ls.color * pass;
+            c += (m.kd * n_dot_l) * s.color * lc + highlight(s, ls.l, n_dot_l) * lc;
         }
     }
     c
