@@ -1,5 +1,7 @@
 //! Binary-only parts of the command line.
 
+pub mod check;
 pub mod progress;
 pub mod report;
 pub mod stats;
+pub mod watch;
