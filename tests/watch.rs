@@ -139,3 +139,24 @@ fn center_pixel(png: &[u8]) -> [u8; 3] {
     let img = image::load_from_memory(png).unwrap().to_rgb8();
     img.get_pixel(img.width() / 2, img.height() / 2).0
 }
+
+#[test]
+fn a_new_edit_cancels_the_render_in_progress() {
+    let dir = scratch("cancel");
+    let scene = dir.join("scene.rtc");
+    // 8×8 samples at 1200×900: the refined stage takes many seconds, the others are quick.
+    let slow = scene_text("rgb(1, 0, 0)", 8).replace("[240, 180]", "[1200, 900]");
+    std::fs::write(&scene, &slow).unwrap();
+    let watch = Watch::start(&scene);
+    let mut events = watch.events();
+    let full = events.wait_for("frame", |f| f["stage"] == "full");
+    events.wait_for("progress", |p| p["stage"] == "refined");
+    save(&scene, &scene_text("rgb(0, 0, 1)", 1));
+    // The next frame is the edit's preview: the refined red frame never comes.
+    let next = events.wait_for("frame", |_| true);
+    assert_eq!(next["stage"], "preview", "{next}");
+    assert_eq!(next["n"].as_u64(), full["n"].as_u64().map(|n| n + 1));
+    let blue = center_pixel(&watch.frame_png(next["n"].as_u64().unwrap()));
+    assert!(blue[2] > 100 && blue[0] < 30, "{blue:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

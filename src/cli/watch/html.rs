@@ -109,9 +109,13 @@ mod tests {
     fn the_span_is_marked_and_text_escaped() {
         let mut sources = SourceMap::new();
         let f = sources.add("a.rtc", "let x = 1\nsphere(radius: <-1>)\n");
-        let d = Diagnostic::error("rtc::x", Span::new(f, 25, 29), "bad <radius>")
-            .with_label("here")
-            .with_help("use 1");
+        let d = Diagnostic::error(
+            "rtc::param::out_of_range",
+            Span::new(f, 25, 29),
+            "bad <radius>",
+        )
+        .with_label("here")
+        .with_help("use 1");
         let html = diagnostics(&[d], &sources);
         assert!(html.contains("a.rtc:2:16"), "{html}");
         assert!(html.contains("<mark>&lt;-1&gt;</mark>"), "{html}");
