@@ -162,6 +162,7 @@ fn a_library_module_is_checked_as_a_library() {
         "the error is located: {stderr}"
     );
     assert!(!stderr.contains("camera"), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
