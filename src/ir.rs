@@ -93,6 +93,25 @@ pub struct Camera {
     pub span: Span,
 }
 
+impl Camera {
+    /// The same view with pixels `factor` times larger (a coarse preview): the image shrinks to
+    /// ⌈width/factor⌉ × ⌈height/factor⌉, and the course camera's pixel size `|up|` grows by
+    /// `factor` so the view keeps its extent (within one coarse pixel).
+    pub fn coarser(&self, factor: u32) -> Camera {
+        let factor = factor.max(1);
+        let up = match self.projection {
+            Projection::Course => self.up * f64::from(factor),
+            Projection::Perspective { .. } => self.up,
+        };
+        Camera {
+            width: self.width.div_ceil(factor),
+            height: self.height.div_ceil(factor),
+            up,
+            ..self.clone()
+        }
+    }
+}
+
 /// View sizing of a [`Camera`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Projection {

@@ -1,4 +1,5 @@
-//! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it.
+//! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it,
+//! `rtc watch FILE` serves a live page that re-renders it on every change.
 //! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems. Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
 #![forbid(unsafe_code)]
@@ -31,9 +32,9 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Parse, evaluate and lint a scene without rendering it.
+    /// Parse, evaluate and lint a scene or library module, or every `.rtc` file below a directory.
     Check {
-        /// The scene file (`.rtc`, `.in` or `.yaml`).
+        /// A scene file (`.rtc`, `.in` or `.yaml`), a library module, or a directory.
         file: PathBuf,
         /// How to print diagnostics.
         #[arg(long, value_enum, default_value = "human")]
@@ -66,6 +67,20 @@ enum Command {
         frames: Option<String>,
         #[command(flatten)]
         inputs: SceneInputs,
+    },
+    /// Serve a live page on 127.0.0.1 that re-renders the scene whenever it or a file it uses changes.
+    Watch {
+        /// The scene file (`.rtc`, `.in` or `.yaml`).
+        file: PathBuf,
+        /// Port on 127.0.0.1 (0: any free port).
+        #[arg(long, default_value_t = 8290)]
+        port: u16,
+        /// Open the page in the default browser.
+        #[arg(long)]
+        open: bool,
+        /// Worker threads (0 = all cores).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
     },
 }
 
@@ -128,10 +143,22 @@ enum DenyLevel {
 }
 
 /// How a command ended.
+#[derive(Clone, Copy, Debug)]
 enum Outcome {
     Ok,
     SceneErrors,
     IoOrUsage,
+}
+
+impl Outcome {
+    /// Which outcome wins when several files are checked: I/O over scene errors over success.
+    fn severity(self) -> u8 {
+        match self {
+            Outcome::Ok => 0,
+            Outcome::SceneErrors => 1,
+            Outcome::IoOrUsage => 2,
+        }
+    }
 }
 
 fn main() -> ExitCode {
@@ -143,7 +170,7 @@ fn main() -> ExitCode {
             deny,
             inputs,
         } => match inputs.options(inputs.frame) {
-            Ok(opts) => check(&file, format, deny.is_some(), &opts),
+            Ok(opts) => cli::check::run(&file, format, deny.is_some(), &opts),
             Err(msg) => usage_error(&msg),
         },
         Command::Render {
@@ -164,6 +191,17 @@ fn main() -> ExitCode {
             };
             render_frames(&job, frames.as_deref(), &inputs)
         }
+        Command::Watch {
+            file,
+            port,
+            open,
+            threads,
+        } => cli::watch::run(&cli::watch::Options {
+            file,
+            port,
+            open,
+            threads,
+        }),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -195,58 +233,6 @@ fn outcome_of(diags: &Diagnostics, deny_warnings: bool) -> Outcome {
     } else {
         Outcome::Ok
     }
-}
-
-fn count_line(diags: &Diagnostics) -> String {
-    let (e, w) = (diags.error_count(), diags.warning_count());
-    format!(
-        "{e} error{}, {w} warning{}",
-        if e == 1 { "" } else { "s" },
-        if w == 1 { "" } else { "s" }
-    )
-}
-
-fn check(file: &Path, format: Format, deny_warnings: bool, opts: &EvalOptions) -> Outcome {
-    let subject = file.display().to_string();
-    let mut sources = SourceMap::new();
-    let mut loaded = rtc::loader::load(file, &mut sources, opts);
-    if let Some(scene) = &loaded.scene {
-        loaded.diagnostics.extend(rtc::check::check(scene));
-    }
-    let diags = &loaded.diagnostics;
-    let outcome = outcome_of(diags, deny_warnings);
-    let color = format == Format::Human && std::io::stderr().is_terminal();
-    let summary = match (&outcome, &loaded.scene) {
-        (Outcome::Ok, Some(scene)) => {
-            format!("{}: ok: {}", file.display(), rtc::check::summary(scene))
-        }
-        _ => count_line(diags),
-    };
-    if format == Format::Json {
-        let mut doc: serde_json::Value = serde_json::from_str(&report::render(
-            &diags.items,
-            &sources,
-            &subject,
-            format,
-            false,
-        ))
-        .unwrap_or_default();
-        doc["summary"] = serde_json::Value::String(summary);
-        doc["ok"] = serde_json::Value::Bool(matches!(outcome, Outcome::Ok));
-        println!("{doc}");
-    } else {
-        // Diagnostics and the summary are a compiler's messages: stderr. Only `--format json`,
-        // which a tool asked for, writes to stdout.
-        let text = report::render(&diags.items, &sources, &subject, format, color);
-        if !text.is_empty() {
-            eprintln!("{}", text.trim_end());
-            if format == Format::Short {
-                eprintln!();
-            }
-        }
-        eprintln!("{summary}");
-    }
-    outcome
 }
 
 /// What `rtc render` was asked to do, besides the frames.
@@ -322,7 +308,7 @@ fn render(
     print(&loaded.diagnostics.items, &sources);
     let outcome = outcome_of(&loaded.diagnostics, false);
     let (Outcome::Ok, Some(scene)) = (&outcome, loaded.scene) else {
-        eprintln!("{}", count_line(&loaded.diagnostics));
+        eprintln!("{}", cli::check::count_line(&loaded.diagnostics));
         return outcome;
     };
     let animated = written.is_some();
@@ -344,7 +330,7 @@ fn render(
         Ok(p) => p,
         Err(diags) => {
             print(&diags.items, &sources);
-            eprintln!("{}", count_line(&diags));
+            eprintln!("{}", cli::check::count_line(&diags));
             return outcome_of(&diags, false);
         }
     };

@@ -1,6 +1,8 @@
 //! Binary-only parts of the command line.
 
+pub mod check;
 pub mod frames;
 pub mod progress;
 pub mod report;
 pub mod stats;
+pub mod watch;

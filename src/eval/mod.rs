@@ -7,6 +7,7 @@ pub(crate) mod call;
 pub(crate) mod error;
 pub(crate) mod fxhash;
 pub(crate) mod interp;
+pub mod library;
 pub(crate) mod lower;
 pub(crate) mod members;
 pub(crate) mod methods;
@@ -136,6 +137,17 @@ pub fn load_source(
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Loaded {
+    on_eval_stack(|| load_source_here(path, text, sources, options)).unwrap_or_else(|| {
+        Loaded::failure(
+            crate::diag::IO_ERROR,
+            "cannot start the evaluation thread",
+            "free some memory and retry",
+        )
+    })
+}
+
+/// Runs `f` on a thread with the evaluation's large stack; `None` if the thread cannot start.
+pub(crate) fn on_eval_stack<T: Send>(f: impl FnOnce() -> T + Send) -> Option<T> {
     // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
     // nesting; a dedicated thread with a large stack keeps that independent of the caller's
     // thread (test harness and rayon threads have small stacks).
@@ -143,15 +155,9 @@ pub fn load_source(
         std::thread::Builder::new()
             .name("rtc-eval".into())
             .stack_size(EVAL_STACK_BYTES)
-            .spawn_scoped(s, || load_source_here(path, text, sources, options))
+            .spawn_scoped(s, f)
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .unwrap_or_else(|_| {
-                Loaded::failure(
-                    crate::diag::IO_ERROR,
-                    "cannot start the evaluation thread",
-                    "free some memory and retry",
-                )
-            })
+            .ok()
     })
 }
 

@@ -155,6 +155,16 @@ impl Prepared {
         self.settings = settings;
         Ok(())
     }
+
+    /// Replaces the camera (a coarser preview of the same view, `rtc watch`): validated like
+    /// the scene's, and the effects and ray-offset scale follow it.
+    pub fn set_camera(&mut self, camera: Camera) -> Result<(), Diagnostic> {
+        validate::camera(&camera)?;
+        self.effects = Effects::new(&self.content, &self.settings, &camera);
+        self.extent = extent(&self.world, camera.eye);
+        self.camera = camera;
+        Ok(())
+    }
 }
 
 /// The largest coordinate magnitude of the world's finite bounds and of `eye`.
