@@ -1,6 +1,8 @@
 //! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it,
 //! `rtc watch FILE` serves a live page that re-renders it on every change.
-//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems. Diagnostics go to stderr;
+//! `rtc accuracy FILE` measures what its quality knobs cost and buy.
+//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 an `rtc accuracy` sweep
+//! interrupted by Ctrl-C (its partial report is written). Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
 #![forbid(unsafe_code)]
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
@@ -82,6 +84,8 @@ enum Command {
         #[arg(long, default_value_t = 0)]
         threads: usize,
     },
+    /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
+    Accuracy(AccuracyArgs),
 }
 
 /// What the command line tells the scene before it is evaluated.
@@ -136,6 +140,73 @@ impl SceneInputs {
     }
 }
 
+/// `rtc accuracy`'s options.
+#[derive(clap::Args, Debug)]
+struct AccuracyArgs {
+    /// The scene file (`.rtc`, `.in` or `.yaml`).
+    file: PathBuf,
+    /// Measure against this image instead of rendering a reference (EXR: linear light; PNG:
+    /// sRGB bytes), at the swept size.
+    #[arg(long, value_name = "FILE")]
+    reference: Option<PathBuf>,
+    /// Sweep at this factor of the scene's resolution per side (default: the largest factor
+    /// ≤ 1 that keeps the image within --max-pixels).
+    #[arg(long, value_parser = cli::accuracy::parse_positive)]
+    scale: Option<f64>,
+    /// The pixel budget of the automatic scale.
+    #[arg(long, default_value_t = rtc::accuracy::scale::DEFAULT_MAX_PIXELS)]
+    max_pixels: u64,
+    /// Renders per seed and point; the time is their median.
+    #[arg(long, default_value_t = 1)]
+    repeat: u32,
+    /// The first seed (the second is the next integer); default: the scene's own seed.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    threads: usize,
+    /// Skip the joint sweep (ladders only).
+    #[arg(long)]
+    no_joint: bool,
+    /// Neither read nor write the reference cache.
+    #[arg(long)]
+    no_cache: bool,
+    /// The error of the Pareto front, the plot and the recommendations.
+    #[arg(long, value_enum, default_value = "flip")]
+    metric: MetricArg,
+    /// Recommend the cheapest measured setting whose error is at most this.
+    #[arg(long, value_parser = cli::accuracy::parse_positive)]
+    target_error: Option<f64>,
+    /// Recommend the most accurate measured setting whose full-size render takes at most this
+    /// (seconds, or with a unit: 30s, 10m, 2h).
+    #[arg(long, value_parser = cli::accuracy::parse_seconds)]
+    time: Option<f64>,
+    /// Stdout: a table, or the JSON report.
+    #[arg(long, value_enum, default_value = "table")]
+    format: TableFormat,
+    /// Directory for report.json, plot.svg and flip-map.png (default: `<scene stem>-accuracy`).
+    #[arg(short, long)]
+    out_dir: Option<PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum MetricArg {
+    /// Mean ꟻLIP (sRGB images).
+    Flip,
+    /// RMSE in linear light.
+    Rmse,
+    /// Relative MSE in linear light.
+    RelMse,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum TableFormat {
+    /// A table.
+    Table,
+    /// The JSON report (schema rtc-accuracy/1).
+    Json,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 enum DenyLevel {
     /// Fail on warnings too.
@@ -148,6 +219,7 @@ enum Outcome {
     Ok,
     SceneErrors,
     IoOrUsage,
+    Interrupted,
 }
 
 impl Outcome {
@@ -157,6 +229,7 @@ impl Outcome {
             Outcome::Ok => 0,
             Outcome::SceneErrors => 1,
             Outcome::IoOrUsage => 2,
+            Outcome::Interrupted => 3,
         }
     }
 }
@@ -202,11 +275,13 @@ fn main() -> ExitCode {
             open,
             threads,
         }),
+        Command::Accuracy(args) => accuracy(&args),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
         Outcome::SceneErrors => ExitCode::from(1),
         Outcome::IoOrUsage => ExitCode::from(2),
+        Outcome::Interrupted => ExitCode::from(130),
     }
 }
 
@@ -375,4 +450,115 @@ fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene, animated: bo
                 file.with_extension("png")
             }
         })
+}
+
+fn accuracy(args: &AccuracyArgs) -> Outcome {
+    let subject = args.file.display().to_string();
+    let mut sources = SourceMap::new();
+    let loaded = load(&args.file, &mut sources, &EvalOptions::default());
+    let color = std::io::stderr().is_terminal();
+    let print = |diags: &[Diagnostic], sources: &SourceMap| {
+        let text = report::render(diags, sources, &subject, Format::Human, color);
+        if !text.is_empty() {
+            eprintln!("{}", text.trim_end());
+        }
+    };
+    print(&loaded.diagnostics.items, &sources);
+    let outcome = outcome_of(&loaded.diagnostics, false);
+    let (Outcome::Ok, Some(scene)) = (&outcome, loaded.scene) else {
+        eprintln!("{}", cli::check::count_line(&loaded.diagnostics));
+        return outcome;
+    };
+    let reference = match &args.reference {
+        Some(f) => rtc::accuracy::ReferenceChoice::File(f.clone()),
+        None => rtc::accuracy::ReferenceChoice::Render {
+            cache_dir: (!args.no_cache).then(cache_dir).flatten(),
+        },
+    };
+    let first_seed = args.seed.unwrap_or(scene.settings.seed);
+    let options = rtc::accuracy::StudyOptions {
+        scene_name: subject.clone(),
+        scale: args.scale,
+        max_pixels: args.max_pixels,
+        reference,
+        measure: rtc::accuracy::MeasureOptions {
+            repeat: args.repeat.max(1),
+            seeds: [first_seed, first_seed.wrapping_add(1)],
+            threads: args.threads,
+        },
+        joint: !args.no_joint,
+        metric: match args.metric {
+            MetricArg::Flip => rtc::accuracy::Metric::Flip,
+            MetricArg::Rmse => rtc::accuracy::Metric::Rmse,
+            MetricArg::RelMse => rtc::accuracy::Metric::RelMse,
+        },
+        target_error: args.target_error,
+        time: args.time,
+    };
+    cli::accuracy::catch_interrupt();
+    let bar = cli::accuracy::SweepBar::on_stderr();
+    let study = match rtc::accuracy::study(&scene, &options, &bar) {
+        Ok(r) => r,
+        Err(diags) => {
+            use rtc::accuracy::SweepProgress;
+            bar.end();
+            print(&diags.items, &sources);
+            if diags
+                .items
+                .iter()
+                .any(|d| d.code == rtc::accuracy::NOTHING_MEASURED)
+            {
+                return Outcome::Interrupted;
+            }
+            return outcome_of(&diags, false);
+        }
+    };
+    if study.reference_too_noisy() {
+        print(&[cli::accuracy::noisy_reference(&study)], &sources);
+    }
+    if !study.complete {
+        eprintln!(
+            "interrupted: the report keeps the {} point(s) measured so far",
+            study.points.len()
+        );
+    }
+    match args.format {
+        TableFormat::Table => print!("{}", cli::accuracy_table::table(&study)),
+        TableFormat::Json => println!(
+            "{}",
+            serde_json::to_string_pretty(&study.to_json()).unwrap_or_default()
+        ),
+    }
+    let dir = args
+        .out_dir
+        .clone()
+        .unwrap_or_else(|| cli::accuracy::default_out_dir(&args.file));
+    match cli::accuracy::write_outputs(&study, &dir) {
+        Ok(files) => {
+            let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+            eprintln!("wrote {}", names.join(", "));
+        }
+        Err(d) => {
+            print(std::slice::from_ref(&d), &sources);
+            return Outcome::IoOrUsage;
+        }
+    }
+    if study.complete {
+        Outcome::Ok
+    } else {
+        Outcome::Interrupted
+    }
+}
+
+/// The reference cache: `$RTC_CACHE_DIR`, else `$XDG_CACHE_HOME/rtc/accuracy`, else
+/// `$HOME/.cache/rtc/accuracy`; none when no variable is set.
+fn cache_dir() -> Option<PathBuf> {
+    let var = |name: &str| {
+        std::env::var_os(name)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
+    var("RTC_CACHE_DIR")
+        .or_else(|| var("XDG_CACHE_HOME").map(|d| d.join("rtc").join("accuracy")))
+        .or_else(|| var("HOME").map(|d| d.join(".cache").join("rtc").join("accuracy")))
 }

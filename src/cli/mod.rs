@@ -1,5 +1,7 @@
 //! Binary-only parts of the command line.
 
+pub mod accuracy;
+pub mod accuracy_table;
 pub mod check;
 pub mod frames;
 pub mod progress;

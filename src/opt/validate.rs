@@ -136,6 +136,28 @@ fn image_size(c: &Camera) -> Result<(), Diagnostic> {
     .with_help("render a smaller image, e.g. 4096×4096"))
 }
 
+/// Checks an area light's samples per edge against `ir::limits` (each in 1..=256).
+pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
+    if samples
+        .iter()
+        .all(|n| (1..=MAX_LIGHT_SAMPLES_PER_AXIS).contains(n))
+    {
+        return Ok(());
+    }
+    Err(Diagnostic::new(
+        Severity::Error,
+        "rtc::render::limit",
+        None,
+        format!(
+            "{}×{} area-light samples: each edge takes 1 to {MAX_LIGHT_SAMPLES_PER_AXIS}",
+            samples[0], samples[1]
+        ),
+    )
+    .with_help(format!(
+        "use 1 to {MAX_LIGHT_SAMPLES_PER_AXIS} samples per edge"
+    )))
+}
+
 /// Settings within `ir::limits`: bounces and samples per pixel.
 pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     let too_big = |what: String, help: String| {

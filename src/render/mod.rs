@@ -47,7 +47,7 @@ use sampler::{Grid, PixelSampler, Rng};
 use shading::Ctx;
 
 pub use film::{Channel, Stats};
-pub use progress::{Progress, Silent};
+pub use progress::{CANCELLED, Progress, Silent};
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]

@@ -84,7 +84,7 @@ where
         progress.finish();
         return Err(Diagnostic::new(
             Severity::Error,
-            "rtc::render::cancelled",
+            super::progress::CANCELLED,
             None,
             "the render was cancelled",
         ));
