@@ -58,6 +58,18 @@ enum Command {
         /// Print rays traced, rays per second, world build time and memory to stderr.
         #[arg(long)]
         stats: bool,
+        /// Render progressively until the estimated linear RMSE is at most E (e.g. 0.01).
+        #[arg(long, value_name = "E", value_parser = cli::converge::parse_error)]
+        target_error: Option<f64>,
+        /// Render progressively for at most T (`30s`, `2m`, `1h`) and write the image reached.
+        #[arg(long, value_name = "T", value_parser = cli::converge::parse_duration)]
+        time: Option<std::time::Duration>,
+        /// Reproduce a progressive render exactly from the sample map it wrote.
+        #[arg(long, value_name = "FILE", conflicts_with_all = ["target_error", "time"])]
+        samples_from: Option<PathBuf>,
+        /// Where a progressive render writes its sample map (default: the image path + `.samples`).
+        #[arg(long, value_name = "FILE")]
+        samples_to: Option<PathBuf>,
     },
 }
 
@@ -84,7 +96,19 @@ fn main() -> ExitCode {
             threads,
             format,
             stats,
-        } => render(&file, output, threads, format, stats),
+            target_error,
+            time,
+            samples_from,
+            samples_to,
+        } => {
+            let progressive = cli::converge::Request {
+                target_error,
+                time,
+                samples_from,
+                samples_to,
+            };
+            render(&file, output, threads, format, stats, &progressive)
+        }
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -170,6 +194,7 @@ fn render(
     threads: usize,
     format: Format,
     show_stats: bool,
+    progressive: &cli::converge::Request,
 ) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
@@ -201,16 +226,20 @@ fn render(
     };
     print(prepared.warnings(), &sources);
     let options = rtc::render::RenderOptions { threads };
-    let result = rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
-        .and_then(|film| {
-            if show_stats {
-                eprintln!(
-                    "{}",
-                    cli::stats::describe(&film, &prepared.stats(), load_time, start.elapsed())
-                );
-            }
-            rtc::render::output::save(&film.to_image(), &path)
-        });
+    let film = if progressive.wanted() {
+        cli::converge::render(&prepared, threads, progressive, &path)
+    } else {
+        rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
+    };
+    let result = film.and_then(|film| {
+        if show_stats {
+            eprintln!(
+                "{}",
+                cli::stats::describe(&film, &prepared, load_time, start.elapsed())
+            );
+        }
+        rtc::render::output::save(&film.to_image(), &path)
+    });
     match result {
         Ok(()) => {
             eprintln!("wrote {}", path.display());

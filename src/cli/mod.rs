@@ -1,5 +1,6 @@
 //! Binary-only parts of the command line.
 
+pub mod converge;
 pub mod progress;
 pub mod report;
 pub mod stats;
