@@ -85,7 +85,7 @@ fn quality_line(p: &Prepared) -> String {
         "no lens"
     };
     format!(
-        "stats: quality: {sampling}; {lights}; {lens}; max_depth {}; cutoff {:e}",
+        "stats: quality: {sampling}; {lights}; {lens}; max_depth {}; cutoff {:.3e}",
         st.max_depth, st.cutoff
     )
 }
