@@ -478,6 +478,31 @@ pub struct RenderSettings {
     pub glass_shadows: bool,
     /// The lens flare post stage, when asked.
     pub flare: Option<Flare>,
+    /// The insignificance cut-off: a reflected or refracted ray whose weight (the product of
+    /// the reflect/refract coefficients along its path) is below it is not traced. 0 traces all.
+    pub cutoff: f64,
+    /// How an area light's samples are shared among a pixel's samples.
+    pub light_samples: LightSampling,
+}
+
+/// The language's default insignificance cut-off: half of the smallest step of the sRGB curve
+/// (its slope is steepest at black, 12.92, so one 8-bit level there is 1/(255·12.92) ≈ 3.0e-4 in
+/// linear light). A dropped ray of weight below it changes a pixel of radiance ≤ 1 by less than
+/// half a level: at most one level after rounding, usually none. POV-Ray's 1/255 was chosen for
+/// linear output and would drop up to 13 sRGB levels near black.
+pub const LANGUAGE_CUTOFF: f64 = 0.5 / (255.0 * 12.92);
+
+/// How an area light's samples are shared among a pixel's samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightSampling {
+    /// Every pixel sample takes every cell of every area light (n² shadow rays per pixel
+    /// sample): the course's rule and the default.
+    #[default]
+    PerSample,
+    /// The cells are dealt out over the pixel's samples: with s pixel samples, each takes
+    /// ⌈n²/s⌉ cells (at least one), so a pixel still covers every cell while a pixel sample
+    /// casts fewer shadow rays.
+    Spread,
 }
 
 /// How a linear film colour is quantised to 8 bits.
@@ -494,18 +519,20 @@ pub enum Encoding {
 
 impl RenderSettings {
     /// The course formats' defaults (COURSE.md): no shadows and no bounces unless the file asks,
-    /// one sample per pixel. The same as [`RenderSettings::default`], the IR's neutral settings.
+    /// one sample per pixel, no insignificance cut-off (so the reference images stay exact). The same as [`RenderSettings::default`], the IR's neutral settings.
     pub fn course_defaults() -> RenderSettings {
         RenderSettings::default()
     }
 
     /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
-    /// bounces, so a glass or mirror material shows without further settings, and sRGB output.
+    /// bounces, so a glass or mirror material shows without further settings, sRGB output and
+    /// the cut-off [`LANGUAGE_CUTOFF`].
     pub fn language_defaults() -> RenderSettings {
         RenderSettings {
             shadows: true,
             max_depth: 5,
             encoding: Encoding::Srgb,
+            cutoff: LANGUAGE_CUTOFF,
             ..RenderSettings::course_defaults()
         }
     }
@@ -528,6 +555,8 @@ impl Default for RenderSettings {
             encoding: Encoding::Linear,
             glass_shadows: false,
             flare: None,
+            cutoff: 0.0,
+            light_samples: LightSampling::PerSample,
         }
     }
 }

@@ -69,6 +69,18 @@ enum Command {
         frames: Option<String>,
         #[command(flatten)]
         inputs: SceneInputs,
+        /// Render progressively until the estimated linear RMSE is at most E (e.g. 0.01).
+        #[arg(long, value_name = "E", value_parser = cli::converge::parse_error)]
+        target_error: Option<f64>,
+        /// Render progressively for at most T (`30s`, `2m`, `1h`) and write the image reached.
+        #[arg(long, value_name = "T", value_parser = cli::converge::parse_duration)]
+        time: Option<std::time::Duration>,
+        /// Reproduce a progressive render exactly from the sample map it wrote.
+        #[arg(long, value_name = "FILE", conflicts_with_all = ["target_error", "time"])]
+        samples_from: Option<PathBuf>,
+        /// Where a progressive render writes its sample map (default: the image path + `.samples`).
+        #[arg(long, value_name = "FILE")]
+        samples_to: Option<PathBuf>,
     },
     /// Serve a live page on 127.0.0.1 that re-renders the scene whenever it or a file it uses changes.
     Watch {
@@ -254,6 +266,10 @@ fn main() -> ExitCode {
             stats,
             frames,
             inputs,
+            target_error,
+            time,
+            samples_from,
+            samples_to,
         } => {
             let job = RenderJob {
                 file: &file,
@@ -261,6 +277,12 @@ fn main() -> ExitCode {
                 threads,
                 format,
                 show_stats: stats,
+                progressive: cli::converge::Request {
+                    target_error,
+                    time,
+                    samples_from,
+                    samples_to,
+                },
             };
             render_frames(&job, frames.as_deref(), &inputs)
         }
@@ -317,6 +339,8 @@ struct RenderJob<'a> {
     threads: usize,
     format: Format,
     show_stats: bool,
+    /// `--target-error`, `--time`, `--samples-from`, `--samples-to`.
+    progressive: cli::converge::Request,
 }
 
 /// Renders `--frame N` (one image), or each frame of `--frames` in turn, each evaluated afresh.
@@ -411,16 +435,21 @@ fn render(
     };
     print(prepared.warnings(), &sources);
     let options = rtc::render::RenderOptions { threads };
-    let result = rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
-        .and_then(|film| {
-            if show_stats {
-                eprintln!(
-                    "{}",
-                    cli::stats::describe(&film, &prepared.stats(), load_time, start.elapsed())
-                );
-            }
-            rtc::render::output::save(&film.to_image(), &path)
-        });
+    let progressive = &job.progressive;
+    let film = if progressive.wanted() {
+        cli::converge::render(&prepared, threads, progressive, &path)
+    } else {
+        rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
+    };
+    let result = film.and_then(|film| {
+        if show_stats {
+            eprintln!(
+                "{}",
+                cli::stats::describe(&film, &prepared, load_time, start.elapsed())
+            );
+        }
+        rtc::render::output::save(&film.to_image(), &path)
+    });
     match result {
         Ok(()) => {
             eprintln!("wrote {}", path.display());

@@ -4,6 +4,7 @@ pub mod accuracy;
 pub mod accuracy_table;
 pub mod check;
 pub mod frames;
+pub mod converge;
 pub mod progress;
 pub mod report;
 pub mod stats;

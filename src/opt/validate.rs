@@ -158,7 +158,7 @@ pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
     )))
 }
 
-/// Settings within `ir::limits`: bounces and samples per pixel.
+/// Settings within `ir::limits`: bounces and samples per pixel; a cut-off in [0, 1].
 pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     let too_big = |what: String, help: String| {
         Err(Diagnostic::new(Severity::Error, "rtc::render::limit", None, what).with_help(help))
@@ -180,6 +180,15 @@ pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
         return too_big(
             format!("{factor} samples per axis is more than {MAX_PIXEL_SAMPLES_PER_AXIS}"),
             format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
+        );
+    }
+    if !(0.0..=1.0).contains(&s.cutoff) {
+        return too_big(
+            format!(
+                "an insignificance cut-off of {} is outside [0, 1]",
+                s.cutoff
+            ),
+            "use a cutoff in [0, 1]; 0 traces every ray".to_string(),
         );
     }
     if let Some(f) = &s.flare {

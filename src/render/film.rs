@@ -38,6 +38,12 @@ pub struct Stats {
     pub shadow_rays: u64,
     /// Pixels that took the finer grid of adaptive sampling.
     pub refined_pixels: u64,
+    /// Secondary rays not traced because their weight was below the insignificance cut-off.
+    pub cut_rays: u64,
+    /// The summed weight of the cut rays, in units of 2⁻³² (`integrator::whitted::CUT_WEIGHT_UNIT`):
+    /// divided by the camera rays, a bound on the mean linear radiance dropped per sample when
+    /// what the cut rays would have seen is at most 1.
+    pub cut_weight: u64,
 }
 
 impl Stats {
@@ -47,6 +53,8 @@ impl Stats {
         self.secondary_rays += o.secondary_rays;
         self.shadow_rays += o.shadow_rays;
         self.refined_pixels += o.refined_pixels;
+        self.cut_rays += o.cut_rays;
+        self.cut_weight += o.cut_weight;
     }
 }
 

@@ -351,6 +351,8 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "encoding",
         "glass_shadows",
         "flare",
+        "cutoff",
+        "spread_light_samples",
     ];
     let mut p = Params::new(s, names, a)?;
     let mut st = ir::RenderSettings::language_defaults();
@@ -461,6 +463,12 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.background = p.color_or(it, "background", DVec3::ZERO)?;
+    let (cutoff, cs) = p.num_or(it, "cutoff", st.cutoff)?;
+    unit_interval("cutoff", cutoff, cs)?;
+    st.cutoff = cutoff;
+    if p.bool_or(it, "spread_light_samples", false)? {
+        st.light_samples = ir::LightSampling::Spread;
+    }
     if let Some((v, sp)) = p.get("seed") {
         st.seed = int_in(it, &v, sp, "seed", 0, i64::MAX)? as u64;
     }

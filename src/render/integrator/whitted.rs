@@ -92,28 +92,32 @@ pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n
 }
 
-/// Where a path is: how often it has bounced and which media it is inside. (State a path
-/// carries down the recursion lives here, such as a throughput weight for an insignificance
-/// cut-off.)
+/// Where a path is: how often it has bounced, which media it is inside and how much it still
+/// weighs in its pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Path {
     /// Bounces so far (0 for a camera ray).
     pub depth: u32,
     /// The media the ray travels in.
     pub media: Media,
+    /// The product of the reflect/refract coefficients along the path (1 for a camera ray):
+    /// what the insignificance cut-off compares.
+    pub weight: f64,
 }
 
 impl Path {
-    /// A camera ray's path: no bounce yet, outside everything.
+    /// A camera ray's path: no bounce yet, outside everything, full weight.
     pub const CAMERA: Path = Path {
         depth: 0,
         media: Media::OUTSIDE,
+        weight: 1.0,
     };
 
-    fn bounce(self, media: Media) -> Path {
+    fn bounce(self, media: Media, k: f64) -> Path {
         Path {
             depth: self.depth + 1,
             media,
+            weight: self.weight * k,
         }
     }
 }
@@ -133,6 +137,10 @@ pub struct Outgoing {
     pub time: f64,
 }
 
+/// Fixed-point units per unit of weight in [`crate::render::Stats::cut_weight`] (integers keep
+/// the sum the same for any thread count).
+pub const CUT_WEIGHT_UNIT: f64 = (1u64 << 32) as f64;
+
 /// The shaded-image integrator: Whitted recursion over the prepared scene.
 pub struct Whitted<'a> {
     scene: &'a Prepared,
@@ -140,6 +148,7 @@ pub struct Whitted<'a> {
     shading: ShadingModel,
     max_depth: u32,
     background: Color,
+    cutoff: f64,
 }
 
 impl<'a> Whitted<'a> {
@@ -152,6 +161,7 @@ impl<'a> Whitted<'a> {
             shading: s.shading,
             max_depth: s.max_depth,
             background: s.background,
+            cutoff: s.cutoff,
         }
     }
 
@@ -201,7 +211,7 @@ impl<'a> Whitted<'a> {
                 (media.current(), media.enter(mat.eta))
             };
             match refract(ray.dir, facing, n1, after.current()) {
-                Some(dir) => {
+                Some(dir) if self.significant(path.bounce(after, kt), ctx) => {
                     let out = Outgoing {
                         from: hit.point - eps * facing,
                         dir,
@@ -209,12 +219,13 @@ impl<'a> Whitted<'a> {
                         refracted: true,
                         time: ray.time,
                     };
-                    c += kt * self.bounce(&out, mat, path.bounce(after), ctx);
+                    c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx);
                 }
+                Some(_) => {}
                 None => kr += kt,
             }
         }
-        if kr > 0.0 {
+        if kr > 0.0 && self.significant(path.bounce(media, kr), ctx) {
             let out = Outgoing {
                 from: hit.point + eps * facing,
                 dir: reflect(ray.dir, facing),
@@ -222,7 +233,7 @@ impl<'a> Whitted<'a> {
                 refracted: false,
                 time: ray.time,
             };
-            c += kr * self.bounce(&out, mat, path.bounce(media), ctx);
+            c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx);
         }
         c
     }
@@ -249,6 +260,18 @@ impl<'a> Whitted<'a> {
             sum += self.trace(&Ray::new(out.from, d).at_time(out.time), next, ctx);
         }
         sum / f64::from(n)
+    }
+
+    /// Whether a secondary ray with this path is worth tracing: its weight is at least the
+    /// cut-off (always with cut-off 0, since weights are positive). A ray cut is counted with
+    /// its weight, which bounds the radiance it would have added for a scene lit at ≤ 1.
+    fn significant(&self, next: Path, ctx: &mut Ctx) -> bool {
+        if next.weight >= self.cutoff {
+            return true;
+        }
+        ctx.stats.cut_rays += 1;
+        ctx.stats.cut_weight += (next.weight * CUT_WEIGHT_UNIT) as u64;
+        false
     }
 
     /// Material colour, or the texture's where the material has one.

@@ -17,9 +17,11 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) 
     let warm = DVec3::new(g.y, g.y, 0.0) + g.beta * kd_c;
     let mut c = Color::ZERO;
     for (i, light) in scene.lights().iter().enumerate() {
-        let share = 1.0 / f64::from(light.samples);
-        for k in 0..light.samples {
-            let ls = light_sample(light, i, k, s, &ctx.rng);
+        let (first, count) = ctx.lights.cells(light.samples);
+        let share = 1.0 / f64::from(count);
+        for j in 0..count {
+            let k = (first + j) % light.samples;
+            let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             let tone = cool * (1.0 - n_dot_l) / 2.0 + warm * (1.0 + n_dot_l) / 2.0;
             if n_dot_l <= 0.0 {

@@ -46,14 +46,16 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
     for (i, light) in scene.lights().iter().enumerate() {
         let lum = (light.color.x + light.color.y + light.color.z) / 3.0;
         tone += s.mat.ka * lum;
-        for k in 0..light.samples {
-            let ls = light_sample(light, i, k, s, &ctx.rng);
+        let (first, count) = ctx.lights.cells(light.samples);
+        for j in 0..count {
+            let k = (first + j) % light.samples;
+            let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             if n_dot_l > 0.0
                 && let Some(pass) = transmission(scene, s, &ls, &mut ctx.stats)
             {
                 let through = pass.element_sum() / 3.0;
-                tone += s.mat.kd * n_dot_l * lum / f64::from(light.samples) * through;
+                tone += s.mat.kd * n_dot_l * lum / f64::from(count) * through;
             }
         }
     }

@@ -18,8 +18,10 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
         if scene.settings().ambient == AmbientConvention::PerLight {
             c += m.ka * s.color * light.color;
         }
-        for k in 0..light.samples {
-            let ls = light_sample(light, i, k, s, &ctx.rng);
+        let (first, count) = ctx.lights.cells(light.samples);
+        for j in 0..count {
+            let k = (first + j) % light.samples;
+            let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             // Facing away: no diffuse, and the light is behind the surface, so no highlight either
             // (a closed surface would shadow it; this also skips the shadow ray).
