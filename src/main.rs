@@ -58,6 +58,23 @@ enum Command {
         /// Print rays traced, rays per second, world build time and memory to stderr.
         #[arg(long)]
         stats: bool,
+        /// Render only shard K of N (`K/N`, from 0) and write it as a part for `rtc merge`;
+        /// `auto` reads the task index of a Slurm array job or a Kubernetes Indexed Job.
+        #[arg(long, value_name = "K/N|auto")]
+        shard: Option<String>,
+        /// The number of shards for `--shard auto` where the scheduler does not say it
+        /// (Kubernetes Indexed Jobs).
+        #[arg(long, value_name = "N")]
+        shards: Option<u32>,
+    },
+    /// Merge the parts of a sharded render (`rtc render --shard K/N`) into one image.
+    Merge {
+        /// The part files, one per shard, in any order.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        /// The image to write (PNG or PPM).
+        #[arg(short, long)]
+        output: PathBuf,
     },
 }
 
@@ -68,7 +85,7 @@ enum DenyLevel {
 }
 
 /// How a command ended.
-enum Outcome {
+pub(crate) enum Outcome {
     Ok,
     SceneErrors,
     IoOrUsage,
@@ -84,7 +101,13 @@ fn main() -> ExitCode {
             threads,
             format,
             stats,
-        } => render(&file, output, threads, format, stats),
+            shard,
+            shards,
+        } => match cli::shard::resolve(shard.as_deref(), shards) {
+            Ok(shard) => render(&file, output, threads, format, stats, shard),
+            Err(d) => cli::shard::usage_error(&d),
+        },
+        Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -170,6 +193,7 @@ fn render(
     threads: usize,
     format: Format,
     show_stats: bool,
+    shard: Option<rtc::render::shard::Shard>,
 ) -> Outcome {
     let subject = file.display().to_string();
     let mut sources = SourceMap::new();
@@ -189,7 +213,10 @@ fn render(
         eprintln!("{}", count_line(&loaded.diagnostics));
         return outcome;
     };
-    let path = output_path(file, output, &scene);
+    let path = match shard {
+        Some(s) => cli::shard::part_path(output, &output_path(file, None, &scene), s),
+        None => output_path(file, output, &scene),
+    };
     let start = std::time::Instant::now();
     let prepared = match rtc::opt::prepare(&scene) {
         Ok(p) => p,
@@ -200,7 +227,7 @@ fn render(
         }
     };
     print(prepared.warnings(), &sources);
-    let options = rtc::render::RenderOptions { threads };
+    let options = rtc::render::RenderOptions { threads, shard };
     let result = rtc::render::render(&prepared, &options, &cli::progress::Bar::on_stderr())
         .and_then(|film| {
             if show_stats {
@@ -209,7 +236,10 @@ fn render(
                     cli::stats::describe(&film, &prepared.stats(), load_time, start.elapsed())
                 );
             }
-            rtc::render::output::save(&film.to_image(), &path)
+            match shard {
+                Some(s) => cli::shard::write_part(&film, &scene, s, &path),
+                None => rtc::render::output::save(&film.to_image(), &path),
+            }
         });
     match result {
         Ok(()) => {

@@ -2,4 +2,5 @@
 
 pub mod progress;
 pub mod report;
+pub mod shard;
 pub mod stats;
