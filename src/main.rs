@@ -81,6 +81,23 @@ enum Command {
         /// Where a progressive render writes its sample map (default: the image path + `.samples`).
         #[arg(long, value_name = "FILE")]
         samples_to: Option<PathBuf>,
+        /// Render only shard K of N (`K/N`, from 0) and write it as a part for `rtc merge`;
+        /// `auto` reads the task index of a Slurm array job or a Kubernetes Indexed Job.
+        #[arg(long, value_name = "K/N|auto")]
+        shard: Option<String>,
+        /// The number of shards for `--shard auto` where the scheduler does not say it
+        /// (Kubernetes Indexed Jobs).
+        #[arg(long, value_name = "N")]
+        shards: Option<u32>,
+    },
+    /// Merge the parts of a sharded render (`rtc render --shard K/N`) into one image.
+    Merge {
+        /// The part files, one per shard, in any order.
+        #[arg(required = true)]
+        parts: Vec<PathBuf>,
+        /// The image to write (PNG or PPM).
+        #[arg(short, long)]
+        output: PathBuf,
     },
     /// Serve a live page on 127.0.0.1 that re-renders the scene whenever it or a file it uses changes.
     Watch {
@@ -227,7 +244,7 @@ enum DenyLevel {
 
 /// How a command ended.
 #[derive(Clone, Copy, Debug)]
-enum Outcome {
+pub(crate) enum Outcome {
     Ok,
     SceneErrors,
     IoOrUsage,
@@ -270,22 +287,28 @@ fn main() -> ExitCode {
             time,
             samples_from,
             samples_to,
-        } => {
-            let job = RenderJob {
-                file: &file,
-                output,
-                threads,
-                format,
-                show_stats: stats,
-                progressive: cli::converge::Request {
-                    target_error,
-                    time,
-                    samples_from,
-                    samples_to,
-                },
-            };
-            render_frames(&job, frames.as_deref(), &inputs)
-        }
+            shard,
+            shards,
+        } => match cli::shard::resolve(shard.as_deref(), shards) {
+            Ok(shard) => {
+                let job = RenderJob {
+                    file: &file,
+                    output,
+                    threads,
+                    format,
+                    show_stats: stats,
+                    progressive: cli::converge::Request {
+                        target_error,
+                        time,
+                        samples_from,
+                        samples_to,
+                    },
+                    shard,
+                };
+                render_frames(&job, frames.as_deref(), &inputs)
+            }
+            Err(d) => cli::shard::usage_error(&d),
+        },
         Command::Watch {
             file,
             port,
@@ -298,6 +321,7 @@ fn main() -> ExitCode {
             threads,
         }),
         Command::Accuracy(args) => accuracy(&args),
+        Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,
@@ -341,13 +365,16 @@ struct RenderJob<'a> {
     show_stats: bool,
     /// `--target-error`, `--time`, `--samples-from`, `--samples-to`.
     progressive: cli::converge::Request,
+    /// `--shard K/N`: a share of the pixels of one frame, or with `--frames` a share of the
+    /// frames (task K of N renders the frames at positions K, K+N, … of the range).
+    shard: Option<rtc::render::shard::Shard>,
 }
 
 /// Renders `--frame N` (one image), or each frame of `--frames` in turn, each evaluated afresh.
 fn render_frames(job: &RenderJob<'_>, frames: Option<&str>, inputs: &SceneInputs) -> Outcome {
     let Some(range) = frames else {
         return match inputs.options(inputs.frame) {
-            Ok(opts) => render(job, &opts, None),
+            Ok(opts) => render(job, &opts, None, job.shard),
             Err(msg) => usage_error(&msg),
         };
     };
@@ -364,13 +391,22 @@ fn render_frames(job: &RenderJob<'_>, frames: Option<&str>, inputs: &SceneInputs
             o.display()
         ));
     }
+    let mine: Vec<i64> = match job.shard {
+        Some(s) => frames
+            .into_iter()
+            .enumerate()
+            .filter(|(i, _)| s.deals(*i))
+            .map(|(_, f)| f)
+            .collect(),
+        None => frames,
+    };
     let mut written = std::collections::HashMap::new();
-    for frame in frames {
+    for frame in mine {
         let opts = match inputs.options(frame) {
             Ok(o) => o,
             Err(msg) => return usage_error(&msg),
         };
-        let outcome = render(job, &opts, Some(&mut written));
+        let outcome = render(job, &opts, Some(&mut written), None);
         if !matches!(outcome, Outcome::Ok) {
             return outcome;
         }
@@ -384,6 +420,7 @@ fn render(
     job: &RenderJob<'_>,
     opts: &EvalOptions,
     written: Option<&mut std::collections::HashMap<PathBuf, i64>>,
+    pixel_shard: Option<rtc::render::shard::Shard>,
 ) -> Outcome {
     let RenderJob {
         file,
@@ -424,6 +461,10 @@ fn render(
             path.display()
         ));
     }
+    let path = match pixel_shard {
+        Some(s) => cli::shard::part_path(job.output.clone(), &path, s),
+        None => path,
+    };
     let start = std::time::Instant::now();
     let prepared = match rtc::opt::prepare(&scene) {
         Ok(p) => p,
@@ -434,8 +475,16 @@ fn render(
         }
     };
     print(prepared.warnings(), &sources);
-    let options = rtc::render::RenderOptions { threads };
+    let options = rtc::render::RenderOptions {
+        threads,
+        shard: pixel_shard,
+    };
     let progressive = &job.progressive;
+    if progressive.wanted() && pixel_shard.is_some() {
+        return usage_error(
+            "a progressive render (--target-error, --time, --samples-from) cannot be sharded: its rounds look at the whole image; shard a fixed-sampling render instead",
+        );
+    }
     let film = if progressive.wanted() {
         cli::converge::render(&prepared, threads, progressive, &path)
     } else {
@@ -448,7 +497,10 @@ fn render(
                 cli::stats::describe(&film, &prepared, load_time, start.elapsed())
             );
         }
-        rtc::render::output::save(&film.to_image(), &path)
+        match pixel_shard {
+            Some(s) => cli::shard::write_part(&film, &scene, s, &path),
+            None => rtc::render::output::save(&film.to_image(), &path),
+        }
     });
     match result {
         Ok(()) => {

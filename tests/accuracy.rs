@@ -196,8 +196,14 @@ fn an_identical_image_measures_zero() {
     // The reference given as a file is the scene's own render: the scene's point measures 0.
     let dir = scratch("identical");
     let scene = load(&write_scene(&dir, POINT_LIT));
-    let film = rtc::render::render_scene(&scene, &rtc::render::RenderOptions { threads: 2 })
-        .expect("renders");
+    let film = rtc::render::render_scene(
+        &scene,
+        &rtc::render::RenderOptions {
+            threads: 2,
+            shard: None,
+        },
+    )
+    .expect("renders");
     let data = rtc::accuracy::measure::linear_rgb(&film);
     let view = rtc::metrics::LinearRgb::new(film.width, film.height, &data).unwrap();
     let same = rtc::metrics::compare(view, view).unwrap();

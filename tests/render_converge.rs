@@ -25,7 +25,14 @@ fn scene(src: &str) -> Scene {
 }
 
 fn render(s: &Scene, threads: usize) -> Film {
-    render_scene(s, &RenderOptions { threads }).unwrap()
+    render_scene(
+        s,
+        &RenderOptions {
+            threads,
+            shard: None,
+        },
+    )
+    .unwrap()
 }
 
 /// A mirror ball inside a mirror ball, both reflecting 0.5: every camera ray bounces until

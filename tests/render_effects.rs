@@ -11,7 +11,10 @@ use rtc::render::{RenderOptions, render_image, render_scene};
 use rtc::source::Span;
 
 fn opts(threads: usize) -> RenderOptions {
-    RenderOptions { threads }
+    RenderOptions {
+        threads,
+        ..Default::default()
+    }
 }
 
 /// Clear glass: no local shading, all light transmitted.

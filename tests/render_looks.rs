@@ -26,7 +26,10 @@ fn scene(src: &str) -> Scene {
 }
 
 fn opts() -> RenderOptions {
-    RenderOptions { threads: 2 }
+    RenderOptions {
+        threads: 2,
+        shard: None,
+    }
 }
 
 // ---- lens flare ------------------------------------------------------------------------------
@@ -143,7 +146,14 @@ fn zero_gloss_is_the_mirror_byte_for_byte() {
     let c = render_scene(&glossy, &opts()).unwrap();
     assert_ne!(a.to_image(), c.to_image());
     assert!(c.stats.secondary_rays > 4 * a.stats.secondary_rays);
-    let one = render_scene(&glossy, &RenderOptions { threads: 1 }).unwrap();
+    let one = render_scene(
+        &glossy,
+        &RenderOptions {
+            threads: 1,
+            shard: None,
+        },
+    )
+    .unwrap();
     assert_eq!(one.to_image(), c.to_image());
 }
 

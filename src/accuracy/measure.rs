@@ -83,7 +83,14 @@ pub fn render_once(
 ) -> Result<(Vec<f32>, f64, u64), Diagnostic> {
     scene.set_seed(seed);
     let start = Instant::now();
-    let film = render::render(scene, &RenderOptions { threads }, progress)?;
+    let film = render::render(
+        scene,
+        &RenderOptions {
+            threads,
+            shard: None,
+        },
+        progress,
+    )?;
     let seconds = start.elapsed().as_secs_f64();
     let s = film.stats;
     Ok((

@@ -45,7 +45,7 @@ impl Camera {
             }
             Projection::Perspective { fov_y } => {
                 // The plane through `center`, sized so the image height spans `fov_y`.
-                let pixel = 2.0 * view.length() * (0.5 * fov_y).tan() / h;
+                let pixel = 2.0 * view.length() * libm::tan(0.5 * fov_y) / h;
                 (c.center, r_unit * pixel, u_unit * pixel)
             }
         };
@@ -162,7 +162,7 @@ fn concentric_disk(u: f64, v: f64) -> (f64, f64) {
     } else {
         (b, 2.0 * q - q * (a / b))
     };
-    (r * phi.cos(), r * phi.sin())
+    (r * libm::cos(phi), r * libm::sin(phi))
 }
 
 #[cfg(test)]

@@ -19,11 +19,19 @@ pub enum Channel {
 }
 
 impl Channel {
+    /// Every channel, for reading names back.
+    pub const ALL: [Channel; 1] = [Channel::Color];
+
     /// The channel's name in files and messages.
     pub fn name(self) -> &'static str {
         match self {
             Channel::Color => "color",
         }
+    }
+
+    /// The channel called `name`.
+    pub fn named(name: &str) -> Option<Channel> {
+        Channel::ALL.into_iter().find(|c| c.name() == name)
     }
 }
 
@@ -105,6 +113,16 @@ impl Film {
     /// The channels this film holds.
     pub fn channels(&self) -> &[Channel] {
         &self.channels
+    }
+
+    /// Every channel's values interleaved per pixel (the layout [`Film::new`] takes), for
+    /// the rows `rows`.
+    pub fn interleaved(&self, rows: std::ops::Range<u32>) -> Vec<Color> {
+        let w = self.width as usize;
+        let (a, b) = (rows.start as usize * w, rows.end as usize * w);
+        (a..b)
+            .flat_map(|i| self.layers.iter().map(move |l| l[i]))
+            .collect()
     }
 
     /// A channel's values row by row from the top, if the film holds it.

@@ -28,12 +28,15 @@ pub mod camera;
 pub mod film;
 pub mod flare;
 pub mod integrator;
+pub mod merge;
 pub mod offset;
 pub mod output;
+pub mod part;
 pub mod progress;
 pub mod progressive;
 pub mod sampler;
 pub mod shading;
+pub mod shard;
 pub mod texture;
 pub mod tiles;
 
@@ -46,6 +49,7 @@ use film::Film;
 use integrator::Integrator;
 use sampler::{Grid, PixelSampler, Rng};
 use shading::{Ctx, LightShare};
+use shard::{Rows, Shard};
 
 pub use film::{Channel, Stats};
 pub use progress::{CANCELLED, Progress, Silent};
@@ -55,6 +59,8 @@ pub use progress::{CANCELLED, Progress, Silent};
 pub struct RenderOptions {
     /// Worker threads; 0 means all cores.
     pub threads: usize,
+    /// Render only this shard's rows (the other rows of the film stay zero); `None`: all.
+    pub shard: Option<Shard>,
 }
 
 /// A rendered 8-bit RGB image.
@@ -88,20 +94,31 @@ pub fn render(
     let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
     let channels = integrator.channels();
     let (w, h) = (view.camera.width(), view.camera.height());
-    let passes = if sampler.refine.is_some() { 2 } else { 1 };
-    progress.start(passes * u64::from(h));
+    // A shard's first pass covers a one-row halo when adaptive refinement will read it.
+    let (first_rows, own_rows) = match options.shard {
+        None => (Rows::All, Rows::All),
+        Some(s) if sampler.refine.is_some() => (Rows::WithHalo(s), Rows::Of(s)),
+        Some(s) => (Rows::Of(s), Rows::Of(s)),
+    };
+    let refine_rows = if sampler.refine.is_some() {
+        own_rows.count(h)
+    } else {
+        0
+    };
+    progress.start(first_rows.count(h) + refine_rows);
     let first = sampler.first;
     let n = channels.len();
-    let (mut values, mut stats) = tiles::run(&pool, w, h, n, progress, |x, y, ctx, out| {
-        view.average(&integrator, first, 0, x, y, ctx, out);
-    })?;
+    let (mut values, mut stats) =
+        tiles::run(&pool, w, h, n, first_rows, progress, |x, y, ctx, out| {
+            view.average(&integrator, first, 0, x, y, ctx, out);
+        })?;
     if let Some((fine, threshold)) = sampler.refine {
         // Adaptive sampling: a pixel takes the finer grid where its colour differs from a
         // 4-neighbour's by more than the threshold in some channel. Both passes are pure per
         // pixel.
         let coarse = &values;
         let at = |x: u32, y: u32| coarse[(y as usize * w as usize + x as usize) * n];
-        let (refined, more) = tiles::run(&pool, w, h, n, progress, |x, y, ctx, out| {
+        let (refined, more) = tiles::run(&pool, w, h, n, own_rows, progress, |x, y, ctx, out| {
             let c = at(x, y);
             let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
             let edge = (x > 0 && differs(x - 1, y))

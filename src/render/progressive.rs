@@ -23,6 +23,7 @@ use super::integrator::Integrator;
 use super::progress::Progress;
 use super::sampler::{Grid, Rng};
 use super::shading::{Ctx, LightShare};
+use super::shard::Rows;
 use super::tiles;
 use crate::diag::{Diagnostic, Severity};
 use crate::ir::Color;
@@ -126,19 +127,20 @@ pub fn render(
     let block = |x: u32, y: u32, start: u32, len: u32, ctx: &mut Ctx, out: &mut [Color]| {
         sample_block(&view, &integrator, x, y, start, len, ctx, out)
     };
-    let (mut cells, mut stats) = tiles::run(&pool, w, h, n, progress, |x, y, ctx, out| {
-        let mut a = [Color::ZERO; super::film::MAX_CHANNELS];
-        let mut b = [Color::ZERO; super::film::MAX_CHANNELS];
-        block(x, y, 0, FIRST_SAMPLES / 2, ctx, &mut a[..n]);
-        block(x, y, FIRST_SAMPLES / 2, FIRST_SAMPLES / 2, ctx, &mut b[..n]);
-        for c in 0..n {
-            out[c] = Cell {
-                sum: a[c] + b[c],
-                ..Cell::default()
-            };
-        }
-        out[0].error2 = half_error2(a[0], b[0], FIRST_SAMPLES / 2);
-    })?;
+    let (mut cells, mut stats) =
+        tiles::run(&pool, w, h, n, Rows::All, progress, |x, y, ctx, out| {
+            let mut a = [Color::ZERO; super::film::MAX_CHANNELS];
+            let mut b = [Color::ZERO; super::film::MAX_CHANNELS];
+            block(x, y, 0, FIRST_SAMPLES / 2, ctx, &mut a[..n]);
+            block(x, y, FIRST_SAMPLES / 2, FIRST_SAMPLES / 2, ctx, &mut b[..n]);
+            for c in 0..n {
+                out[c] = Cell {
+                    sum: a[c] + b[c],
+                    ..Cell::default()
+                };
+            }
+            out[0].error2 = half_error2(a[0], b[0], FIRST_SAMPLES / 2);
+        })?;
     let mut report = summary(&cells, n, 1);
     loop {
         let next = select(&cells, w, h, n, budget, report.estimate);
@@ -147,7 +149,7 @@ pub fn render(
             break;
         }
         let previous = &cells;
-        let more = tiles::run(&pool, w, h, n, progress, |x, y, ctx, out| {
+        let more = tiles::run(&pool, w, h, n, Rows::All, progress, |x, y, ctx, out| {
             let i = (y as usize * w as usize + x as usize) * n;
             let here = &previous[i..i + n];
             out.copy_from_slice(here);

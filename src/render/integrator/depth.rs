@@ -13,6 +13,7 @@ use crate::opt::Prepared;
 use crate::render::View;
 use crate::render::progress::Silent;
 use crate::render::sampler::{Grid, Rng};
+use crate::render::shard::Rows;
 use crate::render::tiles;
 
 /// The depth-image integrator with its distance range.
@@ -66,7 +67,7 @@ fn hit_range(
     pool: &rayon::ThreadPool,
 ) -> Result<(f64, f64), Diagnostic> {
     let (w, h) = (view.camera.width(), view.camera.height());
-    let (ranges, _) = tiles::run(pool, w, h, 1, &Silent, |x, y, _ctx, out| {
+    let (ranges, _) = tiles::run(pool, w, h, 1, Rows::All, &Silent, |x, y, _ctx, out| {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for k in 0..grid.len() {
             let (sx, sy) = grid.offset(k);

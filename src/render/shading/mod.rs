@@ -156,7 +156,7 @@ pub fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
     let r = 2.0 * n_dot_l * s.n - l;
     let rv = r.dot(s.v);
     if rv > 0.0 {
-        s.mat.ks * rv.powf(s.mat.n)
+        s.mat.ks * libm::pow(rv, s.mat.n)
     } else {
         0.0
     }
