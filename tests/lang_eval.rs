@@ -293,6 +293,7 @@ fn budgets_stop_runaway_scenes() {
         max_recursion_depth: 16,
         max_objects: 50,
         max_list_len: 100,
+        ..EvalOptions::default()
     };
     assert!(codes("for i in 0..2000 { }", &small).contains(&"rtc::budget::loop"));
     assert!(codes("let l = for i in 0..500 { i }", &small).contains(&"rtc::budget::list"));

@@ -111,6 +111,7 @@ fn opts() -> EvalOptions {
         max_recursion_depth: 32,
         max_objects: 500,
         max_list_len: 2_000,
+        ..EvalOptions::default()
     }
 }
 

@@ -170,6 +170,7 @@ fn plates(s: f64, thickness: f64, gap: f64) -> Vec<Object> {
                 },
                 transform: DAffine3::from_scale(DVec3::splat(s)),
                 material: None,
+                motion: None,
                 span: rtc::source::Span::default(),
             }
         })

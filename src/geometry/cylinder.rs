@@ -38,7 +38,7 @@ impl AxisFrame {
     /// (angle / 2π, height fraction) of a point.
     pub fn uv(&self, p: DVec3) -> DVec2 {
         let w = p - self.base;
-        let angle = w.dot(self.e2).atan2(w.dot(self.e1)).rem_euclid(TAU);
+        let angle = libm::atan2(w.dot(self.e2), w.dot(self.e1)).rem_euclid(TAU);
         DVec2::new(
             angle / TAU,
             (w.dot(self.axis) / self.height).clamp(0.0, 1.0),

@@ -50,7 +50,7 @@ impl Disk {
         if r2 > self.radius * self.radius {
             return None;
         }
-        let angle = y.atan2(x).rem_euclid(TAU);
+        let angle = libm::atan2(y, x).rem_euclid(TAU);
         Some(Hit {
             t,
             normal: self.normal,

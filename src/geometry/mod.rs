@@ -15,6 +15,7 @@ pub mod cuboid;
 pub mod cylinder;
 pub mod disk;
 pub mod mesh;
+pub mod motion;
 pub mod plane;
 pub mod polygon;
 pub mod primitive;

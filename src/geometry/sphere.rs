@@ -57,8 +57,8 @@ pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) 
 /// Equirectangular coordinates of a unit direction from the centre: +Y is the north pole (v = 0),
 /// u = φ/2π with φ measured from +X towards −Z (counter-clockwise seen from above).
 pub fn uv(n: DVec3) -> DVec2 {
-    let theta = n.y.clamp(-1.0, 1.0).acos();
-    let mut phi = (-n.z).atan2(n.x);
+    let theta = libm::acos(n.y.clamp(-1.0, 1.0));
+    let mut phi = libm::atan2(-n.z, n.x);
     if phi < 0.0 {
         phi += 2.0 * PI;
     }

@@ -101,8 +101,8 @@ impl Torus {
         } else {
             DVec3::Y * p.y.signum()
         };
-        let u = (-p.z).atan2(p.x).rem_euclid(TAU) / TAU;
-        let v = p.y.atan2(rl - self.major).rem_euclid(TAU) / TAU;
+        let u = libm::atan2(-p.z, p.x).rem_euclid(TAU) / TAU;
+        let v = libm::atan2(p.y, rl - self.major).rem_euclid(TAU) / TAU;
         Hit {
             t,
             normal,

@@ -25,3 +25,7 @@ pub const MAX_PIXELS: u64 = 1 << 27;
 /// Most triangles one mesh file may have (about 7 GB of geometry and BVH; the BVH itself indexes
 /// up to 2²⁶ primitives).
 pub const MAX_TRIANGLES: usize = 50_000_000;
+
+/// Most rays per glossy lobe (`gloss_samples`): the lobe's samples are one Sobol' sequence of
+/// at most this many points per camera sample.
+pub const MAX_GLOSS_SAMPLES: u32 = 1024;

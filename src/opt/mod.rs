@@ -9,6 +9,7 @@
 //! check means the render will start.
 
 pub mod effects;
+pub mod fingerprint;
 pub mod objects;
 pub mod prepared;
 pub mod textures;

@@ -121,9 +121,12 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens or an area light).
+    /// Whether anything draws random numbers (a lens, an area light, an open shutter or a
+    /// glossy lobe).
     pub fn random(&self) -> bool {
         self.camera.aperture > 0.0
+            || self.effects.motion_blur
+            || self.effects.glossy
             || self
                 .lights
                 .iter()
@@ -142,5 +145,58 @@ impl Prepared {
         self.effects = Effects::new(&self.content, &settings, &self.camera);
         self.settings = settings;
         Ok(())
+    }
+
+    /// Replaces the camera (a coarser preview of the same view, `rtc watch`): validated like
+    /// the scene's, and the effects follow it.
+    pub fn set_camera(&mut self, camera: Camera) -> Result<(), Diagnostic> {
+        validate::camera(&camera)?;
+        self.effects = Effects::new(&self.content, &self.settings, &camera);
+        self.camera = camera;
+        Ok(())
+    }
+}
+
+impl Prepared {
+    /// Each light's samples per edge (`[1, 1]` for a point light), in light order.
+    pub fn light_samples(&self) -> Vec<[u32; 2]> {
+        self.lights
+            .iter()
+            .map(|l| match l.kind {
+                LightKind::Area { samples, .. } => samples,
+                LightKind::Point { .. } => [1, 1],
+            })
+            .collect()
+    }
+
+    /// Renders from now on with `samples[i]` samples per edge on area light `i` (point lights
+    /// ignore theirs; `rtc accuracy` sweeps this). Errors when past `ir::limits` or when the
+    /// list does not have one entry per light.
+    pub fn set_light_samples(&mut self, samples: &[[u32; 2]]) -> Result<(), Diagnostic> {
+        if samples.len() != self.lights.len() {
+            return Err(Diagnostic::new(
+                crate::diag::Severity::Error,
+                "rtc::render::limit",
+                None,
+                format!(
+                    "{} light sample counts for {} lights",
+                    samples.len(),
+                    self.lights.len()
+                ),
+            ));
+        }
+        for (light, &want) in self.lights.iter_mut().zip(samples) {
+            if let LightKind::Area { samples, .. } = &mut light.kind {
+                validate::light_samples(want)?;
+                *samples = want;
+                light.samples = want[0].max(1) * want[1].max(1);
+            }
+        }
+        Ok(())
+    }
+
+    /// Renders from now on with another seed (`rtc accuracy` measures noise from two).
+    pub fn set_seed(&mut self, seed: u64) {
+        self.settings.seed = seed;
     }
 }

@@ -78,10 +78,17 @@ impl SpawnPoint {
         if dist.is_nan() || dist <= 0.0 || dist.is_infinite() {
             return None;
         }
-        let margin = gamma(SHADOW_ROUNDING_STEPS)
-            * (origin.abs().max_element() + target.abs().max_element() + dist);
-        Some((crate::geometry::Ray::new(origin, d / dist), dist - margin))
+        Some((
+            crate::geometry::Ray::new(origin, d / dist),
+            dist - shadow_margin(origin, target, dist),
+        ))
     }
+}
+
+/// How far short of `target` a visibility ray from `origin` (at distance `dist`) stops, so a
+/// surface through the target does not count as blocking it.
+pub fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
+    gamma(SHADOW_ROUNDING_STEPS) * (origin.abs().max_element() + target.abs().max_element() + dist)
 }
 
 #[cfg(test)]

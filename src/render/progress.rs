@@ -2,6 +2,9 @@
 //! implements (the CLI draws a bar; `rtc watch` or a time budget would cancel), and prints
 //! nothing itself.
 
+/// The error code of a render its [`Progress`] cancelled.
+pub const CANCELLED: &str = "rtc::render::cancelled";
+
 /// What a render tells its caller while it runs. Every method may be called from any render
 /// thread.
 pub trait Progress: Sync {

@@ -19,7 +19,14 @@ pub fn render_rtc(src: &str) -> Image {
     let scene = loaded
         .scene
         .unwrap_or_else(|| panic!("scene evaluates: {:?}\n{src}", loaded.diagnostics.items));
-    render_image(&scene, &RenderOptions { threads: 1 }).expect("renders")
+    render_image(
+        &scene,
+        &RenderOptions {
+            threads: 1,
+            shard: None,
+        },
+    )
+    .expect("renders")
 }
 
 /// Pixels whose bytes differ (the images must have one size).
