@@ -22,7 +22,10 @@ fn main() {
         .and_then(|r| r.parse().ok())
         .unwrap_or(7);
     for threads in [1, 0] {
-        let opts = RenderOptions { threads };
+        let opts = RenderOptions {
+            threads,
+            ..Default::default()
+        };
         let mut times: Vec<Duration> = Vec::with_capacity(reps);
         let mut stats = None;
         for _ in 0..reps {

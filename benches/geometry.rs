@@ -47,12 +47,15 @@ fn scene_of(path: &Path, smooth: bool) -> Scene {
             projection: Projection::Perspective { fov_y: 0.6 },
             aperture: 0.0,
             focus_distance: 1.0,
+            shutter: None,
+            motion: None,
             span: Span::default(),
         },
         lights: Vec::new(),
         materials: vec![Material::default()],
         textures: Vec::new(),
         objects: vec![Object {
+            motion: None,
             shape: Shape::Mesh {
                 path: path.to_path_buf(),
                 smooth,

@@ -6,7 +6,7 @@
 use glam::DVec3;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{LightKind, Object, RenderMode, Scene, Shape};
+use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
 use crate::opt::Effects;
 
 /// Every finding about an evaluated scene: the lints, then what preparing it reports.
@@ -22,7 +22,36 @@ pub fn lint(scene: &Scene) -> Diagnostics {
     no_lights(scene, &mut out);
     enclosed_points(scene, &mut out);
     invisible_bounces(scene, &mut out);
+    invisible_motion(scene, &mut out);
     out
+}
+
+/// Motion the film cannot see: something moves but the camera's shutter is not open.
+fn invisible_motion(scene: &Scene, out: &mut Diagnostics) {
+    if scene.camera.shutter.is_some_and(|s| s.is_open()) {
+        return;
+    }
+    let help = "open the shutter over the motion, e.g. `camera { ..., shutter: [0, 1] }` (fractions of a frame), or remove `.moving(...)`";
+    let mut spans = Vec::new();
+    fn visit(o: &Object, spans: &mut Vec<crate::source::Span>) {
+        if o.motion.is_some() && !spans.contains(&o.span) {
+            spans.push(o.span);
+        }
+        if let Shape::Csg { children, .. } = &o.shape {
+            children.iter().for_each(|c| visit(c, spans));
+        }
+    }
+    scene.objects.iter().for_each(|o| visit(o, &mut spans));
+    if scene.camera.motion.is_some() {
+        spans.push(scene.camera.span);
+    }
+    for span in spans {
+        out.push(
+            Diagnostic::warning("rtc::motion::invisible", span, "this motion is not visible")
+                .with_label("it moves, but the camera's shutter is closed (an instant)")
+                .with_help(help),
+        );
+    }
 }
 
 fn no_lights(scene: &Scene, out: &mut Diagnostics) {
@@ -34,7 +63,11 @@ fn no_lights(scene: &Scene, out: &mut Diagnostics) {
                 scene.camera.span,
                 "the scene has no lights",
             )
-            .with_label("with no light the image is black (Phong's ambient term is per light)")
+            .with_label(if scene.settings.ambient == AmbientConvention::Once {
+                "only the ambient term lights the image: no diffuse shading, highlights or shadows"
+            } else {
+                "with no light the image is black (Phong's ambient term is per light)"
+            })
             .with_help("add a light, e.g. `point_light { position: [5, 8, 5] }`"),
         );
     }

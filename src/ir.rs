@@ -10,10 +10,14 @@ use glam::{DAffine3, DVec3};
 
 use crate::source::Span;
 
+mod flare;
 pub mod limits;
 mod loaded;
+mod motion;
 
+pub use flare::Flare;
 pub use loaded::Loaded;
+pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;
@@ -81,8 +85,31 @@ pub struct Camera {
     pub aperture: f64,
     /// Distance from the eye to the plane in focus (used when `aperture > 0`).
     pub focus_distance: f64,
+    /// When the film is exposed (`None`: an instant, no motion blur).
+    pub shutter: Option<Shutter>,
+    /// How the camera moves while the shutter is open (`None`: it stands still).
+    pub motion: Option<CameraMotion>,
     /// Where it was defined.
     pub span: Span,
+}
+
+impl Camera {
+    /// The same view with pixels `factor` times larger (a coarse preview): the image shrinks to
+    /// ⌈width/factor⌉ × ⌈height/factor⌉, and the course camera's pixel size `|up|` grows by
+    /// `factor` so the view keeps its extent (within one coarse pixel).
+    pub fn coarser(&self, factor: u32) -> Camera {
+        let factor = factor.max(1);
+        let up = match self.projection {
+            Projection::Course => self.up * f64::from(factor),
+            Projection::Perspective { .. } => self.up,
+        };
+        Camera {
+            width: self.width.div_ceil(factor),
+            height: self.height.div_ceil(factor),
+            up,
+            ..self.clone()
+        }
+    }
 }
 
 /// View sizing of a [`Camera`].
@@ -164,6 +191,11 @@ pub struct Material {
     pub refract: f64,
     /// Index of refraction of the material; the outside is 1.
     pub eta: f64,
+    /// Glossiness: reflected and refracted rays spread over a cone of half-angle `gloss·90°`
+    /// around the mirror and refraction directions; 0 is a perfect mirror.
+    pub gloss: f64,
+    /// Rays per glossy lobe at a camera ray's hit (one ray after the first bounce).
+    pub gloss_samples: u32,
     /// Shading model for this material; `None` uses the scene's.
     pub shading: Option<ShadingModel>,
     /// Where it was defined.
@@ -183,6 +215,8 @@ impl Default for Material {
             reflect: 0.0,
             refract: 0.0,
             eta: 1.0,
+            gloss: 0.0,
+            gloss_samples: 8,
             shading: None,
             span: Span::default(),
         }
@@ -252,6 +286,9 @@ pub struct Object {
     pub transform: DAffine3,
     /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
     pub material: Option<MaterialId>,
+    /// How it moves while the shutter is open (`None`: it stands still; `transform` is its
+    /// placement at shutter open).
+    pub motion: Option<Motion>,
     /// Where it was defined.
     pub span: Span,
 }
@@ -436,6 +473,36 @@ pub struct RenderSettings {
     pub output: Option<PathBuf>,
     /// How film colours become 8-bit values.
     pub encoding: Encoding,
+    /// Shadow rays pass through refractive surfaces, attenuated by their `refract` and colour
+    /// (off: glass casts an opaque shadow, as the course references do).
+    pub glass_shadows: bool,
+    /// The lens flare post stage, when asked.
+    pub flare: Option<Flare>,
+    /// The insignificance cut-off: a reflected or refracted ray whose weight (the product of
+    /// the reflect/refract coefficients along its path) is below it is not traced. 0 traces all.
+    pub cutoff: f64,
+    /// How an area light's samples are shared among a pixel's samples.
+    pub light_samples: LightSampling,
+}
+
+/// The language's default insignificance cut-off: half of the smallest step of the sRGB curve
+/// (its slope is steepest at black, 12.92, so one 8-bit level there is 1/(255·12.92) ≈ 3.0e-4 in
+/// linear light). A dropped ray of weight below it changes a pixel of radiance ≤ 1 by less than
+/// half a level: at most one level after rounding, usually none. POV-Ray's 1/255 was chosen for
+/// linear output and would drop up to 13 sRGB levels near black.
+pub const LANGUAGE_CUTOFF: f64 = 0.5 / (255.0 * 12.92);
+
+/// How an area light's samples are shared among a pixel's samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LightSampling {
+    /// Every pixel sample takes every cell of every area light (n² shadow rays per pixel
+    /// sample): the course's rule and the default.
+    #[default]
+    PerSample,
+    /// The cells are dealt out over the pixel's samples: with s pixel samples, each takes
+    /// ⌈n²/s⌉ cells (at least one), so a pixel still covers every cell while a pixel sample
+    /// casts fewer shadow rays.
+    Spread,
 }
 
 /// How a linear film colour is quantised to 8 bits.
@@ -452,18 +519,20 @@ pub enum Encoding {
 
 impl RenderSettings {
     /// The course formats' defaults (COURSE.md): no shadows and no bounces unless the file asks,
-    /// one sample per pixel. The same as [`RenderSettings::default`], the IR's neutral settings.
+    /// one sample per pixel, no insignificance cut-off (so the reference images stay exact). The same as [`RenderSettings::default`], the IR's neutral settings.
     pub fn course_defaults() -> RenderSettings {
         RenderSettings::default()
     }
 
     /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
-    /// bounces, so a glass or mirror material shows without further settings, and sRGB output.
+    /// bounces, so a glass or mirror material shows without further settings, sRGB output and
+    /// the cut-off [`LANGUAGE_CUTOFF`].
     pub fn language_defaults() -> RenderSettings {
         RenderSettings {
             shadows: true,
             max_depth: 5,
             encoding: Encoding::Srgb,
+            cutoff: LANGUAGE_CUTOFF,
             ..RenderSettings::course_defaults()
         }
     }
@@ -484,6 +553,10 @@ impl Default for RenderSettings {
             seed: 0,
             output: None,
             encoding: Encoding::Linear,
+            glass_shadows: false,
+            flare: None,
+            cutoff: 0.0,
+            light_samples: LightSampling::PerSample,
         }
     }
 }

@@ -6,11 +6,13 @@
 //! [`loader`] picks the front end by extension. [`opt::prepare`] turns the IR into a
 //! [`opt::Prepared`] scene (validation, [`assets`], instancing, materials, the [`geometry`]
 //! world); [`render::render`] turns that into a [`render::film::Film`]; [`check::check`] is
-//! `rtc check`. Diagnostics are plain data ([`diag`]); the library prints nothing.
+//! `rtc check`; [`accuracy`] measures what each quality knob costs and buys (`rtc accuracy`).
+//! Diagnostics are plain data ([`diag`]); the library prints nothing.
 #![forbid(unsafe_code)]
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
 #![allow(clippy::result_large_err)]
 
+pub mod accuracy;
 pub mod assets;
 pub mod check;
 pub mod compat;

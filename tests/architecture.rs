@@ -26,6 +26,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("check", &["ir", "opt", "geometry"]),
     ("loader", &["eval", "compat", "ir"]),
     ("metrics", &[]),
+    ("accuracy", &["ir", "opt", "render", "metrics"]),
 ];
 
 /// Narrower rules inside an allowed edge: `(module, target, the only paths under target it may

@@ -148,6 +148,7 @@ fn every_evaluation_budget_points_at_the_culprit_with_a_label_and_a_fix() {
         max_objects: 50,
         max_list_len: 100,
         max_string_len: 1000,
+        ..EvalOptions::default()
     };
     let cases = [
         ("rtc::budget::loop", "rtc 1\nfor i in 0..2000 { }\n"),

@@ -124,3 +124,63 @@ fn diagnostics_go_to_stderr_and_json_to_stdout() {
     assert_eq!(doc["diagnostics"][0]["code"], "rtc::param::out_of_range");
     assert_eq!(doc["ok"], false);
 }
+
+#[test]
+fn a_library_module_is_checked_as_a_library() {
+    let run = rtc(&["check", "stdlib/materials.rtc"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("ok: library module exporting"), "{stderr}");
+    assert!(
+        !stderr.contains("camera"),
+        "no missing-camera error: {stderr}"
+    );
+    // A library that emits is reported as an import would see it.
+    let dir = scratch("library");
+    let lib = dir.join("lib.rtc");
+    std::fs::write(
+        &lib,
+        "rtc 1\npub fn ball() { sphere() }\npub let bad: Int = \"x\"\n",
+    )
+    .unwrap();
+    let run = rtc(&["check", lib.to_str().unwrap(), "--format", "short"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("lib.rtc:3:"),
+        "the error is located: {stderr}"
+    );
+    assert!(!stderr.contains("camera"), "{stderr}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_directory_is_checked_file_by_file_with_one_summary() {
+    let dir = scratch("dir");
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("lib.rtc"), "rtc 1\npub let r = 1\n").unwrap();
+    std::fs::write(
+        dir.join("sub/scene.rtc"),
+        "rtc 1\ncamera { eye: [0, 0, 5], center: [0, 0, 0] }\npoint_light { position: [0, 5, 5] }\nsphere()\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("sub/broken.rtc"), "rtc 1\nsphere(radius: )\n").unwrap();
+    std::fs::write(dir.join("notes.txt"), "not a scene").unwrap();
+    let run = rtc(&["check", dir.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("checked 3 files below") && stderr.contains("2 ok (1 library), 1 failed"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("broken.rtc: 1 error"), "{stderr}");
+    let json = rtc(&["check", dir.to_str().unwrap(), "--format", "json"]);
+    let doc: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(doc["files"].as_array().map(Vec::len), Some(3));
+    assert_eq!(doc["ok"], false);
+    std::fs::remove_file(dir.join("sub/broken.rtc")).unwrap();
+    assert_eq!(
+        rtc(&["check", dir.to_str().unwrap()]).status.code(),
+        Some(0)
+    );
+}

@@ -326,7 +326,8 @@ fn closed_mesh_works_in_csg() {
     assert!(cut > 200, "{cut}");
 }
 
-/// Secondary rays leave a mesh hit with the renderer's own offset (EPS_REL·|P|, far below the
+/// Secondary rays leave a mesh hit as the renderer does (`SpawnPoint`: just outside the f64 error
+/// bound of the hit point, far below the
 /// f32 triangle test's rounding) and must not hit the surface they leave: on a convex mesh no
 /// ray into the outer hemisphere may hit anything (shadow acne, caught in the bunny scene).
 #[test]
@@ -359,8 +360,7 @@ fn rays_leaving_a_mesh_with_the_render_offset_do_not_rehit_it() {
                 continue;
             }
             tested += 1;
-            let eps = rtc::render::offset::EPS_REL * h.point.abs().max_element();
-            let out = Ray::new(h.point + eps * n, d);
+            let out = rtc::render::offset::SpawnPoint::of(&h).ray(d);
             assert!(
                 !w.occluded(&out, 0.0, f64::INFINITY),
                 "ray {i}: self-shadowed"

@@ -23,7 +23,10 @@ fn load(yaml: &str) -> Scene {
 }
 
 fn draw(scene: &Scene) -> Image {
-    let opts = RenderOptions { threads: 2 };
+    let opts = RenderOptions {
+        threads: 2,
+        ..Default::default()
+    };
     render_image(scene, &opts).unwrap()
 }
 

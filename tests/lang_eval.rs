@@ -294,6 +294,7 @@ fn budgets_stop_runaway_scenes() {
         max_objects: 50,
         max_list_len: 100,
         max_string_len: 1000,
+        ..EvalOptions::default()
     };
     assert!(codes("for i in 0..2000 { }", &small).contains(&"rtc::budget::loop"));
     assert!(codes("let l = for i in 0..500 { i }", &small).contains(&"rtc::budget::list"));

@@ -112,6 +112,7 @@ fn opts() -> EvalOptions {
         max_objects: 500,
         max_list_len: 2_000,
         max_string_len: 20_000,
+        ..EvalOptions::default()
     }
 }
 

@@ -17,15 +17,18 @@ fn example() -> ErrorTimePlot {
             Series {
                 name: "uniform f×f".into(),
                 points: points(&[(0.05, 0.04), (0.12, 0.015), (0.4, 0.006), (1.5, 0.002)]),
+                joined: true,
             },
             Series {
                 name: "adaptive <min, max>".into(),
                 points: points(&[(0.07, 0.02), (0.1, 0.007), (0.3, 0.003)]),
+                joined: false,
             },
             Series {
                 name: "exact".into(),
                 // A zero error or time cannot sit on log axes: left out, not a failure.
                 points: points(&[(6.0, 0.0), (0.0, 0.1)]),
+                joined: true,
             },
         ],
         marked: Some(MarkedPoint {
@@ -70,8 +73,18 @@ fn the_svg_is_well_formed_and_labelled() {
     // Log axes: tick labels span the decades of the data (times 0.05 to 1.5 s).
     assert!(texts.iter().any(|t| t == "0.1"), "{texts:?}");
     assert!(texts.iter().any(|t| t == "1"), "{texts:?}");
-    // One dot per drawable point (7), the marked setting's ring and its legend ring.
-    assert_eq!(svg.matches("<circle").count(), 9);
+    // One dot per drawable point (7), the marked setting's ring and its legend ring, and the
+    // legend dot of the loose (not joined) adaptive series.
+    assert_eq!(svg.matches("<circle").count(), 10);
+    // Joining the adaptive series adds its line and its legend's line, and drops its legend dot.
+    let mut joined = example();
+    joined.series[1].joined = true;
+    let joined = joined.to_svg().expect("draws");
+    assert_eq!(
+        joined.matches("<polyline").count(),
+        svg.matches("<polyline").count() + 2
+    );
+    assert_eq!(joined.matches("<circle").count(), 9);
 }
 
 #[test]

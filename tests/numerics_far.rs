@@ -8,35 +8,19 @@
 //! so pixels whose centre lies within a band of 10⁻⁴ of the analytic boundary are not judged.
 
 mod geometry_support;
-
-use std::path::Path;
+mod numerics_support;
 
 use geometry_support::{Rng, object, world};
 use glam::{DAffine3, DQuat, DVec3};
-use rtc::eval::{EvalOptions, load_source};
+use numerics_support::render_rtc;
 use rtc::geometry::{Ray, World};
 use rtc::ir::Shape;
-use rtc::render::{Image, RenderOptions, render_image};
-use rtc::source::SourceMap;
+use rtc::render::Image;
 
 /// Image side in pixels; the view spans [−1.5, 1.5]² at the origin.
 const SIDE: u32 = 96;
 /// Pixel centres this close to the analytic silhouette (object units) are not judged.
 const BAND: f64 = 1e-4;
-
-fn render_rtc(src: &str) -> Image {
-    let mut sources = SourceMap::default();
-    let loaded = load_source(
-        Path::new("tests/numerics_far.rtc"),
-        src,
-        &mut sources,
-        &EvalOptions::default(),
-    );
-    let scene = loaded
-        .scene
-        .unwrap_or_else(|| panic!("scene evaluates: {:?}", loaded.diagnostics.items));
-    render_image(&scene, &RenderOptions { threads: 1 }).expect("renders")
-}
 
 /// A normal-mode image of `object` seen along −z from `[ex, ey, distance]` with a view 3 units
 /// high on the plane z = 0.

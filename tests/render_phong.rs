@@ -7,7 +7,10 @@ use rtc::ir::{DepthRange, RenderMode};
 use rtc::render::{RenderOptions, render_image};
 
 fn opts() -> RenderOptions {
-    RenderOptions { threads: 2 }
+    RenderOptions {
+        threads: 2,
+        ..Default::default()
+    }
 }
 
 #[test]

@@ -279,7 +279,7 @@ fn smooth_normals(tris: &[[Vec3A; 3]]) -> Vec<[Vec3; 3]> {
         .map(|t| (t[1] - t[0]).cross(t[2] - t[0]))
         .collect();
     let unit: Vec<Vec3A> = area.iter().map(|a| a.normalize_or_zero()).collect();
-    let cos = CREASE_ANGLE_DEG.to_radians().cos() as f32;
+    let cos = libm::cos(CREASE_ANGLE_DEG.to_radians()) as f32;
     (0..tris.len())
         .map(|f| {
             let mut out = [Vec3::ZERO; 3];

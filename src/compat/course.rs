@@ -69,6 +69,8 @@ pub fn course_camera(eye: DVec3, center: DVec3, up: DVec3, size: [u32; 2], span:
         projection: Projection::Course,
         aperture: 0.0,
         focus_distance: (center - eye).length(),
+        shutter: None,
+        motion: None,
         span,
     }
 }
@@ -127,6 +129,7 @@ impl CourseMaterial {
             eta: self.eta,
             shading: None,
             span: self.span,
+            ..Material::default()
         }
     }
 }
@@ -152,6 +155,7 @@ pub fn sphere_object(
 ) -> Object {
     match orientation {
         None => Object {
+            motion: None,
             shape: Shape::Sphere {
                 center: position,
                 radius,
@@ -161,6 +165,7 @@ pub fn sphere_object(
             span,
         },
         Some((pole, angle)) => Object {
+            motion: None,
             shape: Shape::Sphere {
                 center: DVec3::ZERO,
                 radius,

@@ -57,6 +57,7 @@ pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut
     m.finish(&format!("a {kind_name}"), &known_keys(kind_name), diags);
     if let (Some(shape), Some(material)) = (shape, material) {
         parts.objects.push(Object {
+            motion: None,
             shape,
             transform: DAffine3::IDENTITY,
             material: Some(material),
@@ -322,6 +323,7 @@ fn mesh(
         return;
     }
     let mesh = Object {
+        motion: None,
         shape: Shape::Mesh {
             path,
             smooth: false,

@@ -37,6 +37,10 @@ pub struct Interp<'a> {
     pub(super) modules: HashMap<PathBuf, Rc<Module>>,
     /// Modules being evaluated, outermost first, with the import that started each (cycles).
     pub(super) loading: Vec<(PathBuf, Span)>,
+    /// The command line's `--set` values.
+    pub(super) overrides: Vec<super::params::Override>,
+    /// The `param` names the scene file declared so far.
+    pub(super) params: Vec<Sym>,
 }
 
 impl Drop for Interp<'_> {
@@ -67,6 +71,8 @@ impl<'a> Interp<'a> {
             depth: 0,
             modules: HashMap::new(),
             loading: Vec::new(),
+            overrides: Vec::new(),
+            params: Vec::new(),
         }
     }
 
@@ -86,12 +92,21 @@ impl<'a> Interp<'a> {
     }
 
     /// Looks a name up: locals of this frame, then module items, then built-ins.
+    #[inline]
     pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
-        for (k, v) in self.locals[self.frame_base..].iter().rev() {
-            if *k == sym {
-                return Ok(v.clone());
-            }
+        match self.locals[self.frame_base..]
+            .iter()
+            .rev()
+            .find(|(k, _)| *k == sym)
+        {
+            Some((_, v)) => Ok(v.clone()),
+            None => self.lookup_global(sym, span),
         }
+    }
+
+    /// Looks up a name that is not a local: module items, then built-ins.
+    #[inline(never)]
+    fn lookup_global(&self, sym: Sym, span: Span) -> R<Value> {
         if let Some(b) = self.scope.items.borrow().get(&sym) {
             return if b.poisoned {
                 Err(EvalError::Poisoned)
@@ -102,9 +117,14 @@ impl<'a> Interp<'a> {
         if let Some(v) = super::builtins::global(sym) {
             return Ok(v);
         }
+        if let Some(v) = super::params::frame_builtin(self.opts, sym.as_str()) {
+            return Ok(v);
+        }
         Err(self.unknown_name(sym, span).into())
     }
 
+    #[cold]
+    #[inline(never)]
     fn unknown_name(&self, sym: Sym, span: Span) -> Diagnostic {
         let mut names: Vec<&'static str> = self.locals[self.frame_base..]
             .iter()
@@ -112,6 +132,7 @@ impl<'a> Interp<'a> {
             .collect();
         names.extend(self.scope.items.borrow().keys().map(|k| k.as_str()));
         names.extend(super::builtins::global_names());
+        names.extend(super::params::FRAME_BUILTINS);
         names.sort_unstable();
         let d = error("rtc::name::unknown", span, format!("unknown name `{sym}`"))
             .with_label("not defined here");
@@ -126,36 +147,46 @@ impl<'a> Interp<'a> {
         }
     }
 
-    /// Evaluates an expression.
+    /// Evaluates an expression. The common kinds are handled here, in tail position (no
+    /// re-wrapping of results); the others are in `eval_other`, out of line, so that this
+    /// function, entered for every node, stays small.
     pub fn eval(&mut self, e: &Expr) -> R<Value> {
+        match &e.kind {
+            ExprKind::Int(i) => Ok(Value::Int(*i)),
+            ExprKind::Float(f) => Ok(Value::Float(*f)),
+            ExprKind::Angle(a) => Ok(Value::Angle(*a)),
+            ExprKind::Bool(b) => Ok(Value::Bool(*b)),
+            ExprKind::Color(c) => Ok(Value::Color((*c).into())),
+            ExprKind::Vec3(v) => Ok(Value::Vec3((*v).into())),
+            ExprKind::StrLit(s) => Ok(Value::Str(s.clone())),
+            ExprKind::Ident(s) => self.lookup(*s, e.span),
+            ExprKind::List(items) => self.list(items, e.span),
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e.span),
+            ExprKind::Call(callee, args) => self.call_expr(callee, args, e.span),
+            ExprKind::Member(obj, name) => {
+                let v = self.eval(obj)?;
+                super::members::member(self, v, *name, obj.span)
+            }
+            _ => self.eval_other(e),
+        }
+    }
+
+    /// The expression kinds `eval` does not handle itself.
+    #[inline(never)]
+    fn eval_other(&mut self, e: &Expr) -> R<Value> {
         Ok(match &e.kind {
-            ExprKind::Int(i) => Value::Int(*i),
-            ExprKind::Float(f) => Value::Float(*f),
-            ExprKind::Angle(a) => Value::Angle(*a),
-            ExprKind::Bool(b) => Value::Bool(*b),
-            ExprKind::Color(c) => Value::Color((*c).into()),
-            ExprKind::Vec3(v) => Value::Vec3((*v).into()),
             ExprKind::Str(parts) => self.string(parts)?,
-            ExprKind::StrLit(s) => Value::Str(s.clone()),
-            ExprKind::Ident(s) => self.lookup(*s, e.span)?,
-            ExprKind::List(items) => self.list(items, e.span)?,
             ExprKind::Record(fields) => self.record(fields)?,
             ExprKind::Unary(op, x) => {
                 let v = self.eval(x)?;
                 super::ops::unary(*op, v, e.span)?
             }
-            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e.span)?,
             ExprKind::Range {
                 start,
                 end,
                 inclusive,
                 step,
             } => self.range(start, end, *inclusive, step.as_deref(), e.span)?,
-            ExprKind::Call(callee, args) => self.call_expr(callee, args, e.span)?,
-            ExprKind::Member(obj, name) => {
-                let v = self.eval(obj)?;
-                super::members::member(self, v, *name, obj.span)?
-            }
             ExprKind::Index(obj, idx) => {
                 let v = self.eval(obj)?;
                 let i = self.eval(idx)?;
@@ -195,6 +226,18 @@ impl<'a> Interp<'a> {
                 module: self.scope.clone(),
             })),
             ExprKind::Block(b) => self.block(b)?,
+            ExprKind::Int(_)
+            | ExprKind::Float(_)
+            | ExprKind::Angle(_)
+            | ExprKind::Bool(_)
+            | ExprKind::Color(_)
+            | ExprKind::Vec3(_)
+            | ExprKind::StrLit(_)
+            | ExprKind::Ident(_)
+            | ExprKind::List(_)
+            | ExprKind::Binary(..)
+            | ExprKind::Call(..)
+            | ExprKind::Member(..) => return self.eval(e),
         })
     }
 
@@ -320,6 +363,9 @@ impl<'a> Interp<'a> {
         }
         let l = self.eval(a)?;
         let r = self.eval(b)?;
+        if let Some(v) = super::ops::arithmetic(op, &l, &r) {
+            return Ok(v);
+        }
         super::ops::binary(self, op, l, r, a.span, b.span, span)
     }
 
@@ -382,6 +428,9 @@ impl<'a> Interp<'a> {
         for (i, st) in b.stmts.iter().enumerate() {
             match st {
                 Stmt::Let(l) => {
+                    if l.param {
+                        return Err(super::params::misplaced(l).into());
+                    }
                     let v = self.eval(&l.value)?;
                     let v = match &l.ty {
                         Some(t) => super::types::check_ann(self, t, v, l.value.span)?,

@@ -117,7 +117,7 @@ impl Lowerer {
 
     fn object(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>) {
         let mut out = std::mem::take(&mut self.objects);
-        self.lower_into(o, parent, inherited, &mut out);
+        self.lower_into(o, parent, inherited, None, &mut out);
         self.objects = out;
     }
 
@@ -126,9 +126,12 @@ impl Lowerer {
         o: &Obj,
         parent: DAffine3,
         inherited: Option<ir::MaterialId>,
+        moving: Option<ir::Motion>,
         out: &mut Vec<ir::Object>,
     ) {
         let t = parent * o.transform;
+        // A group's motion moves all its members (`.moving` refuses motion nested in a group).
+        let motion = o.motion.map(|m| m.transformed(parent)).or(moving);
         let mat = match &o.material {
             Some(m) => Some(self.material(m)),
             None => inherited,
@@ -138,11 +141,12 @@ impl Lowerer {
                 shape: s.clone(),
                 transform: t,
                 material: mat,
+                motion,
                 span: o.span,
             }),
             ObjShape::Group(ch) => {
                 for c in ch.iter() {
-                    self.lower_into(c, t, mat, out);
+                    self.lower_into(c, t, mat, motion, out);
                 }
             }
             ObjShape::Csg(op, ch) => {
@@ -154,7 +158,7 @@ impl Lowerer {
                             let mut sub = Vec::new();
                             let cm = c.material.as_ref().map(|m| self.material(m));
                             for x in g.iter() {
-                                self.lower_into(x, DAffine3::IDENTITY, None, &mut sub);
+                                self.lower_into(x, DAffine3::IDENTITY, None, None, &mut sub);
                             }
                             kids.push(ir::Object {
                                 shape: ir::Shape::Csg {
@@ -163,10 +167,11 @@ impl Lowerer {
                                 },
                                 transform: c.transform,
                                 material: cm,
+                                motion: c.motion,
                                 span: c.span,
                             });
                         }
-                        _ => self.lower_into(c, DAffine3::IDENTITY, None, &mut kids),
+                        _ => self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids),
                     }
                 }
                 out.push(ir::Object {
@@ -176,6 +181,7 @@ impl Lowerer {
                     },
                     transform: t,
                     material: mat,
+                    motion,
                     span: o.span,
                 });
             }

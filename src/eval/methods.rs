@@ -30,6 +30,18 @@ pub fn call_method(
             let t = super::transform::method_transform(it, n, site, args)?;
             let o2 = Rc::make_mut(&mut o);
             o2.transform = t * o2.transform;
+            o2.motion = o2.motion.map(|m| m.transformed(t));
+            return Ok(Value::Object(o));
+        }
+        Value::Object(o) if n == "moving" => {
+            return super::motion::moving(it, o, site, args);
+        }
+        Value::Object(mut o) if n == "look_at" => {
+            let (to, up, ts) = super::motion::look_at_method(it, site, args)?;
+            let t = super::motion::look_at_about(o.transform.translation, to, up, ts)?;
+            let o2 = Rc::make_mut(&mut o);
+            o2.transform = t * o2.transform;
+            o2.motion = o2.motion.map(|m| m.transformed(t));
             return Ok(Value::Object(o));
         }
         Value::Object(mut o) if n == "material" => {
@@ -167,5 +179,9 @@ fn map_filter(
 
 /// Methods of objects: every transform method, plus `material`.
 pub fn object_methods() -> Vec<&'static str> {
-    [super::transform::METHODS, &["material"]].concat()
+    [
+        super::transform::METHODS,
+        &["material", "moving", "look_at"],
+    ]
+    .concat()
 }

@@ -7,11 +7,14 @@ pub(crate) mod call;
 pub(crate) mod error;
 pub(crate) mod fxhash;
 pub(crate) mod interp;
+pub mod library;
 pub(crate) mod lower;
 pub(crate) mod members;
 pub(crate) mod methods;
 pub mod modules;
+pub(crate) mod motion;
 pub(crate) mod ops;
+pub(crate) mod params;
 pub(crate) mod program;
 pub mod rng;
 pub(crate) mod shapes;
@@ -42,7 +45,16 @@ pub struct EvalOptions {
     pub max_list_len: u64,
     /// Bytes in any one string.
     pub max_string_len: u64,
+    /// The frame evaluated: the built-in `frame` (`rtc render --frame N`).
+    pub frame: i64,
+    /// Frames per second: the built-in `time` is `frame / fps` (`rtc render --fps`).
+    pub fps: f64,
+    /// `--set NAME=VALUE` pairs overriding the scene file's `param` declarations.
+    pub overrides: Vec<(String, String)>,
 }
+
+/// Frames per second unless the command line says otherwise (film's rate).
+pub const DEFAULT_FPS: f64 = 24.0;
 
 impl Default for EvalOptions {
     fn default() -> EvalOptions {
@@ -52,6 +64,9 @@ impl Default for EvalOptions {
             max_objects: 10_000_000,
             max_list_len: 10_000_000,
             max_string_len: 10_000_000,
+            frame: 0,
+            fps: DEFAULT_FPS,
+            overrides: Vec::new(),
         }
     }
 }
@@ -127,6 +142,17 @@ pub fn load_source(
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Loaded {
+    on_eval_stack(|| load_source_here(path, text, sources, options)).unwrap_or_else(|| {
+        Loaded::failure(
+            crate::diag::IO_ERROR,
+            "cannot start the evaluation thread",
+            "free some memory and retry",
+        )
+    })
+}
+
+/// Runs `f` on a thread with the evaluation's large stack; `None` if the thread cannot start.
+pub(crate) fn on_eval_stack<T: Send>(f: impl FnOnce() -> T + Send) -> Option<T> {
     // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
     // nesting; a dedicated thread with a large stack keeps that independent of the caller's
     // thread (test harness and rayon threads have small stacks).
@@ -134,15 +160,9 @@ pub fn load_source(
         std::thread::Builder::new()
             .name("rtc-eval".into())
             .stack_size(EVAL_STACK_BYTES)
-            .spawn_scoped(s, || load_source_here(path, text, sources, options))
+            .spawn_scoped(s, f)
             .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .unwrap_or_else(|_| {
-                Loaded::failure(
-                    crate::diag::IO_ERROR,
-                    "cannot start the evaluation thread",
-                    "free some memory and retry",
-                )
-            })
+            .ok()
     })
 }
 
@@ -164,11 +184,19 @@ fn load_source_here(
     let Some(ast) = ast else { return loaded };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let scope = Rc::new(modules::Scope::new(file, dir, path.display().to_string()));
+    let (overrides, bad) = params::parse_overrides(options, sources);
+    if !bad.is_empty() {
+        loaded.diagnostics.items.extend(bad);
+        return loaded;
+    }
     let mut it = interp::Interp::new(options, sources, scope);
+    it.overrides = overrides;
     it.loading
         .push((path.to_path_buf(), crate::source::Span::default()));
     let mut lowerer = lower::Lowerer::default();
     it.run_module(&ast, Some(&mut lowerer));
+    let unknown = it.unknown_overrides();
+    it.diags.extend(unknown);
     let had_errors = it.diags.iter().any(Diagnostic::is_error);
     loaded
         .diagnostics

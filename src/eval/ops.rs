@@ -45,6 +45,35 @@ fn overflow(span: Span) -> crate::diag::Diagnostic {
         .with_help("use floats for very large numbers, e.g. `1.0e20`")
 }
 
+/// `a op b` on two numbers when the result is ordinary (no overflow, no division by zero,
+/// finite): the arithmetic of loops, without the general operator's checks and messages. `None`
+/// sends the operation to [`binary`], which gives the same value or the error.
+#[inline]
+pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
+    use BinOp::*;
+    match (l, r) {
+        (Value::Int(a), Value::Int(b)) => Some(Value::Int(match op {
+            Add => a.checked_add(*b)?,
+            Sub => a.checked_sub(*b)?,
+            Mul => a.checked_mul(*b)?,
+            Rem => a.checked_rem_euclid(*b)?,
+            _ => return None,
+        })),
+        (Value::Int(_) | Value::Float(_), Value::Int(_) | Value::Float(_)) => {
+            let (a, b) = (l.as_f64()?, r.as_f64()?);
+            let v = match op {
+                Add => a + b,
+                Sub => a - b,
+                Mul => a * b,
+                Div if b != 0.0 => a / b,
+                _ => return None,
+            };
+            v.is_finite().then_some(Value::Float(v))
+        }
+        _ => None,
+    }
+}
+
 /// `a op b` for every operator except the short-circuit `&&` and `||`.
 #[allow(clippy::too_many_arguments)]
 pub fn binary(
@@ -66,7 +95,7 @@ pub fn binary(
             if *b == 0 {
                 return Err(div_zero(rs));
             }
-            Int(a.rem_euclid(*b))
+            Int(a.checked_rem_euclid(*b).ok_or_else(|| overflow(span))?)
         }
         (IntDiv, Int(a), Int(b)) => {
             if *b == 0 {
@@ -294,6 +323,7 @@ fn csg(
         ObjShape::Csg(k, ch)
             if *k == op
                 && o.material.is_none()
+                && o.motion.is_none()
                 && o.transform == glam::DAffine3::IDENTITY
                 && (first || op != CsgOp::Difference) =>
         {
@@ -307,6 +337,7 @@ fn csg(
         shape: ObjShape::Csg(op, Rc::new(children)),
         transform: glam::DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span,
     })))
 }

@@ -76,7 +76,12 @@ impl Interp<'_> {
                     }
                 }
                 Stmt::Let(l) => {
-                    let r = self.eval(&l.value).and_then(|v| match &l.ty {
+                    let value = match (l.param, scene.is_some()) {
+                        (false, _) => self.eval(&l.value),
+                        (true, true) => self.param_value(l),
+                        (true, false) => Err(super::params::misplaced(l).into()),
+                    };
+                    let r = value.and_then(|v| match &l.ty {
                         Some(t) => super::types::check_ann(self, t, v, l.value.span),
                         None => Ok(v),
                     });

@@ -60,7 +60,7 @@ pub fn unit(seed: u64, key: &str, i: i64, lane: u64) -> f64 {
 pub fn normal(seed: u64, key: &str, i: i64) -> f64 {
     let u0 = unit(seed, key, i, 0);
     let u1 = unit(seed, key, i, 1);
-    (-2.0 * (1.0 - u0).ln()).sqrt() * (std::f64::consts::TAU * u1).cos()
+    (-2.0 * libm::log(1.0 - u0)).sqrt() * libm::cos(std::f64::consts::TAU * u1)
 }
 
 /// A point on (`solid = false`) or in the unit sphere.
@@ -68,12 +68,12 @@ pub fn sphere_point(seed: u64, key: &str, i: i64, solid: bool) -> DVec3 {
     let z = 1.0 - 2.0 * unit(seed, key, i, 0);
     let phi = std::f64::consts::TAU * unit(seed, key, i, 1);
     let r = if solid {
-        unit(seed, key, i, 2).cbrt()
+        libm::cbrt(unit(seed, key, i, 2))
     } else {
         1.0
     };
     let s = (1.0 - z * z).max(0.0).sqrt();
-    r * DVec3::new(s * phi.cos(), s * phi.sin(), z)
+    r * DVec3::new(s * libm::cos(phi), s * libm::sin(phi), z)
 }
 
 fn random(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {

@@ -52,6 +52,7 @@ fn prim(shape: Shape, span: Span) -> Value {
         shape: ObjShape::Prim(shape),
         transform: DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span,
     }))
 }
@@ -369,6 +370,7 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         shape: ObjShape::Group(Rc::new(children)),
         transform: DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span: s.span,
     })))
 }
@@ -384,6 +386,7 @@ fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -
         shape: ObjShape::Csg(op, Rc::new(children)),
         transform: DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span: s.span,
     })))
 }

@@ -11,14 +11,16 @@ use super::types;
 use super::value::Value;
 use crate::source::Span;
 
-/// Transform constructors.
+/// Transform constructors (each builds a `DAffine3`; the value is made here, so that the
+/// method forms on objects never put a transform behind an `Rc` only to take it out).
 pub const FNS: &[(&str, BuiltinFn)] = &[
-    ("translate", translate),
-    ("scale", scale),
-    ("rotate", rotate),
-    ("matrix", matrix),
-    ("around", around),
-    ("identity", identity),
+    ("translate", |it, s, a| translate(it, s, a).map(t)),
+    ("scale", |it, s, a| scale(it, s, a).map(t)),
+    ("rotate", |it, s, a| rotate(it, s, a).map(t)),
+    ("matrix", |it, s, a| matrix(it, s, a).map(t)),
+    ("around", |it, s, a| around(it, s, a).map(t)),
+    ("identity", |it, s, a| identity(it, s, a).map(t)),
+    ("look_at", super::motion::look_at_fn),
 ];
 
 /// Names usable as methods on objects and transforms.
@@ -49,13 +51,13 @@ pub fn nonsingular(a: DAffine3, span: Span) -> R<DAffine3> {
     Ok(a)
 }
 
-fn translate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn translate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["offset"], a)?;
     let (v, sp) = p.vec3(it, "offset")?;
-    Ok(t(nonsingular(DAffine3::from_translation(v), sp)?))
+    nonsingular(DAffine3::from_translation(v), sp)
 }
 
-fn scale(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn scale(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["factor"], a)?;
     let (v, sp) = p.req("factor")?;
     let f = match &v {
@@ -65,10 +67,10 @@ fn scale(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             None => return Err(types::mismatch(it, "Vec3", other, sp).into()),
         },
     };
-    Ok(t(nonsingular(DAffine3::from_scale(f), sp)?))
+    nonsingular(DAffine3::from_scale(f), sp)
 }
 
-fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["x", "y", "z", "axis", "angle"], a)?;
     if let Some((av, asp)) = p.get("axis") {
         let axis = types::vec3(it, &av, asp)?;
@@ -84,17 +86,15 @@ fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         }
         let (an, ans) = p.req("angle")?;
         let angle = types::angle(it, &an, ans)?;
-        return Ok(t(DAffine3::from_axis_angle(axis.normalize(), angle)));
+        return Ok(DAffine3::from_axis_angle(axis.normalize(), angle));
     }
     let (x, _) = p.angle_or(it, "x", 0.0)?;
     let (y, _) = p.angle_or(it, "y", 0.0)?;
     let (z, _) = p.angle_or(it, "z", 0.0)?;
-    Ok(t(DAffine3::from_rotation_z(z)
-        * DAffine3::from_rotation_y(y)
-        * DAffine3::from_rotation_x(x)))
+    Ok(DAffine3::from_rotation_z(z) * DAffine3::from_rotation_y(y) * DAffine3::from_rotation_x(x))
 }
 
-fn matrix(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn matrix(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["rows"], a)?;
     let (v, sp) = p.req("rows")?;
     let bad = || {
@@ -126,27 +126,22 @@ fn matrix(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         DVec3::new(m[0][2], m[1][2], m[2][2]),
     );
     let tr = DVec3::new(m[0][3], m[1][3], m[2][3]);
-    Ok(t(nonsingular(
-        DAffine3::from_mat3_translation(mat, tr),
-        sp,
-    )?))
+    nonsingular(DAffine3::from_mat3_translation(mat, tr), sp)
 }
 
-fn around(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn around(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["pivot", "transform"], a)?;
     let (pivot, _) = p.vec3(it, "pivot")?;
     let (tv, ts) = p.req("transform")?;
     let Value::Transform(inner) = tv else {
         return Err(types::mismatch(it, "Transform", &tv, ts).into());
     };
-    Ok(t(DAffine3::from_translation(pivot)
-        * *inner
-        * DAffine3::from_translation(-pivot)))
+    Ok(DAffine3::from_translation(pivot) * *inner * DAffine3::from_translation(-pivot))
 }
 
-fn identity(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn identity(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     Params::new(s, &[], a)?;
-    Ok(t(DAffine3::IDENTITY))
+    Ok(DAffine3::IDENTITY)
 }
 
 /// Builds the transform a method such as `.rotate(y: 30deg)` applies (`.transform(t)` passes `t`).
@@ -156,23 +151,19 @@ pub fn method_transform(
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<DAffine3> {
-    let v = match name {
-        "translate" => translate(it, site, args)?,
-        "scale" => scale(it, site, args)?,
-        "rotate" => rotate(it, site, args)?,
-        "matrix" => matrix(it, site, args)?,
-        "around" => around(it, site, args)?,
+    match name {
+        "translate" => translate(it, site, args),
+        "scale" => scale(it, site, args),
+        "rotate" => rotate(it, site, args),
+        "matrix" => matrix(it, site, args),
+        "around" => around(it, site, args),
         _ => {
             let mut p = Params::new(site, &["transform"], args)?;
             let (tv, ts) = p.req("transform")?;
             match tv {
-                Value::Transform(a) => Value::Transform(a),
-                other => return Err(types::mismatch(it, "Transform", &other, ts).into()),
+                Value::Transform(a) => Ok(*a),
+                other => Err(types::mismatch(it, "Transform", &other, ts).into()),
             }
         }
-    };
-    match v {
-        Value::Transform(a) => Ok(*a),
-        _ => unreachable!("transform constructors return transforms"),
     }
 }

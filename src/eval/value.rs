@@ -65,6 +65,8 @@ pub enum Value {
     Ambient(ir::AmbientConvention),
     /// An output encoding (`linear`; `srgb` is the colour function, accepted by name).
     Encoding(ir::Encoding),
+    /// Lens flare parameters (`flare { ... }`).
+    Flare(ir::Flare),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -187,6 +189,8 @@ pub struct Obj {
     pub transform: DAffine3,
     /// Own material.
     pub material: Option<Rc<Mat>>,
+    /// How it moves while the shutter is open (in the space `transform` maps into).
+    pub motion: Option<ir::Motion>,
     /// Where it was made.
     pub span: Span,
 }
@@ -260,6 +264,7 @@ impl Value {
             Value::Mapping(_) => "Mapping",
             Value::Ambient(_) => "Ambient",
             Value::Encoding(_) => "Encoding",
+            Value::Flare(_) => "Flare",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }

@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use super::cylinder::{AxisFrame, convex_crossings};
 use super::quartic::quadratic;
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, rounding};
 
 /// A cone or frustum in object space: the radius goes linearly from `r0` at the base to `r1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,6 +101,22 @@ impl Cone {
     /// Entry and exit along the whole line (capped cones are convex).
     pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         convex_crossings(self.candidates(ray).into_iter().flatten(), out);
+    }
+
+    /// Error bound of a computed point `p` on the cone: the residual of the part it lies on
+    /// (the side's distance in the plane through the axis, or a cap's) plus its rounding.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        let f = &self.frame;
+        let (y, rho, size) = f.height_and_radius(p);
+        let side = (rho - (self.r0 + self.k * y)) / (1.0 + self.k * self.k).sqrt();
+        let residual = f.nearest_part(
+            y,
+            side,
+            self.capped && self.r0 > 0.0,
+            self.capped && self.r1 > 0.0,
+        );
+        let magnitude = size + self.r0 + self.r1 + (self.k * y).abs();
+        rounding::from_residual(residual, 14, magnitude)
     }
 
     /// True when `p` is inside or on the solid.

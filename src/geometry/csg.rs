@@ -24,22 +24,53 @@ pub fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
 
 /// The node's own boundary among its operands' crossings: `crossings` are `(operand, hit,
 /// entering)` sorted along the ray, `states` each operand's membership where the line starts.
-/// Calls `boundary(operand, hit, entering)` for every crossing where the combined membership
+/// Calls `boundary(operand, hit, entering)` for every event where the combined membership
 /// flips, in order.
+///
+/// Crossings that `same` says may be one place (within their error bounds: a cutter sharing a
+/// face with the base, two boxes of a merge touching) form one event: all their operands change
+/// state together and the membership is compared only before and after the whole event. Applied
+/// one at a time, in whatever order rounding sorted them, they would flip the result twice and
+/// leave a zero-thickness lid (or, in glass, an inner interface). The event's hit is one whose
+/// own operand moved the result the way it went (its surface is the one that shows).
 pub fn boundary<H: Copy>(
     op: CsgOp,
     mut states: Vec<bool>,
     crossings: &[(usize, H, bool)],
+    same: impl Fn(&H, &H) -> bool,
     mut boundary: impl FnMut(usize, H, bool),
 ) {
     let mut inside = combine(op, states.iter().copied());
-    for &(i, hit, entering) in crossings {
-        states[i] = entering;
+    let mut start = 0;
+    while start < crossings.len() {
+        let mut end = start + 1;
+        while end < crossings.len() && same(&crossings[end - 1].1, &crossings[end].1) {
+            end += 1;
+        }
+        let event = &crossings[start..end];
+        for &(i, _, entering) in event {
+            states[i] = entering;
+        }
         let now = combine(op, states.iter().copied());
         if now != inside {
-            boundary(i, hit, now);
+            let shown = event
+                .iter()
+                .find(|&&(i, _, entering)| drives(op, i, entering, now))
+                .unwrap_or(&event[0]);
+            boundary(shown.0, shown.1, now);
             inside = now;
         }
+        start = end;
+    }
+}
+
+/// Whether operand `i` entering (or leaving) moves the result of `op` into (out of) the solid
+/// when the result becomes `now`: a subtracted operand does so by leaving.
+fn drives(op: CsgOp, i: usize, entering: bool, now: bool) -> bool {
+    if op == CsgOp::Difference && i > 0 {
+        entering != now
+    } else {
+        entering == now
     }
 }
 
@@ -97,13 +128,56 @@ mod tests {
         ];
         let run = |op| {
             let mut out = Vec::new();
-            boundary(op, vec![false, false], &crossings, |_, t, e| {
-                out.push((t, e))
-            });
+            boundary(
+                op,
+                vec![false, false],
+                &crossings,
+                |a: &f64, b: &f64| a == b,
+                |_, t, e| out.push((t, e)),
+            );
             out
         };
         assert_eq!(run(CsgOp::Union), vec![(0.0, true), (3.0, false)]);
         assert_eq!(run(CsgOp::Intersection), vec![(1.0, true), (2.0, false)]);
         assert_eq!(run(CsgOp::Difference), vec![(0.0, true), (1.0, false)]);
+    }
+
+    #[test]
+    fn crossings_at_one_place_are_one_event() {
+        // A base [0, 2] and a cutter [0, 1] sharing the face at 0, then a cutter [1.5, 2]
+        // sharing the face at 2: the difference is [1, 1.5] with no lid at 0 or 2.
+        let crossings = [
+            (0, 0.0, true),
+            (1, 0.0, true),
+            (1, 1.0, false),
+            (2, 1.5, true),
+            (0, 2.0, false),
+            (2, 2.0, false),
+        ];
+        let mut out = Vec::new();
+        boundary(
+            CsgOp::Difference,
+            vec![false; 3],
+            &crossings,
+            |a: &f64, b: &f64| a == b,
+            |i, t, e| out.push((i, t, e)),
+        );
+        assert_eq!(out, vec![(1, 1.0, true), (2, 1.5, false)]);
+        // Two boxes of a merge touching at 1: one solid [0, 2], no face between.
+        let touching = [
+            (0, 0.0, true),
+            (0, 1.0, false),
+            (1, 1.0, true),
+            (1, 2.0, false),
+        ];
+        let mut merged = Vec::new();
+        boundary(
+            CsgOp::Merge,
+            vec![false; 2],
+            &touching,
+            |a: &f64, b: &f64| a == b,
+            |_, t, e| merged.push((t, e)),
+        );
+        assert_eq!(merged, vec![(0.0, true), (2.0, false)]);
     }
 }

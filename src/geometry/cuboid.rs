@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, rounding};
 
 /// An axis-aligned box in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -99,6 +99,16 @@ impl Cuboid {
                 entering: false,
             });
         }
+    }
+
+    /// Error bound of a computed point `p` on the box: its signed distance to the box (exact
+    /// up to the rounding of a few operations on the distances themselves).
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        let q = (self.min - p).max(p - self.max);
+        let outside = q.max(DVec3::ZERO).length();
+        let inside = q.max_element().min(0.0);
+        let distance = outside + inside;
+        rounding::from_residual(distance, 5, q.abs().max_element())
     }
 
     /// True when `p` is inside or on the box.

@@ -4,7 +4,7 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use super::{Aabb, Crossing, Hit, Ray, circle};
+use super::{Aabb, Crossing, Hit, Ray, circle, rounding};
 
 /// An orthonormal frame along a segment: `base`, unit `axis`, length `height`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,11 +38,33 @@ impl AxisFrame {
     /// (angle / 2π, height fraction) of a point.
     pub fn uv(&self, p: DVec3) -> DVec2 {
         let w = p - self.base;
-        let angle = w.dot(self.e2).atan2(w.dot(self.e1)).rem_euclid(TAU);
+        let angle = libm::atan2(w.dot(self.e2), w.dot(self.e1)).rem_euclid(TAU);
         DVec2::new(
             angle / TAU,
             (w.dot(self.axis) / self.height).clamp(0.0, 1.0),
         )
+    }
+
+    /// A point's height along the axis, its distance from the axis, and the size of the
+    /// numbers that gave them (for error bounds).
+    pub fn height_and_radius(&self, p: DVec3) -> (f64, f64, f64) {
+        let w = p - self.base;
+        let y = w.dot(self.axis);
+        let rho = (w - y * self.axis).length();
+        (y, rho, w.abs().element_sum() + self.height)
+    }
+
+    /// The smallest residual of a point on the caps at heights 0 (when `base_cap`) and the top
+    /// (when `top_cap`), and `side` (the lateral surface's residual).
+    pub(crate) fn nearest_part(&self, y: f64, side: f64, base_cap: bool, top_cap: bool) -> f64 {
+        let mut r = side.abs();
+        if base_cap {
+            r = r.min(y.abs());
+        }
+        if top_cap {
+            r = r.min((y - self.height).abs());
+        }
+        r
     }
 
     /// Bounds of a disk of `radius` centred on the axis at height `y`.
@@ -136,6 +158,15 @@ impl Cylinder {
     pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         let (c, n) = self.candidates(ray);
         convex_crossings(c[..n].iter().flatten().copied(), out);
+    }
+
+    /// Error bound of a computed point `p` on the cylinder: the residual of the part it lies
+    /// on (side or cap) plus the rounding of evaluating it.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        let f = &self.frame;
+        let (y, rho, size) = f.height_and_radius(p);
+        let residual = f.nearest_part(y, rho - self.radius, self.capped, self.capped);
+        rounding::from_residual(residual, 10, size + self.radius)
     }
 
     /// True when `p` is inside or on the solid.

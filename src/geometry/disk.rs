@@ -50,12 +50,17 @@ impl Disk {
         if r2 > self.radius * self.radius {
             return None;
         }
-        let angle = y.atan2(x).rem_euclid(TAU);
+        let angle = libm::atan2(y, x).rem_euclid(TAU);
         Some(Hit {
             t,
             normal: self.normal,
             uv: DVec2::new(angle / TAU, r2.sqrt() / self.radius),
         })
+    }
+
+    /// Error bound of a computed point `p` on it: its residual off its plane.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        super::plane::point_error(self.center, self.normal, p)
     }
 
     /// Object-space bounds (tight per axis: radius·√(1 − n_i²)).

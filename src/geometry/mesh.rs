@@ -65,6 +65,8 @@ pub struct MeshHit {
     pub uv: DVec2,
     /// The face's material slot (an index into the file's MTL materials), if it has one.
     pub material: Option<u32>,
+    /// Per-axis bound on how far the object-space hit point lies off the triangle's plane.
+    pub error: DVec3,
 }
 
 impl Mesh {
@@ -169,7 +171,16 @@ impl Mesh {
                 .get(slot)
                 .copied()
                 .filter(|&m| m != u32::MAX),
+            error: DVec3::ZERO,
         }
+    }
+
+    /// Error bound of the computed point `p` on the triangle in `slot`: its residual off the
+    /// triangle's plane, evaluated in f64 from the stored corners.
+    fn point_error(&self, slot: usize, p: DVec3) -> DVec3 {
+        let [a, b, c] = self.tris[slot].map(|v| v.as_dvec3());
+        let n = (b - a).cross(c - a).normalize_or(DVec3::Y);
+        super::plane::point_error(a, n, p)
     }
 
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
@@ -215,6 +226,7 @@ impl Mesh {
         let (slot, t, b) = best?;
         let mut h = self.hit(slot, t, b);
         h.t += s;
+        h.error = self.point_error(slot, ray.at(h.t));
         (h.t > t_min && h.t < t_max).then_some(h)
     }
 
@@ -240,6 +252,7 @@ impl Mesh {
             if let Some((t, b)) = sr.intersect(&self.tris[slot]) {
                 let mut h = self.hit(slot, t, b);
                 h.t += s;
+                h.error = self.point_error(slot, ray.at(h.t));
                 out.push((h, h.geometric.dot(ray.dir) < 0.0));
             }
         });

@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{Hit, Ray};
+use super::{Hit, Ray, rounding};
 
 /// Intersection of `ray` with the plane through `point` with unit `normal`, in (t_min, t_max).
 pub fn intersect(point: DVec3, normal: DVec3, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
@@ -24,4 +24,11 @@ pub fn intersect(point: DVec3, normal: DVec3, ray: &Ray, t_min: f64, t_max: f64)
         normal,
         uv: uv - uv.floor(),
     })
+}
+
+/// Error bound of a computed point `p` on the plane through `point` with unit `normal` (also
+/// every flat shape's): the residual `(p − point)·n` plus its rounding.
+pub fn point_error(point: DVec3, normal: DVec3, p: DVec3) -> DVec3 {
+    let w = p - point;
+    rounding::from_residual(w.dot(normal), 5, w.abs().dot(normal.abs()))
 }

@@ -118,6 +118,11 @@ impl Polygon {
         })
     }
 
+    /// Error bound of a computed point `p` on it: its residual off its plane.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        super::plane::point_error(self.origin, self.normal, p)
+    }
+
     /// Object-space bounds.
     pub fn bounds(&self) -> Aabb {
         self.bounds

@@ -1,13 +1,14 @@
 //! A prepared object: its geometry in object space, its transform, its material, its bounds.
 //! Nodes nest for CSG; every level moves rays in and hits out through its own transform.
 
+use std::borrow::Cow;
 use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
 use super::shape::Leaf;
-use super::{Aabb, Hit, Ray, csg, mesh::Mesh, sphere};
-use crate::ir::{CsgOp, MaterialId};
+use super::{Aabb, Hit, Ray, csg, mesh::Mesh, rounding, sphere};
+use crate::ir::{CsgOp, MaterialId, Motion};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -22,6 +23,12 @@ pub struct GeoHit {
     pub uv: DVec2,
     /// The hit point in the leaf object's own space.
     pub local_point: DVec3,
+    /// The hit point in the space of the ray that was given, moved out from `local_point`
+    /// through every transform on the way (so `error` bounds it).
+    pub point: DVec3,
+    /// Per-axis bound on how far `point` may lie from the true surface (see
+    /// [`super::rounding`]).
+    pub error: DVec3,
     /// The surface hit (see [`SurfaceId`]).
     pub surface: SurfaceId,
     /// The material to shade with.
@@ -73,6 +80,26 @@ pub struct Placement {
     pub normal_matrix: DMat3,
 }
 
+impl Placement {
+    /// The placement by `transform` (which must be invertible).
+    pub fn of(transform: DAffine3) -> Placement {
+        Placement {
+            to_object: transform.inverse(),
+            to_parent: transform,
+            normal_matrix: transform.matrix3.inverse().transpose(),
+        }
+    }
+}
+
+/// A node that moves while the shutter is open: its placement at shutter open and its motion.
+#[derive(Clone, Debug)]
+pub struct Moving {
+    /// Object → parent at shutter open.
+    pub transform: DAffine3,
+    /// How that placement changes up to shutter close.
+    pub motion: Motion,
+}
+
 /// A prepared object.
 #[derive(Clone, Debug)]
 pub struct Primitive {
@@ -86,6 +113,8 @@ pub struct Primitive {
     pub bounds: Aabb,
     /// The surface a leaf or mesh node is, once the world has numbered them.
     pub surface: SurfaceId,
+    /// `None` for a node that stands still; `placement` is then its placement at every time.
+    pub moving: Option<Box<Moving>>,
 }
 
 /// A surface of the world: one leaf shape or mesh, wherever it sits (a top-level object or an
@@ -97,11 +126,7 @@ impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
     pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();
-        let placement = (transform != DAffine3::IDENTITY).then(|| Placement {
-            to_object: transform.inverse(),
-            to_parent: transform,
-            normal_matrix: transform.matrix3.inverse().transpose(),
-        });
+        let placement = (transform != DAffine3::IDENTITY).then(|| Placement::of(transform));
         let bounds = match &placement {
             None => local,
             Some(p) => local.transformed(&p.to_parent),
@@ -112,33 +137,87 @@ impl Primitive {
             material,
             bounds,
             surface: SurfaceId::default(),
+            moving: None,
         }
+    }
+
+    /// Like [`Primitive::new`] for a node placed by `transform` at shutter open that moves by
+    /// `motion` until shutter close; its bounds cover the whole motion.
+    pub fn moving(
+        geom: Geom,
+        transform: DAffine3,
+        motion: Motion,
+        material: MaterialId,
+    ) -> Primitive {
+        let mut p = Primitive::new(geom, transform, material);
+        if motion.is_still() {
+            return p;
+        }
+        p.bounds = super::motion::swept_bounds(p.geom.bounds(), transform, &motion);
+        p.moving = Some(Box::new(Moving { transform, motion }));
+        p
     }
 
     /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
     pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
-        match (&self.geom, &self.placement) {
-            (Geom::Leaf(Leaf::Sphere { center, radius }), None) => Some((*center, *radius)),
+        match (&self.geom, &self.placement, &self.moving) {
+            (Geom::Leaf(Leaf::Sphere { center, radius }), None, None) => Some((*center, *radius)),
             _ => None,
         }
     }
 
-    /// The ray in object space (same `t`).
+    /// The placement at the ray's time: the fixed one, or a moving node's at that instant.
     #[inline]
-    fn local(&self, ray: &Ray) -> Ray {
-        match &self.placement {
+    fn placement_at(&self, ray: &Ray) -> Option<Cow<'_, Placement>> {
+        match &self.moving {
+            None => self.placement.as_ref().map(Cow::Borrowed),
+            Some(m) => Some(Cow::Owned(Placement::of(
+                m.motion.at(m.transform, ray.time),
+            ))),
+        }
+    }
+
+    /// The ray in object space (same `t` and time).
+    #[inline]
+    fn local(place: Option<&Placement>, ray: &Ray) -> Ray {
+        match place {
             None => *ray,
-            Some(p) => Ray::new(
-                p.to_object.transform_point3(ray.origin),
-                p.to_object.transform_vector3(ray.dir),
-            ),
+            Some(p) => Ray {
+                origin: p.to_object.transform_point3(ray.origin),
+                dir: p.to_object.transform_vector3(ray.dir),
+                time: ray.time,
+            },
+        }
+    }
+
+    /// The ray in object space (same `t` and time), and `t_min` raised past the rounding of
+    /// moving its origin there (pbrt-v4 moves the origin to the edge of that error along the
+    /// ray): a ray spawned just outside a surface must not meet it again because the transform
+    /// moved its origin by more than the spawn offset.
+    #[inline]
+    fn local_after(place: Option<&Placement>, ray: &Ray, t_min: f64) -> (Ray, f64) {
+        match place {
+            None => (*ray, t_min),
+            Some(p) => {
+                let (origin, err) =
+                    rounding::transform_point(&p.to_object, ray.origin, DVec3::ZERO);
+                let dir = p.to_object.transform_vector3(ray.dir);
+                let lift = dir.abs().dot(err) / dir.length_squared();
+                let local = Ray {
+                    origin,
+                    dir,
+                    time: ray.time,
+                };
+                (local, t_min + lift)
+            }
         }
     }
 
     /// Moves a hit from object space to the parent's space.
     #[inline]
-    fn out(&self, mut h: GeoHit) -> GeoHit {
-        if let Some(p) = &self.placement {
+    fn out(place: Option<&Placement>, mut h: GeoHit) -> GeoHit {
+        if let Some(p) = place {
+            (h.point, h.error) = rounding::transform_point(&p.to_parent, h.point, h.error);
             h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
             h.geometric_normal =
                 (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
@@ -146,13 +225,16 @@ impl Primitive {
         h
     }
 
-    fn leaf(&self, ray: &Ray, h: Hit) -> GeoHit {
+    fn leaf(&self, l: &Leaf, ray: &Ray, h: Hit) -> GeoHit {
+        let local_point = ray.at(h.t);
         GeoHit {
             t: h.t,
             normal: h.normal,
             geometric_normal: h.normal,
             uv: h.uv,
-            local_point: ray.at(h.t),
+            local_point,
+            point: local_point,
+            error: l.point_error(local_point),
             surface: self.surface,
             material: self.material,
         }
@@ -162,19 +244,26 @@ impl Primitive {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
         // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
         if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
-            let r = self.local(ray);
+            let place = self.placement_at(ray);
+            let place = place.as_deref();
+            let (r, t_min) = Self::local_after(place, ray, t_min);
             return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
                 let local_point = r.at(t);
                 let normal = (local_point - *center).normalize();
-                self.out(GeoHit {
-                    t,
-                    normal,
-                    geometric_normal: normal,
-                    uv: DVec2::ZERO,
-                    local_point,
-                    surface: self.surface,
-                    material: self.material,
-                })
+                Self::out(
+                    place,
+                    GeoHit {
+                        t,
+                        normal,
+                        geometric_normal: normal,
+                        uv: DVec2::ZERO,
+                        local_point,
+                        point: local_point,
+                        error: sphere::point_error(*center, *radius, local_point),
+                        surface: self.surface,
+                        material: self.material,
+                    },
+                )
             });
         }
         // Meshes clip against their bounds themselves (and need the entry point anyway).
@@ -185,17 +274,19 @@ impl Primitive {
         {
             return None;
         }
-        let r = self.local(ray);
+        let place = self.placement_at(ray);
+        let place = place.as_deref();
+        let (r, t_min) = Self::local_after(place, ray, t_min);
         match &self.geom {
             Geom::Leaf(l) => l
                 .intersect(&r, t_min, t_max)
-                .map(|h| self.out(self.leaf(&r, h))),
+                .map(|h| Self::out(place, self.leaf(l, &r, h))),
             Geom::Mesh(m) => m
                 .data
                 .intersect(&r, t_min, t_max)
-                .map(|h| self.out(self.mesh_hit(&r, m, h))),
+                .map(|h| Self::out(place, self.mesh_hit(&r, m, h))),
             Geom::Csg { op, children } => {
-                csg_intersect(*op, children, &r, t_min, t_max).map(|h| self.out(h))
+                csg_intersect(*op, children, &r, t_min, t_max).map(|h| Self::out(place, h))
             }
         }
     }
@@ -211,13 +302,17 @@ impl Primitive {
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.geom {
             Geom::Leaf(Leaf::Sphere { center, radius }) => {
-                sphere::hit_t(*center, *radius, &self.local(ray), t_min, t_max).is_some()
+                let place = self.placement_at(ray);
+                let (r, t_min) = Self::local_after(place.as_deref(), ray, t_min);
+                sphere::hit_t(*center, *radius, &r, t_min, t_max).is_some()
             }
             Geom::Mesh(m) => {
                 if self.bounds.hit_interval(ray, t_min, t_max).is_none() {
                     return false;
                 }
-                m.data.occluded(&self.local(ray), t_min, t_max)
+                let place = self.placement_at(ray);
+                let (r, t_min) = Self::local_after(place.as_deref(), ray, t_min);
+                m.data.occluded(&r, t_min, t_max)
             }
             _ => self.intersect(ray, t_min, t_max).is_some(),
         }
@@ -228,12 +323,15 @@ impl Primitive {
             (Some(ids), Some(i)) => ids.get(i as usize).copied().unwrap_or(self.material),
             _ => self.material,
         };
+        let local_point = r.at(h.t);
         GeoHit {
             t: h.t,
             normal: h.shading,
             geometric_normal: h.geometric,
             uv: h.uv,
-            local_point: r.at(h.t),
+            local_point,
+            point: local_point,
+            error: h.error,
             surface: self.surface,
             material,
         }
@@ -241,7 +339,8 @@ impl Primitive {
 
     /// Whether the ray's line starts (at t → −∞) inside this solid.
     pub fn inside_at_start(&self, ray: &Ray) -> bool {
-        let r = self.local(ray);
+        let place = self.placement_at(ray);
+        let r = Self::local(place.as_deref(), ray);
         match &self.geom {
             Geom::Leaf(l) => l.inside_at_start(&r),
             Geom::Csg { op, children } => {
@@ -262,7 +361,9 @@ impl Primitive {
         {
             return;
         }
-        let r = self.local(ray);
+        let place = self.placement_at(ray);
+        let place = place.as_deref();
+        let r = Self::local(place, ray);
         let start = out.len();
         match &self.geom {
             Geom::Leaf(l) => {
@@ -270,7 +371,7 @@ impl Primitive {
                 l.crossings(&r, &mut tmp);
                 for c in tmp {
                     out.push(PrimitiveCrossing {
-                        hit: self.out(self.leaf(&r, c.hit)),
+                        hit: Self::out(place, self.leaf(l, &r, c.hit)),
                         entering: c.entering,
                     });
                 }
@@ -280,7 +381,7 @@ impl Primitive {
                 m.data.all_hits(&r, &mut hits);
                 for (h, entering) in hits {
                     out.push(PrimitiveCrossing {
-                        hit: self.out(self.mesh_hit(&r, m, h)),
+                        hit: Self::out(place, self.mesh_hit(&r, m, h)),
                         entering,
                     });
                 }
@@ -289,7 +390,7 @@ impl Primitive {
                 let mut tmp = Vec::new();
                 csg_crossings(*op, children, &r, &mut tmp);
                 out.extend(tmp.into_iter().map(|c| PrimitiveCrossing {
-                    hit: self.out(c.hit),
+                    hit: Self::out(place, c.hit),
                     entering: c.entering,
                 }));
             }
@@ -297,7 +398,8 @@ impl Primitive {
         out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
     }
 
-    /// Point membership (closed solids; surfaces contain nothing), in the parent's space.
+    /// Point membership (closed solids; surfaces contain nothing), in the parent's space (a
+    /// moving node at its shutter-open placement).
     pub fn contains(&self, p: DVec3) -> bool {
         let q = match &self.placement {
             None => p,
@@ -322,7 +424,17 @@ fn csg_crossings(op: CsgOp, children: &[Primitive], ray: &Ray, out: &mut Vec<Pri
     }
     all.sort_by(|a, b| a.1.t.total_cmp(&b.1.t));
     let starts = children.iter().map(|c| c.inside_at_start(ray)).collect();
-    csg::boundary(op, starts, &all, |i, mut hit, entering| {
+    let same = |a: &GeoHit, b: &GeoHit| {
+        rounding::same_event(
+            a.point,
+            a.error,
+            a.geometric_normal,
+            b.point,
+            b.error,
+            b.geometric_normal,
+        )
+    };
+    csg::boundary(op, starts, &all, same, |i, mut hit, entering| {
         if csg::flips_normal(op, i) {
             hit.normal = -hit.normal;
             hit.geometric_normal = -hit.geometric_normal;

@@ -50,6 +50,11 @@ impl Quad {
         })
     }
 
+    /// Error bound of a computed point `p` on it: its residual off its plane.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        super::plane::point_error(self.corner, self.normal, p)
+    }
+
     /// Object-space bounds.
     pub fn bounds(&self) -> Aabb {
         let c = self.corner;

@@ -4,19 +4,32 @@ use glam::{DVec2, DVec3};
 
 use super::sphere;
 
-/// A ray `origin + t·dir`. `dir` is unit length in world space; in object space it may not be.
+/// A ray `origin + t·dir` at one instant. `dir` is unit length in world space; in object space
+/// it may not be.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// Start point.
     pub origin: DVec3,
     /// Direction.
     pub dir: DVec3,
+    /// When it travels, as a fraction of the open shutter (0 = open, 1 = close): where moving
+    /// objects are for it.
+    pub time: f64,
 }
 
 impl Ray {
-    /// A ray from `origin` along `dir`.
+    /// A ray from `origin` along `dir` at shutter open.
     pub fn new(origin: DVec3, dir: DVec3) -> Ray {
-        Ray { origin, dir }
+        Ray {
+            origin,
+            dir,
+            time: 0.0,
+        }
+    }
+
+    /// The same ray at shutter fraction `time`.
+    pub fn at_time(self, time: f64) -> Ray {
+        Ray { time, ..self }
     }
 
     /// The point at parameter `t`.

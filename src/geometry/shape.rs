@@ -251,6 +251,24 @@ impl Leaf {
         }
     }
 
+    /// A per-axis bound on how far the computed object-space point `p` of a hit may lie from
+    /// the surface (see [`super::rounding`]).
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::point_error(*center, *radius, p),
+            Leaf::Plane { point, normal } => plane::point_error(*point, *normal, p),
+            Leaf::Box(b) => b.point_error(p),
+            Leaf::Triangle(x) => x.point_error(p),
+            Leaf::Quad(x) => x.point_error(p),
+            Leaf::Polygon(x) => x.point_error(p),
+            Leaf::Disk(x) => x.point_error(p),
+            Leaf::Cylinder(x) => x.point_error(p),
+            Leaf::Cone(x) => x.point_error(p),
+            Leaf::Torus(x) => x.point_error(p),
+            Leaf::Blob(x) => x.point_error(p),
+        }
+    }
+
     /// Every boundary crossing along the whole line of `r` (solids; surfaces have none).
     pub fn crossings(&self, r: &Ray, out: &mut Vec<Crossing>) {
         match self {

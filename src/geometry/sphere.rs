@@ -5,7 +5,7 @@ use std::f64::consts::PI;
 use glam::{DVec2, DVec3};
 
 use super::circle::{self, DirSquared};
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, rounding};
 
 /// Ray parameter of the nearest intersection in (t_min, t_max), without normal or uv: the hot
 /// path for candidate and shadow tests (uv costs an `acos` and an `atan2`).
@@ -36,6 +36,13 @@ pub fn hit_t_with(
     }
 }
 
+/// Error bound of a computed point `p` on the sphere: its residual `| |p − c| − r |` plus the
+/// rounding of evaluating it (see [`super::rounding`]).
+pub fn point_error(center: DVec3, radius: f64, p: DVec3) -> DVec3 {
+    let len = (p - center).length();
+    rounding::from_residual(len - radius, 6, len + radius)
+}
+
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).
 pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
     let t = hit_t(center, radius, ray, t_min, t_max)?;
@@ -50,8 +57,8 @@ pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) 
 /// Equirectangular coordinates of a unit direction from the centre: +Y is the north pole (v = 0),
 /// u = φ/2π with φ measured from +X towards −Z (counter-clockwise seen from above).
 pub fn uv(n: DVec3) -> DVec2 {
-    let theta = n.y.clamp(-1.0, 1.0).acos();
-    let mut phi = (-n.z).atan2(n.x);
+    let theta = libm::acos(n.y.clamp(-1.0, 1.0));
+    let mut phi = libm::atan2(-n.z, n.x);
     if phi < 0.0 {
         phi += 2.0 * PI;
     }

@@ -6,7 +6,7 @@ use std::f64::consts::TAU;
 use glam::{DVec2, DVec3};
 
 use super::quartic::{eval, roots_in};
-use super::{Aabb, Crossing, Hit, Ray};
+use super::{Aabb, Crossing, Hit, Ray, rounding};
 
 /// A torus in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -40,6 +40,13 @@ impl Torus {
         let p = p - self.center;
         let ring = DVec2::new(p.x, p.z).length() - self.major;
         DVec2::new(ring, p.y).length() - self.minor
+    }
+
+    /// Error bound of a computed point `p` on the torus: its exact signed distance as evaluated,
+    /// plus the rounding of that evaluation.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        let size = (p - self.center).abs().element_sum() + self.major + self.minor;
+        rounding::from_residual(self.distance(p), 10, size)
     }
 
     /// Object-space bounds.
@@ -94,8 +101,8 @@ impl Torus {
         } else {
             DVec3::Y * p.y.signum()
         };
-        let u = (-p.z).atan2(p.x).rem_euclid(TAU) / TAU;
-        let v = p.y.atan2(rl - self.major).rem_euclid(TAU) / TAU;
+        let u = libm::atan2(-p.z, p.x).rem_euclid(TAU) / TAU;
+        let v = libm::atan2(p.y, rl - self.major).rem_euclid(TAU) / TAU;
         Hit {
             t,
             normal,

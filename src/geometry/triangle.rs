@@ -36,6 +36,11 @@ impl Triangle {
         })
     }
 
+    /// Error bound of a computed point `p` on it: its residual off its plane.
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        super::plane::point_error(self.v[0], self.normal, p)
+    }
+
     /// Object-space bounds.
     pub fn bounds(&self) -> Aabb {
         Aabb::new(

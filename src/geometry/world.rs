@@ -27,6 +27,12 @@ pub struct SurfaceHit {
     pub uv: DVec2,
     /// Hit point in the leaf object's own space (for solid textures).
     pub local_point: DVec3,
+    /// The hit point as the object computed it and moved it out to world space (equal to
+    /// `point` up to rounding); `error` bounds its distance from the surface per axis. Spawned
+    /// rays leave from here (`render::offset`).
+    pub surface_point: DVec3,
+    /// Per-axis floating-point error bound of `surface_point` (see [`super::rounding`]).
+    pub error: DVec3,
     /// The material to shade with (an index into the prepared scene's material table, which
     /// holds a mesh's MTL materials after the scene's).
     pub material: MaterialId,
@@ -244,6 +250,8 @@ impl World {
                 geometric_normal: h.geometric_normal,
                 uv: h.uv,
                 local_point: h.local_point,
+                surface_point: h.point,
+                error: h.error,
                 material: h.material,
                 surface: h.surface,
             }

@@ -38,8 +38,10 @@ pub struct PlotPoint {
 pub struct Series {
     /// The legend entry (e.g. "supersampling").
     pub name: String,
-    /// The points, joined in this order.
+    /// The points, in this order.
     pub points: Vec<PlotPoint>,
+    /// Draw a line through the points (a ladder); `false` draws them loose (a joint sweep).
+    pub joined: bool,
 }
 
 /// A point drawn apart from the curves, with its own label (the scene's own setting).
@@ -134,16 +136,23 @@ impl ErrorTimePlot {
                 .filter(|p| drawable(p))
                 .map(|p| (p.seconds, p.error))
                 .collect();
-            chart
-                .draw_series(LineSeries::new(
-                    points.iter().copied(),
-                    color.stroke_width(2),
-                ))?
-                .label(series.name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-                });
-            chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+            if series.joined {
+                chart
+                    .draw_series(LineSeries::new(
+                        points.iter().copied(),
+                        color.stroke_width(2),
+                    ))?
+                    .label(series.name.as_str())
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                    });
+                chart.draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))?;
+            } else {
+                chart
+                    .draw_series(points.iter().map(|&p| Circle::new(p, 3, color.filled())))?
+                    .label(series.name.as_str())
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+            }
         }
 
         if let Some(marked) = self.marked.as_ref().filter(|m| drawable(&m.point)) {

@@ -9,7 +9,7 @@ pub fn encode(linear: f32) -> u8 {
     let v = if c <= 0.003_130_8 {
         12.92 * c
     } else {
-        1.055 * c.powf(1.0 / 2.4) - 0.055
+        1.055 * libm::pow(c, 1.0 / 2.4) - 0.055
     };
     (255.0 * v).round() as u8
 }
@@ -20,7 +20,7 @@ pub fn decode(value: u8) -> f32 {
     let c = if v <= 0.040_45 {
         v / 12.92
     } else {
-        ((v + 0.055) / 1.055).powf(2.4)
+        libm::pow((v + 0.055) / 1.055, 2.4)
     };
     c as f32
 }

@@ -33,6 +33,14 @@ pub struct Effects {
     pub csg: bool,
     /// The scene has meshes.
     pub meshes: bool,
+    /// The shutter is open and something moves (an object or the camera): rays get times.
+    pub motion_blur: bool,
+    /// Some reflecting or refracting material is glossy (`gloss > 0`) and rays bounce.
+    pub glossy: bool,
+    /// Shadow rays pass through refractive objects (`render { glass_shadows: true }`).
+    pub glass_shadows: bool,
+    /// The lens flare post stage runs (`render { flare: ... }` and some light).
+    pub flare: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -48,6 +56,8 @@ pub struct Content {
     hatching_material: bool,
     csg: bool,
     meshes: bool,
+    moving: bool,
+    glossy: bool,
 }
 
 impl Content {
@@ -72,6 +82,10 @@ impl Content {
             hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
             csg: false,
             meshes: false,
+            moving: scene.camera.motion.is_some(),
+            glossy: mats
+                .iter()
+                .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
         };
         for o in &scene.objects {
             c.visit(o);
@@ -80,6 +94,7 @@ impl Content {
     }
 
     fn visit(&mut self, o: &Object) {
+        self.moving |= o.motion.is_some_and(|m| !m.is_still());
         match &o.shape {
             Shape::Csg { children, .. } => {
                 self.csg = true;
@@ -127,6 +142,10 @@ impl Effects {
             ),
             csg: content.csg,
             meshes: content.meshes,
+            motion_blur: content.moving && camera.shutter.is_some_and(|s| s.is_open()),
+            glossy: bounces && content.glossy,
+            glass_shadows: shadows && s.glass_shadows && content.refractive,
+            flare: shaded && s.flare.is_some() && content.lights,
         }
     }
 
@@ -141,10 +160,14 @@ impl Effects {
             (self.bump, "bump maps"),
             (self.supersampling, "supersampling"),
             (self.depth_of_field, "depth of field"),
+            (self.motion_blur, "motion blur"),
             (self.gooch, "gooch"),
             (self.hatching, "hatching"),
             (self.csg, "csg"),
             (self.meshes, "meshes"),
+            (self.glossy, "glossy"),
+            (self.glass_shadows, "light through glass"),
+            (self.flare, "lens flare"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

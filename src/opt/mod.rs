@@ -9,6 +9,7 @@
 //! check means the render will start.
 
 pub mod effects;
+pub mod fingerprint;
 pub mod objects;
 pub mod prepared;
 pub mod textures;
@@ -86,7 +87,6 @@ pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
         memory_bytes: w.memory_bytes + mesh_stats.memory_bytes,
     };
     Ok(Prepared {
-        extent: prepared::extent(&world, scene.camera.eye),
         camera: scene.camera.clone(),
         world,
         materials,

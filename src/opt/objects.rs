@@ -105,7 +105,10 @@ impl Builder {
             return None;
         }
         let geom = self.geom(o, material)?;
-        Some(Primitive::new(geom, *t, material))
+        Some(match o.motion {
+            Some(m) => Primitive::moving(geom, *t, m, material),
+            None => Primitive::new(geom, *t, material),
+        })
     }
 
     fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {

@@ -4,8 +4,6 @@
 
 use std::time::Duration;
 
-use glam::DVec3;
-
 use super::effects::{Content, Effects};
 use super::textures::TextureMap;
 use super::validate;
@@ -58,7 +56,6 @@ pub struct Prepared {
     pub(super) settings: RenderSettings,
     pub(super) content: Content,
     pub(super) effects: Effects,
-    pub(super) extent: f64,
     pub(super) warnings: Vec<Diagnostic>,
     pub(super) stats: Stats,
 }
@@ -114,12 +111,6 @@ impl Prepared {
         self.effects
     }
 
-    /// The scene's scale: the largest coordinate magnitude of its finite bounds and the eye
-    /// (what ray offsets scale with).
-    pub fn extent(&self) -> f64 {
-        self.extent
-    }
-
     /// Warnings found while preparing (a mesh whose MTL file is missing).
     pub fn warnings(&self) -> &[Diagnostic] {
         &self.warnings
@@ -130,9 +121,12 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens or an area light).
+    /// Whether anything draws random numbers (a lens, an area light, an open shutter or a
+    /// glossy lobe).
     pub fn random(&self) -> bool {
         self.camera.aperture > 0.0
+            || self.effects.motion_blur
+            || self.effects.glossy
             || self
                 .lights
                 .iter()
@@ -152,15 +146,57 @@ impl Prepared {
         self.settings = settings;
         Ok(())
     }
+
+    /// Replaces the camera (a coarser preview of the same view, `rtc watch`): validated like
+    /// the scene's, and the effects follow it.
+    pub fn set_camera(&mut self, camera: Camera) -> Result<(), Diagnostic> {
+        validate::camera(&camera)?;
+        self.effects = Effects::new(&self.content, &self.settings, &camera);
+        self.camera = camera;
+        Ok(())
+    }
 }
 
-/// The largest coordinate magnitude of the world's finite bounds and of `eye`.
-pub(super) fn extent(world: &World, eye: DVec3) -> f64 {
-    let b = world.bounds();
-    let extent = if b.is_empty() || !b.is_finite() {
-        0.0
-    } else {
-        b.min.abs().max(b.max.abs()).max_element()
-    };
-    extent.max(eye.abs().max_element())
+impl Prepared {
+    /// Each light's samples per edge (`[1, 1]` for a point light), in light order.
+    pub fn light_samples(&self) -> Vec<[u32; 2]> {
+        self.lights
+            .iter()
+            .map(|l| match l.kind {
+                LightKind::Area { samples, .. } => samples,
+                LightKind::Point { .. } => [1, 1],
+            })
+            .collect()
+    }
+
+    /// Renders from now on with `samples[i]` samples per edge on area light `i` (point lights
+    /// ignore theirs; `rtc accuracy` sweeps this). Errors when past `ir::limits` or when the
+    /// list does not have one entry per light.
+    pub fn set_light_samples(&mut self, samples: &[[u32; 2]]) -> Result<(), Diagnostic> {
+        if samples.len() != self.lights.len() {
+            return Err(Diagnostic::new(
+                crate::diag::Severity::Error,
+                "rtc::render::limit",
+                None,
+                format!(
+                    "{} light sample counts for {} lights",
+                    samples.len(),
+                    self.lights.len()
+                ),
+            ));
+        }
+        for (light, &want) in self.lights.iter_mut().zip(samples) {
+            if let LightKind::Area { samples, .. } = &mut light.kind {
+                validate::light_samples(want)?;
+                *samples = want;
+                light.samples = want[0].max(1) * want[1].max(1);
+            }
+        }
+        Ok(())
+    }
+
+    /// Renders from now on with another seed (`rtc accuracy` measures noise from two).
+    pub fn set_seed(&mut self, seed: u64) {
+        self.settings.seed = seed;
+    }
 }

@@ -160,7 +160,29 @@ fn image_size(c: &Camera, sampling: &Sampling) -> Result<(), Diagnostic> {
     )))
 }
 
-/// Settings within `ir::limits`: bounces and samples per pixel.
+/// Checks an area light's samples per edge against `ir::limits` (each in 1..=256).
+pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
+    if samples
+        .iter()
+        .all(|n| (1..=MAX_LIGHT_SAMPLES_PER_AXIS).contains(n))
+    {
+        return Ok(());
+    }
+    Err(Diagnostic::new(
+        Severity::Error,
+        "rtc::render::limit",
+        None,
+        format!(
+            "{}×{} area-light samples: each edge takes 1 to {MAX_LIGHT_SAMPLES_PER_AXIS}",
+            samples[0], samples[1]
+        ),
+    )
+    .with_help(format!(
+        "use 1 to {MAX_LIGHT_SAMPLES_PER_AXIS} samples per edge"
+    )))
+}
+
+/// Settings within `ir::limits`: bounces and samples per pixel; a cut-off in [0, 1].
 pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     let too_big = |what: String, help: String| {
         Err(Diagnostic::new(Severity::Error, "rtc::render::limit", None, what).with_help(help))
@@ -183,6 +205,33 @@ pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
             format!("{factor} samples per axis is more than {MAX_PIXEL_SAMPLES_PER_AXIS}"),
             format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
         );
+    }
+    if !(0.0..=1.0).contains(&s.cutoff) {
+        return too_big(
+            format!(
+                "an insignificance cut-off of {} is outside [0, 1]",
+                s.cutoff
+            ),
+            "use a cutoff in [0, 1]; 0 traces every ray".to_string(),
+        );
+    }
+    if let Some(f) = &s.flare {
+        let values = [
+            f64::from(f.ghosts),
+            f.dispersal,
+            f.halo,
+            f64::from(f.streaks),
+            f.threshold,
+            f.intensity,
+        ];
+        for ((name, lo, hi), v) in crate::ir::Flare::RANGES.into_iter().zip(values) {
+            if !(lo..=hi).contains(&v) {
+                return too_big(
+                    format!("the flare's {name} of {v} is outside {lo}..={hi}"),
+                    format!("give the flare a {name} in {lo}..={hi}"),
+                );
+            }
+        }
     }
     Ok(())
 }

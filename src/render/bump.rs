@@ -76,6 +76,8 @@ mod tests {
             geometric_normal: n,
             uv: crate::geometry::sphere::uv(n),
             local_point: n,
+            surface_point: n,
+            error: DVec3::ZERO,
             material: MaterialId(0),
             surface: SurfaceId(0),
         }

@@ -45,7 +45,7 @@ impl Camera {
             }
             Projection::Perspective { fov_y } => {
                 // The plane through `center`, sized so the image height spans `fov_y`.
-                let pixel = 2.0 * view.length() * (0.5 * fov_y).tan() / h;
+                let pixel = 2.0 * view.length() * libm::tan(0.5 * fov_y) / h;
                 (c.center, r_unit * pixel, u_unit * pixel)
             }
         };
@@ -80,6 +80,27 @@ impl Camera {
         self.height
     }
 
+    /// Where world point `p` appears on the image, in continuous pixel units (x from the left
+    /// edge, y from the top edge; a pixel's centre is at +½), through the pinhole; `None` when
+    /// `p` is not in front of the eye.
+    pub fn project(&self, p: DVec3) -> Option<(f64, f64)> {
+        let d = p - self.eye;
+        let along = d.dot(self.forward);
+        if along <= 0.0 {
+            return None;
+        }
+        let on_plane = self.eye + d * ((self.origin - self.eye).dot(self.forward) / along);
+        let rel = on_plane - self.origin;
+        let px = rel.dot(self.right) / self.right.length_squared();
+        let py = rel.dot(self.up) / self.up.length_squared();
+        Some((px, f64::from(self.height) - py))
+    }
+
+    /// The eye point (the pinhole, the centre of a lens).
+    pub fn eye(&self) -> DVec3 {
+        self.eye
+    }
+
     /// True when the camera has a lens (depth of field), so rays need lens samples.
     pub fn has_lens(&self) -> bool {
         self.aperture > 0.0
@@ -103,6 +124,32 @@ impl Camera {
     }
 }
 
+/// A camera that moves while the shutter is open: its eye and the point it looks at move
+/// linearly from their positions at shutter open to those at close.
+#[derive(Clone, Debug)]
+pub struct MovingCamera {
+    base: ir::Camera,
+    motion: ir::CameraMotion,
+}
+
+impl MovingCamera {
+    /// The moving camera of `c`, `None` when it stands still.
+    pub fn of(c: &ir::Camera) -> Option<MovingCamera> {
+        c.motion.map(|motion| MovingCamera {
+            base: c.clone(),
+            motion,
+        })
+    }
+
+    /// The camera at shutter fraction `time` (0 = open, 1 = close).
+    pub fn at(&self, time: f64) -> Camera {
+        let mut c = self.base.clone();
+        c.eye = self.base.eye.lerp(self.motion.eye, time);
+        c.center = self.base.center.lerp(self.motion.center, time);
+        Camera::new(&c)
+    }
+}
+
 /// Shirley–Chiu mapping of the unit square onto the unit disk (keeps stratification).
 fn concentric_disk(u: f64, v: f64) -> (f64, f64) {
     let (a, b) = (2.0 * u - 1.0, 2.0 * v - 1.0);
@@ -115,7 +162,7 @@ fn concentric_disk(u: f64, v: f64) -> (f64, f64) {
     } else {
         (b, 2.0 * q - q * (a / b))
     };
-    (r * phi.cos(), r * phi.sin())
+    (r * libm::cos(phi), r * libm::sin(phi))
 }
 
 #[cfg(test)]
@@ -133,6 +180,8 @@ mod tests {
             projection: Projection::Course,
             aperture: 0.0,
             focus_distance: 0.0,
+            shutter: None,
+            motion: None,
             span: Span::default(),
         }
     }
@@ -147,6 +196,24 @@ mod tests {
             let t = -r.origin.z / r.dir.z;
             assert!((r.at(t) - want).length() < 1e-9, "{x},{y}: {:?}", r.at(t));
         }
+    }
+
+    #[test]
+    fn project_inverts_the_pixel_ray() {
+        let eye = DVec3::new(3.0, 2.0, 9.0);
+        let c = ir::Camera {
+            center: DVec3::new(0.5, 0.0, 0.0),
+            projection: Projection::Perspective { fov_y: 0.7 },
+            ..course(eye, DVec3::Y, 64, 48)
+        };
+        let cam = Camera::new(&c);
+        for (x, y, sx, sy) in [(0, 0, 0.5, 0.5), (63, 47, 0.1, 0.9), (20, 30, 0.25, 0.75)] {
+            let r = cam.ray(x, y, sx, sy, (0.5, 0.5));
+            let (px, py) = cam.project(r.at(7.0)).unwrap();
+            assert!((px - (f64::from(x) + sx)).abs() < 1e-9, "{px}");
+            assert!((py - (f64::from(y) + 1.0 - sy)).abs() < 1e-9, "{py}");
+        }
+        assert!(cam.project(eye + (eye - c.center)).is_none());
     }
 
     #[test]

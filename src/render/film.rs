@@ -19,11 +19,19 @@ pub enum Channel {
 }
 
 impl Channel {
+    /// Every channel, for reading names back.
+    pub const ALL: [Channel; 1] = [Channel::Color];
+
     /// The channel's name in files and messages.
     pub fn name(self) -> &'static str {
         match self {
             Channel::Color => "color",
         }
+    }
+
+    /// The channel called `name`.
+    pub fn named(name: &str) -> Option<Channel> {
+        Channel::ALL.into_iter().find(|c| c.name() == name)
     }
 }
 
@@ -38,6 +46,12 @@ pub struct Stats {
     pub shadow_rays: u64,
     /// Pixels that took the finer grid of adaptive sampling.
     pub refined_pixels: u64,
+    /// Secondary rays not traced because their weight was below the insignificance cut-off.
+    pub cut_rays: u64,
+    /// The summed weight of the cut rays, in units of 2⁻³² (`integrator::whitted::CUT_WEIGHT_UNIT`):
+    /// divided by the camera rays, a bound on the mean linear radiance dropped per sample when
+    /// what the cut rays would have seen is at most 1.
+    pub cut_weight: u64,
 }
 
 impl Stats {
@@ -47,6 +61,8 @@ impl Stats {
         self.secondary_rays += o.secondary_rays;
         self.shadow_rays += o.shadow_rays;
         self.refined_pixels += o.refined_pixels;
+        self.cut_rays += o.cut_rays;
+        self.cut_weight += o.cut_weight;
     }
 }
 
@@ -97,6 +113,16 @@ impl Film {
     /// The channels this film holds.
     pub fn channels(&self) -> &[Channel] {
         &self.channels
+    }
+
+    /// Every channel's values interleaved per pixel (the layout [`Film::new`] takes), for
+    /// the rows `rows`.
+    pub fn interleaved(&self, rows: std::ops::Range<u32>) -> Vec<Color> {
+        let w = self.width as usize;
+        let (a, b) = (rows.start as usize * w, rows.end as usize * w);
+        (a..b)
+            .flat_map(|i| self.layers.iter().map(move |l| l[i]))
+            .collect()
     }
 
     /// A channel's values row by row from the top, if the film holds it.

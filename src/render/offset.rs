@@ -1,19 +1,133 @@
-//! Where spawned rays start: secondary and shadow rays begin a small distance along the normal
-//! so they do not re-hit the surface they leave. (When hits carry a floating-point error bound,
-//! this is the one place that turns it into an offset.)
+//! Where spawned rays start, as pbrt-v4 does it (`OffsetRayOrigin`, `SpawnRay`, `SpawnRayTo`).
+//!
+//! A hit point is only known to lie within its error box (`SurfaceHit::error`, a per-axis bound
+//! the shape computed from its own arithmetic and every transform widened). A ray leaving the
+//! surface starts just outside that box, along the geometric normal on the side it travels to,
+//! and the start is rounded away from the surface: it cannot re-hit the surface it leaves, yet
+//! the offset is as small as the point's own uncertainty — ~1e-16 of the coordinates, never a
+//! fraction of the scene's size or a fixed epsilon. A ray towards a point (a light) is aimed from
+//! that start, so its line passes through the target.
 
 use glam::DVec3;
 
-use crate::opt::Prepared;
+use crate::geometry::SurfaceHit;
+use crate::geometry::rounding::gamma;
 
-/// Relative size of the offset: `EPS_REL · max(|P|∞, scene extent)`. Scaling with the
-/// coordinates keeps it above the rounding error of a hit point (about 1e-16·|P|) at any scale,
-/// from millimetre scenes to the astronomical blue-earth scene (|P| ≈ 1.5e8 → 15 units).
-pub const EPS_REL: f64 = 1e-9;
+/// A surface point rays can leave from: the point, its per-axis error bound and the surface's
+/// geometric normal (either orientation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpawnPoint {
+    /// The point as the object computed it.
+    pub point: DVec3,
+    /// Per-axis bound on its distance from the true surface.
+    pub error: DVec3,
+    /// Unit geometric normal.
+    pub normal: DVec3,
+}
 
-/// The offset along the normal for rays leaving point `p` of `scene`.
-pub fn eps(scene: &Prepared, p: DVec3) -> f64 {
-    (EPS_REL * p.abs().max_element())
-        .max(EPS_REL * scene.extent())
-        .max(1e-300)
+/// How far short of its target a shadow ray stops, in units of the coordinates' magnitude: a
+/// surface through the target (a light lying on a floor) is found at the target's distance up
+/// to the rounding of that intersection, a few ε·(|origin| + |target|) / cos θ for a surface at
+/// incidence θ; 2¹⁰ ε covers incidence down to cos θ ≈ 1/100.
+const SHADOW_ROUNDING_STEPS: u32 = 1024;
+
+impl SpawnPoint {
+    /// Where rays leave the surface of `hit`.
+    pub fn of(hit: &SurfaceHit) -> SpawnPoint {
+        SpawnPoint {
+            point: hit.surface_point,
+            error: hit.error,
+            normal: hit.geometric_normal,
+        }
+    }
+
+    /// The origin of a ray leaving along `dir`: outside the error box on `dir`'s side, rounded
+    /// away from the surface.
+    pub fn origin_towards(&self, dir: DVec3) -> DVec3 {
+        let n = if dir.dot(self.normal) < 0.0 {
+            -self.normal
+        } else {
+            self.normal
+        };
+        let d = n.abs().dot(self.error);
+        let mut o = self.point + d * n;
+        // Rounded away from the surface (by the normal's signs, so a point known exactly still
+        // leaves its surface by one step).
+        for i in 0..3 {
+            if n[i] > 0.0 {
+                o[i] = o[i].next_up();
+            } else if n[i] < 0.0 {
+                o[i] = o[i].next_down();
+            }
+        }
+        o
+    }
+
+    /// A ray leaving the surface along unit `dir` (reflection, refraction).
+    pub fn ray(&self, dir: DVec3) -> crate::geometry::Ray {
+        crate::geometry::Ray::new(self.origin_towards(dir), dir)
+    }
+
+    /// A ray from the surface towards `target` (a light sample), re-aimed from its offset
+    /// origin, with the parameter where it must stop short of the target; `None` when the
+    /// target is the origin itself.
+    pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
+        let origin = self.origin_towards(target - self.point);
+        let d = target - origin;
+        let dist = d.length();
+        if dist.is_nan() || dist <= 0.0 || dist.is_infinite() {
+            return None;
+        }
+        Some((
+            crate::geometry::Ray::new(origin, d / dist),
+            dist - shadow_margin(origin, target, dist),
+        ))
+    }
+}
+
+/// How far short of `target` a visibility ray from `origin` (at distance `dist`) stops, so a
+/// surface through the target does not count as blocking it.
+pub fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
+    gamma(SHADOW_ROUNDING_STEPS) * (origin.abs().max_element() + target.abs().max_element() + dist)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(point: DVec3, error: f64, normal: DVec3) -> SpawnPoint {
+        SpawnPoint {
+            point,
+            error: DVec3::splat(error),
+            normal,
+        }
+    }
+
+    #[test]
+    fn the_origin_leaves_the_error_box_on_the_side_it_travels_to() {
+        let s = at(DVec3::new(1e8, 0.0, 3.0), 1e-8, DVec3::Y);
+        let up = s.origin_towards(DVec3::new(0.3, 1.0, 0.0));
+        let down = s.origin_towards(DVec3::new(0.3, -1.0, 0.0));
+        assert!(up.y > 1e-8 && up.y < 2e-8, "{up}");
+        assert!(down.y < -1e-8 && down.y > -2e-8, "{down}");
+        assert_eq!((up.x, up.z), (1e8, 3.0));
+    }
+
+    #[test]
+    fn an_exact_point_still_moves_off_the_surface() {
+        let s = at(DVec3::new(0.5, 1.0, 0.0), 0.0, DVec3::Y);
+        assert_eq!(s.origin_towards(DVec3::Y).y, 1.0f64.next_up());
+        assert_eq!(s.origin_towards(-DVec3::Y).y, 1.0f64.next_down());
+    }
+
+    #[test]
+    fn a_ray_to_a_target_is_aimed_from_its_origin_and_stops_short() {
+        let s = at(DVec3::new(0.0, 1.0, 0.0), 1e-12, DVec3::Y);
+        let target = DVec3::new(2.0, 0.0, 1.0);
+        let (ray, t_max) = s.ray_to(target).unwrap();
+        let end = ray.at(t_max);
+        assert!((target - end).length() < 1e-12);
+        assert!(((target - ray.origin).normalize() - ray.dir).length() < 1e-15);
+        assert!(t_max < (target - ray.origin).length());
+    }
 }

@@ -64,9 +64,14 @@ pub fn encode(image: &Image, path: &Path) -> Result<Vec<u8>, Diagnostic> {
 
 /// Writes `image` to `path` atomically (temporary sibling file, then rename).
 pub fn save(image: &Image, path: &Path) -> Result<(), Diagnostic> {
-    let bytes = encode(image, path)?;
+    write_atomically(path, &encode(image, path)?)
+}
+
+/// Writes `bytes` to `path` through a temporary sibling file and a rename, so readers see the
+/// old file or the whole new one, never a part.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Diagnostic> {
     let tmp = temp_sibling(path);
-    let write = std::fs::write(&tmp, &bytes).and_then(|()| std::fs::rename(&tmp, path));
+    let write = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
     write.map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         io_error(

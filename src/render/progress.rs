@@ -2,7 +2,7 @@
 //! implements (the CLI draws a bar; `rtc watch` or a time budget would cancel), and prints
 //! nothing itself.
 
-/// The code of the error a cancelled render returns.
+/// The error code of a render its [`Progress`] cancelled.
 pub const CANCELLED: &str = "rtc::render::cancelled";
 
 /// What a render tells its caller while it runs. Every method may be called from any render

@@ -105,6 +105,18 @@ impl Rng {
 }
 
 /// A 32-bit integer hash (Wellons' lowbias32): good avalanche, cheap.
+impl Rng {
+    /// Point `k` of a 2-D Sobol' sequence of its own for decision `stream` of this camera
+    /// sample (Owen-scrambled per sample and stream): `k = 0..n` are stratified over the unit
+    /// square, so the rays of one glossy lobe cover it evenly. `k` < 2^16.
+    pub fn point(&self, stream: u32, k: u32) -> (f64, f64) {
+        let seed = hash(self.seed ^ hash(self.sample ^ hash(stream.wrapping_add(0x632b_e5ab))));
+        let a = sobol_burley::sample(k & 0xffff, 0, seed);
+        let b = sobol_burley::sample(k & 0xffff, 1, seed);
+        (f64::from(a), f64::from(b))
+    }
+}
+
 fn hash(mut x: u32) -> u32 {
     x ^= x >> 16;
     x = x.wrapping_mul(0x7feb_352d);

@@ -50,7 +50,7 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
         Mapping::Spherical => frame.spherical_uv(hit.local_point),
         Mapping::Planar => DVec2::new(p.x - p.x.floor(), p.z - p.z.floor()),
         Mapping::Cylindrical => {
-            let phi = (-p.z).atan2(p.x).rem_euclid(std::f64::consts::TAU);
+            let phi = libm::atan2(-p.z, p.x).rem_euclid(std::f64::consts::TAU);
             DVec2::new(phi / std::f64::consts::TAU, p.y - p.y.floor())
         }
     }
@@ -69,6 +69,8 @@ mod tests {
             geometric_normal: DVec3::Y,
             uv: DVec2::ZERO,
             local_point: p,
+            surface_point: p,
+            error: DVec3::ZERO,
             material: crate::ir::MaterialId(0),
             surface: SurfaceId(0),
         }

@@ -9,9 +9,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::progress::Progress;
 use super::sampler::Rng;
-use super::shading::Ctx;
+use super::shading::{Ctx, LightShare};
+use super::shard::Rows;
 use crate::diag::{Diagnostic, Severity};
-use crate::ir::Color;
 
 /// Rows per task: small enough to balance load over the cores, large enough to amortise scheduling.
 const BAND: usize = 4;
@@ -36,24 +36,27 @@ pub fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
         })
 }
 
-/// Computes `f(x, y, ctx, out)` for every pixel of a `width`×`height` image, row by row from
-/// the top; `f` writes the pixel's `channels` values into `out`. Values come back interleaved
-/// per pixel. Before each band the callback is asked whether to stop: a cancelled render is the
+/// Computes `f(x, y, ctx, out)` for every pixel of the `rows` of a `width`×`height` image, row
+/// by row from the top; `f` writes the pixel's `channels` values into `out` (colours, or any
+/// per-pixel state such as a progressive render's sums). Values come back interleaved per
+/// pixel for the whole image (zero in rows not computed). Before each band the callback is asked whether to stop: a cancelled render is the
 /// error `rtc::render::cancelled`.
-pub fn run<F>(
+pub fn run<T, F>(
     pool: &rayon::ThreadPool,
     width: u32,
     height: u32,
     channels: usize,
+    rows: Rows,
     progress: &dyn Progress,
     f: F,
-) -> Result<(Vec<Color>, Stats), Diagnostic>
+) -> Result<(Vec<T>, Stats), Diagnostic>
 where
-    F: Fn(u32, u32, &mut Ctx, &mut [Color]) + Sync,
+    T: Copy + Default + Send,
+    F: Fn(u32, u32, &mut Ctx, &mut [T]) + Sync,
 {
     let w = width as usize;
     let row = w * channels;
-    let mut values = vec![Color::ZERO; row * height as usize];
+    let mut values = vec![T::default(); row * height as usize];
     let stop = AtomicBool::new(false);
     let stats = pool.install(|| {
         values
@@ -63,16 +66,24 @@ where
                 let mut ctx = Ctx {
                     rng: Rng::new(0, 0, 0, 0),
                     stats: Stats::default(),
+                    lights: LightShare::ALL,
                 };
                 if stop.load(Ordering::Relaxed) || progress.cancelled() {
                     stop.store(true, Ordering::Relaxed);
                     return ctx.stats;
                 }
-                for (i, px) in chunk.chunks_exact_mut(channels).enumerate() {
-                    let (x, y) = ((i % w) as u32, (band * BAND + i / w) as u32);
-                    f(x, y, &mut ctx, px);
+                let mut done = 0;
+                for (r, line) in chunk.chunks_exact_mut(row).enumerate() {
+                    let y = (band * BAND + r) as u32;
+                    if !rows.contains(y) {
+                        continue;
+                    }
+                    for (x, px) in line.chunks_exact_mut(channels).enumerate() {
+                        f(x as u32, y, &mut ctx, px);
+                    }
+                    done += 1;
                 }
-                progress.advance((chunk.len() / row) as u64);
+                progress.advance(done);
                 ctx.stats
             })
             .reduce(Stats::default, |mut a, b| {

@@ -26,8 +26,8 @@ pub struct File {
 /// A statement.
 #[derive(Clone, Debug)]
 pub enum Stmt {
-    /// `import std.x as y`, `import "./f.rtc" { a, b }`.
-    Import(Import),
+    /// `import std.x as y`, `import "./f.rtc" { a, b }` (boxed: rare, and the largest).
+    Import(Box<Import>),
     /// `let name = value`.
     Let(Let),
     /// `fn name(params) { body }`.
@@ -65,10 +65,12 @@ pub struct Import {
 pub struct Let {
     /// Exported with `pub`.
     pub public: bool,
+    /// Declared with `param`: the command line may override its value (`--set name=value`).
+    pub param: bool,
     /// The bound name.
     pub name: Name,
-    /// Optional type annotation.
-    pub ty: Option<TypeAnn>,
+    /// Optional type annotation (boxed: rare, and it would double a statement's size).
+    pub ty: Option<Box<TypeAnn>>,
     /// The value.
     pub value: Expr,
     /// The whole statement.
@@ -294,10 +296,11 @@ pub enum ExprKind {
     Index(Box<Expr>, Box<Expr>),
     /// `a with { f: v }`
     With(Box<Expr>, Vec<Field>),
-    /// `if c { a } else { b }`
-    If(Box<Expr>, Block, Option<Box<Expr>>),
+    /// `if c { a } else { b }` (blocks are boxed here and in `For` so that every expression
+    /// node stays small: a generated file holds millions of them).
+    If(Box<Expr>, Box<Block>, Option<Box<Expr>>),
     /// `for i in r, j in s if c { body }`
-    For(Vec<Generator>, Option<Box<Expr>>, Block),
+    For(Box<[Generator]>, Option<Box<Expr>>, Box<Block>),
     /// `fn(x) x * 2`
     Lambda(Rc<FnDef>),
     /// A `{ ... }` block used as an `else` branch.

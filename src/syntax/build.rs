@@ -11,6 +11,7 @@ use crate::source::{FileId, Span};
 use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
+use crate::syntax::numbers::{self, NumberError};
 use crate::syntax::pratt;
 
 /// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
@@ -88,7 +89,7 @@ impl Builder {
     /// A statement pair (`import_stmt`, `let_stmt`, `fn_def` or `expr`).
     pub fn stmt(&self, p: P) -> Stmt {
         match p.as_rule() {
-            Rule::import_stmt => Stmt::Import(self.import(p)),
+            Rule::import_stmt => Stmt::Import(Box::new(self.import(p))),
             Rule::let_stmt => Stmt::Let(self.let_stmt(p)),
             Rule::fn_def => Stmt::Fn(Rc::new(self.fn_def(p))),
             _ => Stmt::Expr(self.expr(p)),
@@ -167,19 +168,22 @@ impl Builder {
     fn let_stmt(&self, p: P) -> Let {
         let span = self.span(&p);
         let mut public = false;
+        let mut param = false;
         let mut name = None;
         let mut ty = None;
         let mut value = None;
         for q in p.into_inner() {
             match q.as_rule() {
                 Rule::pub_kw => public = true,
+                Rule::param_kw => param = true,
                 Rule::ident => name = Some(self.name(&q)),
-                Rule::type_ann => ty = Some(self.type_ann(q)),
+                Rule::type_ann => ty = Some(Box::new(self.type_ann(q))),
                 _ => value = Some(self.expr(q)),
             }
         }
         Let {
             public,
+            param,
             name: name.expect("grammar: let name"),
             ty,
             value: value.expect("grammar: let value"),
@@ -540,49 +544,31 @@ impl Builder {
     /// A plain number `3`, `0.5`, `2e6` (no unit) as `Int` or `Float`; a too-large integer or
     /// a float that overflows to infinity is an error.
     fn plain_number(&self, p: &P, text: &str) -> ExprKind {
-        if !text.contains(['.', 'e', 'E']) {
-            return match text.parse::<i64>() {
-                Ok(v) => ExprKind::Int(v),
-                Err(_) => {
-                    self.number_error(
-                        p,
-                        "integer literal is too large",
-                        format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
-                    );
-                    ExprKind::Int(0)
-                }
-            };
+        match numbers::plain(text) {
+            Ok(kind) => kind,
+            Err(NumberError::IntTooLarge) => {
+                self.number_error(
+                    p,
+                    "integer literal is too large",
+                    format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
+                );
+                ExprKind::Int(0)
+            }
+            Err(NumberError::TooLarge) => {
+                self.number_error(
+                    p,
+                    "number is too large",
+                    "numbers must be below about 1.8e308".to_owned(),
+                );
+                ExprKind::Float(0.0)
+            }
         }
-        let v = text.parse::<f64>().unwrap_or(f64::NAN);
-        if !v.is_finite() {
-            self.number_error(
-                p,
-                "number is too large",
-                "numbers must be below about 1.8e308".to_owned(),
-            );
-            return ExprKind::Float(0.0);
-        }
-        ExprKind::Float(v)
     }
 
     /// `number`: an Int, a Float or an Angle (`30deg`, `0.5rad`, `0.25turn`, `45°`).
     fn number(&self, p: &P) -> ExprKind {
-        let text = p.as_str();
-        let (digits, to_radians): (&str, fn(f64) -> f64) =
-            if let Some(d) = text.strip_suffix("deg").or_else(|| text.strip_suffix('°')) {
-                (d, f64::to_radians)
-            } else if let Some(d) = text.strip_suffix("rad") {
-                (d, |v| v)
-            } else if let Some(d) = text.strip_suffix("turn") {
-                (d, |v| v * std::f64::consts::TAU)
-            } else {
-                return self.plain_number(p, text);
-            };
-        match self.plain_number(p, digits) {
-            ExprKind::Int(i) => ExprKind::Angle(to_radians(i as f64)),
-            ExprKind::Float(f) => ExprKind::Angle(to_radians(f)),
-            other => other,
-        }
+        let (digits, unit) = numbers::split_unit(p.as_str());
+        numbers::apply_unit(self.plain_number(p, digits), unit)
     }
 
     /// `vec_lit`: `[x, y, z]` of plain numbers, read from the token's text.
@@ -590,11 +576,7 @@ impl Builder {
         let text = p.as_str();
         let mut out = [0.0; 3];
         for (slot, part) in out.iter_mut().zip(text[1..text.len() - 1].split(',')) {
-            *slot = match self.plain_number(p, part.trim()) {
-                ExprKind::Int(i) => i as f64,
-                ExprKind::Float(f) => f,
-                _ => 0.0,
-            };
+            *slot = numbers::component(&self.plain_number(p, part.trim()));
         }
         ExprKind::Vec3(out)
     }
@@ -658,7 +640,7 @@ impl Builder {
                     };
                     Box::new(Expr { kind, span })
                 });
-                ExprKind::If(Box::new(cond), then, els)
+                ExprKind::If(Box::new(cond), Box::new(then), els)
             }
             Rule::for_expr => {
                 let mut gens = Vec::new();
@@ -679,7 +661,11 @@ impl Builder {
                         _ => body = Some(self.block(q)),
                     }
                 }
-                ExprKind::For(gens, filter, body.expect("grammar: for body"))
+                ExprKind::For(
+                    gens.into_boxed_slice(),
+                    filter,
+                    Box::new(body.expect("grammar: for body")),
+                )
             }
             Rule::fn_lit => {
                 let span = self.span(&p);

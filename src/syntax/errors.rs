@@ -150,8 +150,7 @@ fn missing_statement(file: FileId, text: &str, pos: usize) -> Option<Diagnostic>
         .iter()
         .find(|op| rest.starts_with(**op) && !rest[op.len()..].starts_with('='))
         .map(|op| op.len())?;
-    if word.is_empty() || word.starts_with(|c: char| c.is_ascii_digit()) || KEYWORDS.contains(&word)
-    {
+    if word.is_empty() || word.starts_with(|c: char| c.is_ascii_digit()) || is_keyword(word) {
         return None;
     }
     let op_at = at + word_len + (body[word_len..].len() - rest.len());
@@ -193,11 +192,27 @@ fn join_or(words: &[String]) -> String {
     }
 }
 
-/// Words that cannot be names (the grammar's `keyword` rule).
-const KEYWORDS: &[&str] = &[
-    "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
-    "step", "div",
-];
+/// Whether `word` cannot be a name (the grammar's `keyword` rule).
+pub fn is_keyword(word: &str) -> bool {
+    matches!(
+        word,
+        "rtc"
+            | "let"
+            | "fn"
+            | "for"
+            | "in"
+            | "if"
+            | "else"
+            | "import"
+            | "as"
+            | "pub"
+            | "with"
+            | "true"
+            | "false"
+            | "step"
+            | "div"
+    )
+}
 
 /// A description of the text at `pos` and its length in bytes.
 fn found_at(text: &str, pos: usize) -> (String, usize) {
@@ -219,7 +234,7 @@ fn found_at(text: &str, pos: usize) -> (String, usize) {
             .collect();
         let word = word.trim_end_matches('.').to_owned();
         let len = word.len();
-        if KEYWORDS.contains(&word.as_str()) {
+        if is_keyword(&word) {
             return (format!("keyword `{word}`"), len);
         }
         return (format!("`{word}`"), len);

@@ -5,7 +5,9 @@ pub mod ast;
 mod build;
 mod delims;
 mod errors;
+mod fast;
 pub mod intern;
+mod numbers;
 mod pratt;
 
 pub use build::srgb_to_linear;
@@ -30,8 +32,34 @@ const MAX_NESTING: usize = 200;
 
 /// Parses a whole file. Returns the AST (only when there were no syntax errors) and diagnostics.
 pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::Diagnostic>) {
+    let parsed = parse_with(file, text, Path::FastFirst);
+    (parsed.ast, parsed.diags)
+}
+
+/// How statements are read: the fast path first (`parse`), or pest alone (the reference the
+/// fast path is tested against).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Path {
+    FastFirst,
+    #[cfg(test)]
+    PestOnly,
+}
+
+/// A parse's result, with how many statements the fast path read (for its tests).
+struct Parsed {
+    ast: Option<ast::File>,
+    diags: Vec<Diagnostic>,
+    #[cfg_attr(not(test), allow(dead_code))]
+    fast_statements: usize,
+}
+
+fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
     if let Some(d) = too_deep(file, text) {
-        return (None, vec![d]);
+        return Parsed {
+            ast: None,
+            diags: vec![d],
+            fast_statements: 0,
+        };
     }
     let scan = delims::scan(file, text);
     // A delimiter error cuts the file: statements before the one it is in are still parsed (so
@@ -46,9 +74,21 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
             .unwrap_or(0)
     });
     let mut diags = scan.warnings;
-    let mut stmts: Vec<ast::Stmt> = Vec::new();
+    // Every statement starts a top-level line: one allocation for the statement list.
+    let mut stmts: Vec<ast::Stmt> = Vec::with_capacity(scan.top_level_lines.len());
+    let mut fast_statements = 0;
+    let mut memo = fast::Memo::default();
     let (version, mut pos) = header(file, text, &mut diags);
     while pos < cutoff {
+        // Simple one-line statements (most of a generated file) skip pest; see fast.rs.
+        if path == Path::FastFirst
+            && let Some((stmt, next)) = fast::statement(file, text, pos, cutoff, &mut memo)
+        {
+            stmts.push(stmt);
+            fast_statements += 1;
+            pos = next;
+            continue;
+        }
         let rest = &text[pos..cutoff];
         match RtcParser::parse(Rule::stmt_line, rest) {
             Ok(mut pairs) => {
@@ -96,7 +136,11 @@ pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::D
     diags.sort_by_key(|d| d.span.map_or(0, |s| s.start));
     let has_errors = diags.iter().any(Diagnostic::is_error);
     let file_ast = ast::File { version, stmts };
-    (if has_errors { None } else { Some(file_ast) }, diags)
+    Parsed {
+        ast: if has_errors { None } else { Some(file_ast) },
+        diags,
+        fast_statements,
+    }
 }
 
 /// Reads the `rtc N` header; returns the version and the offset after it.
@@ -159,9 +203,10 @@ fn starts_statement(text: &str, at: usize) -> bool {
 
 fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
     let mut depth = 0usize;
-    for (i, c) in text.char_indices() {
+    // Brackets are ASCII, so bytes (not chars) suffice and keep the offsets.
+    for (i, c) in text.bytes().enumerate() {
         match c {
-            '(' | '[' | '{' => {
+            b'(' | b'[' | b'{' => {
                 depth += 1;
                 if depth > MAX_NESTING {
                     return Some(
@@ -175,12 +220,14 @@ fn too_deep(file: FileId, text: &str) -> Option<Diagnostic> {
                     );
                 }
             }
-            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            b')' | b']' | b'}' => depth = depth.saturating_sub(1),
             _ => {}
         }
     }
     None
 }
 
+#[cfg(test)]
+mod fast_tests;
 #[cfg(test)]
 mod tests;

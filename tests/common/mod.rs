@@ -29,6 +29,8 @@ pub fn course_camera(eye: DVec3) -> Camera {
         projection: Projection::Course,
         aperture: 0.0,
         focus_distance: 0.0,
+        shutter: None,
+        motion: None,
         span: Span::default(),
     }
 }
@@ -61,6 +63,7 @@ pub fn light(pos: [f64; 3], color: [f64; 3]) -> Light {
 pub fn sphere(scene: &mut Scene, center: [f64; 3], radius: f64, m: Material) {
     let id = scene.add_material(m);
     scene.objects.push(Object {
+        motion: None,
         shape: Shape::Sphere {
             center: DVec3::from(center),
             radius,

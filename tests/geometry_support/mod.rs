@@ -57,6 +57,7 @@ impl Rng {
 
 pub fn object(shape: Shape, transform: DAffine3) -> Object {
     Object {
+        motion: None,
         shape,
         transform,
         material: None,
@@ -75,6 +76,8 @@ pub fn scene(objects: Vec<Object>) -> Scene {
             projection: Projection::Perspective { fov_y: 0.7 },
             aperture: 0.0,
             focus_distance: 1.0,
+            shutter: None,
+            motion: None,
             span: Span::default(),
         },
         lights: Vec::new(),

@@ -110,6 +110,8 @@ pub const MAT_FIELDS: &[&str] = &[
     "bump",
     "bump_scale",
     "shading",
+    "gloss",
+    "gloss_samples",
 ];
 
 /// Sets one material field with type and range checks (shared by `material` and `with`).
@@ -143,6 +145,19 @@ pub fn set_mat_field(
             let x = types::num(it, v, span)?;
             positive("eta", x, span)?;
             m.m.eta = x;
+        }
+        "gloss" => unit(&mut m.m.gloss)?,
+        "gloss_samples" => {
+            let x = types::int(it, v, span)?;
+            let max = crate::ir::limits::MAX_GLOSS_SAMPLES;
+            check(
+                (1..=i64::from(max)).contains(&x),
+                "gloss_samples",
+                &format!("in 1..={max}"),
+                x as f64,
+                span,
+            )?;
+            m.m.gloss_samples = x as u32;
         }
         "texture" => match v {
             Value::Texture(t) => m.texture = Some(t.clone()),

@@ -66,13 +66,13 @@ fn one_angle(it: &Interp, site: CallSite, args: Vec<ArgVal>) -> R<f64> {
 }
 
 fn sin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Float(one_angle(it, s, a)?.sin()))
+    Ok(Value::Float(libm::sin(one_angle(it, s, a)?)))
 }
 fn cos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Float(one_angle(it, s, a)?.cos()))
+    Ok(Value::Float(libm::cos(one_angle(it, s, a)?)))
 }
 fn tan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Float(one_angle(it, s, a)?.tan()))
+    Ok(Value::Float(libm::tan(one_angle(it, s, a)?)))
 }
 
 /// A domain check that names the function: "`sqrt(x)` needs `x` >= 0, but `x` is -1".
@@ -116,19 +116,19 @@ fn unit_arg(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<f64> {
     Ok(x)
 }
 fn asin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Angle(unit_arg(it, s, a)?.asin()))
+    Ok(Value::Angle(libm::asin(unit_arg(it, s, a)?)))
 }
 fn acos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Angle(unit_arg(it, s, a)?.acos()))
+    Ok(Value::Angle(libm::acos(unit_arg(it, s, a)?)))
 }
 fn atan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Angle(one(it, s, a)?.0.atan()))
+    Ok(Value::Angle(libm::atan(one(it, s, a)?.0)))
 }
 fn atan2(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["y", "x"], a)?;
     let (y, _) = p.num(it, "y")?;
     let (x, _) = p.num(it, "x")?;
-    Ok(Value::Angle(y.atan2(x)))
+    Ok(Value::Angle(libm::atan2(y, x)))
 }
 fn sqrt(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
@@ -171,18 +171,18 @@ fn round(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 fn exp(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let x = one(it, s, a)?.0;
-    finite(s, x, x.exp())
+    finite(s, x, libm::exp(x))
 }
 fn ln(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     domain(s, x > 0.0, "> 0", x, sp)?;
-    Ok(Value::Float(x.ln()))
+    Ok(Value::Float(libm::log(x)))
 }
 fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["base", "exponent"], a)?;
     let (b, _) = p.num(it, "base")?;
     let (e, sp) = p.num(it, "exponent")?;
-    let v = b.powf(e);
+    let v = libm::pow(b, e);
     if !v.is_finite() {
         return Err(
             error("rtc::value::nan", sp, "`pow` has no finite result here")

@@ -57,12 +57,21 @@ pub fn global_names() -> Vec<&'static str> {
     GLOBALS.with(|g| g.keys().map(|k| k.as_str()).collect())
 }
 
-/// Schema-checked arguments of one built-in call.
+/// Schema-checked arguments of one built-in call. It keeps the call's argument vector and
+/// records which argument fills each parameter, so matching allocates nothing.
 pub struct Params {
     site: CallSite,
     names: &'static [&'static str],
-    vals: Vec<Option<(Value, Span)>>,
+    args: Vec<ArgVal>,
+    /// `filled_by[i]`: the index in `args` of parameter `i`'s value, or [`UNFILLED`].
+    filled_by: [u8; MAX_PARAMS],
 }
+
+/// Most parameters a built-in's schema may list.
+const MAX_PARAMS: usize = 32;
+
+/// A parameter without a value (yet, or any more).
+const UNFILLED: u8 = u8::MAX;
 
 /// The parameter slot named `sym` (its text is fetched once, not once per parameter).
 fn slot_of(names: &[&str], sym: Sym) -> Option<usize> {
@@ -74,6 +83,11 @@ impl Params {
     /// Matches `args` to the parameter `names`: positional first, then named; a single record
     /// argument (`f { a: 1 }`) supplies named arguments.
     pub fn new(site: CallSite, names: &'static [&'static str], mut args: Vec<ArgVal>) -> R<Params> {
+        assert!(
+            names.len() <= MAX_PARAMS,
+            "schema of `{}` is too long",
+            site.name
+        );
         let mut from_record = false;
         if args.len() == 1
             && args[0].name.is_none()
@@ -93,16 +107,20 @@ impl Params {
                 span: f.span,
             };
             // An unshared record gives its fields up without cloning them.
-            args = match Rc::try_unwrap(r) {
-                Ok(r) => r.fields.into_iter().map(field).collect(),
-                Err(r) => r.fields.iter().cloned().map(field).collect(),
-            };
+            match Rc::try_unwrap(r) {
+                Ok(r) => args.extend(r.fields.into_iter().map(field)),
+                Err(r) => args.extend(r.fields.iter().cloned().map(field)),
+            }
         }
-        let mut vals: Vec<Option<(Value, Span)>> = Vec::with_capacity(names.len());
-        vals.resize_with(names.len(), || None);
+        let mut params = Params {
+            site,
+            names,
+            args,
+            filled_by: [UNFILLED; MAX_PARAMS],
+        };
         let mut pos = 0;
         let name = site.name;
-        for a in args {
+        for (k, a) in params.args.iter().enumerate() {
             let idx = match a.name {
                 Some(n) => match slot_of(names, n.sym) {
                     Some(i) => i,
@@ -143,7 +161,7 @@ impl Params {
                     pos - 1
                 }
             };
-            if vals[idx].is_some() {
+            if params.filled_by[idx] != UNFILLED {
                 return Err(error(
                     "rtc::arg::duplicate",
                     a.span,
@@ -153,22 +171,27 @@ impl Params {
                 .with_help("remove one of the two")
                 .into());
             }
-            vals[idx] = Some((a.value, a.span));
+            // Every argument before this one filled a distinct parameter, so `k` < 32.
+            params.filled_by[idx] = k as u8;
         }
-        Ok(Params { site, names, vals })
+        Ok(params)
     }
 
     fn idx(&self, name: &str) -> usize {
+        // The name is usually the very literal the schema lists: try its address first.
         self.names
             .iter()
-            .position(|n| *n == name)
+            .position(|n| std::ptr::eq(*n, name))
+            .or_else(|| self.names.iter().position(|n| *n == name))
             .unwrap_or_else(|| panic!("schema of `{}` lacks `{name}`", self.site.name))
     }
 
     /// An optional argument.
     pub fn get(&mut self, name: &str) -> Option<(Value, Span)> {
         let i = self.idx(name);
-        self.vals[i].take()
+        let k = std::mem::replace(&mut self.filled_by[i], UNFILLED);
+        let a = self.args.get_mut(k as usize)?;
+        Some((std::mem::replace(&mut a.value, Value::Unit), a.span))
     }
 
     /// A required argument.

@@ -25,6 +25,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("gooch", gooch),
     ("adaptive", adaptive),
     ("depth", depth),
+    ("flare", flare),
 ];
 
 /// Named enumeration values.
@@ -71,6 +72,9 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             "resolution",
             "aperture",
             "focus",
+            "shutter",
+            "eye_close",
+            "center_close",
         ],
         a,
     )?;
@@ -134,6 +138,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }
     let (focus, fcs) = p.num_or(it, "focus", view.length())?;
     positive("focus", focus, fcs)?;
+    let shutter = crate::eval::motion::shutter(&mut p)?;
+    let motion = crate::eval::motion::camera_motion(it, &mut p, eye, center, up)?;
     Ok(Value::Camera(Rc::new(ir::Camera {
         eye,
         center,
@@ -143,6 +149,8 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         projection: ir::Projection::Perspective { fov_y: fov },
         aperture,
         focus_distance: focus,
+        shutter,
+        motion,
         span: s.span,
     })))
 }
@@ -250,6 +258,47 @@ fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Shading(ir::ShadingModel::Gooch(g)))
 }
 
+/// `flare { ghosts:, dispersal:, halo:, streaks:, threshold:, intensity: }`: lens flare
+/// parameters, each defaulted and range-checked ([`ir::Flare::RANGES`]).
+fn flare(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    const NAMES: [&str; 6] = [
+        "ghosts",
+        "dispersal",
+        "halo",
+        "streaks",
+        "threshold",
+        "intensity",
+    ];
+    let mut p = Params::new(s, &NAMES, a)?;
+    let mut f = ir::Flare::default();
+    let range = |name: &str| {
+        let (_, lo, hi) = ir::Flare::RANGES
+            .into_iter()
+            .find(|(n, _, _)| *n == name)
+            .expect("every flare parameter has a range");
+        (lo, hi)
+    };
+    for (name, slot) in [("ghosts", &mut f.ghosts), ("streaks", &mut f.streaks)] {
+        if let Some((v, sp)) = p.get(name) {
+            let (lo, hi) = range(name);
+            *slot = int_in(it, &v, sp, name, lo as i64, hi as i64)? as u32;
+        }
+    }
+    for (name, slot) in [
+        ("dispersal", &mut f.dispersal),
+        ("halo", &mut f.halo),
+        ("threshold", &mut f.threshold),
+        ("intensity", &mut f.intensity),
+    ] {
+        let def = *slot;
+        let (v, sp) = p.num_or(it, name, def)?;
+        let (lo, hi) = range(name);
+        check(v >= lo && v <= hi, name, &format!("in {lo}..={hi}"), v, sp)?;
+        *slot = v;
+    }
+    Ok(Value::Flare(f))
+}
+
 fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max", "threshold"], a)?;
     let min = match p.get("min") {
@@ -300,6 +349,10 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         "output",
         "material",
         "encoding",
+        "glass_shadows",
+        "flare",
+        "cutoff",
+        "spread_light_samples",
     ];
     let mut p = Params::new(s, names, a)?;
     let mut st = ir::RenderSettings::language_defaults();
@@ -336,6 +389,23 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.shadows = p.bool_or(it, "shadows", st.shadows)?;
+    st.glass_shadows = p.bool_or(it, "glass_shadows", st.glass_shadows)?;
+    if let Some((v, sp)) = p.get("flare") {
+        st.flare = match v {
+            Value::Flare(f) => Some(f),
+            Value::Builtin(b) if b.name == "flare" => Some(ir::Flare::default()),
+            Value::Bool(on) => on.then(ir::Flare::default),
+            other => {
+                return Err(enum_mismatch(
+                    it,
+                    "Flare",
+                    &other,
+                    sp,
+                    "`flare`, `flare { ghosts: 6 }` or `false`",
+                ));
+            }
+        };
+    }
     if let Some((v, sp)) = p.get("max_depth") {
         st.max_depth = int_in(it, &v, sp, "max_depth", 0, MAX_DEPTH.into())? as u32;
     }
@@ -393,6 +463,12 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.background = p.color_or(it, "background", DVec3::ZERO)?;
+    let (cutoff, cs) = p.num_or(it, "cutoff", st.cutoff)?;
+    unit_interval("cutoff", cutoff, cs)?;
+    st.cutoff = cutoff;
+    if p.bool_or(it, "spread_light_samples", false)? {
+        st.light_samples = ir::LightSampling::Spread;
+    }
     if let Some((v, sp)) = p.get("seed") {
         st.seed = int_in(it, &v, sp, "seed", 0, i64::MAX)? as u64;
     }

@@ -12,7 +12,8 @@ use crate::ir::{Color, DepthRange};
 use crate::opt::Prepared;
 use crate::render::View;
 use crate::render::progress::Silent;
-use crate::render::sampler::Grid;
+use crate::render::sampler::{Grid, Rng};
+use crate::render::shard::Rows;
 use crate::render::tiles;
 
 /// The depth-image integrator with its distance range.
@@ -66,11 +67,12 @@ fn hit_range(
     pool: &rayon::ThreadPool,
 ) -> Result<(f64, f64), Diagnostic> {
     let (w, h) = (view.camera.width(), view.camera.height());
-    let (ranges, _) = tiles::run(pool, w, h, 1, &Silent, |x, y, _ctx, out| {
+    let (ranges, _) = tiles::run(pool, w, h, 1, Rows::All, &Silent, |x, y, _ctx, out| {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for k in 0..grid.len() {
             let (sx, sy) = grid.offset(k);
-            let ray = view.camera.ray(x, y, sx, sy, view.lens(x, y, k));
+            let rng = Rng::new(x, y, k, view.seed);
+            let ray = view.ray(x, y, sx, sy, view.lens(x, y, k), &rng);
             if let Some(hit) = scene.world().intersect(&ray, 0.0, f64::INFINITY) {
                 lo = lo.min(hit.t);
                 hi = hi.max(hit.t);

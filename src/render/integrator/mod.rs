@@ -3,6 +3,7 @@
 //! in [`Integrator::new`], [`Integrator::channels`] and [`Integrator::sample`].
 
 pub mod depth;
+pub mod gloss;
 pub mod normal;
 pub mod whitted;
 

@@ -10,11 +10,14 @@
 
 use glam::DVec3;
 
+use super::gloss;
 use crate::geometry::{Ray, SurfaceHit};
+use crate::ir::limits::MAX_GLOSS_SAMPLES;
 use crate::ir::{Color, Material, ShadingModel};
 use crate::opt::{Effects, Prepared};
+use crate::render::offset::SpawnPoint;
 use crate::render::shading::{self, Ctx, Surface};
-use crate::render::{bump, offset, texture};
+use crate::render::{bump, texture};
 
 /// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
 #[derive(Clone, Copy, Debug)]
@@ -90,31 +93,54 @@ pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n
 }
 
-/// Where a path is: how often it has bounced and which media it is inside. (State a path
-/// carries down the recursion lives here, such as a throughput weight for an insignificance
-/// cut-off.)
+/// Where a path is: how often it has bounced, which media it is inside and how much it still
+/// weighs in its pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Path {
     /// Bounces so far (0 for a camera ray).
     pub depth: u32,
     /// The media the ray travels in.
     pub media: Media,
+    /// The product of the reflect/refract coefficients along the path (1 for a camera ray):
+    /// what the insignificance cut-off compares.
+    pub weight: f64,
 }
 
 impl Path {
-    /// A camera ray's path: no bounce yet, outside everything.
+    /// A camera ray's path: no bounce yet, outside everything, full weight.
     pub const CAMERA: Path = Path {
         depth: 0,
         media: Media::OUTSIDE,
+        weight: 1.0,
     };
 
-    fn bounce(self, media: Media) -> Path {
+    fn bounce(self, media: Media, k: f64) -> Path {
         Path {
             depth: self.depth + 1,
             media,
+            weight: self.weight * k,
         }
     }
 }
+
+/// A secondary ray about to be cast: where from, its ideal (mirror or refraction) direction, the
+/// normal of the side it leaves through, and which of the two it is.
+pub struct Outgoing {
+    /// Origin (already offset off the surface).
+    pub from: DVec3,
+    /// The ideal direction (unit).
+    pub dir: DVec3,
+    /// Unit normal of the side the ray leaves through.
+    pub side: DVec3,
+    /// A refracted (not reflected) ray.
+    pub refracted: bool,
+    /// The time of the ray it continues (motion blur).
+    pub time: f64,
+}
+
+/// Fixed-point units per unit of weight in [`crate::render::Stats::cut_weight`] (integers keep
+/// the sum the same for any thread count).
+pub const CUT_WEIGHT_UNIT: f64 = (1u64 << 32) as f64;
 
 /// The shaded-image integrator: Whitted recursion over the prepared scene.
 pub struct Whitted<'a> {
@@ -123,6 +149,7 @@ pub struct Whitted<'a> {
     shading: ShadingModel,
     max_depth: u32,
     background: Color,
+    cutoff: f64,
 }
 
 impl<'a> Whitted<'a> {
@@ -135,6 +162,7 @@ impl<'a> Whitted<'a> {
             shading: s.shading,
             max_depth: s.max_depth,
             background: s.background,
+            cutoff: s.cutoff,
         }
     }
 
@@ -147,14 +175,17 @@ impl<'a> Whitted<'a> {
         let mat = scene.material(hit.material);
         let inside = hit.normal.dot(ray.dir) > 0.0;
         let facing = if inside { -hit.normal } else { hit.normal };
+        let spawn = SpawnPoint::of(&hit);
         let s = Surface {
             p: hit.point,
+            spawn,
             n: self.bumped(&hit, facing, mat),
             v: -ray.dir,
             color: self.base_color(&hit, mat),
             mat,
             uv: hit.uv,
             depth: path.depth,
+            time: ray.time,
         };
         let mut c = match mat.shading.unwrap_or(self.shading) {
             ShadingModel::Phong => shading::phong::shade(scene, &s, ctx),
@@ -174,7 +205,6 @@ impl<'a> Whitted<'a> {
         } else {
             0.0
         };
-        let eps = offset::eps(scene, hit.point);
         let media = path.media;
         if kt > 0.0 {
             let (n1, after) = if inside {
@@ -183,20 +213,68 @@ impl<'a> Whitted<'a> {
                 (media.current(), media.enter(mat.eta))
             };
             match refract(ray.dir, facing, n1, after.current()) {
-                Some(dir) => {
-                    ctx.stats.secondary_rays += 1;
-                    let r = Ray::new(hit.point - eps * facing, dir);
-                    c += kt * self.trace(&r, path.bounce(after), ctx);
+                Some(dir) if self.significant(path.bounce(after, kt), ctx) => {
+                    let out = Outgoing {
+                        from: spawn.ray(dir).origin,
+                        dir,
+                        side: -facing,
+                        refracted: true,
+                        time: ray.time,
+                    };
+                    c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx);
                 }
+                Some(_) => {}
                 None => kr += kt,
             }
         }
-        if kr > 0.0 {
-            ctx.stats.secondary_rays += 1;
-            let r = Ray::new(hit.point + eps * facing, reflect(ray.dir, facing));
-            c += kr * self.trace(&r, path.bounce(media), ctx);
+        if kr > 0.0 && self.significant(path.bounce(media, kr), ctx) {
+            let dir = reflect(ray.dir, facing);
+            let out = Outgoing {
+                from: spawn.ray(dir).origin,
+                dir,
+                side: facing,
+                refracted: false,
+                time: ray.time,
+            };
+            c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx);
         }
         c
+    }
+
+    /// The light arriving along a secondary ray `out` for a path now in state `next`: one ray,
+    /// or the mean of a glossy material's lobe around it ([`gloss`]), `gloss_samples` rays at a
+    /// camera ray's hit and one after that (so rays per pixel grow linearly with depth, not
+    /// exponentially).
+    fn bounce(&self, out: &Outgoing, mat: &Material, next: Path, ctx: &mut Ctx) -> Color {
+        if !self.effects.glossy || mat.gloss <= 0.0 {
+            ctx.stats.secondary_rays += 1;
+            return self.trace(&Ray::new(out.from, out.dir).at_time(out.time), next, ctx);
+        }
+        let depth = next.depth - 1;
+        let n = if depth == 0 {
+            mat.gloss_samples.clamp(1, MAX_GLOSS_SAMPLES)
+        } else {
+            1
+        };
+        let mut sum = Color::ZERO;
+        for k in 0..n {
+            let d = gloss::sample(&ctx.rng, out, mat.gloss, depth, k);
+            ctx.stats.secondary_rays += 1;
+            sum += self.trace(&Ray::new(out.from, d).at_time(out.time), next, ctx);
+        }
+        sum / f64::from(n)
+    }
+
+    /// Whether a secondary ray with this path is worth tracing: its weight is at least the
+    /// cut-off (always with cut-off 0, since weights are positive). A ray cut is counted with
+    /// its weight, which bounds the radiance it would have added for a scene lit at ≤ 1.
+    fn significant(&self, next: Path, ctx: &mut Ctx) -> bool {
+        if next.weight >= self.cutoff {
+            return true;
+        }
+        ctx.stats.cut_rays += 1;
+        ctx.stats.cut_weight += (next.weight * CUT_WEIGHT_UNIT) as u64;
+        false
     }
 
     /// Material colour, or the texture's where the material has one.

@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::{Ctx, Surface, highlight, light_sample, visible};
+use super::{Ctx, Surface, highlight, light_sample, transmission};
 use crate::ir::{Color, GoochParams};
 use crate::opt::Prepared;
 
@@ -17,18 +17,30 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, g: &GoochParams, ctx: &mut Ctx) 
     let warm = DVec3::new(g.y, g.y, 0.0) + g.beta * kd_c;
     let mut c = Color::ZERO;
     for (i, light) in scene.lights().iter().enumerate() {
-        let share = 1.0 / f64::from(light.samples);
-        for k in 0..light.samples {
-            let ls = light_sample(light, i, k, s, &ctx.rng);
+        let (first, count) = ctx.lights.cells(light.samples);
+        let share = 1.0 / f64::from(count);
+        for j in 0..count {
+            let k = (first + j) % light.samples;
+            let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             let tone = cool * (1.0 - n_dot_l) / 2.0 + warm * (1.0 + n_dot_l) / 2.0;
             if n_dot_l <= 0.0 {
                 // Facing away: the blend already leans cool; no highlight from behind.
                 c += share * tone;
-            } else if visible(scene, s, &ls, &mut ctx.stats) {
-                c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
             } else {
-                c += share * cool;
+                match transmission(scene, s, &ls, &mut ctx.stats) {
+                    Some(pass) if pass == Color::ONE => {
+                        c += share * tone + highlight(s, ls.l, n_dot_l) * ls.color;
+                    }
+                    // Through glass: the warm side of the blend in proportion to the light
+                    // that comes through, the highlight tinted by it.
+                    Some(pass) => {
+                        let f = pass.element_sum() / 3.0;
+                        c += share * (cool + f * (tone - cool))
+                            + highlight(s, ls.l, n_dot_l) * ls.color * pass;
+                    }
+                    None => c += share * cool,
+                }
             }
         }
     }

@@ -1,6 +1,7 @@
 //! Shading models: what a surface point looks like under the lights, before reflection and
 //! refraction are added by the Whitted integrator.
 
+pub mod glass_shadow;
 pub mod gooch;
 pub mod hatching;
 pub mod phong;
@@ -8,9 +9,8 @@ pub mod phong;
 use glam::DVec3;
 
 use super::film::Stats;
-use super::offset;
+use super::offset::SpawnPoint;
 use super::sampler::Rng;
-use crate::geometry::Ray;
 use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
 
@@ -20,12 +20,44 @@ pub struct Ctx {
     pub rng: Rng,
     /// Counters of the current tile.
     pub stats: Stats,
+    /// Which cells of each area light the current camera sample takes.
+    pub lights: LightShare,
+}
+
+/// Which cells of an area light one camera sample takes: all of them, or (with
+/// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
+/// of its pixel (or of its refinement block), this sample being number `slot` among them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LightShare {
+    /// The sample's position among the samples sharing the cells.
+    pub slot: u32,
+    /// How many samples share the cells; 0: every sample takes every cell.
+    pub size: u32,
+}
+
+impl LightShare {
+    /// Every sample takes every cell (the course's rule).
+    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
+
+    /// The first cell and the number of cells of a light with `cells` cells this sample takes:
+    /// cells `(first + j) mod cells` for `j < count`, each weighing `1/count`. Dealing
+    /// ⌈cells/size⌉ consecutive cells to each sample covers every cell once per `size` samples
+    /// when `size` divides `cells` (4×4 cells over 2×2 or 4×4 pixel samples).
+    pub fn cells(self, cells: u32) -> (u32, u32) {
+        if self.size == 0 || cells <= 1 {
+            return (0, cells);
+        }
+        let count = cells.div_ceil(self.size);
+        ((self.slot % self.size) * count % cells, count)
+    }
 }
 
 /// A surface point to shade.
 pub struct Surface<'m> {
     /// The hit point.
     pub p: DVec3,
+    /// Where shadow rays leave the surface (the point with its error bound).
+    pub spawn: SpawnPoint,
     /// Unit normal facing the incoming ray (flipped for hits from inside).
     pub n: DVec3,
     /// Unit vector towards the viewer (−ray direction).
@@ -38,6 +70,8 @@ pub struct Surface<'m> {
     pub uv: glam::DVec2,
     /// Recursion depth of the ray that hit it (decorrelates light samples between bounces).
     pub depth: u32,
+    /// The shutter fraction of the ray that hit it (shadow rays see moving objects then).
+    pub time: f64,
 }
 
 /// One sample of one light as seen from a surface point.
@@ -46,15 +80,19 @@ pub struct LightSample {
     pub l: DVec3,
     /// Distance to the sample.
     pub dist: f64,
+    /// The sample's position (shadow rays aim at it).
+    pub position: DVec3,
     /// The light's colour times the sample's share (1/samples).
     pub color: Color,
 }
 
-/// The `k`-th sample of light `index` for a surface point (stratified and jittered on area lights).
+/// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
+/// lights), weighing `1/count` of the light.
 pub fn light_sample(
     light: &PreparedLight,
     index: usize,
     k: u32,
+    count: u32,
     s: &Surface<'_>,
     rng: &Rng,
 ) -> LightSample {
@@ -81,20 +119,39 @@ pub fn light_sample(
     LightSample {
         l: if dist > 0.0 { d / dist } else { s.n },
         dist,
-        color: light.color / f64::from(light.samples),
+        position: pos,
+        color: light.color / f64::from(count),
     }
 }
 
 /// True when nothing blocks the way from the surface to the light sample (always true without
-/// shadows). The shadow ray starts `eps` along the normal on the viewer's side.
+/// shadows). The shadow ray leaves the surface's error box towards the light and is aimed at the
+/// sample from there ([`SpawnPoint::ray_to`]), so a light lying on a surface is not shadowed by it.
 pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
     if !scene.effects().shadows {
         return true;
     }
     stats.shadow_rays += 1;
-    let eps = offset::eps(scene, s.p);
-    let ray = Ray::new(s.p + eps * s.n, ls.l);
-    !scene.world().occluded(&ray, 0.0, ls.dist - eps)
+    match s.spawn.ray_to(ls.position) {
+        Some((ray, t_max)) => !scene.world().occluded(&ray.at_time(s.time), 0.0, t_max),
+        None => true,
+    }
+}
+
+/// The share of light sample `ls` reaching `s`, per channel: `Some(ONE)` when nothing blocks
+/// it, `None` when something opaque does, and with light through glass the tint of the glass
+/// in between ([`glass_shadow`]).
+pub fn transmission(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ls: &LightSample,
+    stats: &mut Stats,
+) -> Option<Color> {
+    if scene.effects().glass_shadows {
+        glass_shadow::transmission(scene, s, ls, stats)
+    } else {
+        visible(scene, s, ls, stats).then_some(Color::ONE)
+    }
 }
 
 /// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.
@@ -105,7 +162,7 @@ pub fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
     let r = 2.0 * n_dot_l * s.n - l;
     let rv = r.dot(s.v);
     if rv > 0.0 {
-        s.mat.ks * rv.powf(s.mat.n)
+        s.mat.ks * libm::pow(rv, s.mat.n)
     } else {
         0.0
     }

@@ -3,7 +3,7 @@
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
 //! is `ka·C` once, without light colour.
 
-use super::{Ctx, Surface, highlight, light_sample, visible};
+use super::{Ctx, Surface, highlight, light_sample, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
 
@@ -18,18 +18,22 @@ pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
         if scene.settings().ambient == AmbientConvention::PerLight {
             c += m.ka * s.color * light.color;
         }
-        for k in 0..light.samples {
-            let ls = light_sample(light, i, k, s, &ctx.rng);
+        let (first, count) = ctx.lights.cells(light.samples);
+        for j in 0..count {
+            let k = (first + j) % light.samples;
+            let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             // Facing away: no diffuse, and the light is behind the surface, so no highlight either
             // (a closed surface would shadow it; this also skips the shadow ray).
             if n_dot_l <= 0.0 {
                 continue;
             }
-            if !visible(scene, s, &ls, &mut ctx.stats) {
+            let Some(pass) = transmission(scene, s, &ls, &mut ctx.stats) else {
                 continue;
-            }
-            c += (m.kd * n_dot_l) * s.color * ls.color + highlight(s, ls.l, n_dot_l) * ls.color;
+            };
+            // `pass` is exactly ONE without glass in the way, so this is the plain sum then.
+            let lc = ls.color * pass;
+            c += (m.kd * n_dot_l) * s.color * lc + highlight(s, ls.l, n_dot_l) * lc;
         }
     }
     c

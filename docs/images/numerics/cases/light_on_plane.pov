@@ -1,0 +1,7 @@
+#version 3.7;
+global_settings { assumed_gamma 1.0 ambient_light rgb 1 max_trace_level 6 adc_bailout 0 }
+background { color rgb 0 }
+camera { perspective location <0.0, 2.0, -6.0> look_at <0.0, 0.5, -0.0> right x*1.3333333333333333 up y angle 51.77400875924256 }
+light_source { <2, 0, -1> color rgb 1 }
+plane { y, 0 texture { pigment { color rgb 1 } finish { ambient 0.2 diffuse 0.8 } } }
+sphere { <0,1,0>, 0.5 texture { pigment { color rgb 1 } finish { ambient 0.2 diffuse 0.8 } } }

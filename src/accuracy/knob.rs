@@ -1,0 +1,288 @@
+//! The quality knobs `rtc accuracy` sweeps, their ladders, the reference setting and how a
+//! setting reads as a `render { ... }` block.
+//!
+//! Adding a knob (the insignificance cut-off `render { cutoff: ... }` is the next one) is one
+//! variant of [`Knob`] with its arm in [`Knob::name`], [`Knob::key`], [`Knob::ladder`] and
+//! [`used_knobs`], one field of [`Setting`] (with its arm in [`Setting::apply`],
+//! [`Setting::render_block`] and [`reference_setting`]); the sweep, the joint product, the
+//! report and the plot take every knob the same way.
+
+use crate::diag::Diagnostic;
+use crate::ir::Sampling;
+use crate::ir::limits::{MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS};
+use crate::opt::{Effects, Prepared, Quality};
+
+/// A quality knob: one dimension of the sweep.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Knob {
+    /// Pixel samples: a regular f×f grid per pixel (antialiasing; with a lens, the lens samples).
+    PixelSamples,
+    /// The threshold of adaptive supersampling, between the scene's `min` and `max`.
+    AdaptiveThreshold,
+    /// Samples per edge of every area light (soft shadows).
+    LightSamples,
+    /// Reflection/refraction bounces.
+    MaxDepth,
+}
+
+impl Knob {
+    /// Every knob, in report order.
+    pub const ALL: [Knob; 4] = [
+        Knob::PixelSamples,
+        Knob::AdaptiveThreshold,
+        Knob::LightSamples,
+        Knob::MaxDepth,
+    ];
+
+    /// The name in tables and plot legends.
+    pub fn name(self) -> &'static str {
+        match self {
+            Knob::PixelSamples => "pixel samples",
+            Knob::AdaptiveThreshold => "adaptive threshold",
+            Knob::LightSamples => "light samples",
+            Knob::MaxDepth => "max depth",
+        }
+    }
+
+    /// The name in JSON.
+    pub fn key(self) -> &'static str {
+        match self {
+            Knob::PixelSamples => "pixel_samples",
+            Knob::AdaptiveThreshold => "adaptive_threshold",
+            Knob::LightSamples => "light_samples",
+            Knob::MaxDepth => "max_depth",
+        }
+    }
+
+    /// The ladder: `base` (the scene's own setting) with this knob alone stepped from cheap to
+    /// dear. Every rung costs less than the reference (see the `REFERENCE_*` constants).
+    pub fn ladder(self, base: &Setting) -> Vec<Setting> {
+        match self {
+            Knob::PixelSamples => PIXEL_LADDER
+                .iter()
+                .map(|&factor| Setting {
+                    sampling: Sampling::Grid { factor },
+                    ..*base
+                })
+                .collect(),
+            Knob::AdaptiveThreshold => {
+                let Sampling::Adaptive { min, max, .. } = base.sampling else {
+                    return Vec::new();
+                };
+                THRESHOLD_LADDER
+                    .iter()
+                    .map(|&threshold| Setting {
+                        sampling: Sampling::Adaptive {
+                            min,
+                            max,
+                            threshold,
+                        },
+                        ..*base
+                    })
+                    .collect()
+            }
+            Knob::LightSamples => LIGHT_LADDER
+                .iter()
+                .map(|&n| Setting {
+                    light_samples: Some(n),
+                    ..*base
+                })
+                .collect(),
+            Knob::MaxDepth => DEPTH_LADDER
+                .iter()
+                .map(|&max_depth| Setting { max_depth, ..*base })
+                .collect(),
+        }
+    }
+}
+
+/// Pixel grid factors swept (samples per axis); the reference uses [`REFERENCE_PIXEL_SAMPLES`].
+pub const PIXEL_LADDER: [u32; 6] = [1, 2, 3, 4, 6, 8];
+/// Adaptive thresholds swept (the scene's `min` and `max` kept), coarse to fine.
+pub const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
+/// Area-light samples per edge swept; the reference uses [`REFERENCE_LIGHT_SAMPLES`].
+pub const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
+/// Bounces swept; the reference uses [`REFERENCE_MAX_DEPTH`].
+pub const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
+
+/// The reference's pixel grid: 16×16 = 256 samples per pixel (twice the ladder's top per axis),
+/// or the scene's own if finer.
+pub const REFERENCE_PIXEL_SAMPLES: u32 = 16;
+/// The reference's area-light samples per edge, or the scene's own if more. Every camera sample
+/// draws its own light samples, so with 16×16 pixel samples each reference pixel averages
+/// 256 × 16 = 4096 shadow samples per light: 7× the ladder's dearest rung at the scene's own
+/// 4×4 pixel grid (16 × 36). More costs minutes per reference on a soft-shadow scene.
+pub const REFERENCE_LIGHT_SAMPLES: u32 = 4;
+/// The reference's bounces: twice the ladder's top (a 16th bounce weighs at most the product of
+/// 16 reflect/refract coefficients), or the scene's own if more.
+pub const REFERENCE_MAX_DEPTH: u32 = 16;
+
+/// One point of a sweep: every knob's value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setting {
+    /// Pixel sampling.
+    pub sampling: Sampling,
+    /// Bounces.
+    pub max_depth: u32,
+    /// Samples per edge of every area light; `None` keeps each light's own.
+    pub light_samples: Option<u32>,
+}
+
+impl Setting {
+    /// The scene's own setting (as prepared).
+    pub fn of(scene: &Prepared) -> Setting {
+        Setting {
+            sampling: scene.settings().sampling,
+            max_depth: scene.settings().max_depth,
+            light_samples: None,
+        }
+    }
+
+    /// Renders `scene` from now on with this setting; `own_lights` holds each light's own
+    /// samples per edge (what `light_samples: None` keeps).
+    pub fn apply(&self, scene: &mut Prepared, own_lights: &[[u32; 2]]) -> Result<(), Diagnostic> {
+        scene.set_quality(Quality {
+            sampling: self.sampling,
+            max_depth: self.max_depth,
+        })?;
+        match self.light_samples {
+            Some(n) => scene.set_light_samples(&vec![[n, n]; own_lights.len()]),
+            None => scene.set_light_samples(own_lights),
+        }
+    }
+
+    /// Camera samples per pixel at most (adaptive: its `max` grid).
+    pub fn pixel_samples(&self) -> u32 {
+        match self.sampling {
+            Sampling::Grid { factor } => factor * factor,
+            Sampling::Adaptive { max, .. } => max * max,
+        }
+    }
+
+    /// A short label: `grid 4, depth 2, light 3`.
+    pub fn label(&self) -> String {
+        let mut parts = vec![match self.sampling {
+            Sampling::Grid { factor } => format!("grid {factor}"),
+            Sampling::Adaptive {
+                min,
+                max,
+                threshold,
+            } => format!("adaptive {min}-{max} t{threshold}"),
+        }];
+        parts.push(format!("depth {}", self.max_depth));
+        if let Some(n) = self.light_samples {
+            parts.push(format!("light {n}"));
+        }
+        parts.join(", ")
+    }
+
+    /// The setting as the fields of a `render { ... }` block (docs/language.md §19), with the
+    /// area lights' `samples:` in a comment when the setting changes them (it is a field of each
+    /// `area_light`, not of `render`).
+    pub fn render_block(&self) -> String {
+        let sampling = match self.sampling {
+            Sampling::Grid { factor } => format!("supersampling: {factor}"),
+            Sampling::Adaptive {
+                min,
+                max,
+                threshold,
+            } => format!("supersampling: adaptive(min: {min}, max: {max}, threshold: {threshold})"),
+        };
+        let mut block = format!("render {{ {sampling}, max_depth: {} }}", self.max_depth);
+        if let Some(n) = self.light_samples {
+            block += &format!("  // and every area_light {{ samples: {n} }}");
+        }
+        block
+    }
+}
+
+/// The knobs `effects` says the scene uses: pixel samples always (every image has edges; with
+/// a lens they are also the lens samples), the adaptive threshold when the scene samples
+/// adaptively, light samples with soft shadows, bounces with reflection or refraction.
+pub fn used_knobs(effects: &Effects, own: &Setting) -> Vec<Knob> {
+    Knob::ALL
+        .into_iter()
+        .filter(|k| match k {
+            Knob::PixelSamples => true,
+            Knob::AdaptiveThreshold => matches!(own.sampling, Sampling::Adaptive { .. }),
+            Knob::LightSamples => effects.soft_shadows,
+            Knob::MaxDepth => effects.reflection || effects.refraction,
+        })
+        .collect()
+}
+
+/// The converged setting the sweep is measured against: every used knob set high (the
+/// `REFERENCE_*` constants, or the scene's own where it is higher), the rest at the scene's.
+pub fn reference_setting(knobs: &[Knob], own: &Setting, own_light_samples: u32) -> Setting {
+    let mut r = *own;
+    for k in knobs {
+        match k {
+            Knob::PixelSamples | Knob::AdaptiveThreshold => {
+                let factor = REFERENCE_PIXEL_SAMPLES
+                    .max(own.pixel_samples().isqrt())
+                    .min(MAX_PIXEL_SAMPLES_PER_AXIS);
+                r.sampling = Sampling::Grid { factor };
+            }
+            Knob::LightSamples => {
+                r.light_samples = Some(
+                    REFERENCE_LIGHT_SAMPLES
+                        .max(own_light_samples)
+                        .min(MAX_LIGHT_SAMPLES_PER_AXIS),
+                );
+            }
+            Knob::MaxDepth => r.max_depth = REFERENCE_MAX_DEPTH.max(own.max_depth).min(MAX_DEPTH),
+        }
+    }
+    r
+}
+
+/// The joint sweep: the product of three rungs (cheapest, middle, dearest) of each knob's
+/// ladder, the sampling knobs sharing one dimension. Its points with the ladders' give the
+/// Pareto front.
+pub fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
+    let three = |ladder: Vec<Setting>| -> Vec<Setting> {
+        if ladder.len() <= 3 {
+            return ladder;
+        }
+        vec![
+            ladder[0],
+            ladder[ladder.len() / 2],
+            ladder[ladder.len() - 1],
+        ]
+    };
+    let mut sampling: Vec<Sampling> = Vec::new();
+    for k in [Knob::PixelSamples, Knob::AdaptiveThreshold] {
+        if knobs.contains(&k) {
+            sampling.extend(three(k.ladder(own)).iter().map(|s| s.sampling));
+        }
+    }
+    let lights: Vec<Option<u32>> = if knobs.contains(&Knob::LightSamples) {
+        three(Knob::LightSamples.ladder(own))
+            .iter()
+            .map(|s| s.light_samples)
+            .collect()
+    } else {
+        vec![own.light_samples]
+    };
+    let depths: Vec<u32> = if knobs.contains(&Knob::MaxDepth) {
+        three(Knob::MaxDepth.ladder(own))
+            .iter()
+            .map(|s| s.max_depth)
+            .collect()
+    } else {
+        vec![own.max_depth]
+    };
+    let mut out = Vec::new();
+    for &sampling in &sampling {
+        for &light_samples in &lights {
+            for &max_depth in &depths {
+                out.push(Setting {
+                    sampling,
+                    max_depth,
+                    light_samples,
+                });
+            }
+        }
+    }
+    out
+}

@@ -1,0 +1,140 @@
+//! The command line of sharded renders: which shard this process is, where its part goes, the
+//! fingerprint of the options that change pixels, and `rtc merge`.
+
+use std::path::{Path, PathBuf};
+
+use rtc::diag::{Diagnostic, IO_ERROR};
+use rtc::ir::Scene;
+use rtc::opt::fingerprint;
+use rtc::render::part::Part;
+use rtc::render::shard::Shard;
+use rtc::source::SourceMap;
+
+use super::report::{self, Format};
+use crate::Outcome;
+
+/// Options that never change a pixel: they may differ between the shards of one render. Every
+/// other option is part of the settings fingerprint, so an option added later is safe by
+/// default (parts rendered with different values are refused, never mixed).
+const NEUTRAL_WITH_VALUE: &[&str] = &[
+    "--shard",
+    "--shards",
+    "-o",
+    "--output",
+    "--threads",
+    "--format",
+];
+const NEUTRAL_FLAGS: &[&str] = &["--stats"];
+
+/// The shard of `--shard` (`K/N` or `auto` with `--shards`), if any.
+pub fn resolve(spec: Option<&str>, shards: Option<u32>) -> Result<Option<Shard>, Diagnostic> {
+    match spec {
+        None => Ok(None),
+        Some("auto") => Shard::from_env(shards, |k| std::env::var(k).ok()).map(Some),
+        Some(text) => Shard::parse(text).map(Some),
+    }
+}
+
+/// Prints a usage diagnostic (no source spans) and gives the usage exit code.
+pub fn usage_error(d: &Diagnostic) -> Outcome {
+    let text = report::render(
+        std::slice::from_ref(d),
+        &SourceMap::new(),
+        "rtc",
+        Format::Human,
+        false,
+    );
+    eprintln!("{}", text.trim_end());
+    Outcome::IoOrUsage
+}
+
+/// Where shard `s` goes: `-o` as given, else the image's name with `.part-K-of-N.rtcpart`.
+pub fn part_path(output: Option<PathBuf>, image: &Path, s: Shard) -> PathBuf {
+    output
+        .unwrap_or_else(|| image.with_extension(format!("part-{}-of-{}.rtcpart", s.index, s.count)))
+}
+
+/// The fingerprint of this process's pixel-changing options: the arguments after `render`
+/// without the scene path (its content is in the scene fingerprint) and the neutral options.
+pub fn settings_fingerprint() -> String {
+    let args: Vec<String> = std::env::args().skip(2).collect();
+    let mut kept = Vec::new();
+    let mut i = 0;
+    let mut seen_file = false;
+    while i < args.len() {
+        let a = args[i].as_str();
+        let name = a.split('=').next().unwrap_or(a);
+        if NEUTRAL_WITH_VALUE.contains(&name) {
+            i += if a.contains('=') { 1 } else { 2 };
+            continue;
+        }
+        if NEUTRAL_FLAGS.contains(&a) {
+        } else if !a.starts_with('-') && !seen_file {
+            seen_file = true;
+        } else {
+            kept.push(a.to_string());
+        }
+        i += 1;
+    }
+    kept.sort();
+    fingerprint::bytes(kept.join("\n").as_bytes())
+}
+
+/// Writes shard `s` of a rendered film to `path` atomically.
+pub fn write_part(
+    film: &rtc::render::film::Film,
+    scene: &Scene,
+    s: Shard,
+    path: &Path,
+) -> Result<(), Diagnostic> {
+    let part = Part::of_film(film, s, fingerprint::scene(scene), settings_fingerprint());
+    rtc::render::output::write_atomically(path, &part.to_bytes())
+}
+
+/// `rtc merge PARTS -o OUTPUT`.
+pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
+    let fail = |d: Diagnostic| {
+        let io = d.code == IO_ERROR;
+        usage_error(&d);
+        if io {
+            Outcome::IoOrUsage
+        } else {
+            Outcome::SceneErrors
+        }
+    };
+    if let Err(d) = rtc::render::output::encode(&rtc::render::Image::new(1, 1), output) {
+        return fail(d);
+    }
+    let mut parts = Vec::new();
+    for p in paths {
+        let bytes = match std::fs::read(p) {
+            Ok(b) => b,
+            Err(e) => {
+                return fail(
+                    Diagnostic::new(
+                        rtc::diag::Severity::Error,
+                        IO_ERROR,
+                        None,
+                        format!("cannot read `{}`: {e}", p.display()),
+                    )
+                    .with_help("check the path of each part"),
+                );
+            }
+        };
+        match Part::from_bytes(&bytes, p) {
+            Ok(part) => parts.push((p.clone(), part)),
+            Err(d) => return fail(d),
+        }
+    }
+    let film = match rtc::render::merge::merge(&parts) {
+        Ok(f) => f,
+        Err(d) => return fail(d),
+    };
+    match rtc::render::output::save(&film.to_image(), output) {
+        Ok(()) => {
+            eprintln!("merged {} parts into {}", parts.len(), output.display());
+            Outcome::Ok
+        }
+        Err(d) => fail(d),
+    }
+}

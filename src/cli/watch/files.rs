@@ -1,0 +1,138 @@
+//! The files a watched scene depends on and their content hashes: the scene, every module it
+//! imported, every mesh (with the MTL files it names) and texture image it loads. A change is a
+//! changed hash, not a changed modification time, so an editor that rewrites a file unchanged
+//! (or touches it) does not cost a render.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::hash::{Hash, Hasher};
+use std::path::{Path, PathBuf};
+
+use rtc::ir::{Object, Scene, Shape, Texture};
+use rtc::source::SourceMap;
+
+/// A path's content hash; `None` when it cannot be read (missing, being replaced).
+pub type ContentHash = Option<u64>;
+
+/// Hashes a file's bytes (SipHash from std: no collision matters here, only change).
+pub fn hash_file(path: &Path) -> ContentHash {
+    let bytes = std::fs::read(path).ok()?;
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    bytes.hash(&mut h);
+    Some(h.finish())
+}
+
+/// Every file an evaluation read or a render will read: the scene, the source files in
+/// `sources` that exist on disk (the built-in `std.*` modules do not), meshes, their MTL
+/// files and texture images.
+pub fn dependencies(
+    scene_file: &Path,
+    sources: &SourceMap,
+    scene: Option<&Scene>,
+) -> BTreeSet<PathBuf> {
+    let mut out = BTreeSet::new();
+    out.insert(scene_file.to_path_buf());
+    for f in sources.files() {
+        if f.path.is_file() {
+            out.insert(f.path.clone());
+        }
+    }
+    if let Some(scene) = scene {
+        for o in &scene.objects {
+            meshes(o, &mut out);
+        }
+        for t in &scene.textures {
+            if let Texture::Image { path, .. } = t {
+                out.insert(path.clone());
+            }
+        }
+    }
+    out
+}
+
+fn meshes(o: &Object, out: &mut BTreeSet<PathBuf>) {
+    match &o.shape {
+        Shape::Mesh { path, .. } => {
+            out.extend(mtl_files(path));
+            out.insert(path.clone());
+        }
+        Shape::Csg { children, .. } => children.iter().for_each(|c| meshes(c, out)),
+        _ => {}
+    }
+}
+
+/// The MTL files an OBJ names on its `mtllib` lines, resolved against its folder.
+fn mtl_files(obj: &Path) -> Vec<PathBuf> {
+    let Ok(text) = std::fs::read_to_string(obj) else {
+        return Vec::new();
+    };
+    let dir = obj.parent().unwrap_or(Path::new(""));
+    text.lines()
+        .filter_map(|l| l.trim_start().strip_prefix("mtllib"))
+        .flat_map(|rest| {
+            rest.split_whitespace()
+                .map(|n| dir.join(n))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// The folder to watch for a file: its parent, `.` for a bare name. Editors save by writing a
+/// new file and renaming it over the old one, which replaces the watched inode; watching the
+/// folder sees the rename.
+pub fn folder_of(path: &Path) -> PathBuf {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+/// The last seen content of every dependency.
+#[derive(Debug, Default)]
+pub struct Snapshot {
+    hashes: BTreeMap<PathBuf, ContentHash>,
+}
+
+impl Snapshot {
+    /// Hashes every file in `files` now.
+    pub fn take(files: &BTreeSet<PathBuf>) -> Snapshot {
+        Snapshot {
+            hashes: files.iter().map(|p| (p.clone(), hash_file(p))).collect(),
+        }
+    }
+
+    /// True when any file's content differs from this snapshot (or was added or removed).
+    pub fn differs_from(&self, now: &Snapshot) -> bool {
+        self.hashes != now.hashes
+    }
+
+    /// The files recorded.
+    pub fn files(&self) -> BTreeSet<PathBuf> {
+        self.hashes.keys().cloned().collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_bare_file_name_is_watched_through_the_current_folder() {
+        assert_eq!(folder_of(Path::new("scene.rtc")), PathBuf::from("."));
+        assert_eq!(folder_of(Path::new("a/scene.rtc")), PathBuf::from("a"));
+    }
+
+    #[test]
+    fn a_rewrite_with_the_same_bytes_is_no_change() {
+        let dir = std::env::temp_dir().join(format!("rtc-watch-files-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let f = dir.join("s.rtc");
+        std::fs::write(&f, "a").unwrap();
+        let files: BTreeSet<PathBuf> = [f.clone()].into();
+        let before = Snapshot::take(&files);
+        std::fs::write(&f, "a").unwrap();
+        assert!(!before.differs_from(&Snapshot::take(&files)));
+        std::fs::write(&f, "b").unwrap();
+        assert!(before.differs_from(&Snapshot::take(&files)));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

@@ -1,0 +1,223 @@
+//! Motion in the language: `obj.moving(translate:, rotate:, scale:)`, the camera's `shutter:`,
+//! `eye_close:` and `center_close:`, and `obj.look_at(target)` / `look_at(from:, to:, up:)`.
+
+use std::rc::Rc;
+
+use glam::{DAffine3, DMat3, DQuat, DVec3};
+
+use super::builtins::{Params, check_shown};
+use super::call::{ArgVal, CallSite};
+use super::error::{R, error};
+use super::interp::Interp;
+use super::types;
+use super::value::{Obj, ObjShape, Value};
+use crate::ir::{self, Motion};
+use crate::source::Span;
+
+/// `obj.moving(translate:, rotate:, scale:)`: the change of the object's placement from shutter
+/// open to shutter close, applied after its placement (as a `.translate(...)` would be).
+pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(site, &["translate", "rotate", "scale"], args)?;
+    let translate = p.vec3_or(it, "translate", DVec3::ZERO)?;
+    let rotate = match p.get("rotate") {
+        None => DQuat::IDENTITY,
+        Some((v, sp)) => rotation(it, &v, sp)?,
+    };
+    let scale = match p.get("scale") {
+        None => DVec3::ONE,
+        Some((v, sp)) => {
+            let s = match v.as_f64() {
+                Some(x) => DVec3::splat(x),
+                None => types::vec3(it, &v, sp)?,
+            };
+            let shown = format!("[{}, {}, {}]", s.x, s.y, s.z);
+            check_shown(
+                s.min_element() > 0.0 && s.is_finite(),
+                "scale",
+                "> 0 in every axis",
+                &shown,
+                sp,
+            )?;
+            s
+        }
+    };
+    if let Some(inner) = already_moving(&o) {
+        let mut d = error(
+            "rtc::motion::nested",
+            site.span,
+            "this object already moves",
+        )
+        .with_label("a second motion")
+        .with_help("give the object one `.moving(...)` with the whole change (translate, rotate and scale together)");
+        if inner != o.span {
+            d = d.with_secondary(inner, "this member moves on its own");
+        }
+        return Err(d.into());
+    }
+    Rc::make_mut(&mut o).motion = Some(Motion::new(translate, rotate, scale));
+    Ok(Value::Object(o))
+}
+
+/// The span of the object itself, or of a member of its group, that already has a motion. CSG
+/// operands may move inside a moving CSG node (each level moves rays by its own motion); a
+/// group is flattened, so its members cannot.
+fn already_moving(o: &Obj) -> Option<Span> {
+    if o.motion.is_some() {
+        return Some(o.span);
+    }
+    match &o.shape {
+        ObjShape::Group(ch) => ch.iter().find_map(already_moving),
+        _ => None,
+    }
+}
+
+/// A rotation transform (`rotate(y: 90deg)`) as a unit quaternion.
+fn rotation(it: &Interp, v: &Value, sp: Span) -> R<DQuat> {
+    let Value::Transform(t) = v else {
+        return Err(types::mismatch(it, "Transform", v, sp).into());
+    };
+    let m = t.matrix3;
+    let orthonormal = (m.transpose() * m - DMat3::IDENTITY)
+        .to_cols_array()
+        .iter()
+        .all(|x| x.abs() < 1e-9);
+    if !orthonormal || m.determinant() <= 0.0 || t.translation.length() > 1e-9 {
+        return Err(error(
+            "rtc::motion::not_rotation",
+            sp,
+            "`rotate:` must be a rotation about the origin",
+        )
+        .with_label("this transform scales, shears, mirrors or moves")
+        .with_help("write the rotation alone, e.g. `rotate: rotate(y: 90deg)`; put moves in `translate:` and sizes in `scale:`")
+        .into());
+    }
+    Ok(DQuat::from_mat3(&m).normalize())
+}
+
+/// The camera's `shutter: [open, close]` (fractions of a frame, 0 ≤ open ≤ close ≤ 1).
+pub fn shutter(p: &mut Params) -> R<Option<ir::Shutter>> {
+    let Some((v, sp)) = p.get("shutter") else {
+        return Ok(None);
+    };
+    let pair = match &v {
+        Value::List(l) if l.len() == 2 => Some((l[0].as_f64(), l[1].as_f64())),
+        _ => None,
+    };
+    let Some((Some(open), Some(close))) = pair else {
+        return Err(error(
+            "rtc::type::mismatch",
+            sp,
+            format!("expected `[open, close]`, found `{}`", v.type_name()),
+        )
+        .with_label("not a pair of numbers")
+        .with_help("write `shutter: [0, 0.5]` (fractions of a frame)")
+        .into());
+    };
+    if close < open {
+        return Err(error(
+            "rtc::camera::shutter",
+            sp,
+            format!("the shutter closes ({close}) before it opens ({open})"),
+        )
+        .with_label("`close` is less than `open`")
+        .with_help(format!("swap them: `shutter: [{close}, {open}]`"))
+        .into());
+    }
+    let shown = format!("[{open}, {close}]");
+    check_shown(
+        open >= 0.0 && close <= 1.0,
+        "shutter",
+        "within [0, 1] (fractions of a frame)",
+        &shown,
+        sp,
+    )?;
+    Ok(Some(ir::Shutter { open, close }))
+}
+
+/// `eye_close:` and `center_close:`: where the camera is and looks when the shutter closes.
+pub fn camera_motion(
+    it: &Interp,
+    p: &mut Params,
+    eye: DVec3,
+    center: DVec3,
+    up: DVec3,
+) -> R<Option<ir::CameraMotion>> {
+    let eye_arg = p.get("eye_close");
+    let center_arg = p.get("center_close");
+    let span = eye_arg.as_ref().or(center_arg.as_ref()).map(|(_, s)| *s);
+    let Some(span) = span else {
+        return Ok(None);
+    };
+    let end = |a: Option<(Value, Span)>, d: DVec3| match a {
+        Some((v, s)) => types::vec3(it, &v, s),
+        None => Ok(d),
+    };
+    let m = ir::CameraMotion {
+        eye: end(eye_arg, eye)?,
+        center: end(center_arg, center)?,
+    };
+    let view = m.center - m.eye;
+    if view.length_squared() == 0.0
+        || up.cross(view).length_squared() <= 1e-12 * up.length_squared() * view.length_squared()
+    {
+        return Err(error(
+            "rtc::camera::degenerate",
+            span,
+            "at shutter close the camera looks at itself or along `up`",
+        )
+        .with_label("the view at shutter close")
+        .with_help("keep `center_close` away from `eye_close` and off the `up` line through it")
+        .into());
+    }
+    Ok((m.eye != eye || m.center != center).then_some(m))
+}
+
+/// `look_at(from:, to:, up:)`: places an object made at the origin at `from`, its +Z axis
+/// turned towards `to` and its +Y axis towards `up`.
+pub fn look_at_fn(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["from", "to", "up"], a)?;
+    let from = p.vec3_or(it, "from", DVec3::ZERO)?;
+    let (to, ts) = p.vec3(it, "to")?;
+    let up = p.vec3_or(it, "up", DVec3::Y)?;
+    let r = aim(to - from, up, ts)?;
+    Ok(Value::Transform(Rc::new(
+        DAffine3::from_translation(from) * r,
+    )))
+}
+
+/// `obj.look_at(to, up:)`: turns the object about its own origin so that what was its +Z axis
+/// points at `to` (and +Y towards `up`).
+pub fn look_at_method(
+    it: &mut Interp,
+    site: CallSite,
+    args: Vec<ArgVal>,
+) -> R<(DVec3, DVec3, Span)> {
+    let mut p = Params::new(site, &["to", "up"], args)?;
+    let (to, ts) = p.vec3(it, "to")?;
+    let up = p.vec3_or(it, "up", DVec3::Y)?;
+    Ok((to, up, ts))
+}
+
+/// The transform `obj.look_at(to, up)` applies to an object whose origin is at `origin`.
+pub fn look_at_about(origin: DVec3, to: DVec3, up: DVec3, span: Span) -> R<DAffine3> {
+    let r = aim(to - origin, up, span)?;
+    Ok(DAffine3::from_translation(origin) * r * DAffine3::from_translation(-origin))
+}
+
+/// The rotation taking +Z to `dir` and +Y as close to `up` as it can.
+fn aim(dir: DVec3, up: DVec3, span: Span) -> R<DAffine3> {
+    let z = dir.normalize_or_zero();
+    let x = up.cross(z).normalize_or_zero();
+    if z == DVec3::ZERO || x == DVec3::ZERO || !x.is_finite() {
+        return Err(error(
+            "rtc::param::degenerate",
+            span,
+            "`look_at` has no direction to turn to",
+        )
+        .with_label("the target is at the object's origin, or straight along `up`")
+        .with_help("move the target away from the origin, or pass another `up:` (e.g. `up: Z`)")
+        .into());
+    }
+    let y = z.cross(x);
+    Ok(DAffine3::from_mat3(DMat3::from_cols(x, y, z)))
+}

@@ -1,0 +1,82 @@
+//! A scene's fingerprint: the SHA-256 of everything that decides its pixels. The IR is the
+//! whole input of the renderer, so the fingerprint hashes the IR's debug form (shapes, materials,
+//! lights, camera, settings, spans) and the bytes of every file the renderer will read: image
+//! textures, OBJ meshes and the material libraries (`mtllib`) they name. Shards of one render
+//! carry it so `rtc merge` can refuse parts of an edited scene.
+
+use std::path::{Path, PathBuf};
+
+use sha2::{Digest, Sha256};
+
+use crate::ir::{Object, Scene, Shape, Texture};
+
+/// The hex SHA-256 fingerprint of `scene` and the files it reads (a missing file hashes as
+/// absent: the render itself reports it).
+pub fn scene(scene: &Scene) -> String {
+    let mut h = Sha256::new();
+    h.update(format!("{scene:?}").as_bytes());
+    for path in files(scene) {
+        h.update(path.to_string_lossy().as_bytes());
+        match std::fs::read(&path) {
+            Ok(bytes) => {
+                h.update((bytes.len() as u64).to_le_bytes());
+                h.update(&bytes);
+            }
+            Err(_) => h.update(b"absent"),
+        }
+    }
+    hex(&h.finalize())
+}
+
+/// The hex SHA-256 of `bytes`.
+pub fn bytes(bytes: &[u8]) -> String {
+    hex(&Sha256::digest(bytes))
+}
+
+fn hex(digest: &[u8]) -> String {
+    digest.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Every file the renderer reads for `scene`, in a fixed order.
+fn files(scene: &Scene) -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    for t in &scene.textures {
+        if let Texture::Image { path, .. } = t {
+            out.push(path.clone());
+        }
+    }
+    let mut meshes = Vec::new();
+    for o in &scene.objects {
+        collect_meshes(o, &mut meshes);
+    }
+    for m in meshes {
+        out.extend(material_libraries(&m));
+        out.push(m);
+    }
+    out
+}
+
+fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
+    match &o.shape {
+        Shape::Mesh { path, .. } => out.push(path.clone()),
+        Shape::Csg { children, .. } => children.iter().for_each(|c| collect_meshes(c, out)),
+        _ => {}
+    }
+}
+
+/// The `mtllib` files an OBJ names, resolved beside it as the OBJ loader does.
+fn material_libraries(obj: &Path) -> Vec<PathBuf> {
+    let Ok(text) = std::fs::read(obj) else {
+        return Vec::new();
+    };
+    let dir = obj.parent().unwrap_or(Path::new("."));
+    String::from_utf8_lossy(&text)
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("mtllib"))
+        .flat_map(|rest| {
+            rest.split_whitespace()
+                .map(|n| dir.join(n))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}

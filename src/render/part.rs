@@ -1,0 +1,191 @@
+//! Partial renders: what `rtc render --shard K/N` writes and `rtc merge` reads. A part holds the
+//! film's unencoded linear channels (`f64`, so a merged film is bit for bit the single render's)
+//! for the rows of its shard, with a header that records the pixel bounds, the scene's
+//! fingerprint (the scene and every file it reads) and the fingerprint of the command-line
+//! settings that change pixels.
+//!
+//! Layout: the line `rtc-part 1`, one line of JSON (the header), then the values as
+//! little-endian `f64`, for each row of the part from the top, each pixel from the left, each
+//! channel in header order, red, green, blue. The header's `payload` is the SHA-256 of those
+//! bytes, so a truncated or damaged part is refused.
+
+use std::ops::Range;
+use std::path::Path;
+
+use glam::DVec3;
+
+use super::film::{Channel, Film, Stats};
+use super::shard::Shard;
+use crate::diag::{Diagnostic, Severity};
+use crate::ir::{Color, Encoding};
+use crate::opt::fingerprint;
+
+/// The first line of every part file.
+pub const MAGIC: &str = "rtc-part 1";
+
+/// One shard's share of a render.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Part {
+    /// Fingerprint of the scene and the files it reads.
+    pub scene: String,
+    /// Fingerprint of the command-line settings that change pixels.
+    pub settings: String,
+    /// Width of the whole image.
+    pub width: u32,
+    /// Height of the whole image.
+    pub height: u32,
+    /// The film's channels.
+    pub channels: Vec<Channel>,
+    /// How the merged colour is quantised.
+    pub encoding: Encoding,
+    /// Which shard this is.
+    pub shard: Shard,
+    /// The rows it holds, from the top (`shard.bands(height)`).
+    pub rows: Vec<Range<u32>>,
+    /// What rendering it took.
+    pub stats: Stats,
+    /// The values of its rows, interleaved per pixel as [`Film::new`] takes them.
+    pub values: Vec<Color>,
+}
+
+impl Part {
+    /// The shard's rows of a film rendered with `RenderOptions { shard: Some(shard), .. }`.
+    pub fn of_film(film: &Film, shard: Shard, scene: String, settings: String) -> Part {
+        let rows = shard.bands(film.height);
+        let values = rows
+            .iter()
+            .flat_map(|r| film.interleaved(r.clone()))
+            .collect();
+        Part {
+            scene,
+            settings,
+            width: film.width,
+            height: film.height,
+            channels: film.channels().to_vec(),
+            encoding: film.encoding,
+            shard,
+            rows,
+            stats: film.stats,
+            values,
+        }
+    }
+
+    /// The file's bytes.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut payload = Vec::with_capacity(self.values.len() * 24);
+        for v in &self.values {
+            for c in v.to_array() {
+                payload.extend_from_slice(&c.to_le_bytes());
+            }
+        }
+        let s = &self.stats;
+        let header = serde_json::json!({
+            "scene": self.scene,
+            "settings": self.settings,
+            "width": self.width,
+            "height": self.height,
+            "channels": self.channels.iter().map(|c| c.name()).collect::<Vec<_>>(),
+            "encoding": encoding_name(self.encoding),
+            "shard": [self.shard.index, self.shard.count],
+            "rows": self.rows.iter().map(|r| [r.start, r.end]).collect::<Vec<_>>(),
+            "stats": [s.camera_rays, s.secondary_rays, s.shadow_rays, s.refined_pixels, s.cut_rays, s.cut_weight],
+            "payload": fingerprint::bytes(&payload),
+        });
+        let mut out = format!("{MAGIC}\n{header}\n").into_bytes();
+        out.extend_from_slice(&payload);
+        out
+    }
+
+    /// Reads a part from the bytes of `path`.
+    pub fn from_bytes(bytes: &[u8], path: &Path) -> Result<Part, Diagnostic> {
+        let bad = |why: &str| {
+            Diagnostic::new(
+                Severity::Error,
+                "rtc::merge::malformed",
+                None,
+                format!("`{}` is not a readable rtc part: {why}", path.display()),
+            )
+            .with_help("re-render this shard: `rtc render SCENE --shard K/N -o PART`")
+        };
+        let mut lines = bytes.splitn(3, |b| *b == b'\n');
+        if lines.next() != Some(MAGIC.as_bytes()) {
+            return Err(bad("it does not start with `rtc-part 1`"));
+        }
+        let header = lines.next().ok_or_else(|| bad("the header is missing"))?;
+        let payload = lines.next().unwrap_or(&[]);
+        let h: serde_json::Value =
+            serde_json::from_slice(header).map_err(|_| bad("the header is not JSON"))?;
+        let text = |k: &str| h[k].as_str().map(str::to_owned);
+        let int = |v: &serde_json::Value| v.as_u64().and_then(|n| u32::try_from(n).ok());
+        let pair = |v: &serde_json::Value| Some((int(&v[0])?, int(&v[1])?));
+        let missing = |k: &str| bad(&format!("the header has no valid `{k}`"));
+        let scene = text("scene").ok_or_else(|| missing("scene"))?;
+        let settings = text("settings").ok_or_else(|| missing("settings"))?;
+        let width = int(&h["width"]).ok_or_else(|| missing("width"))?;
+        let height = int(&h["height"]).ok_or_else(|| missing("height"))?;
+        let channels: Vec<Channel> = h["channels"]
+            .as_array()
+            .and_then(|a| a.iter().map(|c| Channel::named(c.as_str()?)).collect())
+            .ok_or_else(|| missing("channels"))?;
+        let encoding = text("encoding")
+            .and_then(|e| encoding_named(&e))
+            .ok_or_else(|| missing("encoding"))?;
+        let (k, n) = pair(&h["shard"]).ok_or_else(|| missing("shard"))?;
+        let shard = Shard::new(k, n).map_err(|_| missing("shard"))?;
+        let rows: Vec<Range<u32>> = h["rows"]
+            .as_array()
+            .and_then(|a| a.iter().map(|r| pair(r).map(|(a, b)| a..b)).collect())
+            .ok_or_else(|| missing("rows"))?;
+        if rows != shard.bands(height) {
+            return Err(bad(&format!(
+                "its rows are not those of shard {k}/{n} of a {height}-row image"
+            )));
+        }
+        let st = |i: usize| h["stats"][i].as_u64().unwrap_or(0);
+        let stats = Stats {
+            camera_rays: st(0),
+            secondary_rays: st(1),
+            shadow_rays: st(2),
+            refined_pixels: st(3),
+            cut_rays: st(4),
+            cut_weight: st(5),
+        };
+        if text("payload").as_deref() != Some(fingerprint::bytes(payload).as_str()) {
+            return Err(bad("its pixel data is truncated or damaged"));
+        }
+        let pixels: usize = rows.iter().map(|r| r.len()).sum::<usize>() * width as usize;
+        if payload.len() != pixels * channels.len() * 24 {
+            return Err(bad("its pixel data has the wrong size"));
+        }
+        let f = |c: &[u8]| f64::from_le_bytes(c.try_into().unwrap_or([0; 8]));
+        let values = payload
+            .chunks_exact(24)
+            .map(|c| DVec3::new(f(&c[0..8]), f(&c[8..16]), f(&c[16..24])))
+            .collect();
+        Ok(Part {
+            scene,
+            settings,
+            width,
+            height,
+            channels,
+            encoding,
+            shard,
+            rows,
+            stats,
+            values,
+        })
+    }
+}
+
+fn encoding_name(e: Encoding) -> &'static str {
+    match e {
+        Encoding::Linear => "linear",
+        Encoding::Srgb => "srgb",
+    }
+}
+
+fn encoding_named(name: &str) -> Option<Encoding> {
+    [Encoding::Linear, Encoding::Srgb]
+        .into_iter()
+        .find(|e| encoding_name(*e) == name)
+}

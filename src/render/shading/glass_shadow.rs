@@ -1,0 +1,57 @@
+//! Light through glass: with `render { glass_shadows: true }` a shadow ray passes through
+//! refractive surfaces instead of stopping at them.
+//!
+//! Rule: every surface the shadow ray crosses multiplies the light by its material's
+//! `refract · colour` (a closed glass object is crossed twice, so it passes
+//! `(refract · colour)²`); an opaque surface (`refract = 0`) blocks it. The ray is not bent and
+//! Fresnel reflection is not counted: the shadow is the glass's tinted, lighter silhouette, not a
+//! caustic.
+
+use super::{LightSample, Surface};
+use crate::ir::Color;
+use crate::opt::Prepared;
+use crate::render::film::Stats;
+use crate::render::offset::SpawnPoint;
+
+/// Most surfaces one shadow ray passes through before it counts as blocked (a stack of glass
+/// panes deeper than this passes next to nothing anyway).
+const MAX_CROSSINGS: u32 = 32;
+
+/// The share of light sample `ls` that reaches surface point `s` through the glass in between,
+/// per channel; `None` when an opaque surface blocks it.
+pub fn transmission(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ls: &LightSample,
+    stats: &mut Stats,
+) -> Option<Color> {
+    let Some((first, mut left)) = s.spawn.ray_to(ls.position) else {
+        return Some(Color::ONE);
+    };
+    let mut ray = first.at_time(s.time);
+    let mut pass = Color::ONE;
+    for _ in 0..MAX_CROSSINGS {
+        stats.shadow_rays += 1;
+        let Some(hit) = scene.world().intersect(&ray, 0.0, left) else {
+            return Some(pass);
+        };
+        let m = scene.material(hit.material);
+        if m.refract <= 0.0 {
+            return None;
+        }
+        pass *= m.refract * m.color;
+        if pass.max_element() <= 0.0 {
+            return None;
+        }
+        // Leave the glass on the far side and aim at the light again from there.
+        let Some((next, t_max)) = SpawnPoint::of(&hit).ray_to(ls.position) else {
+            return Some(pass);
+        };
+        ray = next.at_time(s.time);
+        left = t_max;
+        if left <= 0.0 {
+            return Some(pass);
+        }
+    }
+    None
+}

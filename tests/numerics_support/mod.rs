@@ -1,0 +1,60 @@
+//! Shared helpers of the numerics tests: render a scene written in rtc, compare images.
+#![allow(dead_code)]
+
+use std::path::Path;
+
+use rtc::eval::{EvalOptions, load_source};
+use rtc::render::{Image, RenderOptions, render_image};
+use rtc::source::SourceMap;
+
+/// Renders `src` (an rtc scene) single-threaded.
+pub fn render_rtc(src: &str) -> Image {
+    let mut sources = SourceMap::default();
+    let loaded = load_source(
+        Path::new("tests/numerics.rtc"),
+        src,
+        &mut sources,
+        &EvalOptions::default(),
+    );
+    let scene = loaded
+        .scene
+        .unwrap_or_else(|| panic!("scene evaluates: {:?}\n{src}", loaded.diagnostics.items));
+    render_image(
+        &scene,
+        &RenderOptions {
+            threads: 1,
+            shard: None,
+        },
+    )
+    .expect("renders")
+}
+
+/// Pixels whose bytes differ (the images must have one size).
+pub fn differing(a: &Image, b: &Image) -> usize {
+    assert_eq!(a.dimensions(), b.dimensions());
+    a.pixels().zip(b.pixels()).filter(|(p, q)| p != q).count()
+}
+
+/// Pixels whose channels differ by more than `tolerance` of 255.
+pub fn differing_by(a: &Image, b: &Image, tolerance: u8) -> usize {
+    assert_eq!(a.dimensions(), b.dimensions());
+    a.pixels()
+        .zip(b.pixels())
+        .filter(|(p, q)| p.0.iter().zip(q.0).any(|(x, y)| x.abs_diff(y) > tolerance))
+        .count()
+}
+
+/// Fraction of the image's pixels in `count`.
+pub fn share(img: &Image, count: usize) -> f64 {
+    count as f64 / f64::from(img.width() * img.height())
+}
+
+/// A point written for a scene scaled by `s` and moved by `shift`: `[s·x + sx, ...]`.
+pub fn at(s: f64, shift: [f64; 3], p: [f64; 3]) -> String {
+    format!(
+        "[{:e}, {:e}, {:e}]",
+        s * p[0] + shift[0],
+        s * p[1] + shift[1],
+        s * p[2] + shift[2]
+    )
+}
