@@ -47,7 +47,7 @@ enum Command {
         #[command(flatten)]
         inputs: SceneInputs,
     },
-    /// Render a scene to an image (PNG or PPM).
+    /// Render a scene to an image (PNG or PPM; EXR for linear, unclamped colour).
     Render {
         /// The scene file (`.rtc`, `.in` or `.yaml`).
         file: PathBuf,
@@ -99,7 +99,7 @@ enum Command {
         /// The part files, one per shard, in any order.
         #[arg(required = true)]
         parts: Vec<PathBuf>,
-        /// The image to write (PNG or PPM).
+        /// The image to write (PNG, PPM or EXR).
         #[arg(short, long)]
         output: PathBuf,
     },
@@ -524,7 +524,7 @@ fn render(
         }
         match pixel_shard {
             Some(s) => cli::shard::write_part(&film, &scene, s, &path),
-            None => rtc::render::output::save(&film.to_image(), &path),
+            None => rtc::render::output::save_film(&film, &path),
         }
     });
     match result {

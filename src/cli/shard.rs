@@ -130,7 +130,7 @@ pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
         Ok(f) => f,
         Err(d) => return fail(d),
     };
-    match rtc::render::output::save(&film.to_image(), output) {
+    match rtc::render::output::save_film(&film, output) {
         Ok(()) => {
             eprintln!("merged {} parts into {}", parts.len(), output.display());
             Outcome::Ok

@@ -1,5 +1,6 @@
-//! Writing images: PNG or PPM by extension, through a temporary file and a rename so a failed or
-//! interrupted render never clobbers an existing image.
+//! Writing images: PNG or PPM (8-bit, encoded) or OpenEXR (linear, unclamped `f32` colour) by
+//! extension, through a temporary file and a rename so a failed or interrupted render never
+//! clobbers an existing image.
 
 use std::io::Write;
 
@@ -17,6 +18,8 @@ pub enum ImageFormat {
     Png,
     /// Binary PPM (P6, maxval 255), as the legacy course framework wrote.
     Ppm,
+    /// OpenEXR, linear RGB `f32`, unclamped (for compositing).
+    Exr,
 }
 
 impl ImageFormat {
@@ -25,6 +28,7 @@ impl ImageFormat {
         match path.extension()?.to_str()?.to_ascii_lowercase().as_str() {
             "png" => Some(ImageFormat::Png),
             "ppm" => Some(ImageFormat::Ppm),
+            "exr" => Some(ImageFormat::Exr),
             _ => None,
         }
     }
@@ -39,7 +43,7 @@ pub fn encode(image: &Image, path: &Path) -> Result<Vec<u8>, Diagnostic> {
     let format = ImageFormat::of(path).ok_or_else(|| {
         io_error(
             format!("cannot write `{}`: unknown image format", path.display()),
-            "name the output `*.png` or `*.ppm`",
+            "name the output `*.png`, `*.ppm` or `*.exr`",
         )
     })?;
     let mut bytes = Vec::new();
@@ -58,8 +62,41 @@ pub fn encode(image: &Image, path: &Path) -> Result<Vec<u8>, Diagnostic> {
             let _ = write!(bytes, "P6\n{} {}\n255\n", image.width(), image.height());
             bytes.extend_from_slice(image.as_raw());
         }
+        ImageFormat::Exr => {
+            // An 8-bit image has no linear values left: its levels are stored as f32 in
+            // [0, 1]. Films go through `save_film`, which writes their linear colour.
+            let linear = image::Rgb32FImage::from_fn(image.width(), image.height(), |x, y| {
+                let p = image.get_pixel(x, y).0;
+                image::Rgb(p.map(|b| f32::from(b) / 255.0))
+            });
+            return encode_exr(&linear);
+        }
     }
     Ok(bytes)
+}
+
+/// A linear `f32` RGB image as OpenEXR bytes.
+fn encode_exr(linear: &image::Rgb32FImage) -> Result<Vec<u8>, Diagnostic> {
+    let mut cursor = std::io::Cursor::new(Vec::new());
+    linear
+        .write_to(&mut cursor, image::ImageFormat::OpenExr)
+        .map_err(|e| io_error(format!("cannot encode EXR: {e}"), "report this as a bug"))?;
+    Ok(cursor.into_inner())
+}
+
+/// Writes a film to `path`: its linear, unclamped colour for `*.exr`, else the 8-bit image in
+/// the film's encoding (PNG or PPM).
+pub fn save_film(film: &super::film::Film, path: &Path) -> Result<(), Diagnostic> {
+    if ImageFormat::of(path) != Some(ImageFormat::Exr) {
+        return save(&film.to_image(), path);
+    }
+    let color = film.color();
+    let w = film.width as usize;
+    let linear = image::Rgb32FImage::from_fn(film.width, film.height, |x, y| {
+        let c = color[y as usize * w + x as usize];
+        image::Rgb([c.x as f32, c.y as f32, c.z as f32])
+    });
+    write_atomically(path, &encode_exr(&linear)?)
 }
 
 /// Writes `image` to `path` atomically (temporary sibling file, then rename).
