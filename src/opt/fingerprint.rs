@@ -15,7 +15,7 @@ use crate::ir::{Object, Scene, Shape, Texture};
 pub fn scene(scene: &Scene) -> String {
     let mut h = Sha256::new();
     h.update(format!("{scene:?}").as_bytes());
-    for path in files(scene) {
+    for path in files_read(scene) {
         h.update(path.to_string_lossy().as_bytes());
         match std::fs::read(&path) {
             Ok(bytes) => {
@@ -37,8 +37,9 @@ fn hex(digest: &[u8]) -> String {
     digest.iter().map(|b| format!("{b:02x}")).collect()
 }
 
-/// Every file the renderer reads for `scene`, in a fixed order.
-fn files(scene: &Scene) -> Vec<PathBuf> {
+/// Every file the renderer reads for `scene` (textures, meshes and their `mtllib` files), in a
+/// fixed order.
+pub fn files_read(scene: &Scene) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for t in &scene.textures {
         if let Texture::Image { path, .. } = t {

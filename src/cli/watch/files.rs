@@ -7,7 +7,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::hash::{Hash, Hasher};
 use std::path::{Path, PathBuf};
 
-use rtc::ir::{Object, Scene, Shape, Texture};
+use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
 /// A path's content hash; `None` when it cannot be read (missing, being replaced).
@@ -37,43 +37,9 @@ pub fn dependencies(
         }
     }
     if let Some(scene) = scene {
-        for o in &scene.objects {
-            meshes(o, &mut out);
-        }
-        for t in &scene.textures {
-            if let Texture::Image { path, .. } = t {
-                out.insert(path.clone());
-            }
-        }
+        out.extend(rtc::opt::fingerprint::files_read(scene));
     }
     out
-}
-
-fn meshes(o: &Object, out: &mut BTreeSet<PathBuf>) {
-    match &o.shape {
-        Shape::Mesh { path, .. } => {
-            out.extend(mtl_files(path));
-            out.insert(path.clone());
-        }
-        Shape::Csg { children, .. } => children.iter().for_each(|c| meshes(c, out)),
-        _ => {}
-    }
-}
-
-/// The MTL files an OBJ names on its `mtllib` lines, resolved against its folder.
-fn mtl_files(obj: &Path) -> Vec<PathBuf> {
-    let Ok(text) = std::fs::read_to_string(obj) else {
-        return Vec::new();
-    };
-    let dir = obj.parent().unwrap_or(Path::new(""));
-    text.lines()
-        .filter_map(|l| l.trim_start().strip_prefix("mtllib"))
-        .flat_map(|rest| {
-            rest.split_whitespace()
-                .map(|n| dir.join(n))
-                .collect::<Vec<_>>()
-        })
-        .collect()
 }
 
 /// The folder to watch for a file: its parent, `.` for a bare name. Editors save by writing a
