@@ -4,6 +4,12 @@
 
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+
+use rtc::eval::EvalOptions;
+use rtc::source::SourceMap;
+
+use crate::cli::report::{self, Format};
+use crate::cli::{Outcome, load, outcome_of};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -240,4 +246,183 @@ mod tests {
         assert_eq!(parse_positive("0.01"), Ok(0.01));
         assert!(parse_positive("0").is_err());
     }
+}
+
+/// `rtc accuracy`'s options.
+#[derive(clap::Args, Debug)]
+pub(crate) struct AccuracyArgs {
+    /// The scene file (`.rtc`, `.in` or `.yaml`).
+    file: PathBuf,
+    /// Measure against this image instead of rendering a reference (EXR: linear light; PNG:
+    /// sRGB bytes), at the swept size.
+    #[arg(long, value_name = "FILE")]
+    reference: Option<PathBuf>,
+    /// Sweep at this factor of the scene's resolution per side (default: the largest factor
+    /// ≤ 1 that keeps the image within --max-pixels).
+    #[arg(long, value_parser = parse_positive)]
+    scale: Option<f64>,
+    /// The pixel budget of the automatic scale.
+    #[arg(long, default_value_t = rtc::accuracy::scale::DEFAULT_MAX_PIXELS)]
+    max_pixels: u64,
+    /// Renders per seed and point; the time is their median.
+    #[arg(long, default_value_t = 1)]
+    repeat: u32,
+    /// The first seed (the second is the next integer); default: the scene's own seed.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Worker threads (0 = all cores).
+    #[arg(long, default_value_t = 0)]
+    threads: usize,
+    /// Skip the joint sweep (ladders only).
+    #[arg(long)]
+    no_joint: bool,
+    /// Neither read nor write the reference cache.
+    #[arg(long)]
+    no_cache: bool,
+    /// The error of the Pareto front, the plot and the recommendations.
+    #[arg(long, value_enum, default_value = "flip")]
+    metric: MetricArg,
+    /// Recommend the cheapest measured setting whose error is at most this.
+    #[arg(long, value_parser = parse_positive)]
+    target_error: Option<f64>,
+    /// Recommend the most accurate measured setting whose full-size render takes at most this
+    /// (seconds, or with a unit: 30s, 10m, 2h).
+    #[arg(long, value_parser = parse_seconds)]
+    time: Option<f64>,
+    /// Stdout: a table, or the JSON report.
+    #[arg(long, value_enum, default_value = "table")]
+    format: TableFormat,
+    /// Directory for report.json, plot.svg and flip-map.png (default: `<scene stem>-accuracy`).
+    #[arg(short, long)]
+    out_dir: Option<PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum MetricArg {
+    /// Mean ꟻLIP (sRGB images).
+    Flip,
+    /// RMSE in linear light.
+    Rmse,
+    /// Relative MSE in linear light.
+    RelMse,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub(crate) enum TableFormat {
+    /// A table.
+    Table,
+    /// The JSON report (schema rtc-accuracy/1).
+    Json,
+}
+
+/// Runs `rtc accuracy` and prints its table or JSON.
+pub(crate) fn run(args: &AccuracyArgs) -> Outcome {
+    let subject = args.file.display().to_string();
+    let mut sources = SourceMap::new();
+    let loaded = load(&args.file, &mut sources, &EvalOptions::default());
+    let color = std::io::stderr().is_terminal();
+    let print = |diags: &[Diagnostic], sources: &SourceMap| {
+        let text = report::render(diags, sources, &subject, Format::Human, color);
+        if !text.is_empty() {
+            eprintln!("{}", text.trim_end());
+        }
+    };
+    print(&loaded.diagnostics.items, &sources);
+    let outcome = outcome_of(&loaded.diagnostics, false);
+    let (Outcome::Ok, Some(scene)) = (&outcome, loaded.scene) else {
+        eprintln!("{}", crate::cli::check::count_line(&loaded.diagnostics));
+        return outcome;
+    };
+    let reference = match &args.reference {
+        Some(f) => rtc::accuracy::ReferenceChoice::File(f.clone()),
+        None => rtc::accuracy::ReferenceChoice::Render {
+            cache_dir: (!args.no_cache).then(cache_dir).flatten(),
+        },
+    };
+    let first_seed = args.seed.unwrap_or(scene.settings.seed);
+    let options = rtc::accuracy::StudyOptions {
+        scene_name: subject.clone(),
+        scale: args.scale,
+        max_pixels: args.max_pixels,
+        reference,
+        measure: rtc::accuracy::MeasureOptions {
+            repeat: args.repeat.max(1),
+            seeds: [first_seed, first_seed.wrapping_add(1)],
+            threads: args.threads,
+        },
+        joint: !args.no_joint,
+        metric: match args.metric {
+            MetricArg::Flip => rtc::accuracy::Metric::Flip,
+            MetricArg::Rmse => rtc::accuracy::Metric::Rmse,
+            MetricArg::RelMse => rtc::accuracy::Metric::RelMse,
+        },
+        target_error: args.target_error,
+        time: args.time,
+    };
+    catch_interrupt();
+    let bar = SweepBar::on_stderr();
+    let study = match rtc::accuracy::study(&scene, &options, &bar) {
+        Ok(r) => r,
+        Err(diags) => {
+            use rtc::accuracy::SweepProgress;
+            bar.end();
+            print(&diags.items, &sources);
+            if diags
+                .items
+                .iter()
+                .any(|d| d.code == rtc::accuracy::NOTHING_MEASURED)
+            {
+                return Outcome::Interrupted;
+            }
+            return outcome_of(&diags, false);
+        }
+    };
+    if study.reference_too_noisy() {
+        print(&[noisy_reference(&study)], &sources);
+    }
+    if !study.complete {
+        eprintln!(
+            "interrupted: the report keeps the {} point(s) measured so far",
+            study.points.len()
+        );
+    }
+    match args.format {
+        TableFormat::Table => print!("{}", crate::cli::accuracy_table::table(&study)),
+        TableFormat::Json => println!(
+            "{}",
+            serde_json::to_string_pretty(&study.to_json()).unwrap_or_default()
+        ),
+    }
+    let dir = args
+        .out_dir
+        .clone()
+        .unwrap_or_else(|| default_out_dir(&args.file));
+    match write_outputs(&study, &dir) {
+        Ok(files) => {
+            let names: Vec<String> = files.iter().map(|f| f.display().to_string()).collect();
+            eprintln!("wrote {}", names.join(", "));
+        }
+        Err(d) => {
+            print(std::slice::from_ref(&d), &sources);
+            return Outcome::IoOrUsage;
+        }
+    }
+    if study.complete {
+        Outcome::Ok
+    } else {
+        Outcome::Interrupted
+    }
+}
+
+/// The reference cache: `$RTC_CACHE_DIR`, else `$XDG_CACHE_HOME/rtc/accuracy`, else
+/// `$HOME/.cache/rtc/accuracy`; none when no variable is set.
+fn cache_dir() -> Option<PathBuf> {
+    let var = |name: &str| {
+        std::env::var_os(name)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
+    var("RTC_CACHE_DIR")
+        .or_else(|| var("XDG_CACHE_HOME").map(|d| d.join("rtc").join("accuracy")))
+        .or_else(|| var("HOME").map(|d| d.join(".cache").join("rtc").join("accuracy")))
 }

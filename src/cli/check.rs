@@ -10,7 +10,7 @@ use rtc::loader::SceneFormat;
 use rtc::source::SourceMap;
 
 use super::report::{self, Format};
-use crate::Outcome;
+use crate::cli::Outcome;
 
 /// What checking one file found.
 struct FileCheck {
@@ -124,7 +124,7 @@ fn check_file(file: &Path, deny_warnings: bool, options: &EvalOptions) -> FileCh
         && let Ok(text) = std::fs::read_to_string(file)
         && let Some(lib) = rtc::eval::library::load_library(file, &text, &mut sources, options)
     {
-        let outcome = crate::outcome_of(&lib.diagnostics, deny_warnings);
+        let outcome = crate::cli::outcome_of(&lib.diagnostics, deny_warnings);
         let summary = match outcome {
             Outcome::Ok => format!(
                 "{}: ok: library module exporting {} name{}: {}",
@@ -148,7 +148,7 @@ fn check_file(file: &Path, deny_warnings: bool, options: &EvalOptions) -> FileCh
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::check(scene));
     }
-    let outcome = crate::outcome_of(&loaded.diagnostics, deny_warnings);
+    let outcome = crate::cli::outcome_of(&loaded.diagnostics, deny_warnings);
     let summary = match (&outcome, &loaded.scene) {
         (Outcome::Ok, Some(scene)) => {
             format!("{}: ok: {}", file.display(), rtc::check::summary(scene))

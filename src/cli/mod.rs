@@ -5,8 +5,64 @@ pub mod accuracy_table;
 pub mod check;
 pub mod converge;
 pub mod frames;
+pub mod inputs;
 pub mod progress;
+pub mod render;
 pub mod report;
 pub mod shard;
 pub mod stats;
 pub mod watch;
+
+use std::path::Path;
+
+use rtc::diag::{Diagnostics, IO_ERROR};
+use rtc::eval::EvalOptions;
+use rtc::ir::Loaded;
+use rtc::source::SourceMap;
+
+/// How a command ended.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Outcome {
+    Ok,
+    SceneErrors,
+    IoOrUsage,
+    Interrupted,
+}
+
+impl Outcome {
+    /// Which outcome wins when several files are checked: I/O over scene errors over success.
+    pub(crate) fn severity(self) -> u8 {
+        match self {
+            Outcome::Ok => 0,
+            Outcome::SceneErrors => 1,
+            Outcome::IoOrUsage => 2,
+            Outcome::Interrupted => 3,
+        }
+    }
+}
+
+/// Reports a command-line mistake found before any scene is read (exit code 2).
+pub(crate) fn usage_error(msg: &str) -> Outcome {
+    eprintln!("error: {msg}");
+    Outcome::IoOrUsage
+}
+
+/// Loads a scene and runs the scene lints on it.
+pub(crate) fn load(file: &Path, sources: &mut SourceMap, opts: &EvalOptions) -> Loaded {
+    let mut loaded = rtc::loader::load(file, sources, opts);
+    if let Some(scene) = &loaded.scene {
+        loaded.diagnostics.extend(rtc::check::lint(scene));
+    }
+    loaded
+}
+
+/// The exit outcome of a set of diagnostics (`--deny warnings` makes warnings fail).
+pub(crate) fn outcome_of(diags: &Diagnostics, deny_warnings: bool) -> Outcome {
+    if diags.items.iter().any(|d| d.code == IO_ERROR) {
+        Outcome::IoOrUsage
+    } else if diags.has_errors() || (deny_warnings && diags.warning_count() > 0) {
+        Outcome::SceneErrors
+    } else {
+        Outcome::Ok
+    }
+}

@@ -11,7 +11,7 @@ use rtc::render::shard::Shard;
 use rtc::source::SourceMap;
 
 use super::report::{self, Format};
-use crate::Outcome;
+use crate::cli::Outcome;
 
 /// Options that never change a pixel: they may differ between the shards of one render. Every
 /// other option is part of the settings fingerprint, so an option added later is safe by

@@ -24,7 +24,7 @@ use rtc::diag::Diagnostic;
 use rtc::source::SourceMap;
 use serde_json::json;
 
-use crate::Outcome;
+use crate::cli::Outcome;
 use files::Snapshot;
 use progressive::Job;
 use server::Hub;
@@ -126,7 +126,7 @@ impl WatchState<'_> {
         let generation = self.current.fetch_add(1, Ordering::SeqCst) + 1;
         let file = &self.options.file;
         let mut sources = SourceMap::new();
-        let loaded = crate::load(file, &mut sources, &rtc::eval::EvalOptions::default());
+        let loaded = crate::cli::load(file, &mut sources, &rtc::eval::EvalOptions::default());
         let deps = files::dependencies(file, &sources, loaded.scene.as_ref());
         for folder in deps.iter().map(|p| files::folder_of(p)) {
             // A folder that cannot be watched (removed meanwhile) is retried on the next reload.

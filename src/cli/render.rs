@@ -1,0 +1,231 @@
+//! `rtc render`: one frame or a range of frames, optionally sharded or progressive.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+use rtc::diag::{Diagnostic, IO_ERROR};
+use rtc::eval::EvalOptions;
+use rtc::ir::Scene;
+use rtc::source::SourceMap;
+
+use crate::cli;
+use crate::cli::inputs::SceneInputs;
+use crate::cli::report::{self, Format};
+use crate::cli::{Outcome, load, outcome_of, usage_error};
+
+/// What `rtc render` was asked to do, besides the frames.
+pub(crate) struct RenderJob<'a> {
+    pub(crate) file: &'a Path,
+    pub(crate) output: Option<PathBuf>,
+    pub(crate) threads: usize,
+    pub(crate) format: Format,
+    pub(crate) show_stats: bool,
+    /// `--target-error`, `--time`, `--samples-from`, `--samples-to`.
+    pub(crate) progressive: cli::converge::Request,
+    /// `--shard K/N`: a share of the pixels of one frame, or with `--frames` a share of the
+    /// frames (task K of N renders the frames at positions K, K+N, … of the range).
+    pub(crate) shard: Option<rtc::render::shard::Shard>,
+    /// Seconds each frame's command may take (`--time-limit`).
+    pub(crate) time_limit: Option<f64>,
+}
+
+/// A `--time-limit` value: a finite number of seconds, at least 0.
+pub(crate) fn seconds(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if s.is_finite() && s >= 0.0 => Ok(s),
+        _ => Err(format!(
+            "`{text}` is not a number of seconds (write e.g. `--time-limit 60` or `2.5`)"
+        )),
+    }
+}
+
+/// Renders `--frame N` (one image), or each frame of `--frames` in turn, each evaluated afresh.
+pub(crate) fn render_frames(
+    job: &RenderJob<'_>,
+    frames: Option<&str>,
+    inputs: &SceneInputs,
+) -> Outcome {
+    let Some(range) = frames else {
+        return match inputs.options(inputs.frame) {
+            Ok(opts) => render(job, &opts, None, job.shard),
+            Err(msg) => usage_error(&msg),
+        };
+    };
+    let frames = match cli::frames::parse_range(range) {
+        Ok(f) => f,
+        Err(msg) => return usage_error(&msg),
+    };
+    if let Some(o) = &job.output
+        && frames.len() > 1
+        && !cli::frames::has_pattern(o)
+    {
+        return usage_error(&format!(
+            "every frame would write `{}`: put `{{frame}}` or `####` in the output name, e.g. `-o shot_####.png`",
+            o.display()
+        ));
+    }
+    let mine: Vec<i64> = match job.shard {
+        Some(s) => frames
+            .into_iter()
+            .enumerate()
+            .filter(|(i, _)| s.deals(*i))
+            .map(|(_, f)| f)
+            .collect(),
+        None => frames,
+    };
+    let mut written = std::collections::HashMap::new();
+    for frame in mine {
+        let opts = match inputs.options(frame) {
+            Ok(o) => o,
+            Err(msg) => return usage_error(&msg),
+        };
+        let outcome = render(job, &opts, Some(&mut written), None);
+        if !matches!(outcome, Outcome::Ok) {
+            return outcome;
+        }
+    }
+    Outcome::Ok
+}
+
+/// Renders one frame. `written` (animations) maps each output already written to its frame,
+/// so two frames never write the same file.
+fn render(
+    job: &RenderJob<'_>,
+    opts: &EvalOptions,
+    written: Option<&mut std::collections::HashMap<PathBuf, i64>>,
+    pixel_shard: Option<rtc::render::shard::Shard>,
+) -> Outcome {
+    let RenderJob {
+        file,
+        threads,
+        format,
+        show_stats,
+        ..
+    } = *job;
+    let subject = file.display().to_string();
+    let mut sources = SourceMap::new();
+    let load_start = std::time::Instant::now();
+    let deadline = job
+        .time_limit
+        .map(|s| load_start + std::time::Duration::from_secs_f64(s));
+    let loaded = load(file, &mut sources, opts);
+    let load_time = load_start.elapsed();
+    let color = format == Format::Human && std::io::stderr().is_terminal();
+    let print = |diags: &[Diagnostic], sources: &SourceMap| {
+        let text = report::render(diags, sources, &subject, format, color);
+        if !text.is_empty() {
+            eprintln!("{}", text.trim_end());
+        }
+    };
+    print(&loaded.diagnostics.items, &sources);
+    let outcome = outcome_of(&loaded.diagnostics, false);
+    let (Outcome::Ok, Some(scene)) = (&outcome, loaded.scene) else {
+        eprintln!("{}", cli::check::count_line(&loaded.diagnostics));
+        return outcome;
+    };
+    let animated = written.is_some();
+    let path = cli::frames::numbered(
+        &output_path(file, job.output.clone(), &scene, animated),
+        opts.frame,
+    );
+    if let Some(written) = written
+        && let Some(other) = written.insert(path.clone(), opts.frame)
+    {
+        return usage_error(&format!(
+            "frames {other} and {} would both write `{}`: put `{{frame}}` or `####` in the output name",
+            opts.frame,
+            path.display()
+        ));
+    }
+    let path = match pixel_shard {
+        Some(s) => cli::shard::part_path(job.output.clone(), &path, s),
+        None => path,
+    };
+    let start = std::time::Instant::now();
+    let prepared = match rtc::opt::prepare(&scene) {
+        Ok(p) => p,
+        Err(diags) => {
+            print(&diags.items, &sources);
+            eprintln!("{}", cli::check::count_line(&diags));
+            return outcome_of(&diags, false);
+        }
+    };
+    print(prepared.warnings(), &sources);
+    let options = rtc::render::RenderOptions {
+        threads,
+        shard: pixel_shard,
+    };
+    let progressive = &job.progressive;
+    if progressive.wanted() && pixel_shard.is_some() {
+        return usage_error(
+            "a progressive render (--target-error, --time, --samples-from) cannot be sharded: its rounds look at the whole image; shard a fixed-sampling render instead",
+        );
+    }
+    let film = if progressive.wanted() {
+        cli::converge::render(&prepared, threads, progressive, &path)
+    } else {
+        let progress = cli::progress::Bar::on_stderr(deadline);
+        rtc::render::render(&prepared, &options, &progress).map_err(|d| match job.time_limit {
+            Some(limit) if d.code == rtc::render::CANCELLED => time_limit_reached(&scene, limit),
+            _ => d,
+        })
+    };
+    let result = film.and_then(|film| {
+        if show_stats {
+            eprintln!(
+                "{}",
+                cli::stats::describe(&film, &prepared, load_time, start.elapsed())
+            );
+        }
+        match pixel_shard {
+            Some(s) => cli::shard::write_part(&film, &scene, s, &path),
+            None => rtc::render::output::save_film(&film, &path),
+        }
+    });
+    match result {
+        Ok(()) => {
+            eprintln!("wrote {}", path.display());
+            Outcome::Ok
+        }
+        Err(d) => {
+            let io = d.code == IO_ERROR;
+            print(std::slice::from_ref(&d), &sources);
+            if io {
+                Outcome::IoOrUsage
+            } else {
+                Outcome::SceneErrors
+            }
+        }
+    }
+}
+
+/// The diagnostic for a render stopped by `--time-limit`, at the camera (what sets the work).
+fn time_limit_reached(scene: &Scene, limit: f64) -> Diagnostic {
+    let c = &scene.camera;
+    Diagnostic::error(
+        "rtc::render::time_limit",
+        c.span,
+        format!(
+            "the render did not finish within the time limit of {limit} s; no image was written"
+        ),
+    )
+    .with_label(format!("this {}×{} image", c.width, c.height))
+    .with_help(format!(
+        "allow more time (`--time-limit {}`), or render fewer pixels or samples per pixel",
+        (limit * 4.0).max(10.0).ceil()
+    ))
+}
+
+/// `-o` wins, then the scene's own `output`, then the input name with `.png` (with `_####`
+/// before it for an animation). `{frame}` and `####` in the name are numbered by the caller.
+fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene, animated: bool) -> PathBuf {
+    output
+        .or_else(|| scene.settings.output.clone())
+        .unwrap_or_else(|| {
+            if animated {
+                cli::frames::default_pattern(file)
+            } else {
+                file.with_extension("png")
+            }
+        })
+}
