@@ -287,8 +287,9 @@ pub struct Object {
     /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
     pub material: Option<MaterialId>,
     /// How it moves while the shutter is open (`None`: it stands still; `transform` is its
-    /// placement at shutter open).
-    pub motion: Option<Motion>,
+    /// placement at shutter open). Boxed: few objects move, and inline it would double the
+    /// size of every object.
+    pub motion: Option<Box<Motion>>,
     /// Where it was defined.
     pub span: Span,
 }

@@ -141,7 +141,7 @@ impl Lowerer {
                 shape: s.clone(),
                 transform: t,
                 material: mat,
-                motion,
+                motion: motion.map(Box::new),
                 span: o.span,
             }),
             ObjShape::Group(ch) => {
@@ -167,7 +167,7 @@ impl Lowerer {
                                 },
                                 transform: c.transform,
                                 material: cm,
-                                motion: c.motion,
+                                motion: c.motion.map(Box::new),
                                 span: c.span,
                             });
                         }
@@ -181,7 +181,7 @@ impl Lowerer {
                     },
                     transform: t,
                     material: mat,
-                    motion,
+                    motion: motion.map(Box::new),
                     span: o.span,
                 });
             }

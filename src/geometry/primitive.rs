@@ -105,8 +105,9 @@ pub struct Moving {
 pub struct Primitive {
     /// Geometry in object space.
     pub geom: Geom,
-    /// `None` for the identity.
-    pub placement: Option<Placement>,
+    /// `None` for the identity (boxed: most objects of a large scene are untransformed, and
+    /// the placement's three matrices would triple an untransformed sphere's size).
+    pub placement: Option<Box<Placement>>,
     /// Material of this node (inherited by CSG children that name none).
     pub material: MaterialId,
     /// Bounds in the parent's space (infinite for unbounded geometry).
@@ -126,7 +127,8 @@ impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
     pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();
-        let placement = (transform != DAffine3::IDENTITY).then(|| Placement::of(transform));
+        let placement =
+            (transform != DAffine3::IDENTITY).then(|| Box::new(Placement::of(transform)));
         let bounds = match &placement {
             None => local,
             Some(p) => local.transformed(&p.to_parent),
@@ -170,7 +172,7 @@ impl Primitive {
     #[inline]
     fn placement_at(&self, ray: &Ray) -> Option<Cow<'_, Placement>> {
         match &self.moving {
-            None => self.placement.as_ref().map(Cow::Borrowed),
+            None => self.placement.as_deref().map(Cow::Borrowed),
             Some(m) => Some(Cow::Owned(Placement::of(
                 m.motion.at(m.transform, ray.time),
             ))),

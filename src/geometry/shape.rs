@@ -178,7 +178,8 @@ pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
     }
 }
 
-/// A single shape's geometry in object space: every shape but meshes and CSG nodes.
+/// A single shape's geometry in object space: every shape but meshes and CSG nodes. Shapes
+/// larger than a box are boxed, so a million spheres do not each take a polygon's room.
 #[derive(Clone, Debug)]
 pub enum Leaf {
     /// A sphere.
@@ -198,21 +199,21 @@ pub enum Leaf {
     /// A box.
     Box(Cuboid),
     /// A triangle.
-    Triangle(Triangle),
+    Triangle(Box<Triangle>),
     /// A parallelogram.
-    Quad(Quad),
+    Quad(Box<Quad>),
     /// A planar polygon.
-    Polygon(Polygon),
+    Polygon(Box<Polygon>),
     /// A disk.
     Disk(Disk),
     /// A cylinder.
-    Cylinder(Cylinder),
+    Cylinder(Box<Cylinder>),
     /// A cone or frustum.
-    Cone(Cone),
+    Cone(Box<Cone>),
     /// A torus.
     Torus(Torus),
     /// Metaballs.
-    Blob(Blob),
+    Blob(Box<Blob>),
 }
 
 impl Leaf {
@@ -384,29 +385,29 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
         }
         Shape::Triangle { vertices } => {
             finite("c", vertices)?;
-            Leaf::Triangle(Triangle::new(*vertices).ok_or_else(|| {
+            Leaf::Triangle(Box::new(Triangle::new(*vertices).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "c",
                     "the triangle has zero area",
                     "its corners lie on one line",
                     "move one corner off the line through the other two",
                 )
-            })?)
+            })?))
         }
         Shape::Quad { corner, u, v } => {
             finite("v", &[*corner, *u, *v])?;
-            Leaf::Quad(Quad::new(*corner, *u, *v).ok_or_else(|| {
+            Leaf::Quad(Box::new(Quad::new(*corner, *u, *v).ok_or_else(|| {
                 ShapeFlaw::degenerate(
                     "v",
                     "the quad has zero area",
                     "`u` and `v` are parallel or zero",
                     "use two edges that span a parallelogram",
                 )
-            })?)
+            })?))
         }
         Shape::Polygon { points } => {
             finite("points", points)?;
-            Leaf::Polygon(Polygon::new(points).map_err(|e| match e {
+            Leaf::Polygon(Box::new(Polygon::new(points).map_err(|e| match e {
                 PolygonError::TooFew => ShapeFlaw::other(
                     "points",
                     OUT_OF_RANGE,
@@ -427,7 +428,7 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                     "non-planar polygon",
                     "split it into triangles, or move the points onto one plane",
                 ),
-            })?)
+            })?))
         }
         Shape::Disk {
             center,
@@ -453,7 +454,9 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
         } => {
             positive("radius", *radius)?;
             finite("top", &[*base, *top])?;
-            Leaf::Cylinder(Cylinder::new(*base, *top, *radius, *capped).ok_or_else(ends_coincide)?)
+            Leaf::Cylinder(Box::new(
+                Cylinder::new(*base, *top, *radius, *capped).ok_or_else(ends_coincide)?,
+            ))
         }
         Shape::Cone {
             base,
@@ -473,10 +476,10 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 ));
             }
             finite("top", &[*base, *top])?;
-            Leaf::Cone(
+            Leaf::Cone(Box::new(
                 Cone::new(*base, *top, *base_radius, *top_radius, *capped)
                     .ok_or_else(ends_coincide)?,
-            )
+            ))
         }
         Shape::Torus {
             center,
@@ -516,14 +519,16 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 finite("components", &[c.center])?;
             }
             positive("threshold", *threshold)?;
-            Leaf::Blob(Blob::new(components, *threshold).ok_or_else(|| {
-                ShapeFlaw::degenerate(
-                    "components",
-                    "the blob has no surface",
-                    "no component has a positive strength",
-                    "give at least one component a positive `strength`",
-                )
-            })?)
+            Leaf::Blob(Box::new(Blob::new(components, *threshold).ok_or_else(
+                || {
+                    ShapeFlaw::degenerate(
+                        "components",
+                        "the blob has no surface",
+                        "no component has a positive strength",
+                        "give at least one component a positive `strength`",
+                    )
+                },
+            )?))
         }
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(

@@ -95,6 +95,12 @@ pub struct World {
 // the five-spheres scene: the CwBvh path cost ~25% of the render).
 const MIN_BVH_OBJECTS: usize = 12;
 
+/// Above this many bounded objects the top-level BVH is built for speed rather than quality
+/// (obvhs's `very_fast_build`, as for large meshes): for a million spheres the medium build's
+/// reinsertion passes alone took longer than evaluating the scene, and a render of such a
+/// scene is dominated by its time to first ray.
+pub const LARGE_WORLD: usize = 300_000;
+
 impl World {
     /// The world of prepared objects; `object_of[i]` is the scene object `nodes[i]` came from.
     pub fn new(mut nodes: Vec<Primitive>, object_of: Vec<u32>) -> World {
@@ -123,7 +129,11 @@ impl World {
         let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
             let params = BvhBuildParams {
                 max_prims_per_leaf: 1,
-                ..BvhBuildParams::medium_build()
+                ..if boxes.len() <= LARGE_WORLD {
+                    BvhBuildParams::medium_build()
+                } else {
+                    BvhBuildParams::very_fast_build()
+                }
             };
             let bvh = Bvh::build(&boxes, ids, params);
             stats.bvh_build_time += bvh.build_time;

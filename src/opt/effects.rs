@@ -94,7 +94,7 @@ impl Content {
     }
 
     fn visit(&mut self, o: &Object) {
-        self.moving |= o.motion.is_some_and(|m| !m.is_still());
+        self.moving |= o.motion.as_ref().is_some_and(|m| !m.is_still());
         match &o.shape {
             Shape::Csg { children, .. } => {
                 self.csg = true;

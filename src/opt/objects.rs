@@ -105,8 +105,8 @@ impl Builder {
             return None;
         }
         let geom = self.geom(o, material)?;
-        Some(match o.motion {
-            Some(m) => Primitive::moving(geom, *t, m, material),
+        Some(match o.motion.as_deref() {
+            Some(m) => Primitive::moving(geom, *t, *m, material),
             None => Primitive::new(geom, *t, material),
         })
     }
