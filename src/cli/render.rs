@@ -142,7 +142,9 @@ fn render(
         None => path,
     };
     let start = std::time::Instant::now();
-    let prepared = match rtc::opt::prepare(&scene) {
+    // A part records the scene's fingerprint; taken here, as the preparation consumes the scene.
+    let fingerprint = pixel_shard.map(|_| rtc::opt::fingerprint::scene(&scene));
+    let prepared = match rtc::opt::prepare_owned(scene) {
         Ok(p) => p,
         Err(diags) => {
             print(&diags.items, &sources);
@@ -166,7 +168,9 @@ fn render(
     } else {
         let progress = cli::progress::Bar::on_stderr(deadline);
         rtc::render::render(&prepared, &options, &progress).map_err(|d| match job.time_limit {
-            Some(limit) if d.code == rtc::render::CANCELLED => time_limit_reached(&scene, limit),
+            Some(limit) if d.code == rtc::render::CANCELLED => {
+                time_limit_reached(prepared.camera(), limit)
+            }
             _ => d,
         })
     };
@@ -177,9 +181,9 @@ fn render(
                 cli::stats::describe(&film, &prepared, load_time, start.elapsed())
             );
         }
-        match pixel_shard {
-            Some(s) => cli::shard::write_part(&film, &scene, s, &path),
-            None => rtc::render::output::save_film(&film, &path),
+        match (pixel_shard, fingerprint) {
+            (Some(s), Some(fingerprint)) => cli::shard::write_part(&film, fingerprint, s, &path),
+            _ => rtc::render::output::save_film(&film, &path),
         }
     });
     match result {
@@ -200,8 +204,7 @@ fn render(
 }
 
 /// The diagnostic for a render stopped by `--time-limit`, at the camera (what sets the work).
-fn time_limit_reached(scene: &Scene, limit: f64) -> Diagnostic {
-    let c = &scene.camera;
+fn time_limit_reached(c: &rtc::ir::Camera, limit: f64) -> Diagnostic {
     Diagnostic::error(
         "rtc::render::time_limit",
         c.span,

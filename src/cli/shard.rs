@@ -4,7 +4,6 @@
 use std::path::{Path, PathBuf};
 
 use rtc::diag::{Diagnostic, IO_ERROR};
-use rtc::ir::Scene;
 use rtc::opt::fingerprint;
 use rtc::render::part::Part;
 use rtc::render::shard::Shard;
@@ -80,14 +79,15 @@ pub fn settings_fingerprint() -> String {
     fingerprint::bytes(kept.join("\n").as_bytes())
 }
 
-/// Writes shard `s` of a rendered film to `path` atomically.
+/// Writes shard `s` of a rendered film to `path` atomically; `scene` is the scene's
+/// fingerprint (`opt::fingerprint::scene`).
 pub fn write_part(
     film: &rtc::render::film::Film,
-    scene: &Scene,
+    scene: String,
     s: Shard,
     path: &Path,
 ) -> Result<(), Diagnostic> {
-    let part = Part::of_film(film, s, fingerprint::scene(scene), settings_fingerprint());
+    let part = Part::of_film(film, s, scene, settings_fingerprint());
     rtc::render::output::write_atomically(path, &part.to_bytes())
 }
 

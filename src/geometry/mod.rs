@@ -5,6 +5,7 @@
 //! object's affine transform (normals by the inverse transpose).
 
 pub mod aabb;
+pub mod balls;
 pub mod blob;
 pub mod bvh;
 mod bvh_traverse;

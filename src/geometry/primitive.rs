@@ -160,14 +160,6 @@ impl Primitive {
         p
     }
 
-    /// Centre and radius of an untransformed sphere (the world's fast path), else `None`.
-    pub fn plain_sphere(&self) -> Option<(DVec3, f64)> {
-        match (&self.geom, &self.placement, &self.moving) {
-            (Geom::Leaf(Leaf::Sphere { center, radius }), None, None) => Some((*center, *radius)),
-            _ => None,
-        }
-    }
-
     /// The placement at the ray's time: the fixed one, or a moving node's at that instant.
     #[inline]
     fn placement_at(&self, ray: &Ray) -> Option<Cow<'_, Placement>> {
@@ -249,24 +241,16 @@ impl Primitive {
             let place = self.placement_at(ray);
             let place = place.as_deref();
             let (r, t_min) = Self::local_after(place, ray, t_min);
-            return sphere::hit_t(*center, *radius, &r, t_min, t_max).map(|t| {
-                let local_point = r.at(t);
-                let normal = (local_point - *center).normalize();
-                Self::out(
-                    place,
-                    GeoHit {
-                        t,
-                        normal,
-                        geometric_normal: normal,
-                        uv: DVec2::ZERO,
-                        local_point,
-                        point: local_point,
-                        error: sphere::point_error(*center, *radius, local_point),
-                        surface: self.surface,
-                        material: self.material,
-                    },
-                )
-            });
+            return plain_sphere_hit(
+                *center,
+                *radius,
+                &r,
+                t_min,
+                t_max,
+                self.surface,
+                self.material,
+            )
+            .map(|h| Self::out(place, h));
         }
         // Meshes clip against their bounds themselves (and need the entry point anyway).
         if self.bounds.is_empty()
@@ -413,6 +397,36 @@ impl Primitive {
             Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
         }
     }
+}
+
+/// The nearest hit in (t_min, t_max) of the sphere (`center`, `radius`) in the ray's space,
+/// without uv (added by `finish` on the hit that wins): the one sphere hit of primitives and of
+/// the world's compact spheres.
+#[inline]
+pub(super) fn plain_sphere_hit(
+    center: DVec3,
+    radius: f64,
+    r: &Ray,
+    t_min: f64,
+    t_max: f64,
+    surface: SurfaceId,
+    material: MaterialId,
+) -> Option<GeoHit> {
+    sphere::hit_t(center, radius, r, t_min, t_max).map(|t| {
+        let local_point = r.at(t);
+        let normal = (local_point - center).normalize();
+        GeoHit {
+            t,
+            normal,
+            geometric_normal: normal,
+            uv: DVec2::ZERO,
+            local_point,
+            point: local_point,
+            error: sphere::point_error(center, radius, local_point),
+            surface,
+            material,
+        }
+    })
 }
 
 /// A CSG node's own boundary crossings along the whole line, in order.

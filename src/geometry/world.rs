@@ -6,6 +6,7 @@ use std::time::Duration;
 use glam::{DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
+use super::balls::{BALL, Ball, WorldParts};
 use super::bvh::{Bvh, BvhRay, to_f32_box};
 use super::primitive::{GeoHit, Geom, Primitive, SurfaceId};
 use super::{Aabb, MappingFrame, Ray, sphere};
@@ -68,6 +69,7 @@ pub struct WorldStats {
 struct LooseSphere {
     center: DVec3,
     radius: f64,
+    /// Its object id ([`BALL`] tagged).
     node: u32,
 }
 
@@ -76,17 +78,20 @@ struct LooseSphere {
 pub struct World {
     /// Whether hits need surface coordinates (textures, bumps, hatching); see [`World::need_uv`].
     need_uv: bool,
+    /// Every object but the plain spheres. Object ids index it, or `balls` when tagged [`BALL`].
     nodes: Vec<Primitive>,
     /// Scene object index of each node.
     object_of: Vec<u32>,
+    /// The untransformed, unmoving spheres (compact: most objects of a large scene).
+    balls: Vec<Ball>,
     /// Every leaf and mesh node by its [`SurfaceId`].
     surfaces: Vec<SurfaceInfo>,
     /// Top level over the bounded nodes (`None` when a linear scan is as fast).
     bvh: Option<Bvh>,
-    /// Nodes tested beside the BVH (all of them when there is no BVH), except `spheres`.
+    /// Objects tested beside the BVH (all of them when there is no BVH), except `spheres`.
     loose: Vec<u32>,
-    /// Untransformed spheres among the loose nodes, tested first with a t-only quadratic; only
-    /// the winner computes its full hit (the course scenes are all spheres).
+    /// The balls among the loose objects, tested first with a t-only quadratic; only the
+    /// winner computes its full hit (the course scenes are all spheres).
     spheres: Vec<LooseSphere>,
     stats: WorldStats,
 }
@@ -102,30 +107,51 @@ const MIN_BVH_OBJECTS: usize = 12;
 pub const LARGE_WORLD: usize = 300_000;
 
 impl World {
-    /// The world of prepared objects; `object_of[i]` is the scene object `nodes[i]` came from.
-    pub fn new(mut nodes: Vec<Primitive>, object_of: Vec<u32>) -> World {
+    /// The world of the prepared top-level objects.
+    pub fn new(parts: WorldParts) -> World {
+        let WorldParts {
+            mut nodes,
+            object_of,
+            balls,
+        } = parts;
         let mut surfaces = Vec::new();
         for (n, &object) in nodes.iter_mut().zip(&object_of) {
             number_surfaces(n, object, &mut surfaces);
         }
         let mut stats = WorldStats {
-            objects: nodes.len(),
+            objects: nodes.len() + balls.len(),
             ..WorldStats::default()
         };
         let mut boxes = Vec::new();
         let mut ids = Vec::new();
         let mut loose = Vec::new();
-        for (i, n) in nodes.iter().enumerate() {
-            match to_f32_box(&n.bounds).filter(|_| n.bounds.is_finite()) {
+        // Nodes and balls merged back into scene-object order, so the BVH is built over the
+        // same boxes in the same order whichever storage holds a sphere.
+        let (mut a, mut b) = (0, 0);
+        while a < nodes.len() || b < balls.len() {
+            let node_first =
+                b == balls.len() || (a < nodes.len() && object_of[a] < balls[b].object);
+            let (id, bounds) = if node_first {
+                a += 1;
+                ((a - 1) as u32, nodes[a - 1].bounds)
+            } else {
+                b += 1;
+                (BALL | (b - 1) as u32, balls[b - 1].bounds())
+            };
+            match to_f32_box(&bounds).filter(|_| bounds.is_finite()) {
                 Some(bx) => {
                     boxes.push(bx);
-                    ids.push(i as u32);
+                    ids.push(id);
                 }
-                None if n.bounds.is_empty() => {}
-                None => loose.push(i as u32),
+                None if bounds.is_empty() => {}
+                None => loose.push(id),
             }
         }
         stats.unbounded = loose.len();
+        let object = |id: u32| match id & BALL {
+            0 => object_of[id as usize],
+            _ => balls[(id & !BALL) as usize].object,
+        };
         let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
             let params = BvhBuildParams {
                 max_prims_per_leaf: 1,
@@ -141,22 +167,25 @@ impl World {
             Some(bvh)
         } else {
             loose.extend(ids);
-            loose.sort_unstable();
+            loose.sort_unstable_by_key(|&id| object(id));
             None
         };
-        stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>();
-        let (spheres, loose): (Vec<u32>, Vec<u32>) = loose
-            .into_iter()
-            .partition(|&i| nodes[i as usize].plain_sphere().is_some());
+        drop(boxes);
+        stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>()
+            + object_of.len() * 4
+            + balls.len() * std::mem::size_of::<Ball>()
+            + surfaces.len() * std::mem::size_of::<SurfaceInfo>();
+        let (spheres, loose): (Vec<u32>, Vec<u32>) =
+            loose.into_iter().partition(|&id| id & BALL != 0);
         let spheres = spheres
             .into_iter()
-            .filter_map(|i| {
-                let (center, radius) = nodes[i as usize].plain_sphere()?;
-                Some(LooseSphere {
-                    center,
-                    radius,
-                    node: i,
-                })
+            .map(|id| {
+                let b = &balls[(id & !BALL) as usize];
+                LooseSphere {
+                    center: b.center,
+                    radius: b.radius,
+                    node: id,
+                }
             })
             .collect();
         World {
@@ -164,6 +193,7 @@ impl World {
             spheres,
             nodes,
             object_of,
+            balls,
             surfaces,
             bvh,
             loose,
@@ -171,14 +201,32 @@ impl World {
         }
     }
 
+    /// Nearest hit of object `id` (a node, or a ball when tagged [`BALL`]) in (t_min, t_max).
+    #[inline]
+    fn hit(&self, id: u32, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+        match id & BALL {
+            0 => self.nodes[id as usize].intersect(ray, t_min, t_max),
+            _ => self.balls[(id & !BALL) as usize].intersect(id & !BALL, ray, t_min, t_max),
+        }
+    }
+
+    /// Whether object `id` lies in (t_min, t_max) along the ray.
+    #[inline]
+    fn blocks(&self, id: u32, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        match id & BALL {
+            0 => self.nodes[id as usize].occluded(ray, t_min, t_max),
+            _ => self.balls[(id & !BALL) as usize].occluded(ray, t_min, t_max),
+        }
+    }
+
     /// Number of top-level objects.
     pub fn len(&self) -> usize {
-        self.nodes.len()
+        self.nodes.len() + self.balls.len()
     }
 
     /// True when there is nothing to hit.
     pub fn is_empty(&self) -> bool {
-        self.nodes.is_empty()
+        self.len() == 0
     }
 
     /// Build counters.
@@ -194,10 +242,16 @@ impl World {
 
     /// Bounds of everything finite.
     pub fn bounds(&self) -> Aabb {
-        self.nodes
+        let nodes = self
+            .nodes
             .iter()
             .filter(|n| n.bounds.is_finite())
-            .fold(Aabb::EMPTY, |b, n| b.union(n.bounds))
+            .fold(Aabb::EMPTY, |b, n| b.union(n.bounds));
+        self.balls
+            .iter()
+            .map(Ball::bounds)
+            .filter(Aabb::is_finite)
+            .fold(nodes, Aabb::union)
     }
 
     /// The nearest hit in (t_min, t_max).
@@ -215,7 +269,7 @@ impl World {
             }
         }
         for &i in &self.loose {
-            if let Some(h) = self.nodes[i as usize].intersect(ray, t_min, far) {
+            if let Some(h) = self.hit(i, ray, t_min, far) {
                 far = h.t;
                 best = Some((h, i));
             }
@@ -224,7 +278,7 @@ impl World {
             match BvhRay::new(ray.origin, ray.dir, t_min, far) {
                 Some(r) => bvh.closest(&r, |slot, _| {
                     let i = bvh.order[slot];
-                    match self.nodes[i as usize].intersect(ray, t_min, far) {
+                    match self.hit(i, ray, t_min, far) {
                         Some(h) => {
                             far = h.t;
                             best = Some((h, i));
@@ -235,7 +289,7 @@ impl World {
                 }),
                 None => {
                     for &i in &bvh.order {
-                        if let Some(h) = self.nodes[i as usize].intersect(ray, t_min, far) {
+                        if let Some(h) = self.hit(i, ray, t_min, far) {
                             far = h.t;
                             best = Some((h, i));
                         }
@@ -246,12 +300,14 @@ impl World {
         if best.is_none() {
             // The nearest hit is a fast-path sphere: now compute its normal and the rest. Its t
             // in (t_min, t_max) is the one found above (the same quadratic on the same ray).
-            best = best_sphere
-                .and_then(|i| Some((self.nodes[i as usize].intersect(ray, t_min, t_max)?, i)));
+            best = best_sphere.and_then(|i| Some((self.hit(i, ray, t_min, t_max)?, i)));
         }
         best.map(|(mut h, i)| {
             if self.need_uv {
-                self.nodes[i as usize].finish(&mut h);
+                match i & BALL {
+                    0 => self.nodes[i as usize].finish(&mut h),
+                    _ => self.balls[(i & !BALL) as usize].finish(&mut h),
+                }
             }
             SurfaceHit {
                 t: h.t,
@@ -281,7 +337,7 @@ impl World {
         if self
             .loose
             .iter()
-            .any(|&i| self.nodes[i as usize].occluded(ray, t_min, t_max))
+            .any(|&i| self.blocks(i, ray, t_min, t_max))
         {
             return true;
         }
@@ -289,18 +345,16 @@ impl World {
             return false;
         };
         match BvhRay::new(ray.origin, ray.dir, t_min, t_max) {
-            Some(r) => bvh.any(&r, |slot| {
-                self.nodes[bvh.order[slot] as usize].occluded(ray, t_min, t_max)
-            }),
-            None => bvh
-                .order
-                .iter()
-                .any(|&i| self.nodes[i as usize].occluded(ray, t_min, t_max)),
+            Some(r) => bvh.any(&r, |slot| self.blocks(bvh.order[slot], ray, t_min, t_max)),
+            None => bvh.order.iter().any(|&i| self.blocks(i, ray, t_min, t_max)),
         }
     }
 
     /// The top-level object (an index into the scene's objects) a hit belongs to.
     pub fn object(&self, hit: &SurfaceHit) -> u32 {
+        if let Some(b) = self.ball(hit) {
+            return b.object;
+        }
         self.surfaces
             .get(hit.surface.0 as usize)
             .map_or(0, |s| s.object)
@@ -309,13 +363,27 @@ impl World {
     /// The frame texture mappings read a hit's `local_point` in: its leaf shape's (a sphere's
     /// own centre, even inside CSG), else the object-space origin.
     pub fn frame(&self, hit: &SurfaceHit) -> MappingFrame {
+        if let Some(b) = self.ball(hit) {
+            return b.frame();
+        }
         self.surfaces
             .get(hit.surface.0 as usize)
             .map_or(MappingFrame::Object, |s| s.frame)
     }
 
+    /// The ball a hit is on, if it is on one.
+    fn ball(&self, hit: &SurfaceHit) -> Option<&Ball> {
+        let id = hit.surface.0;
+        (id & BALL != 0)
+            .then(|| self.balls.get((id & !BALL) as usize))
+            .flatten()
+    }
+
     /// Whether a world point is inside the solid object `object` (CSG checks and tests).
     pub fn contains(&self, object: u32, p: DVec3) -> bool {
+        if let Some(b) = self.balls.iter().find(|b| b.object == object) {
+            return b.contains(p);
+        }
         self.object_of
             .iter()
             .position(|&o| o == object)

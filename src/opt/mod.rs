@@ -18,8 +18,9 @@ pub mod validate;
 use std::time::Instant;
 
 use crate::diag::Diagnostics;
+use crate::geometry::balls::WorldParts;
 use crate::geometry::{World, world::instanced_triangles};
-use crate::ir::{LightKind, Material, MaterialId, Scene};
+use crate::ir::{LightKind, Material, MaterialId, Object, Scene};
 
 pub use effects::{Content, Effects};
 pub use prepared::{Prepared, PreparedLight, Quality, Stats};
@@ -30,15 +31,41 @@ pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
     let start = Instant::now();
     let mut diags = Diagnostics::default();
     validate::scene(scene, &mut diags);
+    prepare_objects(scene, &scene.objects, Content::of(scene), diags, start)
+}
+
+/// [`prepare`] for a caller that no longer needs the scene (`rtc render`): each IR object is
+/// freed once it is prepared, before the world's BVH is built, so the scene and the world are
+/// never both whole in memory (a million spheres: 208 MB less at the peak).
+pub fn prepare_owned(mut scene: Scene) -> Result<Prepared, Diagnostics> {
+    let start = Instant::now();
+    let mut diags = Diagnostics::default();
+    validate::scene(&scene, &mut diags);
+    let content = Content::of(&scene);
+    let objects = std::mem::take(&mut scene.objects);
+    prepare_objects(&scene, objects, content, diags, start)
+}
+
+/// The rest of [`prepare`] once the scene is validated: `objects` are the scene's (which
+/// `scene.objects` may no longer hold) and `content` what they call for.
+fn prepare_objects<O: std::borrow::Borrow<Object>>(
+    scene: &Scene,
+    objects: impl IntoIterator<Item = O>,
+    content: Content,
+    mut diags: Diagnostics,
+    start: Instant,
+) -> Result<Prepared, Diagnostics> {
     // Objects are checked even after a scene-level error, so one run shows every problem.
     let (mut materials, fallback) = material_table(scene);
     let mut b = objects::Builder::new(materials.len() as u32);
-    let mut nodes = Vec::with_capacity(scene.objects.len());
-    let mut object_of = Vec::with_capacity(scene.objects.len());
-    for (i, o) in scene.objects.iter().enumerate() {
-        if let Some(n) = b.object(o, fallback) {
-            nodes.push(n);
-            object_of.push(i as u32);
+    // Each object goes straight into the world's storage (a plain sphere into its compact
+    // form), so a million spheres never exist as a million full primitives.
+    let mut parts = WorldParts::default();
+    let mut instanced = 0;
+    for (i, o) in objects.into_iter().enumerate() {
+        if let Some(n) = b.object(o.borrow(), fallback) {
+            instanced += instanced_triangles(&n);
+            parts.push(n, i as u32);
         }
     }
     let textures = textures::load_all(&scene.textures, &mut diags);
@@ -49,9 +76,7 @@ pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
         Some(t) if !diags.has_errors() => t,
         _ => return Err(diags),
     };
-    let instanced = nodes.iter().map(instanced_triangles).sum();
-    let mut world = World::new(nodes, object_of);
-    let content = Content::of(scene);
+    let mut world = World::new(parts);
     let effects = Effects::new(&content, &scene.settings, &scene.camera);
     world.need_uv(effects.textures || effects.bump || effects.hatching);
     let lights = scene
