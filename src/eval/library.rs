@@ -51,6 +51,12 @@ pub fn load_library(
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Option<Library> {
+    // A library exports something, so its text says `pub` (the keyword's only spelling): a
+    // scene without the word is not parsed a second time just to learn that (a third of
+    // `rtc check` on a generated file of 100 000 spheres).
+    if !text.contains("pub") {
+        return None;
+    }
     let probe = crate::syntax::parse(crate::source::FileId(0), text).0?;
     if !is_library(&probe) {
         return None;

@@ -131,3 +131,84 @@ impl WorldParts {
         self.len() == 0
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::DAffine3;
+
+    use super::*;
+    use crate::geometry::World;
+
+    /// Issue 12's rule for lean geometry: a sphere in 32–64 bytes.
+    #[test]
+    fn a_ball_takes_at_most_64_bytes() {
+        assert!(std::mem::size_of::<Ball>() <= 64);
+    }
+
+    fn sphere(center: DVec3, radius: f64, material: u32) -> Primitive {
+        let geom = Geom::Leaf(Leaf::Sphere { center, radius });
+        Primitive::new(geom, DAffine3::IDENTITY, MaterialId(material))
+    }
+
+    /// A world of balls answers every ray as the primitives they replace do, tested one by
+    /// one: the same t, point, normals, uv, error bound and material, the right object and
+    /// frame; with a BVH (30 spheres) and without one (5 spheres).
+    #[test]
+    fn balls_hit_exactly_like_the_primitives_they_replace() {
+        let mut seed = 17u64;
+        let mut rnd = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64) / (1u64 << 53) as f64
+        };
+        for count in [5, 30] {
+            let prims: Vec<Primitive> = (0..count)
+                .map(|i| {
+                    let c = DVec3::new(rnd(), rnd(), rnd()) * 8.0 - 4.0;
+                    sphere(c, 0.2 + rnd(), i)
+                })
+                .collect();
+            let mut parts = WorldParts::default();
+            for (i, p) in prims.iter().enumerate() {
+                // Object numbers with gaps, as when some objects failed to prepare.
+                parts.push(p.clone(), 2 * i as u32);
+            }
+            assert_eq!((parts.balls.len(), parts.nodes.len()), (count as usize, 0));
+            let world = World::new(parts);
+            for _ in 0..400 {
+                let origin = DVec3::new(rnd(), rnd(), rnd()) * 20.0 - 10.0;
+                let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).normalize();
+                let ray = Ray::new(origin, dir);
+                let mut want: Option<(GeoHit, usize)> = None;
+                let mut far = f64::INFINITY;
+                for (i, p) in prims.iter().enumerate() {
+                    if let Some(h) = p.intersect(&ray, 1e-9, far) {
+                        far = h.t;
+                        want = Some((h, i));
+                    }
+                }
+                let got = world.intersect(&ray, 1e-9, f64::INFINITY);
+                assert_eq!(world.occluded(&ray, 1e-9, f64::INFINITY), want.is_some());
+                let (Some(got), Some((mut want, i))) = (got, want) else {
+                    assert!(got.is_none() && want.is_none(), "{count} spheres: {ray:?}");
+                    continue;
+                };
+                prims[i].finish(&mut want);
+                assert_eq!(
+                    (got.t, got.surface_point, got.normal, got.geometric_normal),
+                    (want.t, want.point, want.normal, want.geometric_normal)
+                );
+                assert_eq!(
+                    (got.uv, got.local_point, got.error, got.material),
+                    (want.uv, want.local_point, want.error, want.material)
+                );
+                assert_eq!(world.object(&got), 2 * i as u32);
+                let Geom::Leaf(leaf) = &prims[i].geom else {
+                    unreachable!()
+                };
+                assert_eq!(world.frame(&got), leaf.frame());
+            }
+        }
+    }
+}
