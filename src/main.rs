@@ -87,6 +87,10 @@ enum Command {
         /// (Kubernetes Indexed Jobs).
         #[arg(long, value_name = "N")]
         shards: Option<u32>,
+        /// Add AOV layers to an EXR output (comma-separated): depth, normal, albedo, object
+        /// (the object ids map to source spans in `<output>.objects.json`).
+        #[arg(long, value_name = "LAYERS", value_delimiter = ',', value_parser = cli::aov::parse)]
+        aov: Vec<rtc::render::Channel>,
     },
     /// Merge the parts of a sharded render (`rtc render --shard K/N`) into one image.
     Merge {
@@ -148,6 +152,7 @@ fn main() -> ExitCode {
             shard,
             shards,
             time_limit,
+            aov,
         } => match cli::shard::resolve(shard.as_deref(), shards) {
             Ok(shard) => {
                 let job = cli::render::RenderJob {
@@ -164,6 +169,7 @@ fn main() -> ExitCode {
                     },
                     shard,
                     time_limit,
+                    aovs: cli::aov::dedup(&aov),
                 };
                 cli::render::render_frames(&job, frames.as_deref(), &inputs)
             }

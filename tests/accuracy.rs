@@ -200,7 +200,7 @@ fn an_identical_image_measures_zero() {
         &scene,
         &rtc::render::RenderOptions {
             threads: 2,
-            shard: None,
+            ..Default::default()
         },
     )
     .expect("renders");

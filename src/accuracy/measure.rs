@@ -87,7 +87,7 @@ pub fn render_once(
         scene,
         &RenderOptions {
             threads,
-            shard: None,
+            ..Default::default()
         },
         progress,
     )?;

@@ -2,6 +2,7 @@
 
 pub mod accuracy;
 pub mod accuracy_table;
+pub mod aov;
 pub mod check;
 pub mod converge;
 pub mod frames;

@@ -25,6 +25,8 @@ pub(crate) struct RenderJob<'a> {
     /// `--shard K/N`: a share of the pixels of one frame, or with `--frames` a share of the
     /// frames (task K of N renders the frames at positions K, K+N, … of the range).
     pub(crate) shard: Option<rtc::render::shard::Shard>,
+    /// AOV layers for an EXR output (`--aov`).
+    pub(crate) aovs: Vec<rtc::render::Channel>,
     /// Seconds each frame's command may take (`--time-limit`).
     pub(crate) time_limit: Option<f64>,
 }
@@ -137,6 +139,20 @@ fn render(
             path.display()
         ));
     }
+    if !job.aovs.is_empty() {
+        // A shard writes a part; the merge's output name decides the format.
+        if pixel_shard.is_none()
+            && let Err(msg) = cli::aov::check_output(&path)
+        {
+            return usage_error(&msg);
+        }
+        if job.progressive.wanted() {
+            return usage_error(
+                "`--aov` layers come from a fixed-sampling render: drop `--aov`, or `--target-error`, `--time` and `--samples-from`",
+            );
+        }
+    }
+    let image_path = path.clone();
     let path = match pixel_shard {
         Some(s) => cli::shard::part_path(job.output.clone(), &path, s),
         None => path,
@@ -154,6 +170,7 @@ fn render(
     let options = rtc::render::RenderOptions {
         threads,
         shard: pixel_shard,
+        aovs: job.aovs.clone(),
     };
     let progressive = &job.progressive;
     if progressive.wanted() && pixel_shard.is_some() {
@@ -177,9 +194,20 @@ fn render(
                 cli::stats::describe(&film, &prepared, load_time, start.elapsed())
             );
         }
-        match pixel_shard {
-            Some(s) => cli::shard::write_part(&film, &scene, s, &path),
-            None => rtc::render::output::save_film(&film, &path),
+        // The object-id layer's sidecar: beside the image, or in the part for the merge.
+        let sidecar = job
+            .aovs
+            .contains(&rtc::render::Channel::Object)
+            .then(|| cli::aov::sidecar(&scene, &sources, &image_path));
+        match (pixel_shard, sidecar) {
+            (Some(s), sidecar) => cli::shard::write_part(&film, &scene, s, &path, sidecar),
+            (None, sidecar) => {
+                rtc::render::output::save_film(&film, &path)?;
+                match sidecar {
+                    Some(json) => cli::aov::write_sidecar(&json, &cli::aov::sidecar_path(&path)),
+                    None => Ok(()),
+                }
+            }
         }
     });
     match result {

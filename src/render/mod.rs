@@ -24,8 +24,10 @@
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile
 //!   computed it (image-wide passes such as the depth range run before the pixels).
 
+pub mod aov;
 pub mod bump;
 pub mod camera;
+pub mod exr;
 pub mod film;
 pub mod flare;
 pub mod integrator;
@@ -62,6 +64,8 @@ pub struct RenderOptions {
     pub threads: usize,
     /// Render only this shard's rows (the other rows of the film stay zero); `None`: all.
     pub shard: Option<Shard>,
+    /// AOV layers to add to the film after the colour (`Channel::AOVS`; empty: none).
+    pub aovs: Vec<Channel>,
 }
 
 /// A rendered 8-bit RGB image.
@@ -106,7 +110,12 @@ pub fn render(
     } else {
         0
     };
-    progress.start(first_rows.count(h) + refine_rows);
+    let aov_rows = if options.aovs.is_empty() {
+        0
+    } else {
+        own_rows.count(h)
+    };
+    progress.start(first_rows.count(h) + refine_rows + aov_rows);
     let first = sampler.first;
     let n = channels.len();
     let (mut values, mut stats) =
@@ -142,15 +151,24 @@ pub fn render(
         let sources = flare::sources(scene, &view.camera, &f, &mut stats);
         flare::apply(&sources, &f, w, h, n, &mut values);
     }
+    let mut film = Film::new(w, h, channels, values, stats, scene.settings().encoding);
+    if !options.aovs.is_empty() {
+        let (values, _) = aov::render(
+            scene,
+            &view,
+            first,
+            &options.aovs,
+            own_rows,
+            &pool,
+            progress,
+        )?;
+        let n = options.aovs.len();
+        for (i, c) in options.aovs.iter().enumerate() {
+            film.push_channel(*c, values.iter().skip(i).step_by(n).copied().collect());
+        }
+    }
     progress.finish();
-    Ok(Film::new(
-        w,
-        h,
-        channels,
-        values,
-        stats,
-        scene.settings().encoding,
-    ))
+    Ok(film)
 }
 
 /// The first sample number of a refined pixel's finer grid: past the first grid's numbers (so

@@ -100,7 +100,7 @@ impl Job<'_> {
         };
         let options = rtc::render::RenderOptions {
             threads: self.threads,
-            shard: None,
+            ..Default::default()
         };
         let film = rtc::render::render(prepared, &options, &progress)?;
         let seconds = progress.start.elapsed().as_secs_f64();

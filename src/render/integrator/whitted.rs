@@ -278,7 +278,7 @@ impl<'a> Whitted<'a> {
     }
 
     /// Material colour, or the texture's where the material has one.
-    fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
+    pub(crate) fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
         match mat.texture {
             Some(t) if self.effects.textures => {
                 let frame = self.scene.world().frame(hit);
@@ -289,7 +289,7 @@ impl<'a> Whitted<'a> {
     }
 
     /// The shading normal: `facing`, tilted by the material's bump map where it has one.
-    fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
+    pub(crate) fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
         match mat.bump {
             Some(b) if self.effects.bump => bump::perturb(
                 &self.scene.textures()[b.texture.0 as usize],
