@@ -4,6 +4,7 @@ pub mod accuracy;
 pub mod accuracy_table;
 pub mod check;
 pub mod converge;
+pub mod convert;
 pub mod frames;
 pub mod inputs;
 pub mod progress;
