@@ -215,8 +215,9 @@ fn every_course_scene_converts_to_the_same_scene() {
 }
 
 /// The converted text of a few scenes that cover the kinds of content (a `.in` file, a custom
-/// camera with supersampling, an oriented texture at astronomical coordinates, a mesh, glass)
-/// renders the bytes of the course file at its own settings.
+/// camera with supersampling, an oriented texture at astronomical coordinates, a mesh, glass,
+/// the one view written `course: true`) renders the bytes of the course file at its own
+/// settings.
 #[test]
 fn converted_scenes_render_the_same_bytes() {
     let dir = scratch("convert-render");
@@ -227,6 +228,7 @@ fn converted_scenes_render_the_same_bytes() {
         "yaml/blue-earth.yaml",
         "yaml/student-extensions/scene01-mesh__cpo.yaml",
         "yaml/uoit/scene06.yaml",
+        "yaml/student-extensions/mesh__rug.yaml",
     ] {
         let path = root().join("tests/data/course").join(rel);
         let case = convert_into(&path, &dir);
@@ -285,6 +287,15 @@ fn cli_writes_stdout_or_the_output_and_never_clobbers_it() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("let blue = material {"), "{text}");
     assert!(text.contains("fov: 2 * atan(200 / 1000)"), "{text}");
+    let rug = rtc(&[
+        "convert",
+        "tests/data/course/yaml/student-extensions/mesh__rug.yaml",
+    ]);
+    let rug = String::from_utf8(rug.stdout).unwrap();
+    assert!(
+        rug.contains("course: true") && !rug.contains("fov:"),
+        "{rug}"
+    );
 
     let target = dir.join("scene.rtc");
     let target_s = target.to_str().unwrap();

@@ -14,8 +14,8 @@ const LINE: usize = 100;
 /// How a converted file refers to an asset: by a path relative to the directory it is written to.
 pub type AssetPath<'a> = &'a dyn Fn(&Path) -> String;
 
-/// The `material { ... }` record of a course material.
-pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> String {
+/// The fields of the `material { ... }` record of a course material.
+pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec<String> {
     let defaults = Material::default();
     let mut fields = Vec::new();
     let textured = m.texture.map(|t| &scene.textures[t.0 as usize]);
@@ -44,7 +44,7 @@ pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> String {
     if let Some(s) = m.shading {
         fields.push(format!("shading: {}", shading(s)));
     }
-    format!("material {{ {} }}", fields.join(", "))
+    fields
 }
 
 /// A shading model as the language names it.

@@ -92,6 +92,11 @@ pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -
     let comments = |ids: &[usize], out: &mut String| {
         for (k, &i) in ids.iter().enumerate() {
             let c = &doc.comments[i];
+            // An empty comment that ends a paragraph was spacing before a rule (dropped).
+            let next_gap = ids.get(k + 1).is_none_or(|&j| doc.comments[j].after_gap);
+            if c.text.trim().is_empty() && next_gap {
+                continue;
+            }
             if k > 0 && c.after_gap {
                 out.push('\n');
             }
@@ -115,8 +120,17 @@ pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -
             "\n// The course uses ks as the mirror weight, so reflect = ks unless the file gives it.\n",
         );
         for (id, name) in &palette.entries {
-            let m = shapes::material(scene, scene.material(*id), doc.asset);
-            let _ = writeln!(out, "let {name} = {m}");
+            let fields = shapes::material(scene, scene.material(*id), doc.asset);
+            let one_line = format!("let {name} = material {{ {} }}", fields.join(", "));
+            if one_line.len() <= 100 {
+                let _ = writeln!(out, "{one_line}");
+            } else {
+                let _ = writeln!(
+                    out,
+                    "let {name} = material {{\n  {}\n}}",
+                    fields.join("\n  ")
+                );
+            }
         }
     }
     out.push('\n');
@@ -136,32 +150,43 @@ pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -
 }
 
 /// The camera. The course camera (|up| = the size of a pixel at `center`) becomes the field of
-/// view that makes a pixel at `center` exactly |up| wide; `up` keeps its length, which only the
-/// course camera reads.
+/// view that makes a pixel at `center` exactly |up| wide, or, where no angle does that to the
+/// last bit, `course: true` (the language's course camera); `up` keeps its length either way.
 fn camera(c: &Camera) -> String {
     let mut out = String::new();
-    let fov = match c.projection {
-        Projection::Perspective { fov_y } => format!("{}rad", number(fov_y)),
+    let view = match c.projection {
+        Projection::Perspective { fov_y } => format!("fov: {}rad", number(fov_y)),
         Projection::Course => {
             let size = c.up.length();
+            let width = if size == 1.0 {
+                "one unit".to_string()
+            } else {
+                format!("|up| = {} units", number(size))
+            };
             let _ = writeln!(
                 out,
-                "// The course camera: {}×{} pixels {} wide on the plane through `center` (COURSE.md §2.4).\n\
-                 // The field of view 2·atan(h·|up| / (2·distance(eye, center))) gives the same rays.",
-                c.width,
-                c.height,
-                if size == 1.0 {
-                    "one unit".to_string()
-                } else {
-                    format!("|up| = {} units", number(size))
-                },
+                "// The course camera: {}×{} pixels {width} wide on the plane through `center` (COURSE.md §2.4).",
+                c.width, c.height
             );
-            course_fov(c)
+            match course_fov(c) {
+                Some(fov) => {
+                    out.push_str(
+                        "// The field of view 2·atan(h·|up| / (2·distance(eye, center))) gives the same rays.\n",
+                    );
+                    format!("fov: {fov}")
+                }
+                None => {
+                    out.push_str(
+                        "// No field of view gives this pixel size to the last bit, so `course: true` keeps it.\n",
+                    );
+                    "course: true".to_string()
+                }
+            }
         }
     };
     let _ = writeln!(
         out,
-        "camera {{\n  eye: {}, center: {}, up: {}\n  fov: {fov}, resolution: [{}, {}]",
+        "camera {{\n  eye: {}, center: {}, up: {}\n  {view}, resolution: [{}, {}]",
         vector(c.eye),
         vector(c.center),
         direction(c.up),
@@ -180,27 +205,17 @@ fn camera(c: &Camera) -> String {
     out
 }
 
-/// The `fov` of a course camera: `2 * atan(a / d)` with a = h·|up|/2 and d = |center − eye|,
-/// when the renderer's pixel for it (`render::camera`: 2·d·tan(fov/2)/h) is |up| to the bit;
-/// else the nearest angle that gives that pixel, in radians.
-fn course_fov(c: &Camera) -> String {
+/// The `fov` of a course camera, `2 * atan(a / d)` with a = h·|up|/2 and d = |center − eye|,
+/// when the renderer's pixel for it (`render::camera`: 2·d·tan(fov/2)/h, with `libm` as here)
+/// is |up| to the bit.
+fn course_fov(c: &Camera) -> Option<String> {
     let size = c.up.length();
     let d = (c.center - c.eye).length();
     let h = f64::from(c.height);
     let a = h * size / 2.0;
     let fov = 2.0 * libm::atan(a / d);
-    let pixel = |f: f64| 2.0 * d * libm::tan(0.5 * f) / h;
-    if pixel(fov) == size {
-        return format!("2 * atan({} / {})", number(a), number(d));
-    }
-    let exact = (1..=256u64)
-        .flat_map(|k| [fov.to_bits() + k, fov.to_bits() - k])
-        .map(f64::from_bits)
-        .find(|f| pixel(*f) == size);
-    match exact {
-        Some(f) => format!("{}rad", number(f)),
-        None => format!("2 * atan({} / {})", number(a), number(d)),
-    }
+    let pixel = 2.0 * d * libm::tan(0.5 * fov) / h;
+    (pixel == size).then(|| format!("2 * atan({} / {})", number(a), number(d)))
 }
 
 fn light(l: &Light) -> String {
