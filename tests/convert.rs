@@ -9,6 +9,7 @@
 //! (kd + ks > 1) and the course formats do not lint.
 
 mod cli_support;
+mod common;
 
 use std::path::{Path, PathBuf};
 
@@ -76,16 +77,7 @@ fn convert_into(path: &Path, dir: &Path) -> Case {
 
 fn load_rtc(path: &Path) -> Scene {
     let mut sources = SourceMap::default();
-    let loaded = load_file(path, &mut sources, &EvalOptions::default());
-    let errors: Vec<String> = loaded
-        .diagnostics
-        .items
-        .iter()
-        .filter(|d| d.is_error())
-        .map(|d| format!("{}: {}", d.code, d.message))
-        .collect();
-    assert!(errors.is_empty(), "{}: {errors:?}", path.display());
-    loaded.scene.expect("the converted scene evaluates")
+    common::scene_of(load_file(path, &mut sources, &EvalOptions::default()), path)
 }
 
 fn canonical(p: &Path) -> PathBuf {
