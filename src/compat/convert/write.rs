@@ -125,11 +125,7 @@ pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -
             if one_line.len() <= 100 {
                 let _ = writeln!(out, "{one_line}");
             } else {
-                let _ = writeln!(
-                    out,
-                    "let {name} = material {{\n  {}\n}}",
-                    fields.join("\n  ")
-                );
+                let _ = writeln!(out, "let {name} = material {{\n  {}\n}}", grouped(&fields));
             }
         }
     }
@@ -147,6 +143,30 @@ pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -
     out.push('\n');
     out.push_str(&render(&scene.settings));
     out
+}
+
+/// Material fields on lines of their own kind: the colour, the texture, the Phong coefficients,
+/// the mirror and glass weights, then the rest one a line.
+fn grouped(fields: &[String]) -> String {
+    let kind = |f: &str| match f.split(':').next().unwrap_or("") {
+        "ka" | "kd" | "ks" | "n" => 1,
+        "reflect" | "refract" | "eta" => 2,
+        _ => 0,
+    };
+    let mut lines: Vec<String> = Vec::new();
+    let mut last = 0;
+    for f in fields {
+        let k = kind(f);
+        match lines.last_mut() {
+            Some(line) if k != 0 && k == last => {
+                line.push_str(", ");
+                line.push_str(f);
+            }
+            _ => lines.push(f.clone()),
+        }
+        last = k;
+    }
+    lines.join("\n  ")
 }
 
 /// The camera. The course camera (|up| = the size of a pixel at `center`) becomes the field of
