@@ -117,6 +117,17 @@ enum Command {
     },
     /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
     Accuracy(cli::accuracy::AccuracyArgs),
+    /// Convert a course scene (`.in`, `.yaml`) to rtc source that renders the same image.
+    Convert {
+        /// The course scene file (`.in`, `.yaml` or `.yml`).
+        file: PathBuf,
+        /// Write the rtc source here (atomically) instead of to stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -188,6 +199,11 @@ fn main() -> ExitCode {
         }),
         Command::Accuracy(args) => cli::accuracy::run(&args),
         Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
+        Command::Convert {
+            file,
+            output,
+            format,
+        } => cli::convert::run(&file, output.as_deref(), format),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,

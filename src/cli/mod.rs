@@ -5,6 +5,7 @@ pub mod accuracy_table;
 pub mod aov;
 pub mod check;
 pub mod converge;
+pub mod convert;
 pub mod frames;
 pub mod inputs;
 pub mod progress;
