@@ -14,9 +14,11 @@ mod flare;
 pub mod limits;
 mod loaded;
 mod motion;
+pub mod provenance;
 
 pub use flare::Flare;
 pub use loaded::Loaded;
+pub use provenance::Provenance;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
