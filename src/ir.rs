@@ -18,8 +18,8 @@ pub mod provenance;
 
 pub use flare::Flare;
 pub use loaded::Loaded;
-pub use provenance::Provenance;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
+pub use provenance::Provenance;
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;

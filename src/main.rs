@@ -113,6 +113,8 @@ enum Command {
     },
     /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
     Accuracy(cli::accuracy::AccuracyArgs),
+    /// Explain one pixel: its rays, what they hit, the loops and calls that made it (docs/why.md).
+    Why(cli::why::WhyArgs),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -181,6 +183,7 @@ fn main() -> ExitCode {
             threads,
         }),
         Command::Accuracy(args) => cli::accuracy::run(&args),
+        Command::Why(args) => cli::why::run(&args),
         Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
     };
     match outcome {

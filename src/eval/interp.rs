@@ -531,7 +531,10 @@ impl<'a> Interp<'a> {
         out: &mut Sink,
     ) -> R<()> {
         if level == gens.len() {
-            let saved = self.prov.is_some().then(|| self.enter_iteration(gens.len(), span));
+            let saved = self
+                .prov
+                .is_some()
+                .then(|| self.enter_iteration(gens.len(), span));
             let r = self.for_body(filter, body, out, span);
             if let (Some(p), Some(s)) = (&mut self.prov, saved) {
                 p.leave(s);

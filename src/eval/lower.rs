@@ -193,9 +193,7 @@ impl Lowerer {
                                 span: c.span,
                             });
                         }
-                        _ => {
-                            self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids, false)
-                        }
+                        _ => self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids, false),
                     }
                 }
                 out.push(ir::Object {
