@@ -293,7 +293,7 @@ fn text(
                 let notes = std::mem::take(&mut d.notes);
                 let shown = report::render(&[d], cx.sources, "", format, color);
                 for line in shown.trim_end().lines() {
-                    let _ = writeln!(out, "{indent}  {line}");
+                    let _ = writeln!(out, "{}", format!("{indent}  {line}").trim_end());
                 }
                 for note in notes {
                     let _ = writeln!(out, "{indent}  - {note}");
