@@ -67,10 +67,7 @@ fn the_trace_names_the_iteration_and_the_call() {
     assert_eq!(chain.len(), 2, "{trace}");
     assert_eq!(chain[0]["kind"], "iteration");
     assert_eq!(chain[0]["bindings"], format!("i = {i}"));
-    assert_eq!(
-        chain[0]["span"]["line"],
-        line_of(TOWERS, "for i in 0..3")
-    );
+    assert_eq!(chain[0]["span"]["line"], line_of(TOWERS, "for i in 0..3"));
     assert_eq!(chain[1]["kind"], "call");
     assert_eq!(chain[1]["name"], "tower");
     assert_eq!(chain[1]["span"]["line"], line_of(TOWERS, "tower(0)"));
@@ -90,9 +87,15 @@ fn the_trace_names_the_iteration_and_the_call() {
     // The human text shows the same facts next to the source.
     let run = rtc(&["why", TOWERS, "32", "22"]);
     let text = String::from_utf8_lossy(&run.stdout);
-    assert!(text.contains("in iteration i = 1 of this `for`"), "{text}");
+    assert!(
+        text.contains(&format!("in iteration i = {i} of this `for`")),
+        "{text}"
+    );
     assert!(text.contains("in call of `tower`"), "{text}");
-    assert!(text.contains("sphere(center: [x, 0.5 + i, 0], radius: 0.5)"), "{text}");
+    assert!(
+        text.contains("sphere(center: [x, 0.5 + i, 0], radius: 0.5)"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -106,7 +109,10 @@ fn a_shadowed_pixel_names_the_occluder() {
     assert_eq!(light["span"]["line"], line_of(TOWERS, "point_light"));
     let occ = &light["occluder"];
     assert_eq!(occ["object"]["kind"], "sphere");
-    assert_eq!(occ["object"]["span"]["line"], line_of(TOWERS, "sphere(center: [x"));
+    assert_eq!(
+        occ["object"]["span"]["line"],
+        line_of(TOWERS, "sphere(center: [x")
+    );
     // The occluder lies on the segment from the shaded point to the light.
     let p = v3(&ray["hit"]["point"]);
     let to_light = DVec3::new(-6.0, 10.0, 6.0) - p;
@@ -121,7 +127,10 @@ fn a_shadowed_pixel_names_the_occluder() {
 fn a_mirror_pixel_shows_its_reflected_child_with_the_weight() {
     let d = why(TOWERS, 43, 23, &[]);
     let ray = &d["ray"];
-    assert_eq!(ray["hit"]["material"]["span"]["line"], line_of(TOWERS, "let mirror"));
+    assert_eq!(
+        ray["hit"]["material"]["span"]["line"],
+        line_of(TOWERS, "let mirror")
+    );
     let kids = ray["children"].as_array().unwrap();
     assert_eq!(kids.len(), 1);
     let child = &kids[0];
@@ -142,7 +151,12 @@ fn a_mirror_pixel_shows_its_reflected_child_with_the_weight() {
 fn rendered(file: &str, name: &str) -> image::RgbImage {
     let out = scratch("why").join(name);
     let run = rtc(&["render", file, "-o", out.to_str().unwrap()]);
-    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     image::open(&out).unwrap().to_rgb8()
 }
 
@@ -152,7 +166,10 @@ fn the_final_colour_is_the_rendered_pixel() {
     for (x, y) in [(32, 22), (20, 30), (43, 23), (0, 0), (63, 47)] {
         let d = why(TOWERS, x, y, &[]);
         assert_eq!(d["samples_per_pixel"], 1);
-        assert_eq!(d["color"], d["pixel_color"], "one sample: the centre is the pixel");
+        assert_eq!(
+            d["color"], d["pixel_color"],
+            "one sample: the centre is the pixel"
+        );
         assert_eq!(d["color"]["linear"], d["ray"]["color"]);
         let bytes: Vec<u64> = d["color"]["bytes"]
             .as_array()
@@ -212,7 +229,14 @@ fn course_files_point_into_themselves() {
     );
     let kids = d["ray"]["children"].as_array().unwrap();
     assert_eq!(kids[0]["k"], 0.5, "the course's mirror weight is ks");
-    let run = rtc(&["why", "tests/data/course/in/rt1.in", "90", "80", "--format", "short"]);
+    let run = rtc(&[
+        "why",
+        "tests/data/course/in/rt1.in",
+        "90",
+        "80",
+        "--format",
+        "short",
+    ]);
     assert_eq!(run.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&run.stdout).contains("tests/data/course/in/rt1.in:"));
 }
@@ -229,7 +253,10 @@ fn a_pixel_outside_the_image_is_a_diagnostic() {
             "{err}"
         );
         assert!(err.contains("outside the 64×48 image"), "{err}");
-        assert!(err.contains("from 0 to 63") && err.contains("from 0 to 47"), "{err}");
+        assert!(
+            err.contains("from 0 to 63") && err.contains("from 0 to 47"),
+            "{err}"
+        );
         assert!(run.stdout.is_empty());
     }
 }
@@ -275,7 +302,10 @@ fn the_json_shape_is_pinned() {
             "weight"
         ]
     );
-    assert_eq!(keys(&ray["hit"]), ["material", "normal", "object", "point", "t"]);
+    assert_eq!(
+        keys(&ray["hit"]),
+        ["material", "normal", "object", "point", "t"]
+    );
     assert_eq!(keys(&ray["hit"]["material"]), ["index", "source", "span"]);
     assert_eq!(
         keys(&ray["hit"]["object"]),
@@ -292,7 +322,10 @@ fn the_json_shape_is_pinned() {
             "specular", "tinted"
         ]
     );
-    assert_eq!(keys(&ray["lights"][0]["occluder"]), ["object", "point", "t"]);
+    assert_eq!(
+        keys(&ray["lights"][0]["occluder"]),
+        ["object", "point", "t"]
+    );
 }
 
 #[test]
@@ -303,12 +336,8 @@ fn provenance_is_kept_only_when_asked_and_groups_add_their_chain() {
         for k in 0..2 { g.translate([k * 5, 0, 0]) }\n";
     let path = Path::new("prov.rtc");
     let mut sources = rtc::source::SourceMap::new();
-    let plain = rtc::eval::load_source(
-        path,
-        text,
-        &mut sources,
-        &rtc::eval::EvalOptions::default(),
-    );
+    let plain =
+        rtc::eval::load_source(path, text, &mut sources, &rtc::eval::EvalOptions::default());
     assert!(plain.scene.is_some() && plain.provenance.is_none());
     let opts = rtc::eval::EvalOptions {
         provenance: true,
@@ -321,7 +350,11 @@ fn provenance_is_kept_only_when_asked_and_groups_add_their_chain() {
     assert_eq!(prov.objects.len(), 4, "indexed like the scene's objects");
     for (i, expect_k) in [(0, 0), (1, 0), (2, 1), (3, 1)] {
         let chains = prov.trace(i);
-        assert_eq!(chains.len(), 2, "made in `ball`, placed in the loop: {chains:?}");
+        assert_eq!(
+            chains.len(),
+            2,
+            "made in `ball`, placed in the loop: {chains:?}"
+        );
         assert!(matches!(
             &chains[0][0].kind,
             rtc::ir::provenance::StepKind::Call { name, .. } if name == "ball"

@@ -99,3 +99,66 @@ impl Builder {
         self.table
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::rc::Rc;
+
+    use glam::DAffine3;
+
+    use super::*;
+    use crate::eval::value::{Mat, Obj, ObjShape};
+    use crate::source::Span;
+
+    /// An object value as it was before it had an origin.
+    #[allow(dead_code)]
+    struct Bare {
+        shape: ObjShape,
+        transform: DAffine3,
+        material: Option<Rc<Mat>>,
+        motion: Option<crate::ir::Motion>,
+        span: Span,
+    }
+
+    #[test]
+    fn the_origin_fits_in_the_object_values_padding() {
+        assert_eq!(std::mem::size_of::<Obj>(), std::mem::size_of::<Bare>());
+    }
+
+    fn call(name: &str) -> StepKind {
+        StepKind::Call {
+            name: name.to_string(),
+            at: Span::default(),
+        }
+    }
+
+    #[test]
+    fn origins_follow_the_steps() {
+        let mut b = Builder::default();
+        assert_eq!(b.origin(), 0, "the top level has no chain");
+        let outer = b.enter(call("f"));
+        let made = b.origin();
+        assert_eq!(b.origin(), made, "objects made in one step share an origin");
+        // Moved inside the same call: nothing new.
+        assert_eq!(b.derive(made), made);
+        b.leave(outer);
+        // Moved at the top level: still only where it was made.
+        assert_eq!(b.derive(made), made);
+        let lp = b.enter(call("g"));
+        let placed = b.derive(made);
+        assert_ne!(placed, made, "made in `f`, placed in `g`");
+        b.leave(lp);
+        let p = b.finish(vec![vec![placed], vec![made, placed]]);
+        let names = |o: usize| -> Vec<String> {
+            p.trace(o)
+                .iter()
+                .map(|c| match &c[0].kind {
+                    StepKind::Call { name, .. } => name.clone(),
+                    StepKind::Iteration { bindings, .. } => bindings.clone(),
+                })
+                .collect()
+        };
+        assert_eq!(names(0), ["f", "g"]);
+        assert_eq!(names(1), ["f", "g"], "a chain is kept once");
+    }
+}
