@@ -1,6 +1,7 @@
 //! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it,
 //! `rtc watch FILE` serves a live page that re-renders it on every change.
 //! `rtc accuracy FILE` measures what its quality knobs cost and buy.
+//! `rtc why FILE X Y` explains what made one pixel.
 //! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 an `rtc accuracy` sweep
 //! interrupted by Ctrl-C (its partial report is written). Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
