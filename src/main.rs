@@ -1,6 +1,7 @@
 //! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it,
 //! `rtc watch FILE` serves a live page that re-renders it on every change.
 //! `rtc accuracy FILE` measures what its quality knobs cost and buy.
+//! `rtc why FILE X Y` explains what made one pixel.
 //! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 an `rtc accuracy` sweep
 //! interrupted by Ctrl-C (its partial report is written). Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
@@ -128,6 +129,8 @@ enum Command {
         #[arg(long, value_enum, default_value = "human")]
         format: Format,
     },
+    /// Explain one pixel: its rays, what they hit, the loops and calls that made it (docs/why.md).
+    Why(cli::why::WhyArgs),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -198,6 +201,7 @@ fn main() -> ExitCode {
             threads,
         }),
         Command::Accuracy(args) => cli::accuracy::run(&args),
+        Command::Why(args) => cli::why::run(&args),
         Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
         Command::Convert {
             file,

@@ -14,6 +14,8 @@ pub mod report;
 pub mod shard;
 pub mod stats;
 pub mod watch;
+pub mod why;
+pub mod why_json;
 
 use std::path::Path;
 

@@ -70,6 +70,7 @@ pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loade
     Loaded {
         scene,
         diagnostics: diags,
+        provenance: None,
     }
 }
 
@@ -82,6 +83,7 @@ pub fn load_yaml_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loa
     Loaded {
         scene,
         diagnostics: diags,
+        provenance: None,
     }
 }
 
@@ -114,6 +116,7 @@ fn read(path: &Path) -> Result<(String, Option<usize>), Loaded> {
         Loaded {
             scene: None,
             diagnostics,
+            provenance: None,
         }
     })?;
     Ok(match String::from_utf8(bytes) {

@@ -14,7 +14,7 @@ use super::View;
 use super::film::{Channel, Stats};
 use super::integrator::whitted::Whitted;
 use super::progress::Progress;
-use super::sampler::{Grid, Rng};
+use super::sampler::Grid;
 use super::shard::Rows;
 use super::tiles;
 use crate::diag::Diagnostic;
@@ -38,16 +38,7 @@ pub fn render(
     tiles::run(pool, w, h, aovs.len(), rows, progress, |x, y, ctx, out| {
         let mut pixel = PixelAovs::default();
         for k in 0..grid.len() {
-            let (sx, sy) = grid.offset(k);
-            if view.random {
-                ctx.rng = Rng::new(x, y, k, view.seed);
-            }
-            let lens = if view.camera.has_lens() {
-                ctx.rng.get2(0)
-            } else {
-                (0.5, 0.5)
-            };
-            let ray = view.ray(x, y, sx, sy, lens, &ctx.rng);
+            let ray = view.camera_sample(x, y, k, (k, grid.len()), grid.offset(k), ctx);
             pixel.add(scene, &whitted, &ray);
         }
         for (o, c) in out.iter_mut().zip(aovs) {

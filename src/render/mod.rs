@@ -27,6 +27,7 @@
 pub mod aov;
 pub mod bump;
 pub mod camera;
+pub mod explain;
 pub mod exr;
 pub mod film;
 pub mod flare;
@@ -37,6 +38,7 @@ pub mod output;
 pub mod part;
 pub mod progress;
 pub mod progressive;
+pub mod record;
 pub mod sampler;
 pub mod shading;
 pub mod shard;
@@ -239,6 +241,38 @@ impl View<'_> {
         camera.ray(x, y, sx, sy, lens).at_time(time)
     }
 
+    /// Sets `ctx` up for camera sample number `index` of pixel (x, y), the `slot.0`-th of
+    /// `slot.1` samples of its grid, at sub-pixel `offset`, and returns its ray.
+    #[inline]
+    pub fn camera_sample(
+        &self,
+        x: u32,
+        y: u32,
+        index: u32,
+        slot: (u32, u32),
+        (sx, sy): (f64, f64),
+        ctx: &mut Ctx,
+    ) -> Ray {
+        // Only lenses and area lights draw random numbers; skip keying them otherwise.
+        if self.random {
+            ctx.rng = Rng::new(x, y, index, self.seed);
+        }
+        if self.spread_lights {
+            ctx.lights = LightShare {
+                slot: slot.0,
+                size: slot.1,
+            };
+        }
+        let lens = if self.camera.has_lens() {
+            ctx.rng.get2(0)
+        } else {
+            (0.5, 0.5)
+        };
+        let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
+        ctx.stats.camera_rays += 1;
+        ray
+    }
+
     /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
     /// into `out`; sample numbers start at `first_index`.
     #[allow(clippy::too_many_arguments)]
@@ -256,25 +290,8 @@ impl View<'_> {
         let mut sample = [Color::ZERO; film::MAX_CHANNELS];
         let sample = &mut sample[..out.len()];
         for k in 0..grid.len() {
-            let (sx, sy) = grid.offset(k);
-            let index = first_index + k;
-            // Only lenses and area lights draw random numbers; skip keying them otherwise.
-            if self.random {
-                ctx.rng = Rng::new(x, y, index, self.seed);
-            }
-            if self.spread_lights {
-                ctx.lights = LightShare {
-                    slot: k,
-                    size: grid.len(),
-                };
-            }
-            let lens = if self.camera.has_lens() {
-                ctx.rng.get2(0)
-            } else {
-                (0.5, 0.5)
-            };
-            let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
-            ctx.stats.camera_rays += 1;
+            let ray =
+                self.camera_sample(x, y, first_index + k, (k, grid.len()), grid.offset(k), ctx);
             integrator.sample(&ray, ctx, sample);
             for (o, s) in out.iter_mut().zip(sample.iter()) {
                 *o += *s;
