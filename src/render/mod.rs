@@ -24,6 +24,7 @@
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile
 //!   computed it (image-wide passes such as the depth range run before the pixels).
 
+pub mod adaptive;
 pub mod bump;
 pub mod camera;
 pub mod film;
@@ -149,20 +150,15 @@ pub fn render_region(
             view.average(&integrator, first, 0, r.x + x, r.y + y, ctx, out);
         })?;
     if let Some((fine, threshold)) = sampler.refine {
-        // Adaptive sampling: a pixel takes the finer grid where its colour differs from a
-        // 4-neighbour's by more than the threshold in some channel. Both passes are pure per
-        // pixel.
+        // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
+        // (contrast to a 4-neighbour, or a predicted change of 8-bit level). Both passes are
+        // pure per pixel.
+        let criterion = adaptive::Criterion::new(first, fine, threshold, scene.settings().encoding);
         let coarse = &values;
         let at = |x: u32, y: u32| coarse[(y as usize * w as usize + x as usize) * n];
         let (refined, more) = tiles::run(&pool, w, h, n, own_rows, progress, |x, y, ctx, out| {
-            let c = at(x, y);
-            let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
-            let edge = (x > 0 && differs(x - 1, y))
-                || (x + 1 < w && differs(x + 1, y))
-                || (y > 0 && differs(x, y - 1))
-                || (y + 1 < h && differs(x, y + 1));
             let here = (y as usize * w as usize + x as usize) * n;
-            if !edge {
+            if !criterion.refines(at, x, y, w, h) {
                 out.copy_from_slice(&coarse[here..here + n]);
                 return;
             }
