@@ -14,6 +14,7 @@ use super::View;
 use super::film::{Channel, Stats};
 use super::integrator::whitted::Whitted;
 use super::progress::Progress;
+use super::region::Region;
 use super::sampler::Grid;
 use super::shard::Rows;
 use super::tiles;
@@ -22,20 +23,23 @@ use crate::diag::Diagnostic;
 /// Most distinct objects counted in one pixel's vote (a 16×16 grid has 256 samples).
 const MAX_VOTES: usize = 256;
 
-/// The AOV layers asked for, in order, over the `rows` of the image: one value per pixel and
-/// channel, interleaved per pixel like [`tiles::run`]'s output.
+/// The AOV layers asked for, in order, over the `rows` of the image `region`: one value per
+/// pixel and channel, interleaved per pixel like [`tiles::run`]'s output.
+#[allow(clippy::too_many_arguments)]
 pub fn render(
     scene: &Prepared,
     view: &View<'_>,
     grid: Grid,
     aovs: &[Channel],
+    region: Region,
     rows: Rows,
     pool: &rayon::ThreadPool,
     progress: &dyn Progress,
 ) -> Result<(Vec<Color>, Stats), Diagnostic> {
     let whitted = Whitted::new(scene);
-    let (w, h) = (view.camera.width(), view.camera.height());
+    let (w, h) = (region.width, region.height);
     tiles::run(pool, w, h, aovs.len(), rows, progress, |x, y, ctx, out| {
+        let (x, y) = (region.x + x, region.y + y);
         let mut pixel = PixelAovs::default();
         for k in 0..grid.len() {
             let ray = view.camera_sample(x, y, k, (k, grid.len()), grid.offset(k), ctx);

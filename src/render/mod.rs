@@ -24,6 +24,7 @@
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile
 //!   computed it (image-wide passes such as the depth range run before the pixels).
 
+pub mod adaptive;
 pub mod aov;
 pub mod bump;
 pub mod camera;
@@ -39,13 +40,14 @@ pub mod part;
 pub mod progress;
 pub mod progressive;
 pub mod record;
+pub mod region;
 pub mod sampler;
 pub mod shading;
 pub mod shard;
 pub mod texture;
 pub mod tiles;
 
-use crate::diag::{Diagnostic, Diagnostics};
+use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::geometry::Ray;
 use crate::ir::{Color, Scene};
 use crate::opt::Prepared;
@@ -58,6 +60,7 @@ use shard::{Rows, Shard};
 
 pub use film::{Channel, Stats};
 pub use progress::{CANCELLED, Progress, Silent};
+pub use region::Region;
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]
@@ -95,12 +98,45 @@ pub fn render(
     options: &RenderOptions,
     progress: &dyn Progress,
 ) -> Result<Film, Diagnostic> {
+    render_region(scene, options, None, progress)
+}
+
+/// [`render`] of a sub-rectangle of the image only (`None`: the whole image): the film is the
+/// region's size and each of its pixels equals the whole render's, except that adaptive
+/// refinement compares a border pixel only with neighbours inside the region and the lens
+/// flare (a post stage over the whole image) is not applied. Errors when the region does not
+/// fit the image or comes with a shard.
+pub fn render_region(
+    scene: &Prepared,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &dyn Progress,
+) -> Result<Film, Diagnostic> {
     let pool = tiles::pool(options.threads)?;
     let sampler = PixelSampler::new(scene.settings().sampling);
     let view = View::new(scene);
     let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
     let channels = integrator.channels();
-    let (w, h) = (view.camera.width(), view.camera.height());
+    let (full_w, full_h) = (view.camera.width(), view.camera.height());
+    if let Some(r) = region {
+        r.check(full_w, full_h)?;
+        if options.shard.is_some() {
+            return Err(Diagnostic::new(
+                Severity::Error,
+                region::REGION,
+                None,
+                "a region cannot be rendered in shards",
+            )
+            .with_help("render the region in one process, or shard the whole image"));
+        }
+    }
+    let r = region.unwrap_or(Region {
+        x: 0,
+        y: 0,
+        width: full_w,
+        height: full_h,
+    });
+    let (w, h) = (r.width, r.height);
     // A shard's first pass covers a one-row halo when adaptive refinement will read it.
     let (first_rows, own_rows) = match options.shard {
         None => (Rows::All, Rows::All),
@@ -122,33 +158,29 @@ pub fn render(
     let n = channels.len();
     let (mut values, mut stats) =
         tiles::run(&pool, w, h, n, first_rows, progress, |x, y, ctx, out| {
-            view.average(&integrator, first, 0, x, y, ctx, out);
+            view.average(&integrator, first, 0, r.x + x, r.y + y, ctx, out);
         })?;
     if let Some((fine, threshold)) = sampler.refine {
-        // Adaptive sampling: a pixel takes the finer grid where its colour differs from a
-        // 4-neighbour's by more than the threshold in some channel. Both passes are pure per
-        // pixel.
+        // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
+        // (contrast to a 4-neighbour, or a predicted change of 8-bit level). Both passes are
+        // pure per pixel.
+        let criterion = adaptive::Criterion::new(first, fine, threshold, scene.settings().encoding);
         let coarse = &values;
         let at = |x: u32, y: u32| coarse[(y as usize * w as usize + x as usize) * n];
         let (refined, more) = tiles::run(&pool, w, h, n, own_rows, progress, |x, y, ctx, out| {
-            let c = at(x, y);
-            let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
-            let edge = (x > 0 && differs(x - 1, y))
-                || (x + 1 < w && differs(x + 1, y))
-                || (y > 0 && differs(x, y - 1))
-                || (y + 1 < h && differs(x, y + 1));
             let here = (y as usize * w as usize + x as usize) * n;
-            if !edge {
+            if !criterion.refines(at, x, y, w, h) {
                 out.copy_from_slice(&coarse[here..here + n]);
                 return;
             }
             ctx.stats.refined_pixels += 1;
+            let (x, y) = (r.x + x, r.y + y);
             view.average(&integrator, fine, refine_start(fine), x, y, ctx, out);
         })?;
         values = refined;
         stats.add(&more);
     }
-    if let (true, Some(f)) = (scene.effects().flare, scene.settings().flare) {
+    if let (true, Some(f), None) = (scene.effects().flare, scene.settings().flare, region) {
         // A post stage over the whole image (shaded mode: colour is the only channel).
         let sources = flare::sources(scene, &view.camera, &f, &mut stats);
         flare::apply(&sources, &f, w, h, n, &mut values);
@@ -160,6 +192,7 @@ pub fn render(
             &view,
             first,
             &options.aovs,
+            r,
             own_rows,
             &pool,
             progress,
