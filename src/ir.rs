@@ -14,10 +14,12 @@ mod flare;
 pub mod limits;
 mod loaded;
 mod motion;
+pub mod provenance;
 
 pub use flare::Flare;
 pub use loaded::Loaded;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
+pub use provenance::Provenance;
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub type Color = DVec3;

@@ -1,6 +1,7 @@
 //! The `rtc` command line: `rtc check FILE` lints a scene, `rtc render FILE` renders it,
 //! `rtc watch FILE` serves a live page that re-renders it on every change.
 //! `rtc accuracy FILE` measures what its quality knobs cost and buy.
+//! `rtc why FILE X Y` explains what made one pixel.
 //! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 an `rtc accuracy` sweep
 //! interrupted by Ctrl-C (its partial report is written). Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
@@ -87,6 +88,10 @@ enum Command {
         /// (Kubernetes Indexed Jobs).
         #[arg(long, value_name = "N")]
         shards: Option<u32>,
+        /// Add AOV layers to an EXR output (comma-separated): depth, normal, albedo, object
+        /// (the object ids map to source spans in `<output>.objects.json`).
+        #[arg(long, value_name = "LAYERS", value_delimiter = ',', value_parser = cli::aov::parse)]
+        aov: Vec<rtc::render::Channel>,
     },
     /// Merge the parts of a sharded render (`rtc render --shard K/N`) into one image.
     Merge {
@@ -113,6 +118,19 @@ enum Command {
     },
     /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
     Accuracy(cli::accuracy::AccuracyArgs),
+    /// Convert a course scene (`.in`, `.yaml`) to rtc source that renders the same image.
+    Convert {
+        /// The course scene file (`.in`, `.yaml` or `.yml`).
+        file: PathBuf,
+        /// Write the rtc source here (atomically) instead of to stdout.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+    },
+    /// Explain one pixel: its rays, what they hit, the loops and calls that made it (docs/why.md).
+    Why(cli::why::WhyArgs),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -148,6 +166,7 @@ fn main() -> ExitCode {
             shard,
             shards,
             time_limit,
+            aov,
         } => match cli::shard::resolve(shard.as_deref(), shards) {
             Ok(shard) => {
                 let job = cli::render::RenderJob {
@@ -164,6 +183,7 @@ fn main() -> ExitCode {
                     },
                     shard,
                     time_limit,
+                    aovs: cli::aov::dedup(&aov),
                 };
                 cli::render::render_frames(&job, frames.as_deref(), &inputs)
             }
@@ -181,7 +201,13 @@ fn main() -> ExitCode {
             threads,
         }),
         Command::Accuracy(args) => cli::accuracy::run(&args),
+        Command::Why(args) => cli::why::run(&args),
         Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
+        Command::Convert {
+            file,
+            output,
+            format,
+        } => cli::convert::run(&file, output.as_deref(), format),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,

@@ -1,10 +1,14 @@
 //! The scene01 family written in the language (`scenes/course/*.rtc`) evaluates to the same IR as
 //! the course YAML it mirrors (`tests/data/course/yaml/*.yaml`), apart from spans and one stated
-//! camera rule: the language has no course projection, so the `.rtc` files use the perspective
-//! camera whose pixel at `center` measures `|up|`, which gives the renderer the same rays.
+//! camera rule: the `.rtc` files use the perspective camera whose pixel at `center` measures
+//! `|up|` (rather than the language's `camera { course: true }`), which gives the renderer the
+//! same rays.
 
-use std::path::{Path, PathBuf};
+mod common;
 
+use std::path::PathBuf;
+
+use common::scene_of;
 use rtc::compat::{erase_spans, load_yaml};
 use rtc::eval::{EvalOptions, load_file};
 use rtc::ir::{Projection, Scene};
@@ -12,20 +16,6 @@ use rtc::source::SourceMap;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn scene_of(loaded: rtc::ir::Loaded, path: &Path) -> Scene {
-    let errors: Vec<String> = loaded
-        .diagnostics
-        .items
-        .iter()
-        .filter(|d| d.is_error())
-        .map(|d| format!("{}: {}", d.code, d.message))
-        .collect();
-    assert!(errors.is_empty(), "{}: {errors:?}", path.display());
-    loaded
-        .scene
-        .unwrap_or_else(|| panic!("{}: no scene", path.display()))
 }
 
 /// The course camera (|up| = pixel size at `center`, COURSE.md §2.4) as the equivalent

@@ -29,7 +29,7 @@ fn render(s: &Scene, threads: usize) -> Film {
         s,
         &RenderOptions {
             threads,
-            shard: None,
+            ..Default::default()
         },
     )
     .unwrap()

@@ -450,6 +450,7 @@ fn a_prepared_scene_renders_at_other_qualities() {
     let quality = rtc::opt::Quality {
         sampling: Sampling::Grid { factor: 2 },
         max_depth: 2,
+        ..rtc::opt::Quality::of(&s.settings)
     };
     prepared.set_quality(quality).unwrap();
     let again = rtc::render::render(&prepared, &opts(2), &rtc::render::Silent).unwrap();

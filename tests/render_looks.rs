@@ -28,7 +28,7 @@ fn scene(src: &str) -> Scene {
 fn opts() -> RenderOptions {
     RenderOptions {
         threads: 2,
-        shard: None,
+        ..Default::default()
     }
 }
 
@@ -150,7 +150,7 @@ fn zero_gloss_is_the_mirror_byte_for_byte() {
         &glossy,
         &RenderOptions {
             threads: 1,
-            shard: None,
+            ..Default::default()
         },
     )
     .unwrap();

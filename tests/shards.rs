@@ -41,7 +41,11 @@ sphere(center: [1.2, 0.3, 1], radius: 0.3).material(material {{ color: rgb(0.2, 
 }
 
 fn opts(shard: Option<Shard>) -> RenderOptions {
-    RenderOptions { threads: 2, shard }
+    RenderOptions {
+        threads: 2,
+        shard,
+        ..Default::default()
+    }
 }
 
 /// Every shard of `n`, through the part file format and back.

@@ -1,15 +1,17 @@
 //! The quality knobs `rtc accuracy` sweeps, their ladders, the reference setting and how a
 //! setting reads as a `render { ... }` block.
 //!
-//! Adding a knob (the insignificance cut-off `render { cutoff: ... }` is the next one) is one
+//! Adding a knob is one
 //! variant of [`Knob`] with its arm in [`Knob::name`], [`Knob::key`], [`Knob::ladder`] and
 //! [`used_knobs`], one field of [`Setting`] (with its arm in [`Setting::apply`],
 //! [`Setting::render_block`] and [`reference_setting`]); the sweep, the joint product, the
 //! report and the plot take every knob the same way.
 
 use crate::diag::Diagnostic;
-use crate::ir::Sampling;
-use crate::ir::limits::{MAX_DEPTH, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS};
+use crate::ir::limits::{
+    MAX_DEPTH, MAX_GLOSS_SAMPLES, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS,
+};
+use crate::ir::{LANGUAGE_CUTOFF, Sampling};
 use crate::opt::{Effects, Prepared, Quality};
 
 /// A quality knob: one dimension of the sweep.
@@ -21,17 +23,23 @@ pub enum Knob {
     AdaptiveThreshold,
     /// Samples per edge of every area light (soft shadows).
     LightSamples,
+    /// Rays per glossy lobe at a camera ray's hit (`gloss_samples` of every glossy material).
+    GlossSamples,
     /// Reflection/refraction bounces.
     MaxDepth,
+    /// The insignificance cut-off: secondary rays lighter than it are not traced.
+    Cutoff,
 }
 
 impl Knob {
     /// Every knob, in report order.
-    pub const ALL: [Knob; 4] = [
+    pub const ALL: [Knob; 6] = [
         Knob::PixelSamples,
         Knob::AdaptiveThreshold,
         Knob::LightSamples,
+        Knob::GlossSamples,
         Knob::MaxDepth,
+        Knob::Cutoff,
     ];
 
     /// The name in tables and plot legends.
@@ -40,7 +48,9 @@ impl Knob {
             Knob::PixelSamples => "pixel samples",
             Knob::AdaptiveThreshold => "adaptive threshold",
             Knob::LightSamples => "light samples",
+            Knob::GlossSamples => "gloss samples",
             Knob::MaxDepth => "max depth",
+            Knob::Cutoff => "cut-off",
         }
     }
 
@@ -50,7 +60,9 @@ impl Knob {
             Knob::PixelSamples => "pixel_samples",
             Knob::AdaptiveThreshold => "adaptive_threshold",
             Knob::LightSamples => "light_samples",
+            Knob::GlossSamples => "gloss_samples",
             Knob::MaxDepth => "max_depth",
+            Knob::Cutoff => "cutoff",
         }
     }
 
@@ -88,9 +100,20 @@ impl Knob {
                     ..*base
                 })
                 .collect(),
+            Knob::GlossSamples => GLOSS_LADDER
+                .iter()
+                .map(|&n| Setting {
+                    gloss_samples: Some(n),
+                    ..*base
+                })
+                .collect(),
             Knob::MaxDepth => DEPTH_LADDER
                 .iter()
                 .map(|&max_depth| Setting { max_depth, ..*base })
+                .collect(),
+            Knob::Cutoff => CUTOFF_LADDER
+                .iter()
+                .map(|&cutoff| Setting { cutoff, ..*base })
                 .collect(),
         }
     }
@@ -104,6 +127,12 @@ pub const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
 pub const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
 /// Bounces swept; the reference uses [`REFERENCE_MAX_DEPTH`].
 pub const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
+/// Rays per glossy lobe swept; the reference uses [`REFERENCE_GLOSS_SAMPLES`].
+pub const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
+/// Cut-offs swept, from cheap (large: more rays dropped) to 0 (every ray traced, the
+/// reference's): about three steps per decade, with the language's default
+/// [`LANGUAGE_CUTOFF`] (≈ 3.0e-4, half an sRGB level at black) among them.
+pub const CUTOFF_LADDER: [f64; 7] = [0.1, 0.03, 0.01, 0.003, 0.001, LANGUAGE_CUTOFF, 0.0];
 
 /// The reference's pixel grid: 16×16 = 256 samples per pixel (twice the ladder's top per axis),
 /// or the scene's own if finer.
@@ -113,6 +142,10 @@ pub const REFERENCE_PIXEL_SAMPLES: u32 = 16;
 /// 256 × 16 = 4096 shadow samples per light: 7× the ladder's dearest rung at the scene's own
 /// 4×4 pixel grid (16 × 36). More costs minutes per reference on a soft-shadow scene.
 pub const REFERENCE_LIGHT_SAMPLES: u32 = 4;
+/// The reference's rays per glossy lobe, or the scene's own if more: the ladder's top. Each of
+/// the reference's 256 camera samples per pixel draws its own lobe, so a reference pixel
+/// averages 256 × 16 = 4096 lobe rays: 16× the top rung at the scene's 4×4 grid.
+pub const REFERENCE_GLOSS_SAMPLES: u32 = 16;
 /// The reference's bounces: twice the ladder's top (a 16th bounce weighs at most the product of
 /// 16 reflect/refract coefficients), or the scene's own if more.
 pub const REFERENCE_MAX_DEPTH: u32 = 16;
@@ -126,6 +159,10 @@ pub struct Setting {
     pub max_depth: u32,
     /// Samples per edge of every area light; `None` keeps each light's own.
     pub light_samples: Option<u32>,
+    /// Rays per glossy lobe of every material; `None` keeps each material's own.
+    pub gloss_samples: Option<u32>,
+    /// The insignificance cut-off.
+    pub cutoff: f64,
 }
 
 impl Setting {
@@ -135,6 +172,8 @@ impl Setting {
             sampling: scene.settings().sampling,
             max_depth: scene.settings().max_depth,
             light_samples: None,
+            gloss_samples: None,
+            cutoff: scene.settings().cutoff,
         }
     }
 
@@ -144,6 +183,8 @@ impl Setting {
         scene.set_quality(Quality {
             sampling: self.sampling,
             max_depth: self.max_depth,
+            cutoff: self.cutoff,
+            gloss_samples: self.gloss_samples,
         })?;
         match self.light_samples {
             Some(n) => scene.set_light_samples(&vec![[n, n]; own_lights.len()]),
@@ -159,7 +200,8 @@ impl Setting {
         }
     }
 
-    /// A short label: `grid 4, depth 2, light 3`.
+    /// A short label: `grid 4, depth 2, light 3, gloss 8, cutoff 1.0e-2` (the cut-off only
+    /// when it is not the language's default).
     pub fn label(&self) -> String {
         let mut parts = vec![match self.sampling {
             Sampling::Grid { factor } => format!("grid {factor}"),
@@ -173,12 +215,19 @@ impl Setting {
         if let Some(n) = self.light_samples {
             parts.push(format!("light {n}"));
         }
+        if let Some(n) = self.gloss_samples {
+            parts.push(format!("gloss {n}"));
+        }
+        if self.cutoff != LANGUAGE_CUTOFF {
+            parts.push(format!("cutoff {:.1e}", self.cutoff));
+        }
         parts.join(", ")
     }
 
-    /// The setting as the fields of a `render { ... }` block (docs/language.md §19), with the
-    /// area lights' `samples:` in a comment when the setting changes them (it is a field of each
-    /// `area_light`, not of `render`).
+    /// The setting as the fields of a `render { ... }` block (docs/language.md §19), `cutoff`
+    /// only when it is not the language's default, with the area lights' `samples:` and the
+    /// glossy materials' `gloss_samples:` in a comment when the setting changes them (they are
+    /// fields of each `area_light` and `material`, not of `render`).
     pub fn render_block(&self) -> String {
         let sampling = match self.sampling {
             Sampling::Grid { factor } => format!("supersampling: {factor}"),
@@ -188,9 +237,24 @@ impl Setting {
                 threshold,
             } => format!("supersampling: adaptive(min: {min}, max: {max}, threshold: {threshold})"),
         };
-        let mut block = format!("render {{ {sampling}, max_depth: {} }}", self.max_depth);
+        let cutoff = if self.cutoff == LANGUAGE_CUTOFF {
+            String::new()
+        } else {
+            format!(", cutoff: {}", self.cutoff)
+        };
+        let mut block = format!(
+            "render {{ {sampling}, max_depth: {}{cutoff} }}",
+            self.max_depth
+        );
+        let mut also = Vec::new();
         if let Some(n) = self.light_samples {
-            block += &format!("  // and every area_light {{ samples: {n} }}");
+            also.push(format!("every area_light {{ samples: {n} }}"));
+        }
+        if let Some(n) = self.gloss_samples {
+            also.push(format!("every glossy material {{ gloss_samples: {n} }}"));
+        }
+        if !also.is_empty() {
+            block += &format!("  // and {}", also.join(", "));
         }
         block
     }
@@ -198,7 +262,8 @@ impl Setting {
 
 /// The knobs `effects` says the scene uses: pixel samples always (every image has edges; with
 /// a lens they are also the lens samples), the adaptive threshold when the scene samples
-/// adaptively, light samples with soft shadows, bounces with reflection or refraction.
+/// adaptively, light samples with soft shadows, gloss samples with a glossy material, bounces
+/// and the cut-off with reflection or refraction.
 pub fn used_knobs(effects: &Effects, own: &Setting) -> Vec<Knob> {
     Knob::ALL
         .into_iter()
@@ -206,14 +271,21 @@ pub fn used_knobs(effects: &Effects, own: &Setting) -> Vec<Knob> {
             Knob::PixelSamples => true,
             Knob::AdaptiveThreshold => matches!(own.sampling, Sampling::Adaptive { .. }),
             Knob::LightSamples => effects.soft_shadows,
-            Knob::MaxDepth => effects.reflection || effects.refraction,
+            Knob::GlossSamples => effects.glossy,
+            Knob::MaxDepth | Knob::Cutoff => effects.reflection || effects.refraction,
         })
         .collect()
 }
 
 /// The converged setting the sweep is measured against: every used knob set high (the
-/// `REFERENCE_*` constants, or the scene's own where it is higher), the rest at the scene's.
-pub fn reference_setting(knobs: &[Knob], own: &Setting, own_light_samples: u32) -> Setting {
+/// `REFERENCE_*` constants, or the scene's own where it is higher; the cut-off at 0), the rest
+/// at the scene's. `own_light_samples` and `own_gloss_samples` are the scene's largest.
+pub fn reference_setting(
+    knobs: &[Knob],
+    own: &Setting,
+    own_light_samples: u32,
+    own_gloss_samples: u32,
+) -> Setting {
     let mut r = *own;
     for k in knobs {
         match k {
@@ -230,15 +302,24 @@ pub fn reference_setting(knobs: &[Knob], own: &Setting, own_light_samples: u32) 
                         .min(MAX_LIGHT_SAMPLES_PER_AXIS),
                 );
             }
+            Knob::GlossSamples => {
+                r.gloss_samples = Some(
+                    REFERENCE_GLOSS_SAMPLES
+                        .max(own_gloss_samples)
+                        .min(MAX_GLOSS_SAMPLES),
+                );
+            }
             Knob::MaxDepth => r.max_depth = REFERENCE_MAX_DEPTH.max(own.max_depth).min(MAX_DEPTH),
+            Knob::Cutoff => r.cutoff = 0.0,
         }
     }
     r
 }
 
 /// The joint sweep: the product of three rungs (cheapest, middle, dearest) of each knob's
-/// ladder, the sampling knobs sharing one dimension. Its points with the ladders' give the
-/// Pareto front.
+/// ladder, the sampling knobs sharing one dimension; the cut-off and the gloss samples stay at
+/// the scene's own (two more dimensions would make the product nine times longer; their
+/// ladders are measured alone). Its points with the ladders' give the Pareto front.
 pub fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
     let three = |ladder: Vec<Setting>| -> Vec<Setting> {
         if ladder.len() <= 3 {
@@ -280,6 +361,7 @@ pub fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
                     sampling,
                     max_depth,
                     light_samples,
+                    ..*own
                 });
             }
         }

@@ -6,7 +6,7 @@ use std::time::Instant;
 use crate::diag::Diagnostic;
 use crate::metrics::{self, Comparison, FlipMap, LinearRgb};
 use crate::opt::Prepared;
-use crate::render::{self, Progress, RenderOptions};
+use crate::render::{self, Progress, Region, RenderOptions};
 
 use super::knob::Setting;
 
@@ -64,6 +64,9 @@ pub struct MeasureOptions {
     pub seeds: [u64; 2],
     /// Worker threads (0 = all cores).
     pub threads: usize,
+    /// Render only this region of the (swept) image; `None`: all of it. [`super::study`] sets
+    /// it from [`super::StudyOptions::region`].
+    pub region: Option<Region>,
 }
 
 /// A render's linear colour as `f32` RGB triples, rows from the top.
@@ -74,21 +77,23 @@ pub fn linear_rgb(film: &render::film::Film) -> Vec<f32> {
         .collect()
 }
 
-/// Renders `scene` once with its current settings and seed `seed`: the image and its wall time.
+/// Renders `scene` (or the `options.region` of it) once with its current settings and seed
+/// `seed`: the image, its wall time and its rays.
 pub fn render_once(
     scene: &mut Prepared,
     seed: u64,
-    threads: usize,
+    options: &MeasureOptions,
     progress: &dyn Progress,
 ) -> Result<(Vec<f32>, f64, u64), Diagnostic> {
     scene.set_seed(seed);
     let start = Instant::now();
-    let film = render::render(
+    let film = render::render_region(
         scene,
         &RenderOptions {
-            threads,
-            shard: None,
+            threads: options.threads,
+            ..Default::default()
         },
+        options.region,
         progress,
     )?;
     let seconds = start.elapsed().as_secs_f64();
@@ -121,7 +126,7 @@ pub fn measure(
     let mut images = Vec::new();
     for (i, &seed) in seeds.iter().enumerate() {
         for r in 0..options.repeat.max(1) {
-            let (image, seconds, n) = render_once(scene, seed, options.threads, progress)?;
+            let (image, seconds, n) = render_once(scene, seed, options, progress)?;
             runs.push(seconds);
             after_render();
             if i == 0 && r == 0 {

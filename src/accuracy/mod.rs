@@ -24,6 +24,7 @@ use std::path::PathBuf;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::Scene;
+use crate::render::Region;
 
 pub use knob::{Knob, Setting};
 pub use measure::MeasureOptions;
@@ -55,8 +56,12 @@ pub struct StudyOptions {
     pub scene_name: String,
     /// The factor per side of the swept resolution; `None` picks one under `max_pixels`.
     pub scale: Option<f64>,
-    /// The pixel budget of an automatic scale ([`scale::DEFAULT_MAX_PIXELS`]).
+    /// The pixel budget of an automatic scale ([`scale::DEFAULT_MAX_PIXELS`]; with a region,
+    /// of the region's pixels).
     pub max_pixels: u64,
+    /// Sweep only this sub-rectangle, in the scene's full-resolution pixels (scaled with the
+    /// image); `None`: the whole image.
+    pub region: Option<Region>,
     /// The reference.
     pub reference: ReferenceChoice,
     /// Seeds, repeats, threads.
@@ -79,39 +84,61 @@ pub fn study(
 ) -> Result<Report, Diagnostics> {
     let one = |d: Diagnostic| Diagnostics { items: vec![d] };
     let mut scene = scene.clone();
-    let factor = options.scale.unwrap_or_else(|| {
-        scale::auto_scale(scene.camera.width, scene.camera.height, options.max_pixels)
-    });
-    let size = scale::scale_scene(&mut scene, factor);
+    if let Some(r) = options.region {
+        r.check(scene.camera.width, scene.camera.height)
+            .map_err(one)?;
+    }
+    let (w, h) = options
+        .region
+        .map_or((scene.camera.width, scene.camera.height), |r| {
+            (r.width, r.height)
+        });
+    let factor = options
+        .scale
+        .unwrap_or_else(|| scale::auto_scale(w, h, options.max_pixels));
+    let mut size = scale::scale_scene(&mut scene, factor);
+    size.region = options
+        .region
+        .map(|r| r.scaled(factor, size.width, size.height));
+    let measure = MeasureOptions {
+        region: size.region,
+        ..options.measure
+    };
     let mut prepared = crate::opt::prepare(&scene)?;
     let own = Setting::of(&prepared);
     let own_lights = prepared.light_samples();
     let effects = prepared.effects();
     let knobs = knob::used_knobs(&effects, &own);
     let own_light_max = own_lights.iter().flatten().copied().max().unwrap_or(1);
-    let ref_setting = knob::reference_setting(&knobs, &own, own_light_max);
+    let own_gloss_max = prepared
+        .materials()
+        .iter()
+        .filter(|m| m.gloss > 0.0)
+        .map(|m| m.gloss_samples)
+        .max()
+        .unwrap_or(1);
+    let ref_setting = knob::reference_setting(&knobs, &own, own_light_max, own_gloss_max);
     let random = prepared.random();
     let planned = sweep::plan(&knobs, &own, options.joint);
     let seeds = options.measure.seeds;
 
     progress.begin(
-        planned.len() as u64 * sweep::renders_per_point(random, &options.measure)
+        planned.len() as u64 * sweep::renders_per_point(random, &measure)
             + if random { 2 } else { 1 },
     );
     let (reference, hash) = match &options.reference {
-        ReferenceChoice::File(path) => (
-            reference::from_file(path, size.width, size.height).map_err(one)?,
-            None,
-        ),
+        ReferenceChoice::File(path) => {
+            let (w, h) = size.rendered();
+            (reference::from_file(path, w, h).map_err(one)?, None)
+        }
         ReferenceChoice::Render { cache_dir } => {
             progress.point(&format!("reference ({})", ref_setting.label()));
             ref_setting.apply(&mut prepared, &own_lights).map_err(one)?;
-            let hash = reference::content_hash(&scene, &ref_setting, seeds);
+            let hash = reference::content_hash(&scene, &ref_setting, seeds, size.region);
             let cancel = sweep::CancelOnly(progress);
             let r = reference::rendered(
                 &mut prepared,
-                seeds,
-                options.measure.threads,
+                &measure,
                 cache_dir.as_deref().map(|d| (d, hash.as_str())),
                 &cancel,
             )
@@ -142,7 +169,7 @@ pub fn study(
         &own_lights,
         &planned,
         &reference,
-        &options.measure,
+        &measure,
         progress,
     )
     .map_err(one)?;

@@ -17,10 +17,10 @@ use crate::diag::{Diagnostic, IO_ERROR, Severity};
 use crate::ir::Scene;
 use crate::metrics::{self, LinearRgb, NoiseEstimate};
 use crate::opt::Prepared;
-use crate::render::Progress;
+use crate::render::{Progress, Region};
 
 use super::knob::Setting;
-use super::measure::render_once;
+use super::measure::{MeasureOptions, render_once};
 
 /// Where the reference came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -64,19 +64,32 @@ impl Reference {
 }
 
 /// The content hash naming a cached reference: FNV-1a (64 bits) over the scene's IR with the
-/// reference quality, the resolution, the seeds and rtc's version.
-pub fn content_hash(scene: &Scene, reference: &Setting, seeds: [u64; 2]) -> String {
+/// reference quality, the resolution, the region, the seeds and rtc's version.
+pub fn content_hash(
+    scene: &Scene,
+    reference: &Setting,
+    seeds: [u64; 2],
+    region: Option<Region>,
+) -> String {
     let mut s = scene.clone();
     s.settings.sampling = reference.sampling;
     s.settings.max_depth = reference.max_depth;
+    s.settings.cutoff = reference.cutoff;
+    if let Some(n) = reference.gloss_samples {
+        for m in &mut s.materials {
+            m.gloss_samples = n;
+        }
+    }
     s.settings.seed = 0;
     s.settings.output = None;
     let text = format!(
-        "rtc {} reference {:?} seeds {:?} scene {:?}",
+        "rtc {} reference {:?} seeds {:?} scene {:?}{}",
         env!("CARGO_PKG_VERSION"),
         reference,
         seeds,
-        s
+        s,
+        // No text without a region, so the hashes of whole-image references stay as they were.
+        region.map_or(String::new(), |r| format!(" region {}", r.text()))
     );
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for b in text.bytes() {
@@ -86,17 +99,21 @@ pub fn content_hash(scene: &Scene, reference: &Setting, seeds: [u64; 2]) -> Stri
     format!("{h:016x}")
 }
 
-/// Renders the reference (two seeds when the scene draws random numbers), or reads it from
-/// `cache` (a directory and the scene's content hash) and writes it there after rendering.
-/// `scene` must already be set to the reference setting.
+/// Renders the reference (two seeds when the scene draws random numbers; the image or its
+/// `options.region`), or reads it from `cache` (a directory and the scene's content hash) and
+/// writes it there after rendering. `scene` must already be set to the reference setting.
 pub fn rendered(
     scene: &mut Prepared,
-    seeds: [u64; 2],
-    threads: usize,
+    options: &MeasureOptions,
     cache: Option<(&Path, &str)>,
     progress: &dyn Progress,
 ) -> Result<Reference, Diagnostic> {
-    let (width, height) = (scene.camera().width, scene.camera().height);
+    let (width, height) = options
+        .region
+        .map_or((scene.camera().width, scene.camera().height), |r| {
+            (r.width, r.height)
+        });
+    let seeds = options.seeds;
     let used: &[u64] = if scene.random() { &seeds } else { &seeds[..1] };
     let files: Option<Vec<PathBuf>> = cache.map(|(dir, hash)| {
         used.iter()
@@ -114,7 +131,7 @@ pub fn rendered(
         None => {
             let mut runs = Vec::new();
             for &seed in used {
-                runs.push(render_once(scene, seed, threads, progress)?.0);
+                runs.push(render_once(scene, seed, options, progress)?.0);
             }
             if let Some(files) = &files {
                 for (f, run) in files.iter().zip(&runs) {
@@ -202,7 +219,7 @@ fn check_size(path: &Path, w: u32, h: u32, want_w: u32, want_h: u32) -> Result<(
         ),
     )
     .with_help(format!(
-        "give a {want_w}×{want_h} reference, or choose the sweep's size with --scale"
+        "give a {want_w}×{want_h} reference, or choose the sweep's size with --scale (and --region)"
     )))
 }
 

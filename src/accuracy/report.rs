@@ -257,6 +257,12 @@ impl Report {
                 "full_width": self.size.full_width,
                 "full_height": self.size.full_height,
                 "scale": self.size.scale,
+                "region": self.size.region.map(|r| json!({
+                    "x": r.x,
+                    "y": r.y,
+                    "width": r.width,
+                    "height": r.height,
+                })),
             },
             "threads": self.threads,
             "repeat": self.repeat,
@@ -303,5 +309,7 @@ fn setting_json(s: &Setting) -> Value {
         "sampling": sampling,
         "max_depth": s.max_depth,
         "light_samples": s.light_samples,
+        "gloss_samples": s.gloss_samples,
+        "cutoff": s.cutoff,
     })
 }

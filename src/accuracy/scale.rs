@@ -1,6 +1,8 @@
-//! Sweeping a big scene at a reduced resolution: the same view with fewer, larger pixels.
+//! Sweeping a big scene at a reduced resolution (the same view with fewer, larger pixels),
+//! or on a region of it.
 
 use crate::ir::{Projection, Scene};
+use crate::render::Region;
 
 /// The default pixel budget of a sweep: a scene with more pixels is swept at the scale that
 /// brings it under this (256×256), so a sweep of dozens of renders takes minutes.
@@ -19,14 +21,23 @@ pub struct SweepSize {
     pub width: u32,
     /// The swept height.
     pub height: u32,
+    /// The region rendered, in the swept image's pixels (`None`: all of it).
+    pub region: Option<Region>,
 }
 
 impl SweepSize {
-    /// How many times more pixels the full image has than the swept one (what a measured time
-    /// is multiplied by to predict the full render's).
+    /// The size of the images rendered: the region's, or the swept image's.
+    pub fn rendered(&self) -> (u32, u32) {
+        self.region
+            .map_or((self.width, self.height), |r| (r.width, r.height))
+    }
+
+    /// How many times more pixels the full image has than a rendered one (what a measured
+    /// time is multiplied by to predict the full render's; for a region this assumes its
+    /// pixels cost what the image's do on average).
     pub fn pixel_ratio(&self) -> f64 {
-        (f64::from(self.full_width) * f64::from(self.full_height))
-            / (f64::from(self.width) * f64::from(self.height))
+        let (w, h) = self.rendered();
+        (f64::from(self.full_width) * f64::from(self.full_height)) / (f64::from(w) * f64::from(h))
     }
 }
 
@@ -59,5 +70,6 @@ pub fn scale_scene(scene: &mut Scene, scale: f64) -> SweepSize {
         scale,
         width,
         height,
+        region: None,
     }
 }

@@ -124,12 +124,7 @@ pub fn run(
     // page faults (the reference is not always rendered before: it may come from the cache).
     if let Some(first) = planned.first() {
         first.setting.apply(scene, own_lights)?;
-        match render_once(
-            scene,
-            options.seeds[0],
-            options.threads,
-            &CancelOnly(progress),
-        ) {
+        match render_once(scene, options.seeds[0], options, &CancelOnly(progress)) {
             Err(d) if d.code == CANCELLED => {
                 progress.end();
                 return Ok(Measured {

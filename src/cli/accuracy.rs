@@ -210,6 +210,14 @@ pub fn parse_seconds(text: &str) -> Result<f64, String> {
     }
 }
 
+/// Parses `--region X,Y,W,H` (fitting it to the image comes after the scene is loaded).
+pub fn parse_region(text: &str) -> Result<rtc::render::Region, String> {
+    rtc::render::Region::parse(text).map_err(|d| match &d.help {
+        Some(h) => format!("{}; {h}", d.message),
+        None => d.message,
+    })
+}
+
 /// Parses a positive finite number.
 pub fn parse_positive(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
@@ -261,9 +269,13 @@ pub(crate) struct AccuracyArgs {
     /// ≤ 1 that keeps the image within --max-pixels).
     #[arg(long, value_parser = parse_positive)]
     scale: Option<f64>,
-    /// The pixel budget of the automatic scale.
+    /// The pixel budget of the automatic scale (with --region, of the region).
     #[arg(long, default_value_t = rtc::accuracy::scale::DEFAULT_MAX_PIXELS)]
     max_pixels: u64,
+    /// Sweep only this sub-rectangle: X,Y,W,H (left, top, width, height) in the scene's own
+    /// pixels, scaled with the image under --scale.
+    #[arg(long, value_name = "X,Y,W,H", value_parser = parse_region)]
+    region: Option<rtc::render::Region>,
     /// Renders per seed and point; the time is their median.
     #[arg(long, default_value_t = 1)]
     repeat: u32,
@@ -344,11 +356,13 @@ pub(crate) fn run(args: &AccuracyArgs) -> Outcome {
         scene_name: subject.clone(),
         scale: args.scale,
         max_pixels: args.max_pixels,
+        region: args.region,
         reference,
         measure: rtc::accuracy::MeasureOptions {
             repeat: args.repeat.max(1),
             seeds: [first_seed, first_seed.wrapping_add(1)],
             threads: args.threads,
+            region: None,
         },
         joint: !args.no_joint,
         metric: match args.metric {

@@ -19,7 +19,10 @@ pub fn table(r: &Report) -> String {
             s.width, s.height, s.scale, s.full_width, s.full_height
         )
     };
-    let _ = writeln!(out, "rtc accuracy {}: swept at {size}", r.scene);
+    let region = s.region.map_or(String::new(), |g| {
+        format!(", region {} ({}×{} pixels)", g.text(), g.width, g.height)
+    });
+    let _ = writeln!(out, "rtc accuracy {}: swept at {size}{region}", r.scene);
     let effects = if r.effects.is_empty() {
         "none".to_string()
     } else {

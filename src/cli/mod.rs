@@ -2,8 +2,10 @@
 
 pub mod accuracy;
 pub mod accuracy_table;
+pub mod aov;
 pub mod check;
 pub mod converge;
+pub mod convert;
 pub mod frames;
 pub mod inputs;
 pub mod progress;
@@ -12,6 +14,8 @@ pub mod report;
 pub mod shard;
 pub mod stats;
 pub mod watch;
+pub mod why;
+pub mod why_json;
 
 use std::path::Path;
 

@@ -25,6 +25,8 @@ pub(crate) struct RenderJob<'a> {
     /// `--shard K/N`: a share of the pixels of one frame, or with `--frames` a share of the
     /// frames (task K of N renders the frames at positions K, K+N, … of the range).
     pub(crate) shard: Option<rtc::render::shard::Shard>,
+    /// AOV layers for an EXR output (`--aov`).
+    pub(crate) aovs: Vec<rtc::render::Channel>,
     /// Seconds each frame's command may take (`--time-limit`).
     pub(crate) time_limit: Option<f64>,
 }
@@ -137,6 +139,20 @@ fn render(
             path.display()
         ));
     }
+    if !job.aovs.is_empty() {
+        // A shard writes a part; the merge's output name decides the format.
+        if pixel_shard.is_none()
+            && let Err(msg) = cli::aov::check_output(&path)
+        {
+            return usage_error(&msg);
+        }
+        if job.progressive.wanted() {
+            return usage_error(
+                "`--aov` layers come from a fixed-sampling render: drop `--aov`, or `--target-error`, `--time` and `--samples-from`",
+            );
+        }
+    }
+    let image_path = path.clone();
     let path = match pixel_shard {
         Some(s) => cli::shard::part_path(job.output.clone(), &path, s),
         None => path,
@@ -144,6 +160,12 @@ fn render(
     let start = std::time::Instant::now();
     // A part records the scene's fingerprint; taken here, as the preparation consumes the scene.
     let fingerprint = pixel_shard.map(|_| rtc::opt::fingerprint::scene(&scene));
+    // The object-id layer's sidecar (beside the image, or in the part for the merge) reads the
+    // objects' spans, so it too is made before the preparation.
+    let sidecar = job
+        .aovs
+        .contains(&rtc::render::Channel::Object)
+        .then(|| cli::aov::sidecar(&scene, &sources, &image_path));
     let prepared = match rtc::opt::prepare_owned(scene) {
         Ok(p) => p,
         Err(diags) => {
@@ -156,6 +178,7 @@ fn render(
     let options = rtc::render::RenderOptions {
         threads,
         shard: pixel_shard,
+        aovs: job.aovs.clone(),
     };
     let progressive = &job.progressive;
     if progressive.wanted() && pixel_shard.is_some() {
@@ -182,8 +205,16 @@ fn render(
             );
         }
         match (pixel_shard, fingerprint) {
-            (Some(s), Some(fingerprint)) => cli::shard::write_part(&film, fingerprint, s, &path),
-            _ => rtc::render::output::save_film(&film, &path),
+            (Some(s), Some(fingerprint)) => {
+                cli::shard::write_part(&film, fingerprint, s, &path, sidecar)
+            }
+            _ => {
+                rtc::render::output::save_film(&film, &path)?;
+                match sidecar {
+                    Some(json) => cli::aov::write_sidecar(&json, &cli::aov::sidecar_path(&path)),
+                    None => Ok(()),
+                }
+            }
         }
     });
     match result {

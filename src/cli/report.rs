@@ -40,7 +40,8 @@ fn position(sources: &SourceMap, span: Span) -> (String, usize, usize) {
     (file.path.display().to_string(), line, col)
 }
 
-fn location(sources: &SourceMap, span: Span) -> String {
+/// `file:line:col` of the start of a span.
+pub(crate) fn location(sources: &SourceMap, span: Span) -> String {
     let (path, line, col) = position(sources, span);
     format!("{path}:{line}:{col}")
 }
@@ -81,13 +82,16 @@ fn short(diags: &[Diagnostic], sources: &SourceMap, subject: &str) -> String {
     out
 }
 
+/// A span as JSON: `{"file", "line", "column", "end_line", "end_column"}` (1-based).
+pub(crate) fn place(sources: &SourceMap, s: Span) -> serde_json::Value {
+    let (path, line, col) = position(sources, s);
+    let (end_line, end_col) = sources.get(s.file).line_col(s.end as usize);
+    serde_json::json!({"file": path, "line": line, "column": col, "end_line": end_line, "end_column": end_col})
+}
+
 fn json(diags: &[Diagnostic], sources: &SourceMap) -> serde_json::Value {
     use serde_json::json;
-    let place = |s: Span| {
-        let (path, line, col) = position(sources, s);
-        let (end_line, end_col) = sources.get(s.file).line_col(s.end as usize);
-        json!({"file": path, "line": line, "column": col, "end_line": end_line, "end_column": end_col})
-    };
+    let place = |s: Span| place(sources, s);
     let items: Vec<_> = diags
         .iter()
         .map(|d| {

@@ -86,8 +86,10 @@ pub fn write_part(
     scene: String,
     s: Shard,
     path: &Path,
+    sidecar: Option<serde_json::Value>,
 ) -> Result<(), Diagnostic> {
-    let part = Part::of_film(film, s, scene, settings_fingerprint());
+    let mut part = Part::of_film(film, s, scene, settings_fingerprint());
+    part.sidecar = sidecar;
     rtc::render::output::write_atomically(path, &part.to_bytes())
 }
 
@@ -130,11 +132,20 @@ pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
         Ok(f) => f,
         Err(d) => return fail(d),
     };
-    match rtc::render::output::save_film(&film, output) {
-        Ok(()) => {
-            eprintln!("merged {} parts into {}", parts.len(), output.display());
-            Outcome::Ok
-        }
-        Err(d) => fail(d),
+    if let Err(d) = rtc::render::output::save_film(&film, output) {
+        return fail(d);
     }
+    eprintln!("merged {} parts into {}", parts.len(), output.display());
+    if let Some(json) = parts.first().and_then(|(_, p)| p.sidecar.as_ref()) {
+        let mut json = json.clone();
+        json["image"] = output
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .into();
+        let path = crate::cli::aov::sidecar_path(output);
+        if let Err(d) = crate::cli::aov::write_sidecar(&json, &path) {
+            return fail(d);
+        }
+    }
+    Outcome::Ok
 }

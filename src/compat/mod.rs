@@ -16,6 +16,7 @@
 //! checked by geometry's rules when the scene is prepared (`rtc::param::*`, the codes the scene
 //! language uses), not here: one home for shape validity.
 
+pub mod convert;
 pub mod course;
 pub mod course_yaml;
 pub mod legacy_in;
@@ -69,6 +70,7 @@ pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loade
     Loaded {
         scene,
         diagnostics: diags,
+        provenance: None,
     }
 }
 
@@ -81,6 +83,7 @@ pub fn load_yaml_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loa
     Loaded {
         scene,
         diagnostics: diags,
+        provenance: None,
     }
 }
 
@@ -113,6 +116,7 @@ fn read(path: &Path) -> Result<(String, Option<usize>), Loaded> {
         Loaded {
             scene: None,
             diagnostics,
+            provenance: None,
         }
     })?;
     Ok(match String::from_utf8(bytes) {

@@ -73,7 +73,17 @@ impl Interp<'_> {
     ) -> R<Value> {
         match f {
             Value::Fn(c) => self.call_closure(&c, args, span),
-            Value::Builtin(b) => (b.f)(self, CallSite { span, name: b.name }, args),
+            Value::Builtin(b) => {
+                let mut v = (b.f)(self, CallSite { span, name: b.name }, args)?;
+                if let (Some(p), Value::Object(o)) = (&mut self.prov, &mut v) {
+                    // An object a built-in just made (`sphere`, `group`, ...) is owned by the
+                    // result alone and has no origin yet: it was made here.
+                    if let Some(o) = Rc::get_mut(o).filter(|o| o.origin == 0) {
+                        o.origin = p.origin();
+                    }
+                }
+                Ok(v)
+            }
             other => Err(error(
                 "rtc::type::not_callable",
                 callee_span,
@@ -178,7 +188,16 @@ impl Interp<'_> {
             self.locals.push((fname, Value::Fn(c.clone())));
         }
         self.depth += 1;
+        let saved = self.prov.as_mut().map(|p| {
+            p.enter(crate::ir::provenance::StepKind::Call {
+                name: fname.as_str().to_string(),
+                at: span,
+            })
+        });
         let r = self.run_body(c, slots, span);
+        if let (Some(p), Some(s)) = (&mut self.prov, saved) {
+            p.leave(s);
+        }
         self.depth -= 1;
         self.locals.truncate(base);
         self.frame_base = saved_base;

@@ -41,6 +41,8 @@ pub struct Interp<'a> {
     pub(super) overrides: Vec<super::params::Override>,
     /// The `param` names the scene file declared so far.
     pub(super) params: Vec<Sym>,
+    /// Where objects come from, when asked (`EvalOptions::provenance`).
+    pub(super) prov: Option<Box<super::provenance::Builder>>,
 }
 
 impl Drop for Interp<'_> {
@@ -73,7 +75,18 @@ impl<'a> Interp<'a> {
             loading: Vec::new(),
             overrides: Vec::new(),
             params: Vec::new(),
+            prov: opts.provenance.then(Box::default),
         }
+    }
+
+    /// The provenance origin of an object made now (0 when provenance is off).
+    pub fn origin(&mut self) -> u32 {
+        self.prov.as_mut().map_or(0, |p| p.origin())
+    }
+
+    /// The provenance origin of an object derived now from one of origin `from`.
+    pub fn derive(&mut self, from: u32) -> u32 {
+        self.prov.as_mut().map_or(from, |p| p.derive(from))
     }
 
     /// Records a warning once per (code, span), however often a loop reaches it.
@@ -518,7 +531,14 @@ impl<'a> Interp<'a> {
         out: &mut Sink,
     ) -> R<()> {
         if level == gens.len() {
+            let saved = self
+                .prov
+                .is_some()
+                .then(|| self.enter_iteration(gens.len(), span));
             let r = self.for_body(filter, body, out, span);
+            if let (Some(p), Some(s)) = (&mut self.prov, saved) {
+                p.leave(s);
+            }
             return r.map_err(|e| {
                 let vars = &self.locals[self.locals.len() - gens.len()..];
                 let desc: Vec<String> = vars
@@ -583,6 +603,23 @@ impl<'a> Interp<'a> {
             }
         }
         Ok(())
+    }
+
+    /// Enters the provenance step of the current iteration of the `for` at `header` (its
+    /// variables are the last `vars` locals).
+    #[cold]
+    #[inline(never)]
+    fn enter_iteration(&mut self, vars: usize, header: Span) -> u32 {
+        let bindings = self.locals[self.locals.len() - vars..]
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", v.show()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let kind = crate::ir::provenance::StepKind::Iteration {
+            at: header,
+            bindings,
+        };
+        self.prov.as_mut().map_or(0, |p| p.enter(kind))
     }
 
     fn for_body(

@@ -23,6 +23,11 @@ pub struct Lowerer {
     pub cameras: Vec<Rc<ir::Camera>>,
     /// Render blocks emitted (at most one).
     pub renders: Vec<Rc<RenderVal>>,
+    /// With provenance: per object, its origin and those of the groups placing it (innermost
+    /// first).
+    pub origins: Option<Vec<Vec<u32>>>,
+    /// The origins of the groups being lowered (outermost first), with provenance.
+    placing: Vec<u32>,
     materials: Vec<ir::Material>,
     textures: Vec<ir::Texture>,
     mat_ids: super::fxhash::FxHashMap<*const Mat, ir::MaterialId>,
@@ -117,7 +122,7 @@ impl Lowerer {
 
     fn object(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>) {
         let mut out = std::mem::take(&mut self.objects);
-        self.lower_into(o, parent, inherited, None, &mut out);
+        self.lower_into(o, parent, inherited, None, &mut out, true);
         self.objects = out;
     }
 
@@ -128,7 +133,17 @@ impl Lowerer {
         inherited: Option<ir::MaterialId>,
         moving: Option<ir::Motion>,
         out: &mut Vec<ir::Object>,
+        scene_level: bool,
     ) {
+        // A scene-level object (not a CSG operand) gets its provenance entry.
+        if scene_level
+            && !matches!(o.shape, ObjShape::Group(_))
+            && let Some(origins) = &mut self.origins
+        {
+            let mut own = vec![o.origin];
+            own.extend(self.placing.iter().rev());
+            origins.push(own);
+        }
         let t = parent * o.transform;
         // A group's motion moves all its members (`.moving` refuses motion nested in a group).
         let motion = o.motion.map(|m| m.transformed(parent)).or(moving);
@@ -145,8 +160,15 @@ impl Lowerer {
                 span: o.span,
             }),
             ObjShape::Group(ch) => {
+                let placing = self.origins.is_some();
+                if placing {
+                    self.placing.push(o.origin);
+                }
                 for c in ch.iter() {
-                    self.lower_into(c, t, mat, motion, out);
+                    self.lower_into(c, t, mat, motion, out, scene_level);
+                }
+                if placing {
+                    self.placing.pop();
                 }
             }
             ObjShape::Csg(op, ch) => {
@@ -158,7 +180,7 @@ impl Lowerer {
                             let mut sub = Vec::new();
                             let cm = c.material.as_ref().map(|m| self.material(m));
                             for x in g.iter() {
-                                self.lower_into(x, DAffine3::IDENTITY, None, None, &mut sub);
+                                self.lower_into(x, DAffine3::IDENTITY, None, None, &mut sub, false);
                             }
                             kids.push(ir::Object {
                                 shape: ir::Shape::Csg {
@@ -171,7 +193,7 @@ impl Lowerer {
                                 span: c.span,
                             });
                         }
-                        _ => self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids),
+                        _ => self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids, false),
                     }
                 }
                 out.push(ir::Object {

@@ -31,6 +31,7 @@ pub fn call_method(
             let o2 = Rc::make_mut(&mut o);
             o2.transform = t * o2.transform;
             o2.motion = o2.motion.map(|m| m.transformed(t));
+            o2.origin = it.derive(o2.origin);
             return Ok(Value::Object(o));
         }
         Value::Object(o) if n == "moving" => {
@@ -42,6 +43,7 @@ pub fn call_method(
             let o2 = Rc::make_mut(&mut o);
             o2.transform = t * o2.transform;
             o2.motion = o2.motion.map(|m| m.transformed(t));
+            o2.origin = it.derive(o2.origin);
             return Ok(Value::Object(o));
         }
         Value::Object(mut o) if n == "material" => {
@@ -50,7 +52,9 @@ pub fn call_method(
             let Value::Material(m) = m else {
                 return Err(types::mismatch(it, "Material", &m, ms).into());
             };
-            Rc::make_mut(&mut o).material = Some(m);
+            let o2 = Rc::make_mut(&mut o);
+            o2.material = Some(m);
+            o2.origin = it.derive(o2.origin);
             return Ok(Value::Object(o));
         }
         other => other,

@@ -16,6 +16,7 @@ pub(crate) mod motion;
 pub(crate) mod ops;
 pub(crate) mod params;
 pub(crate) mod program;
+pub(crate) mod provenance;
 pub mod rng;
 pub(crate) mod shapes;
 pub(crate) mod transform;
@@ -51,6 +52,8 @@ pub struct EvalOptions {
     pub fps: f64,
     /// `--set NAME=VALUE` pairs overriding the scene file's `param` declarations.
     pub overrides: Vec<(String, String)>,
+    /// Record where each object came from (`ir::Loaded::provenance`, for `rtc why`).
+    pub provenance: bool,
 }
 
 /// Frames per second unless the command line says otherwise (film's rate).
@@ -67,6 +70,7 @@ impl Default for EvalOptions {
             frame: 0,
             fps: DEFAULT_FPS,
             overrides: Vec::new(),
+            provenance: false,
         }
     }
 }
@@ -194,6 +198,9 @@ fn load_source_here(
     it.loading
         .push((path.to_path_buf(), crate::source::Span::default()));
     let mut lowerer = lower::Lowerer::default();
+    if options.provenance {
+        lowerer.origins = Some(Vec::new());
+    }
     it.run_module(&ast, Some(&mut lowerer));
     let unknown = it.unknown_overrides();
     it.diags.extend(unknown);
@@ -204,6 +211,9 @@ fn load_source_here(
         .extend(std::mem::take(&mut it.diags));
     if had_errors {
         return loaded;
+    }
+    if let (Some(b), Some(origins)) = (it.prov.take(), lowerer.origins.take()) {
+        loaded.provenance = Some((*b).finish(origins));
     }
     match lowerer.finish() {
         Ok(scene) => loaded.scene = Some(scene),

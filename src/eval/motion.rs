@@ -54,7 +54,9 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
         }
         return Err(d.into());
     }
-    Rc::make_mut(&mut o).motion = Some(Motion::new(translate, rotate, scale));
+    let o2 = Rc::make_mut(&mut o);
+    o2.motion = Some(Motion::new(translate, rotate, scale));
+    o2.origin = it.derive(o2.origin);
     Ok(Value::Object(o))
 }
 

@@ -339,5 +339,6 @@ fn csg(
         material: None,
         motion: None,
         span,
+        origin: it.origin(),
     })))
 }

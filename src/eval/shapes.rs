@@ -54,6 +54,7 @@ fn prim(shape: Shape, span: Span) -> Value {
         material: None,
         motion: None,
         span,
+        origin: 0,
     }))
 }
 
@@ -372,6 +373,7 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         material: None,
         motion: None,
         span: s.span,
+        origin: 0,
     })))
 }
 
@@ -388,6 +390,7 @@ fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -
         material: None,
         motion: None,
         span: s.span,
+        origin: 0,
     })))
 }
 

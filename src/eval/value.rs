@@ -193,6 +193,8 @@ pub struct Obj {
     pub motion: Option<ir::Motion>,
     /// Where it was made.
     pub span: Span,
+    /// Its origin in the provenance record (0 when none is kept: `eval::provenance`).
+    pub origin: u32,
 }
 
 /// Geometry of an object value.

@@ -11,6 +11,9 @@ pub struct Loaded {
     pub scene: Option<Scene>,
     /// Errors, warnings and notes from every stage that ran.
     pub diagnostics: Diagnostics,
+    /// Where each object came from, when evaluation was asked to record it
+    /// (`EvalOptions::provenance`; the course front ends have no loops or calls: `None`).
+    pub provenance: Option<super::Provenance>,
 }
 
 impl Loaded {
@@ -21,6 +24,7 @@ impl Loaded {
         Loaded {
             scene: None,
             diagnostics,
+            provenance: None,
         }
     }
 

@@ -104,10 +104,12 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         mesh_load_time: mesh_stats.load_time,
         memory_bytes: w.memory_bytes + mesh_stats.memory_bytes,
     };
+    let own_gloss_samples = materials.iter().map(|m| m.gloss_samples).collect();
     Ok(Prepared {
         camera: scene.camera.clone(),
         world,
         materials,
+        own_gloss_samples,
         textures,
         lights,
         settings: scene.settings.clone(),

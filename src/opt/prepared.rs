@@ -58,15 +58,34 @@ pub struct Prepared {
     pub(super) effects: Effects,
     pub(super) warnings: Vec<Diagnostic>,
     pub(super) stats: Stats,
+    /// Each material's own `gloss_samples`, what [`Quality::gloss_samples`] `None` restores.
+    pub(super) own_gloss_samples: Vec<u32>,
 }
 
-/// The settings a render may change on a prepared scene: how many samples and bounces.
+/// The settings a render may change on a prepared scene: how many samples and bounces, the
+/// insignificance cut-off and the rays of every glossy lobe.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quality {
     /// Pixel sampling.
     pub sampling: Sampling,
     /// Reflection/refraction bounces.
     pub max_depth: u32,
+    /// The insignificance cut-off (`render { cutoff }`).
+    pub cutoff: f64,
+    /// Rays per glossy lobe of every material; `None` keeps each material's own.
+    pub gloss_samples: Option<u32>,
+}
+
+impl Quality {
+    /// The scene's own quality (each material keeping its own `gloss_samples`).
+    pub fn of(settings: &RenderSettings) -> Quality {
+        Quality {
+            sampling: settings.sampling,
+            max_depth: settings.max_depth,
+            cutoff: settings.cutoff,
+            gloss_samples: None,
+        }
+    }
 }
 
 impl Prepared {
@@ -133,15 +152,23 @@ impl Prepared {
                 .any(|l| matches!(l.kind, LightKind::Area { .. }))
     }
 
-    /// Renders from now on with other samples and bounces (`rtc accuracy` prepares once and
-    /// renders at many qualities); the effects follow. Errors when past `ir::limits`.
+    /// Renders from now on with other samples, bounces, cut-off and glossy rays (`rtc
+    /// accuracy` prepares once and renders at many qualities); the effects follow. Errors when
+    /// past `ir::limits` or out of range (nothing changes then).
     pub fn set_quality(&mut self, q: Quality) -> Result<(), Diagnostic> {
         let settings = RenderSettings {
             sampling: q.sampling,
             max_depth: q.max_depth,
+            cutoff: q.cutoff,
             ..self.settings.clone()
         };
         validate::settings(&settings)?;
+        if let Some(n) = q.gloss_samples {
+            validate::gloss_samples(n)?;
+        }
+        for (m, &own) in self.materials.iter_mut().zip(&self.own_gloss_samples) {
+            m.gloss_samples = q.gloss_samples.unwrap_or(own);
+        }
         self.effects = Effects::new(&self.content, &settings, &self.camera);
         self.settings = settings;
         Ok(())

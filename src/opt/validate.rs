@@ -6,7 +6,8 @@
 
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::ir::limits::{
-    MAX_DEPTH, MAX_IMAGE_BYTES, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS, image_bytes,
+    MAX_DEPTH, MAX_GLOSS_SAMPLES, MAX_IMAGE_BYTES, MAX_LIGHT_SAMPLES_PER_AXIS,
+    MAX_PIXEL_SAMPLES_PER_AXIS, image_bytes,
 };
 use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling, Scene, Shape};
 
@@ -180,6 +181,20 @@ pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
     .with_help(format!(
         "use 1 to {MAX_LIGHT_SAMPLES_PER_AXIS} samples per edge"
     )))
+}
+
+/// Checks a glossy lobe's rays against `ir::limits` (1..=[`MAX_GLOSS_SAMPLES`]).
+pub fn gloss_samples(n: u32) -> Result<(), Diagnostic> {
+    if (1..=MAX_GLOSS_SAMPLES).contains(&n) {
+        return Ok(());
+    }
+    Err(Diagnostic::new(
+        Severity::Error,
+        "rtc::render::limit",
+        None,
+        format!("{n} rays per glossy lobe: a lobe takes 1 to {MAX_GLOSS_SAMPLES}"),
+    )
+    .with_help(format!("use gloss_samples from 1 to {MAX_GLOSS_SAMPLES}")))
 }
 
 /// Settings within `ir::limits`: bounces and samples per pixel; a cut-off in [0, 1].

@@ -16,16 +16,46 @@ pub const MAX_CHANNELS: usize = 8;
 pub enum Channel {
     /// The image's linear RGB (shaded colour, or the encoded normal or depth of those modes).
     Color,
+    /// AOV: distance from the eye to the first hit, the mean over the pixel's samples that hit
+    /// (`x`; +∞ where none did).
+    Depth,
+    /// AOV: the world-space shading normal at the first hit (bumped, facing the viewer), the
+    /// mean over the pixel's samples (zero where nothing is hit).
+    Normal,
+    /// AOV: the surface colour (material or texture) at the first hit, the mean over the
+    /// pixel's samples (zero where nothing is hit).
+    Albedo,
+    /// AOV: the scene object hit by most of the pixel's samples, as `index + 1` in `x` (0: the
+    /// background).
+    Object,
 }
 
 impl Channel {
     /// Every channel, for reading names back.
-    pub const ALL: [Channel; 1] = [Channel::Color];
+    pub const ALL: [Channel; 5] = [
+        Channel::Color,
+        Channel::Depth,
+        Channel::Normal,
+        Channel::Albedo,
+        Channel::Object,
+    ];
+
+    /// The channels `--aov` can ask for (every one but the colour).
+    pub const AOVS: [Channel; 4] = [
+        Channel::Depth,
+        Channel::Normal,
+        Channel::Albedo,
+        Channel::Object,
+    ];
 
     /// The channel's name in files and messages.
     pub fn name(self) -> &'static str {
         match self {
             Channel::Color => "color",
+            Channel::Depth => "depth",
+            Channel::Normal => "normal",
+            Channel::Albedo => "albedo",
+            Channel::Object => "object",
         }
     }
 
@@ -129,6 +159,12 @@ impl Film {
     pub fn channel(&self, c: Channel) -> Option<&[Color]> {
         let i = self.channels.iter().position(|x| *x == c)?;
         self.layers.get(i).map(Vec::as_slice)
+    }
+
+    /// Appends a channel computed by a separate pass (an AOV), its values row by row.
+    pub fn push_channel(&mut self, c: Channel, values: Vec<Color>) {
+        self.channels.push(c);
+        self.layers.push(values);
     }
 
     /// The colour channel (every integrator fills it).

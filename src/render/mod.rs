@@ -24,8 +24,12 @@
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile
 //!   computed it (image-wide passes such as the depth range run before the pixels).
 
+pub mod adaptive;
+pub mod aov;
 pub mod bump;
 pub mod camera;
+pub mod explain;
+pub mod exr;
 pub mod film;
 pub mod flare;
 pub mod integrator;
@@ -35,13 +39,15 @@ pub mod output;
 pub mod part;
 pub mod progress;
 pub mod progressive;
+pub mod record;
+pub mod region;
 pub mod sampler;
 pub mod shading;
 pub mod shard;
 pub mod texture;
 pub mod tiles;
 
-use crate::diag::{Diagnostic, Diagnostics};
+use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::geometry::Ray;
 use crate::ir::{Color, Scene};
 use crate::opt::Prepared;
@@ -54,6 +60,7 @@ use shard::{Rows, Shard};
 
 pub use film::{Channel, Stats};
 pub use progress::{CANCELLED, Progress, Silent};
+pub use region::Region;
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]
@@ -62,6 +69,8 @@ pub struct RenderOptions {
     pub threads: usize,
     /// Render only this shard's rows (the other rows of the film stay zero); `None`: all.
     pub shard: Option<Shard>,
+    /// AOV layers to add to the film after the colour (`Channel::AOVS`; empty: none).
+    pub aovs: Vec<Channel>,
 }
 
 /// A rendered 8-bit RGB image.
@@ -89,12 +98,45 @@ pub fn render(
     options: &RenderOptions,
     progress: &dyn Progress,
 ) -> Result<Film, Diagnostic> {
+    render_region(scene, options, None, progress)
+}
+
+/// [`render`] of a sub-rectangle of the image only (`None`: the whole image): the film is the
+/// region's size and each of its pixels equals the whole render's, except that adaptive
+/// refinement compares a border pixel only with neighbours inside the region and the lens
+/// flare (a post stage over the whole image) is not applied. Errors when the region does not
+/// fit the image or comes with a shard.
+pub fn render_region(
+    scene: &Prepared,
+    options: &RenderOptions,
+    region: Option<Region>,
+    progress: &dyn Progress,
+) -> Result<Film, Diagnostic> {
     let pool = tiles::pool(options.threads)?;
     let sampler = PixelSampler::new(scene.settings().sampling);
     let view = View::new(scene);
     let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
     let channels = integrator.channels();
-    let (w, h) = (view.camera.width(), view.camera.height());
+    let (full_w, full_h) = (view.camera.width(), view.camera.height());
+    if let Some(r) = region {
+        r.check(full_w, full_h)?;
+        if options.shard.is_some() {
+            return Err(Diagnostic::new(
+                Severity::Error,
+                region::REGION,
+                None,
+                "a region cannot be rendered in shards",
+            )
+            .with_help("render the region in one process, or shard the whole image"));
+        }
+    }
+    let r = region.unwrap_or(Region {
+        x: 0,
+        y: 0,
+        width: full_w,
+        height: full_h,
+    });
+    let (w, h) = (r.width, r.height);
     // A shard's first pass covers a one-row halo when adaptive refinement will read it.
     let (first_rows, own_rows) = match options.shard {
         None => (Rows::All, Rows::All),
@@ -106,51 +148,62 @@ pub fn render(
     } else {
         0
     };
-    progress.start(first_rows.count(h) + refine_rows);
+    let aov_rows = if options.aovs.is_empty() {
+        0
+    } else {
+        own_rows.count(h)
+    };
+    progress.start(first_rows.count(h) + refine_rows + aov_rows);
     let first = sampler.first;
     let n = channels.len();
     let (mut values, mut stats) =
         tiles::run(&pool, w, h, n, first_rows, progress, |x, y, ctx, out| {
-            view.average(&integrator, first, 0, x, y, ctx, out);
+            view.average(&integrator, first, 0, r.x + x, r.y + y, ctx, out);
         })?;
     if let Some((fine, threshold)) = sampler.refine {
-        // Adaptive sampling: a pixel takes the finer grid where its colour differs from a
-        // 4-neighbour's by more than the threshold in some channel. Both passes are pure per
-        // pixel.
+        // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
+        // (contrast to a 4-neighbour, or a predicted change of 8-bit level). Both passes are
+        // pure per pixel.
+        let criterion = adaptive::Criterion::new(first, fine, threshold, scene.settings().encoding);
         let coarse = &values;
         let at = |x: u32, y: u32| coarse[(y as usize * w as usize + x as usize) * n];
         let (refined, more) = tiles::run(&pool, w, h, n, own_rows, progress, |x, y, ctx, out| {
-            let c = at(x, y);
-            let differs = |nx: u32, ny: u32| (at(nx, ny) - c).abs().max_element() > threshold;
-            let edge = (x > 0 && differs(x - 1, y))
-                || (x + 1 < w && differs(x + 1, y))
-                || (y > 0 && differs(x, y - 1))
-                || (y + 1 < h && differs(x, y + 1));
             let here = (y as usize * w as usize + x as usize) * n;
-            if !edge {
+            if !criterion.refines(at, x, y, w, h) {
                 out.copy_from_slice(&coarse[here..here + n]);
                 return;
             }
             ctx.stats.refined_pixels += 1;
+            let (x, y) = (r.x + x, r.y + y);
             view.average(&integrator, fine, refine_start(fine), x, y, ctx, out);
         })?;
         values = refined;
         stats.add(&more);
     }
-    if let (true, Some(f)) = (scene.effects().flare, scene.settings().flare) {
+    if let (true, Some(f), None) = (scene.effects().flare, scene.settings().flare, region) {
         // A post stage over the whole image (shaded mode: colour is the only channel).
         let sources = flare::sources(scene, &view.camera, &f, &mut stats);
         flare::apply(&sources, &f, w, h, n, &mut values);
     }
+    let mut film = Film::new(w, h, channels, values, stats, scene.settings().encoding);
+    if !options.aovs.is_empty() {
+        let (values, _) = aov::render(
+            scene,
+            &view,
+            first,
+            &options.aovs,
+            r,
+            own_rows,
+            &pool,
+            progress,
+        )?;
+        let n = options.aovs.len();
+        for (i, c) in options.aovs.iter().enumerate() {
+            film.push_channel(*c, values.iter().skip(i).step_by(n).copied().collect());
+        }
+    }
     progress.finish();
-    Ok(Film::new(
-        w,
-        h,
-        channels,
-        values,
-        stats,
-        scene.settings().encoding,
-    ))
+    Ok(film)
 }
 
 /// The first sample number of a refined pixel's finer grid: past the first grid's numbers (so
@@ -221,6 +274,38 @@ impl View<'_> {
         camera.ray(x, y, sx, sy, lens).at_time(time)
     }
 
+    /// Sets `ctx` up for camera sample number `index` of pixel (x, y), the `slot.0`-th of
+    /// `slot.1` samples of its grid, at sub-pixel `offset`, and returns its ray.
+    #[inline]
+    pub fn camera_sample(
+        &self,
+        x: u32,
+        y: u32,
+        index: u32,
+        slot: (u32, u32),
+        (sx, sy): (f64, f64),
+        ctx: &mut Ctx,
+    ) -> Ray {
+        // Only lenses and area lights draw random numbers; skip keying them otherwise.
+        if self.random {
+            ctx.rng = Rng::new(x, y, index, self.seed);
+        }
+        if self.spread_lights {
+            ctx.lights = LightShare {
+                slot: slot.0,
+                size: slot.1,
+            };
+        }
+        let lens = if self.camera.has_lens() {
+            ctx.rng.get2(0)
+        } else {
+            (0.5, 0.5)
+        };
+        let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
+        ctx.stats.camera_rays += 1;
+        ray
+    }
+
     /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
     /// into `out`; sample numbers start at `first_index`.
     #[allow(clippy::too_many_arguments)]
@@ -238,25 +323,8 @@ impl View<'_> {
         let mut sample = [Color::ZERO; film::MAX_CHANNELS];
         let sample = &mut sample[..out.len()];
         for k in 0..grid.len() {
-            let (sx, sy) = grid.offset(k);
-            let index = first_index + k;
-            // Only lenses and area lights draw random numbers; skip keying them otherwise.
-            if self.random {
-                ctx.rng = Rng::new(x, y, index, self.seed);
-            }
-            if self.spread_lights {
-                ctx.lights = LightShare {
-                    slot: k,
-                    size: grid.len(),
-                };
-            }
-            let lens = if self.camera.has_lens() {
-                ctx.rng.get2(0)
-            } else {
-                (0.5, 0.5)
-            };
-            let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
-            ctx.stats.camera_rays += 1;
+            let ray =
+                self.camera_sample(x, y, first_index + k, (k, grid.len()), grid.offset(k), ctx);
             integrator.sample(&ray, ctx, sample);
             for (o, s) in out.iter_mut().zip(sample.iter()) {
                 *o += *s;

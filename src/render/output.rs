@@ -84,19 +84,13 @@ fn encode_exr(linear: &image::Rgb32FImage) -> Result<Vec<u8>, Diagnostic> {
     Ok(cursor.into_inner())
 }
 
-/// Writes a film to `path`: its linear, unclamped colour for `*.exr`, else the 8-bit image in
-/// the film's encoding (PNG or PPM).
+/// Writes a film to `path`: every channel linear and unclamped for `*.exr` (`render::exr`),
+/// else the 8-bit image of its colour in the film's encoding (PNG or PPM).
 pub fn save_film(film: &super::film::Film, path: &Path) -> Result<(), Diagnostic> {
     if ImageFormat::of(path) != Some(ImageFormat::Exr) {
         return save(&film.to_image(), path);
     }
-    let color = film.color();
-    let w = film.width as usize;
-    let linear = image::Rgb32FImage::from_fn(film.width, film.height, |x, y| {
-        let c = color[y as usize * w + x as usize];
-        image::Rgb([c.x as f32, c.y as f32, c.z as f32])
-    });
-    write_atomically(path, &encode_exr(&linear)?)
+    write_atomically(path, &super::exr::encode(film)?)
 }
 
 /// Writes `image` to `path` atomically (temporary sibling file, then rename).

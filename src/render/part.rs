@@ -46,6 +46,8 @@ pub struct Part {
     pub stats: Stats,
     /// The values of its rows, interleaved per pixel as [`Film::new`] takes them.
     pub values: Vec<Color>,
+    /// A JSON document the merge writes beside its image (the object-id layer's sidecar).
+    pub sidecar: Option<serde_json::Value>,
 }
 
 impl Part {
@@ -67,6 +69,7 @@ impl Part {
             rows,
             stats: film.stats,
             values,
+            sidecar: None,
         }
     }
 
@@ -79,7 +82,7 @@ impl Part {
             }
         }
         let s = &self.stats;
-        let header = serde_json::json!({
+        let mut header = serde_json::json!({
             "scene": self.scene,
             "settings": self.settings,
             "width": self.width,
@@ -91,6 +94,9 @@ impl Part {
             "stats": [s.camera_rays, s.secondary_rays, s.shadow_rays, s.refined_pixels, s.cut_rays, s.cut_weight],
             "payload": fingerprint::bytes(&payload),
         });
+        if let Some(s) = &self.sidecar {
+            header["sidecar"] = s.clone();
+        }
         let mut out = format!("{MAGIC}\n{header}\n").into_bytes();
         out.extend_from_slice(&payload);
         out
@@ -173,6 +179,7 @@ impl Part {
             rows,
             stats,
             values,
+            sidecar: h.get("sidecar").cloned(),
         })
     }
 }

@@ -18,6 +18,21 @@ pub fn data(rel: &str) -> PathBuf {
         .join(rel)
 }
 
+/// The scene of a load that must succeed; the test fails with every error it reported.
+pub fn scene_of(loaded: rtc::ir::Loaded, path: &Path) -> Scene {
+    let errors: Vec<String> = loaded
+        .diagnostics
+        .items
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| format!("{}: {}", d.code, d.message))
+        .collect();
+    assert!(errors.is_empty(), "{}: {errors:?}", path.display());
+    loaded
+        .scene
+        .unwrap_or_else(|| panic!("{}: no scene", path.display()))
+}
+
 /// The course default camera for `eye` (COURSE.md §2.4).
 pub fn course_camera(eye: DVec3) -> Camera {
     Camera {

@@ -23,7 +23,7 @@ pub fn render_rtc(src: &str) -> Image {
         &scene,
         &RenderOptions {
             threads: 1,
-            shard: None,
+            ..Default::default()
         },
     )
     .expect("renders")

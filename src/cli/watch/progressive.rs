@@ -100,7 +100,7 @@ impl Job<'_> {
         };
         let options = rtc::render::RenderOptions {
             threads: self.threads,
-            shard: None,
+            ..Default::default()
         };
         let film = rtc::render::render(prepared, &options, &progress)?;
         let seconds = progress.start.elapsed().as_secs_f64();
@@ -164,10 +164,7 @@ impl Job<'_> {
 /// full resolution at one sample per pixel, and the scene's own sampling when it differs.
 fn plan(prepared: &Prepared) -> Vec<Stage> {
     let camera = prepared.camera().clone();
-    let own = Quality {
-        sampling: prepared.settings().sampling,
-        max_depth: prepared.settings().max_depth,
-    };
+    let own = Quality::of(prepared.settings());
     let single = Quality {
         sampling: Sampling::Grid { factor: 1 },
         ..own

@@ -75,13 +75,31 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             "shutter",
             "eye_close",
             "center_close",
+            "course",
         ],
         a,
     )?;
     let (eye, es) = p.vec3(it, "eye")?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let up_arg = p.get("up");
-    let (fov, fs) = p.angle_or(it, "fov", 40f64.to_radians())?;
+    // `course: true` is the course camera (COURSE.md §2.4), |up| = the pixel size at `center`:
+    // what `rtc convert` writes where no field of view gives that pixel to the last bit.
+    let course = p.bool_or(it, "course", false)?;
+    let fov_given = p.get("fov");
+    if course && let Some((_, fs)) = &fov_given {
+        return Err(error(
+            "rtc::camera::conflict",
+            *fs,
+            "`fov` and `course: true` both size the view",
+        )
+        .with_label("not used by the course camera")
+        .with_help("remove `fov`, or `course: true` to size the view by the field of view")
+        .into());
+    }
+    let (fov, fs) = match fov_given {
+        Some((v, s)) => (types::angle(it, &v, s)?, s),
+        None => (40f64.to_radians(), s.span),
+    };
     let shown = format!("{}deg", crate::eval::value::fmt_f(fov.to_degrees()));
     super::check_shown(
         fov > 0.0 && fov < std::f64::consts::PI,
@@ -146,7 +164,11 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         up,
         width: width as u32,
         height: height as u32,
-        projection: ir::Projection::Perspective { fov_y: fov },
+        projection: if course {
+            ir::Projection::Course
+        } else {
+            ir::Projection::Perspective { fov_y: fov }
+        },
         aperture,
         focus_distance: focus,
         shutter,

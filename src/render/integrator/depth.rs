@@ -24,6 +24,11 @@ pub struct DepthImage<'a> {
 }
 
 impl<'a> DepthImage<'a> {
+    /// The scene it images.
+    pub fn scene(&self) -> &'a Prepared {
+        self.scene
+    }
+
     /// The integrator for `range`; an automatic range is measured over the samples of `grid`.
     pub fn new(
         scene: &'a Prepared,

@@ -14,6 +14,7 @@ use crate::opt::Prepared;
 
 use super::View;
 use super::film::Channel;
+use super::record::{NoRecord, Recorder};
 use super::sampler::Grid;
 use super::shading::Ctx;
 use depth::DepthImage;
@@ -59,10 +60,42 @@ impl<'a> Integrator<'a> {
 
     /// One camera ray's value for each channel, into `out`.
     pub fn sample(&self, ray: &Ray, ctx: &mut Ctx, out: &mut [Color]) {
+        self.sample_with(ray, ctx, out, &mut NoRecord);
+    }
+
+    /// [`Integrator::sample`], telling `rec` what the ray meets (`rtc why`). The first-hit
+    /// images report their camera ray and its hit.
+    pub fn sample_with<R: Recorder>(
+        &self,
+        ray: &Ray,
+        ctx: &mut Ctx,
+        out: &mut [Color],
+        rec: &mut R,
+    ) {
         out[0] = match self {
-            Integrator::Whitted(w) => w.trace(ray, Path::CAMERA, ctx),
-            Integrator::Normal(n) => n.color(ray),
-            Integrator::Depth(d) => d.color(ray),
+            Integrator::Whitted(w) => w.trace_with(ray, Path::CAMERA, ctx, rec),
+            Integrator::Normal(n) => first_hit(n.scene(), ray, rec, |r| n.color(r)),
+            Integrator::Depth(d) => first_hit(d.scene(), ray, rec, |r| d.color(r)),
         };
     }
+}
+
+/// A first-hit image's value of `ray`, with the ray and its hit told to `rec`.
+fn first_hit<R: Recorder>(
+    scene: &Prepared,
+    ray: &Ray,
+    rec: &mut R,
+    color: impl FnOnce(&Ray) -> Color,
+) -> Color {
+    if R::ON {
+        rec.ray(ray, &Path::CAMERA);
+        if let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) {
+            rec.hit(&hit);
+        }
+    }
+    let c = color(ray);
+    if R::ON {
+        rec.done(c);
+    }
+    c
 }

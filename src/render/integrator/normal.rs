@@ -13,6 +13,11 @@ pub struct NormalImage<'a> {
 }
 
 impl<'a> NormalImage<'a> {
+    /// The scene it images.
+    pub fn scene(&self) -> &'a Prepared {
+        self.scene
+    }
+
     /// The integrator for `scene`.
     pub fn new(scene: &'a Prepared) -> NormalImage<'a> {
         NormalImage { scene }

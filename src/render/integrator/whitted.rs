@@ -16,6 +16,7 @@ use crate::ir::limits::MAX_GLOSS_SAMPLES;
 use crate::ir::{Color, Material, ShadingModel};
 use crate::opt::{Effects, Prepared};
 use crate::render::offset::SpawnPoint;
+use crate::render::record::{Branch, NoRecord, Recorder};
 use crate::render::shading::{self, Ctx, Surface};
 use crate::render::{bump, texture};
 
@@ -168,10 +169,35 @@ impl<'a> Whitted<'a> {
 
     /// The colour seen along `ray` by a path in state `path`.
     pub fn trace(&self, ray: &Ray, path: Path, ctx: &mut Ctx) -> Color {
+        self.trace_with(ray, path, ctx, &mut NoRecord)
+    }
+
+    /// [`Whitted::trace`], telling `rec` what the ray meets (`rtc why`).
+    pub fn trace_with<R: Recorder>(
+        &self,
+        ray: &Ray,
+        path: Path,
+        ctx: &mut Ctx,
+        rec: &mut R,
+    ) -> Color {
+        if R::ON {
+            rec.ray(ray, &path);
+        }
+        let c = self.shade_hit(ray, path, ctx, rec);
+        if R::ON {
+            rec.done(c);
+        }
+        c
+    }
+
+    fn shade_hit<R: Recorder>(&self, ray: &Ray, path: Path, ctx: &mut Ctx, rec: &mut R) -> Color {
         let scene = self.scene;
         let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) else {
             return self.background;
         };
+        if R::ON {
+            rec.hit(&hit);
+        }
         let mat = scene.material(hit.material);
         let inside = hit.normal.dot(ray.dir) > 0.0;
         let facing = if inside { -hit.normal } else { hit.normal };
@@ -188,10 +214,13 @@ impl<'a> Whitted<'a> {
             time: ray.time,
         };
         let mut c = match mat.shading.unwrap_or(self.shading) {
-            ShadingModel::Phong => shading::phong::shade(scene, &s, ctx),
-            ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx),
-            ShadingModel::Hatching => shading::hatching::shade(scene, &s, ctx),
+            ShadingModel::Phong => shading::phong::shade(scene, &s, ctx, rec),
+            ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx, rec),
+            ShadingModel::Hatching => shading::hatching::shade(scene, &s, ctx, rec),
         };
+        if R::ON {
+            rec.local(c);
+        }
         if path.depth >= self.max_depth {
             return c;
         }
@@ -221,22 +250,41 @@ impl<'a> Whitted<'a> {
                         refracted: true,
                         time: ray.time,
                     };
-                    c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx);
+                    if R::ON {
+                        rec.branch(Branch::Refracted, kt, self.lobe_rays(mat, path), false);
+                    }
+                    c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx, rec);
                 }
-                Some(_) => {}
-                None => kr += kt,
+                Some(_) => {
+                    if R::ON {
+                        rec.branch(Branch::Refracted, kt, 0, true);
+                    }
+                }
+                None => {
+                    if R::ON {
+                        rec.total_internal_reflection();
+                    }
+                    kr += kt
+                }
             }
         }
-        if kr > 0.0 && self.significant(path.bounce(media, kr), ctx) {
-            let dir = reflect(ray.dir, facing);
-            let out = Outgoing {
-                from: spawn.ray(dir).origin,
-                dir,
-                side: facing,
-                refracted: false,
-                time: ray.time,
-            };
-            c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx);
+        if kr > 0.0 {
+            if self.significant(path.bounce(media, kr), ctx) {
+                let dir = reflect(ray.dir, facing);
+                let out = Outgoing {
+                    from: spawn.ray(dir).origin,
+                    dir,
+                    side: facing,
+                    refracted: false,
+                    time: ray.time,
+                };
+                if R::ON {
+                    rec.branch(Branch::Reflected, kr, self.lobe_rays(mat, path), false);
+                }
+                c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx, rec);
+            } else if R::ON {
+                rec.branch(Branch::Reflected, kr, 0, true);
+            }
         }
         c
     }
@@ -245,10 +293,22 @@ impl<'a> Whitted<'a> {
     /// or the mean of a glossy material's lobe around it ([`gloss`]), `gloss_samples` rays at a
     /// camera ray's hit and one after that (so rays per pixel grow linearly with depth, not
     /// exponentially).
-    fn bounce(&self, out: &Outgoing, mat: &Material, next: Path, ctx: &mut Ctx) -> Color {
+    fn bounce<R: Recorder>(
+        &self,
+        out: &Outgoing,
+        mat: &Material,
+        next: Path,
+        ctx: &mut Ctx,
+        rec: &mut R,
+    ) -> Color {
         if !self.effects.glossy || mat.gloss <= 0.0 {
             ctx.stats.secondary_rays += 1;
-            return self.trace(&Ray::new(out.from, out.dir).at_time(out.time), next, ctx);
+            return self.trace_with(
+                &Ray::new(out.from, out.dir).at_time(out.time),
+                next,
+                ctx,
+                rec,
+            );
         }
         let depth = next.depth - 1;
         let n = if depth == 0 {
@@ -260,9 +320,21 @@ impl<'a> Whitted<'a> {
         for k in 0..n {
             let d = gloss::sample(&ctx.rng, out, mat.gloss, depth, k);
             ctx.stats.secondary_rays += 1;
-            sum += self.trace(&Ray::new(out.from, d).at_time(out.time), next, ctx);
+            sum += self.trace_with(&Ray::new(out.from, d).at_time(out.time), next, ctx, rec);
         }
         sum / f64::from(n)
+    }
+
+    /// How many rays [`Whitted::bounce`] traces for a secondary ray leaving a hit of `path`
+    /// (for the recorder; `bounce` decides the same way).
+    fn lobe_rays(&self, mat: &Material, path: Path) -> u32 {
+        if !self.effects.glossy || mat.gloss <= 0.0 {
+            1
+        } else if path.depth == 0 {
+            mat.gloss_samples.clamp(1, MAX_GLOSS_SAMPLES)
+        } else {
+            1
+        }
     }
 
     /// Whether a secondary ray with this path is worth tracing: its weight is at least the
@@ -278,7 +350,7 @@ impl<'a> Whitted<'a> {
     }
 
     /// Material colour, or the texture's where the material has one.
-    fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
+    pub(crate) fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
         match mat.texture {
             Some(t) if self.effects.textures => {
                 let frame = self.scene.world().frame(hit);
@@ -289,7 +361,7 @@ impl<'a> Whitted<'a> {
     }
 
     /// The shading normal: `facing`, tilted by the material's bump map where it has one.
-    fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
+    pub(crate) fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
         match mat.bump {
             Some(b) if self.effects.bump => bump::perturb(
                 &self.scene.textures()[b.texture.0 as usize],

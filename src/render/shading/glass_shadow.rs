@@ -15,7 +15,7 @@ use crate::render::offset::SpawnPoint;
 
 /// Most surfaces one shadow ray passes through before it counts as blocked (a stack of glass
 /// panes deeper than this passes next to nothing anyway).
-const MAX_CROSSINGS: u32 = 32;
+pub const MAX_CROSSINGS: u32 = 32;
 
 /// The share of light sample `ls` that reaches surface point `s` through the glass in between,
 /// per channel; `None` when an opaque surface blocks it.

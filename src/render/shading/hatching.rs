@@ -22,10 +22,11 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{Ctx, Surface, light_sample, transmission};
+use super::{Ctx, Surface, light_sample, occluder, transmission};
 use crate::geometry::Ray;
 use crate::ir::{Color, Projection};
 use crate::opt::Prepared;
+use crate::render::record::{LightTerm, Recorder};
 
 /// Distance between neighbouring strokes of one family on screen, in pixels.
 pub const SPACING_PX: f64 = 6.0;
@@ -39,23 +40,46 @@ const BASE_FREQUENCY: f64 = 64.0;
 /// The coarsest and finest levels.
 const LEVELS: (f64, f64) = (-6.0, 30.0);
 
-/// The hatched colour of a surface point.
-pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
+/// The hatched colour of a surface point; `rec` hears each light's tone inputs (grey).
+pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec: &mut R) -> Color {
     let mut tone = 0.0;
     for (i, light) in scene.lights().iter().enumerate() {
+        let mut term = LightTerm::new(i);
         let lum = (light.color.x + light.color.y + light.color.z) / 3.0;
         tone += s.mat.ka * lum;
+        if R::ON {
+            term.ambient = Color::splat(s.mat.ka * lum);
+        }
         let (first, count) = ctx.lights.cells(light.samples);
         for j in 0..count {
             let k = (first + j) % light.samples;
             let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
-            if n_dot_l > 0.0
-                && let Some(pass) = transmission(scene, s, &ls, &mut ctx.stats)
-            {
-                let through = pass.element_sum() / 3.0;
-                tone += s.mat.kd * n_dot_l * lum / f64::from(count) * through;
+            if R::ON {
+                term.samples += 1;
+                term.behind += u32::from(n_dot_l <= 0.0);
             }
+            if n_dot_l > 0.0 {
+                match transmission(scene, s, &ls, &mut ctx.stats) {
+                    Some(pass) => {
+                        let through = pass.element_sum() / 3.0;
+                        tone += s.mat.kd * n_dot_l * lum / f64::from(count) * through;
+                        if R::ON {
+                            term.tinted += u32::from(pass != Color::ONE);
+                            term.diffuse +=
+                                Color::splat(s.mat.kd * n_dot_l * lum / f64::from(count) * through);
+                        }
+                    }
+                    None if R::ON => {
+                        term.blocked += 1;
+                        term.occluder = term.occluder.or_else(|| occluder(scene, s, &ls));
+                    }
+                    None => {}
+                }
+            }
+        }
+        if R::ON {
+            rec.light(term);
         }
     }
     let dark = 1.0 - tone.clamp(0.0, 1.0);

@@ -11,6 +11,7 @@ use glam::DVec3;
 use super::film::Stats;
 use super::offset::SpawnPoint;
 use super::sampler::Rng;
+use crate::geometry::SurfaceHit;
 use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
 
@@ -136,6 +137,21 @@ pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut 
         Some((ray, t_max)) => !scene.world().occluded(&ray.at_time(s.time), 0.0, t_max),
         None => true,
     }
+}
+
+/// The first opaque surface between `s` and light sample `ls` (for explanations: the shadow
+/// test itself only asks whether there is one). With glass shadows, glass on the way is
+/// passed as [`glass_shadow`] passes it.
+pub fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<SurfaceHit> {
+    let (mut ray, mut left) = s.spawn.ray_to(ls.position)?;
+    for _ in 0..glass_shadow::MAX_CROSSINGS {
+        let hit = scene.world().intersect(&ray.at_time(s.time), 0.0, left)?;
+        if !scene.effects().glass_shadows || scene.material(hit.material).refract <= 0.0 {
+            return Some(hit);
+        }
+        (ray, left) = SpawnPoint::of(&hit).ray_to(ls.position)?;
+    }
+    None
 }
 
 /// The share of light sample `ls` reaching `s`, per channel: `Some(ONE)` when nothing blocks

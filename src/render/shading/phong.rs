@@ -3,37 +3,63 @@
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
 //! is `ka·C` once, without light colour.
 
-use super::{Ctx, Surface, highlight, light_sample, transmission};
+use super::{Ctx, Surface, highlight, light_sample, occluder, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
+use crate::render::record::{LightTerm, Recorder};
 
-/// The Phong colour of a surface point.
-pub fn shade(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx) -> Color {
+/// The Phong colour of a surface point; `rec` hears each light's terms.
+pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec: &mut R) -> Color {
     let m = s.mat;
     let mut c = Color::ZERO;
     if scene.settings().ambient == AmbientConvention::Once {
         c += m.ka * s.color;
+        if R::ON {
+            rec.ambient(m.ka * s.color);
+        }
     }
     for (i, light) in scene.lights().iter().enumerate() {
+        let mut term = LightTerm::new(i);
         if scene.settings().ambient == AmbientConvention::PerLight {
             c += m.ka * s.color * light.color;
+            if R::ON {
+                term.ambient = m.ka * s.color * light.color;
+            }
         }
         let (first, count) = ctx.lights.cells(light.samples);
         for j in 0..count {
             let k = (first + j) % light.samples;
             let ls = light_sample(light, i, k, count, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
+            if R::ON {
+                term.samples += 1;
+            }
             // Facing away: no diffuse, and the light is behind the surface, so no highlight either
             // (a closed surface would shadow it; this also skips the shadow ray).
             if n_dot_l <= 0.0 {
+                if R::ON {
+                    term.behind += 1;
+                }
                 continue;
             }
             let Some(pass) = transmission(scene, s, &ls, &mut ctx.stats) else {
+                if R::ON {
+                    term.blocked += 1;
+                    term.occluder = term.occluder.or_else(|| occluder(scene, s, &ls));
+                }
                 continue;
             };
             // `pass` is exactly ONE without glass in the way, so this is the plain sum then.
             let lc = ls.color * pass;
             c += (m.kd * n_dot_l) * s.color * lc + highlight(s, ls.l, n_dot_l) * lc;
+            if R::ON {
+                term.tinted += u32::from(pass != Color::ONE);
+                term.diffuse += (m.kd * n_dot_l) * s.color * lc;
+                term.specular += highlight(s, ls.l, n_dot_l) * lc;
+            }
+        }
+        if R::ON {
+            rec.light(term);
         }
     }
     c

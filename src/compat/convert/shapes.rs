@@ -1,0 +1,278 @@
+//! Objects, materials and textures as rtc source: one constructor call per object with its
+//! placement as transform methods, materials as `material { ... }` records.
+
+use std::path::Path;
+
+use glam::{DAffine3, DMat3, DVec3};
+
+use super::text::{color, direction, number, string, vector};
+use crate::ir::{CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shape, Texture};
+
+/// Longest line before an object's methods go on lines of their own.
+const LINE: usize = 100;
+
+/// How a converted file refers to an asset: by a path relative to the directory it is written to.
+pub type AssetPath<'a> = &'a dyn Fn(&Path) -> String;
+
+/// The fields of the `material { ... }` record of a course material.
+pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec<String> {
+    let defaults = Material::default();
+    let mut fields = Vec::new();
+    let textured = m.texture.map(|t| &scene.textures[t.0 as usize]);
+    // Written even under a texture, which replaces it: the IR keeps it (white by the course).
+    fields.push(format!("color: {}", color(m.color)));
+    if let Some(t) = textured {
+        fields.push(format!("texture: {}", texture(t, asset)));
+    }
+    for (name, v) in [("ka", m.ka), ("kd", m.kd), ("ks", m.ks), ("n", m.n)] {
+        fields.push(format!("{name}: {}", number(v)));
+    }
+    fields.push(format!("reflect: {}", number(m.reflect)));
+    if m.refract != 0.0 || m.eta != 1.0 {
+        fields.push(format!("refract: {}", number(m.refract)));
+        fields.push(format!("eta: {}", number(m.eta)));
+    }
+    if let Some(b) = m.bump {
+        let t = &scene.textures[b.texture.0 as usize];
+        fields.push(format!("bump: {}", texture(t, asset)));
+        fields.push(format!("bump_scale: {}", number(b.scale)));
+    }
+    if m.gloss != defaults.gloss || m.gloss_samples != defaults.gloss_samples {
+        fields.push(format!("gloss: {}", number(m.gloss)));
+        fields.push(format!("gloss_samples: {}", m.gloss_samples));
+    }
+    if let Some(s) = m.shading {
+        fields.push(format!("shading: {}", shading(s)));
+    }
+    fields
+}
+
+/// A shading model as the language names it.
+pub fn shading(s: ShadingModel) -> String {
+    match s {
+        ShadingModel::Phong => "phong".into(),
+        ShadingModel::Hatching => "hatching".into(),
+        ShadingModel::Gooch(g) => format!(
+            "gooch(b: {}, y: {}, alpha: {}, beta: {})",
+            number(g.b),
+            number(g.y),
+            number(g.alpha),
+            number(g.beta)
+        ),
+    }
+}
+
+fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
+    match t {
+        Texture::Image { path, mapping, .. } => {
+            let map = match mapping {
+                Mapping::Uv => "",
+                Mapping::Spherical => ", mapping: spherical",
+                Mapping::Planar => ", mapping: planar",
+                Mapping::Cylindrical => ", mapping: cylindrical",
+            };
+            format!("image({}{map})", string(&asset(path)))
+        }
+        Texture::Checker { a, b, size } => pattern("checker", *a, *b, *size),
+        Texture::Stripes { a, b, size } => pattern("stripes", *a, *b, *size),
+    }
+}
+
+fn pattern(name: &str, a: DVec3, b: DVec3, size: f64) -> String {
+    format!(
+        "{name}(size: {}, a: {}, b: {})",
+        number(size),
+        color(a),
+        color(b)
+    )
+}
+
+/// An object: its constructor, its placement and its material (`names` gives the name of a
+/// scene material id). Long forms put each method on its own line; a rotation written as a
+/// matrix gets a comment saying where it turns the object's +Y (a course texture's north pole).
+pub fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
+    let parts = calls(o, names, asset);
+    let m = o.transform.matrix3;
+    let note = (m != DMat3::from_diagonal(DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z)))
+        .then(|| {
+            let pole = m.y_axis.normalize_or_zero();
+            format!(
+                "// Rotated so that its +Y (a course texture's north pole) points along [{}, {}, {}].\n",
+                crate::diag::number(pole.x),
+                crate::diag::number(pole.y),
+                crate::diag::number(pole.z)
+            )
+        });
+    let one_line = parts.concat();
+    let text = if one_line.len() <= LINE {
+        one_line
+    } else {
+        parts.join("\n  ")
+    };
+    note.unwrap_or_default() + &text
+}
+
+fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
+    let v = |p: DVec3| vector(p);
+    match &o.shape {
+        Shape::Sphere { center, radius } if *center == DVec3::ZERO => {
+            format!("sphere(radius: {})", number(*radius))
+        }
+        Shape::Sphere { center, radius } => {
+            format!(
+                "sphere(center: {}, radius: {})",
+                v(*center),
+                number(*radius)
+            )
+        }
+        Shape::Plane { point, normal } => {
+            format!(
+                "plane(point: {}, normal: {})",
+                v(*point),
+                direction(*normal)
+            )
+        }
+        Shape::Box { min, max } => format!("box(min: {}, max: {})", v(*min), v(*max)),
+        Shape::Triangle {
+            vertices: [a, b, c],
+        } => {
+            format!("triangle(a: {}, b: {}, c: {})", v(*a), v(*b), v(*c))
+        }
+        Shape::Quad { corner, u, v: e } => {
+            format!("quad(corner: {}, u: {}, v: {})", v(*corner), v(*u), v(*e))
+        }
+        Shape::Polygon { points } => {
+            let pts: Vec<String> = points.iter().map(|p| v(*p)).collect();
+            format!("polygon(points: [{}])", pts.join(", "))
+        }
+        Shape::Disk {
+            center,
+            normal,
+            radius,
+        } => format!(
+            "disk(center: {}, normal: {}, radius: {})",
+            v(*center),
+            direction(*normal),
+            number(*radius)
+        ),
+        Shape::Cylinder {
+            base,
+            top,
+            radius,
+            capped,
+        } => format!(
+            "cylinder(base: {}, top: {}, radius: {}{})",
+            v(*base),
+            v(*top),
+            number(*radius),
+            if *capped { "" } else { ", capped: false" }
+        ),
+        Shape::Cone {
+            base,
+            top,
+            base_radius,
+            top_radius,
+            capped,
+        } => format!(
+            "cone(base: {}, top: {}, base_radius: {}, top_radius: {}{})",
+            v(*base),
+            v(*top),
+            number(*base_radius),
+            number(*top_radius),
+            if *capped { "" } else { ", capped: false" }
+        ),
+        Shape::Torus {
+            center,
+            major_radius,
+            minor_radius,
+        } => format!(
+            "torus(center: {}, major_radius: {}, minor_radius: {})",
+            v(*center),
+            number(*major_radius),
+            number(*minor_radius)
+        ),
+        Shape::Blob {
+            components,
+            threshold,
+        } => {
+            let cs: Vec<String> = components
+                .iter()
+                .map(|c| {
+                    format!(
+                        "{{ center: {}, radius: {}, strength: {} }}",
+                        v(c.center),
+                        number(c.radius),
+                        number(c.strength)
+                    )
+                })
+                .collect();
+            format!(
+                "blob(components: [{}], threshold: {})",
+                cs.join(", "),
+                number(*threshold)
+            )
+        }
+        Shape::Mesh {
+            path,
+            smooth,
+            use_mtl,
+        } => format!(
+            "mesh({}{}{})",
+            string(&asset(path)),
+            if *smooth { ", smooth: true" } else { "" },
+            if *use_mtl { ", use_mtl: true" } else { "" }
+        ),
+        Shape::Csg { op, children } => {
+            let kids: Vec<String> = children
+                .iter()
+                .map(|c| calls(c, names, asset).concat())
+                .collect();
+            match op {
+                CsgOp::Union => format!("union([{}])", kids.join(", ")),
+                CsgOp::Merge => format!("union([{}], merge: true)", kids.join(", ")),
+                CsgOp::Intersection => format!("intersection([{}])", kids.join(", ")),
+                CsgOp::Difference => {
+                    format!("difference({}, [{}])", kids[0], kids[1..].join(", "))
+                }
+            }
+        }
+    }
+}
+
+/// The constructor, then the methods that place the object and give its material.
+fn calls(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Vec<String> {
+    let mut parts = vec![shape(o, names, asset)];
+    parts.extend(placement(&o.transform));
+    if let Some(m) = o.material {
+        parts.push(format!(".material({})", names(m.0)));
+    }
+    parts
+}
+
+/// The methods that place an object, read in application order: a per-axis `.scale` when the
+/// linear part is diagonal, else `.matrix` of it, then `.translate`. Each reproduces the
+/// transform's numbers exactly (the language composes them as products with 0 and 1).
+pub fn placement(t: &DAffine3) -> Vec<String> {
+    let mut out = Vec::new();
+    let m = t.matrix3;
+    if m != DMat3::IDENTITY {
+        let d = DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z);
+        if m == DMat3::from_diagonal(d) {
+            if d.x == d.y && d.y == d.z {
+                out.push(format!(".scale({})", number(d.x)));
+            } else {
+                out.push(format!(".scale({})", vector(d)));
+            }
+        } else {
+            let row = |i: usize| {
+                let r = m.row(i);
+                format!("[{}, {}, {}, 0]", number(r.x), number(r.y), number(r.z))
+            };
+            out.push(format!(".matrix([{}, {}, {}])", row(0), row(1), row(2)));
+        }
+    }
+    if t.translation != DVec3::ZERO {
+        out.push(format!(".translate({})", vector(t.translation)));
+    }
+    out
+}
