@@ -111,6 +111,18 @@ enum Command {
         #[arg(long, default_value_t = 0)]
         threads: usize,
     },
+    /// Lay `.rtc` files out in the canonical layout, in place (or `--check`: show the diff, exit 1).
+    Fmt {
+        /// Files, directories (every `.rtc` below) or `-` (standard input to standard output).
+        #[arg(required = true)]
+        paths: Vec<PathBuf>,
+        /// Write nothing: print a diff of what would change and exit 1 if anything would.
+        #[arg(long)]
+        check: bool,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+    },
     /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
     Accuracy(cli::accuracy::AccuracyArgs),
 }
@@ -182,6 +194,11 @@ fn main() -> ExitCode {
         }),
         Command::Accuracy(args) => cli::accuracy::run(&args),
         Command::Merge { parts, output } => cli::shard::merge(&parts, &output),
+        Command::Fmt {
+            paths,
+            check,
+            format,
+        } => cli::fmt::run(&paths, check, format),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,

@@ -4,6 +4,8 @@ pub mod accuracy;
 pub mod accuracy_table;
 pub mod check;
 pub mod converge;
+pub mod diff;
+pub mod fmt;
 pub mod frames;
 pub mod inputs;
 pub mod progress;
