@@ -30,26 +30,36 @@ pub(super) struct Plan {
     pub comma_after: Vec<bool>,
 }
 
-/// Formats the tokens: groups written over several lines stay so (one item per line); then
-/// the outermost group of every too-long line is broken, until none is left to break.
+/// Formats the tokens: groups written over several lines stay so (one item per line), chains
+/// with a written break get all their breaks; then the outermost group or chain of every
+/// too-long line is broken, until none is left to break.
 pub(super) fn layout(t: &Tokens) -> String {
-    let mut vertical: Vec<bool> = t.groups.iter().map(|g| written_broken(t, g)).collect();
+    let mut broken = Broken {
+        groups: t.groups.iter().map(|g| written_broken(t, g)).collect(),
+        chains: t
+            .chains
+            .iter()
+            .map(|c| c.breaks.iter().any(|&b| has_newline(t, b)))
+            .collect(),
+    };
     let mut close_of = vec![usize::MAX; t.toks.len()];
     for (i, g) in t.groups.iter().enumerate() {
         close_of[g.close] = i;
     }
     loop {
-        let plan = plan(t, &vertical);
+        let plan = plan(t, &broken);
         let printed = print(t, &plan);
         let mut changed = false;
         for (line, text) in printed.text.split('\n').enumerate() {
             if text.chars().count() <= MAX_WIDTH {
                 continue;
             }
-            if let Some(g) = pick(t, &vertical, &close_of, &printed.tok_line, line) {
-                vertical[g] = true;
-                changed = true;
+            match pick(t, &broken, &close_of, &printed.tok_line, line) {
+                Some(Unit::Group(g)) => broken.groups[g] = true,
+                Some(Unit::Chain(c)) => broken.chains[c] = true,
+                None => continue,
             }
+            changed = true;
         }
         if !changed {
             return printed.text;
@@ -57,9 +67,26 @@ pub(super) fn layout(t: &Tokens) -> String {
     }
 }
 
+/// Which groups are one item per line and which chains are broken.
+pub(super) struct Broken {
+    groups: Vec<bool>,
+    chains: Vec<bool>,
+}
+
+/// Something that can be broken over lines.
+#[derive(Clone, Copy)]
+enum Unit {
+    Group(usize),
+    Chain(usize),
+}
+
 /// Groups that can be laid out one item per line.
 fn breakable(g: &Group) -> bool {
     !matches!(g.br, Br::Paren | Br::Index | Br::Empty)
+}
+
+fn has_newline(t: &Tokens, i: usize) -> bool {
+    t.toks[i].before.contains(&Trivia::Newline)
 }
 
 /// A group with a line break between its items (not only inside them): after the opener,
@@ -68,38 +95,44 @@ fn written_broken(t: &Tokens, g: &Group) -> bool {
     let inner = |i: usize| g.items.iter().any(|&(a, b)| i > a && i <= b);
     (g.open + 1..=g.close)
         .filter(|&i| !inner(i))
-        .any(|i| t.toks[i].before.contains(&Trivia::Newline))
+        .any(|i| has_newline(t, i))
 }
 
-/// The group to break on the too-long output line `line`: the largest outermost one that opens
-/// or closes there, or, when that is a bracket list holding a single item ending in a group,
+/// What to break on the too-long output line `line`: the largest outermost group or chain that
+/// starts or ends there; when that is a bracket list holding a single item ending in a group,
 /// that group (so `f(g {` ... `})` rather than a lone argument on its own line).
 fn pick(
     t: &Tokens,
-    vertical: &[bool],
+    broken: &Broken,
     close_of: &[usize],
     tok_line: &[usize],
     line: usize,
-) -> Option<usize> {
-    let candidate = |i: usize| {
-        let g = &t.groups[i];
-        breakable(g)
-            && !vertical[i]
-            && !g.items.is_empty()
-            && (tok_line[g.open] == line || tok_line[g.close] == line)
+) -> Option<Unit> {
+    let on_line = |a: usize, b: usize| tok_line[a] == line || tok_line[b] == line;
+    let mut found: Vec<(usize, usize, Unit)> = Vec::new();
+    for (i, g) in t.groups.iter().enumerate() {
+        if breakable(g) && !broken.groups[i] && !g.items.is_empty() && on_line(g.open, g.close) {
+            found.push((g.open, g.close, Unit::Group(i)));
+        }
+    }
+    for (i, c) in t.chains.iter().enumerate() {
+        if !broken.chains[i] && on_line(c.first, c.last) {
+            found.push((c.first, c.last, Unit::Chain(i)));
+        }
+    }
+    let outer = |&&(a, b, _): &&(usize, usize, Unit)| {
+        !found
+            .iter()
+            .any(|&(oa, ob, _)| oa <= a && ob >= b && (oa, ob) != (a, b))
     };
-    let found: Vec<usize> = (0..t.groups.len()).filter(|&i| candidate(i)).collect();
-    let outer = |&&i: &&usize| {
-        let g = &t.groups[i];
-        !found.iter().any(|&o| {
-            let h = &t.groups[o];
-            h.open < g.open && h.close > g.close
-        })
-    };
-    let mut best = *found
+    // Largest first; a chain and a group over the same tokens: the group.
+    let (_, _, unit) = *found
         .iter()
         .filter(outer)
-        .max_by_key(|&&i| (t.groups[i].close - t.groups[i].open, usize::MAX - i))?;
+        .max_by_key(|&&(a, b, u)| (b - a, matches!(u, Unit::Group(_)), usize::MAX - a))?;
+    let Unit::Group(mut best) = unit else {
+        return Some(unit);
+    };
     loop {
         let g = &t.groups[best];
         // A record or block breaks itself: its fields and statements are what should stand
@@ -109,7 +142,7 @@ fn pick(
         }
         let [(_, last)] = g.items[..] else { break };
         let inner = close_of[last];
-        if inner == usize::MAX || vertical[inner] || !breakable(&t.groups[inner]) {
+        if inner == usize::MAX || broken.groups[inner] || !breakable(&t.groups[inner]) {
             break;
         }
         if t.groups[inner].items.is_empty() {
@@ -117,11 +150,11 @@ fn pick(
         }
         best = inner;
     }
-    Some(best)
+    Some(Unit::Group(best))
 }
 
-/// The decisions for the given vertical groups.
-pub(super) fn plan(t: &Tokens, vertical: &[bool]) -> Plan {
+/// The decisions for the given broken groups and chains.
+fn plan(t: &Tokens, broken: &Broken) -> Plan {
     let n = t.toks.len();
     let mut p = Plan {
         brk: vec![Brk::Auto; n],
@@ -138,10 +171,17 @@ pub(super) fn plan(t: &Tokens, vertical: &[bool]) -> Plan {
         if !breakable(grp) {
             continue;
         }
-        if vertical[g] {
+        if broken.groups[g] {
             one_per_line(t, grp, &mut p);
         } else {
             one_line(t, grp, &mut p);
+        }
+    }
+    for (c, chain) in t.chains.iter().enumerate() {
+        if broken.chains[c] {
+            for &b in &chain.breaks {
+                p.brk[b] = Brk::Force;
+            }
         }
     }
     p

@@ -108,6 +108,18 @@ pub(super) struct Group {
     pub keep_trailing_comma: bool,
 }
 
+/// A chain that may be broken over lines: the binary operators of lowest precedence in one
+/// expression (`a | b | c`), or the method calls of one operand (`x.f().g()`, two or more).
+#[derive(Clone, Debug)]
+pub(super) struct Chain {
+    /// The tokens that start a line when the chain is broken (operators or `.`).
+    pub breaks: Vec<usize>,
+    /// First token of the expression or operand.
+    pub first: usize,
+    /// Last token of the expression or operand.
+    pub last: usize,
+}
+
 /// The whole file as tokens and groups, plus the trivia after the last token.
 #[derive(Debug, Default)]
 pub(super) struct Tokens {
@@ -115,6 +127,8 @@ pub(super) struct Tokens {
     pub toks: Vec<Tok>,
     /// Every bracket group, in order of their openers.
     pub groups: Vec<Group>,
+    /// Every operator and method chain.
+    pub chains: Vec<Chain>,
     /// Comments and line breaks after the last token.
     pub tail: Vec<Trivia>,
 }
@@ -235,20 +249,33 @@ impl Reader<'_> {
         let mut cursor = start;
         let mut items = Vec::new();
         let mut plain_numbers = 0;
-        for child in pair.into_inner() {
+        let children: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
+        let mut chains = ChainScan::default();
+        for (k, child) in children.iter().enumerate() {
             let (cs, ce) = (base + child.as_span().start(), base + child.as_span().end());
             self.gap(cursor, cs, rule)?;
-            if rule == Rule::list && is_plain_number(&child) {
+            if rule == Rule::list && is_plain_number(child) {
                 plain_numbers += 1;
             }
             let before = self.out.toks.len();
-            self.visit(child, base)?;
+            self.visit(child.clone(), base)?;
             if self.out.toks.len() > before {
                 items.push((before, self.out.toks.len() - 1));
+                if matches!(rule, Rule::expr | Rule::head_expr) {
+                    let call_follows =
+                        children.get(k + 1).map(Pair::as_rule) == Some(Rule::call_args);
+                    chains.child(
+                        child.as_rule(),
+                        before,
+                        self.out.toks.len() - 1,
+                        call_follows,
+                    );
+                }
             }
             cursor = ce;
         }
         self.gap(cursor, end, rule)?;
+        chains.finish(&mut self.out.chains);
         if let Some(g) = group {
             let last = self.out.toks.len().saturating_sub(1);
             let opens = self.out.toks.get(first).map(|t| t.kind);
@@ -323,6 +350,86 @@ impl Reader<'_> {
             .join("\n");
         self.pending.push(Trivia::Comment { text, line });
     }
+}
+
+/// Collects the chains of one `expr` from its children in order.
+#[derive(Default)]
+struct ChainScan {
+    /// `(token, precedence)` of each binary operator.
+    ops: Vec<(usize, u8)>,
+    /// The `.` of each method call in the current operand.
+    dots: Vec<usize>,
+    operand_first: Option<usize>,
+    operand_last: usize,
+    first: Option<usize>,
+    last: usize,
+    found: Vec<Chain>,
+}
+
+impl ChainScan {
+    fn child(&mut self, rule: Rule, first: usize, last: usize, call_follows: bool) {
+        self.first.get_or_insert(first);
+        self.last = last;
+        if let Some(prec) = precedence(rule) {
+            self.ops.push((first, prec));
+            self.end_operand();
+            return;
+        }
+        self.operand_first.get_or_insert(first);
+        self.operand_last = last;
+        if rule == Rule::member && call_follows {
+            self.dots.push(first);
+        }
+    }
+
+    fn end_operand(&mut self) {
+        let dots = std::mem::take(&mut self.dots);
+        if let Some(first) = self.operand_first.take()
+            && dots.len() >= 2
+        {
+            self.found.push(Chain {
+                breaks: dots,
+                first,
+                last: self.operand_last,
+            });
+        }
+    }
+
+    fn finish(mut self, out: &mut Vec<Chain>) {
+        self.end_operand();
+        if let (Some(first), Some(low)) = (self.first, self.ops.iter().map(|o| o.1).min()) {
+            let breaks = self
+                .ops
+                .iter()
+                .filter(|o| o.1 == low)
+                .map(|o| o.0)
+                .collect();
+            out.push(Chain {
+                breaks,
+                first,
+                last: self.last,
+            });
+        }
+        out.append(&mut self.found);
+    }
+}
+
+/// Binding strength of a binary operator (src/syntax/pratt.rs; higher binds tighter).
+fn precedence(rule: Rule) -> Option<u8> {
+    Some(match rule {
+        Rule::or_op => 0,
+        Rule::and_op => 1,
+        Rule::cmp_op => 2,
+        Rule::step_kw => 3,
+        Rule::range_op => 4,
+        Rule::then_op => 5,
+        Rule::union_op => 6,
+        Rule::add_op | Rule::add_line_op => 7,
+        Rule::inter_op => 8,
+        Rule::mul_op => 9,
+        Rule::pow_op => 10,
+        _ => return None,
+    })
 }
 
 /// The role of a punctuation character matched as a literal inside a pair of rule `ctx`.
