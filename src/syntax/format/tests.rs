@@ -118,3 +118,36 @@ fn spans_are_stripped() {
         "A { span: Span, b: 3 }"
     );
 }
+
+#[test]
+fn long_chains_break_before_operators_and_method_calls() {
+    let src = format!(
+        "rtc 1\nlet s = {}\n",
+        ["shape_number_one(1)"; 6].join(" | ")
+    );
+    let want = format!(
+        "rtc 1\nlet s = shape_number_one(1){}\n",
+        "\n    | shape_number_one(1)".repeat(5)
+    );
+    assert_eq!(fmt(&src), want);
+    // Only the lowest precedence breaks: `a * b` stays whole.
+    let src = format!(
+        "rtc 1\nlet s = {}\n",
+        ["long_name_a * long_name_b"; 4].join(" + ")
+    );
+    let want = format!(
+        "rtc 1\nlet s = long_name_a * long_name_b{}\n",
+        "\n    + long_name_a * long_name_b".repeat(3)
+    );
+    assert_eq!(fmt(&src), want);
+    let src = "rtc 1\nlet o = box(min: [-0.6, -0.6, -0.6], max: [0.6, 0.6, 0.6]).rotate(x: 35deg, y: 45deg).material(some_long_material)\n";
+    assert_eq!(
+        fmt(src),
+        "rtc 1\nlet o = box(min: [-0.6, -0.6, -0.6], max: [0.6, 0.6, 0.6])\n    .rotate(x: 35deg, y: 45deg)\n    .material(some_long_material)\n"
+    );
+    // One written break breaks the whole chain.
+    assert_eq!(
+        fmt("rtc 1\nx.f().g()\n  .h()\n"),
+        "rtc 1\nx\n    .f()\n    .g()\n    .h()\n"
+    );
+}

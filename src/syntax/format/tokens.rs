@@ -318,8 +318,8 @@ impl Reader<'_> {
                 let len = rest.find('\n').unwrap_or(rest.len());
                 self.comment(&rest[..len], true);
                 i += len;
-            } else if rest.starts_with("/*") {
-                let len = rest[2..].find("*/").map_or(rest.len(), |e| e + 4);
+            } else if let Some(body) = rest.strip_prefix("/*") {
+                let len = body.find("*/").map_or(rest.len(), |e| e + 4);
                 self.comment(&rest[..len], false);
                 i += len;
             } else if rest.starts_with("->") {
