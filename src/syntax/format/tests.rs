@@ -105,10 +105,7 @@ fn a_minus_at_a_line_start_keeps_its_meaning() {
 #[test]
 fn syntax_errors_are_reported_not_formatted() {
     let d = format(FileId(0), "rtc 1\nlet = 3\n").expect_err("syntax error");
-    assert!(
-        d.iter()
-            .any(|d| d.is_error() && d.code.contains("syntax"))
-    );
+    assert!(d.iter().any(|d| d.is_error() && d.code.contains("syntax")));
 }
 
 #[test]
