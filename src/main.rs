@@ -116,6 +116,18 @@ enum Command {
         #[arg(long, default_value_t = 0)]
         threads: usize,
     },
+    /// Lay `.rtc` files out in the canonical layout, in place (or `--check`: show the diff, exit 1).
+    Fmt {
+        /// Files, directories (every `.rtc` below) or `-` (standard input to standard output).
+        #[arg(required = true)]
+        paths: Vec<PathBuf>,
+        /// Write nothing: print a diff of what would change and exit 1 if anything would.
+        #[arg(long)]
+        check: bool,
+        /// How to print diagnostics.
+        #[arg(long, value_enum, default_value = "human")]
+        format: Format,
+    },
     /// Measure what each quality knob of a scene costs in time and buys in error (docs/accuracy.md).
     Accuracy(cli::accuracy::AccuracyArgs),
     /// Convert a course scene (`.in`, `.yaml`) to rtc source that renders the same image.
@@ -208,6 +220,11 @@ fn main() -> ExitCode {
             output,
             format,
         } => cli::convert::run(&file, output.as_deref(), format),
+        Command::Fmt {
+            paths,
+            check,
+            format,
+        } => cli::fmt::run(&paths, check, format),
     };
     match outcome {
         Outcome::Ok => ExitCode::SUCCESS,

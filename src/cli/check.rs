@@ -42,7 +42,7 @@ pub fn run(path: &Path, format: Format, deny_warnings: bool, options: &EvalOptio
 }
 
 /// Every `.rtc` file below `dir`, sorted; hidden directories and `target` are skipped.
-fn rtc_files(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
+pub(crate) fn rtc_files(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
     let mut entries: Vec<_> = std::fs::read_dir(dir)?
         .filter_map(Result::ok)
         .map(|e| e.path())

@@ -6,6 +6,8 @@ pub mod aov;
 pub mod check;
 pub mod converge;
 pub mod convert;
+pub mod diff;
+pub mod fmt;
 pub mod frames;
 pub mod inputs;
 pub mod progress;

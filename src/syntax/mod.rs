@@ -6,6 +6,7 @@ mod build;
 mod delims;
 mod errors;
 mod fast;
+pub mod format;
 pub mod intern;
 mod numbers;
 mod pratt;
