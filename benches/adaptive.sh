@@ -80,6 +80,6 @@ scene() {
 }
 
 case $WHICH in
-  five_spheres|all) scene five_spheres a1-4-0.02 a1-4-0.01 a1-4-0.005 ;;&
-  showcase|all) scene showcase a2-4-0.02 a2-4-0.05 a2-4-0.1 a1-4-0.02 p0.006 p0.008 ;;
+  five_spheres|all) scene five_spheres a1-4-0.02 a1-4-0.01 a1-5-0.05 a1-5-0.1 ;;&
+  showcase|all) scene showcase a2-4-0.02 a2-5-0.02 a2-6-0.02 a1-4-0.02 p0.006 p0.008 ;;
 esac
