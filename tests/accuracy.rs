@@ -111,8 +111,13 @@ fn a_scene_without_randomness_gets_no_stochastic_sweep() {
     assert!(!report.stochastic);
     assert_eq!(
         report.knobs,
-        vec![Knob::PixelSamples, Knob::MaxDepth, Knob::Cutoff],
-        "a mirror but no gloss: bounces and the cut-off, no gloss samples"
+        vec![
+            Knob::PixelSamples,
+            Knob::AdaptiveThreshold,
+            Knob::MaxDepth,
+            Knob::Cutoff
+        ],
+        "a mirror but no gloss: bounces and the cut-off, no gloss samples; adaptive is offered to a uniform grid"
     );
     assert!(report.complete);
     assert!(report.reference.noise_rmse.is_none());
@@ -527,6 +532,21 @@ fn matches_shape(
                 Ok(())
             } else {
                 Err(format!("{at}: a {kind}, the schema says {types}"))
+            }
+        }
+        // `{"$one_of": [A, B, ...]}`: the value has one of the shapes (a setting's sampling is
+        // a grid or adaptive).
+        Value::Object(fields) if fields.contains_key("$one_of") => {
+            let alternatives = fields["$one_of"].as_array().map_or(&[][..], Vec::as_slice);
+            if alternatives
+                .iter()
+                .any(|s| matches_shape(value, s, at).is_ok())
+            {
+                Ok(())
+            } else {
+                Err(format!(
+                    "{at}: {value} has none of the shapes {alternatives:?}"
+                ))
             }
         }
         Value::Object(fields) => {

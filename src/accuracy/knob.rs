@@ -19,7 +19,9 @@ use crate::opt::{Effects, Prepared, Quality};
 pub enum Knob {
     /// Pixel samples: a regular f×f grid per pixel (antialiasing; with a lens, the lens samples).
     PixelSamples,
-    /// The threshold of adaptive supersampling, between the scene's `min` and `max`.
+    /// The threshold of adaptive supersampling, between the scene's `min` and `max`; a scene
+    /// on a uniform f×f grid is offered `adaptive(min: 1, max: f + 1)` (docs/convergence.md: a
+    /// grid finer than the uniform one where it refines is what makes adaptive pay).
     AdaptiveThreshold,
     /// Samples per edge of every area light (soft shadows).
     LightSamples,
@@ -78,8 +80,9 @@ impl Knob {
                 })
                 .collect(),
             Knob::AdaptiveThreshold => {
-                let Sampling::Adaptive { min, max, .. } = base.sampling else {
-                    return Vec::new();
+                let (min, max) = match base.sampling {
+                    Sampling::Adaptive { min, max, .. } => (min, max),
+                    Sampling::Grid { factor } => (1, (factor + 1).min(MAX_PIXEL_SAMPLES_PER_AXIS)),
                 };
                 THRESHOLD_LADDER
                     .iter()
@@ -260,16 +263,15 @@ impl Setting {
     }
 }
 
-/// The knobs `effects` says the scene uses: pixel samples always (every image has edges; with
-/// a lens they are also the lens samples), the adaptive threshold when the scene samples
-/// adaptively, light samples with soft shadows, gloss samples with a glossy material, bounces
+/// The knobs `effects` says the scene uses: pixel samples and adaptive sampling always (every
+/// image has edges; with a lens they are also the lens samples), light samples with soft shadows, gloss samples with a glossy material, bounces
 /// and the cut-off with reflection or refraction.
 pub fn used_knobs(effects: &Effects, own: &Setting) -> Vec<Knob> {
     Knob::ALL
         .into_iter()
         .filter(|k| match k {
             Knob::PixelSamples => true,
-            Knob::AdaptiveThreshold => matches!(own.sampling, Sampling::Adaptive { .. }),
+            Knob::AdaptiveThreshold => true,
             Knob::LightSamples => effects.soft_shadows,
             Knob::GlossSamples => effects.glossy,
             Knob::MaxDepth | Knob::Cutoff => effects.reflection || effects.refraction,
