@@ -266,7 +266,7 @@ impl Setting {
 /// The knobs `effects` says the scene uses: pixel samples and adaptive sampling always (every
 /// image has edges; with a lens they are also the lens samples), light samples with soft shadows, gloss samples with a glossy material, bounces
 /// and the cut-off with reflection or refraction.
-pub fn used_knobs(effects: &Effects, own: &Setting) -> Vec<Knob> {
+pub fn used_knobs(effects: &Effects) -> Vec<Knob> {
     Knob::ALL
         .into_iter()
         .filter(|k| match k {

@@ -108,7 +108,7 @@ pub fn study(
     let own = Setting::of(&prepared);
     let own_lights = prepared.light_samples();
     let effects = prepared.effects();
-    let knobs = knob::used_knobs(&effects, &own);
+    let knobs = knob::used_knobs(&effects);
     let own_light_max = own_lights.iter().flatten().copied().max().unwrap_or(1);
     let own_gloss_max = prepared
         .materials()
