@@ -95,6 +95,20 @@ fn run(text: &str, name: &str, options: &StudyOptions) -> Report {
 }
 
 /// The points of one ladder, cheapest (fewest rays) first.
+/// The RMSE and the two-seed noise estimate of each point of a stochastic ladder.
+fn errors_along(points: &[&rtc::accuracy::report::Point]) -> (Vec<f64>, Vec<f64>) {
+    let rmse = points.iter().map(|p| p.measurement.error.rmse).collect();
+    let noise = points
+        .iter()
+        .map(|p| {
+            p.measurement
+                .noise_rmse
+                .expect("a stochastic ladder estimates its noise")
+        })
+        .collect();
+    (rmse, noise)
+}
+
 fn ladder(report: &Report, knob: Knob) -> Vec<&rtc::accuracy::report::Point> {
     let mut on: Vec<_> = report
         .points
@@ -187,15 +201,11 @@ fn error_falls_as_light_samples_rise_on_a_fixed_seed() {
     // rises by more than 2% from a rung to the next and falls by a third from 1 to 36
     // samples; the noise share (the two-seed estimate, ∝ 1/n for n×n stratified samples)
     // falls by at least 25% whenever n doubles.
-    let rmse: Vec<f64> = points.iter().map(|p| p.measurement.error.rmse).collect();
+    let (rmse, noise) = errors_along(&points);
     for w in rmse.windows(2) {
         assert!(w[1] <= 1.02 * w[0], "RMSE along the ladder: {rmse:?}");
     }
     assert!(rmse[4] < 0.67 * rmse[0], "RMSE along the ladder: {rmse:?}");
-    let noise: Vec<f64> = points
-        .iter()
-        .map(|p| p.measurement.noise_rmse.unwrap())
-        .collect();
     for (a, b) in [(0, 1), (1, 3), (2, 4)] {
         assert!(
             noise[b] < 0.75 * noise[a],
@@ -359,15 +369,11 @@ fn error_falls_as_gloss_samples_rise_on_a_fixed_seed() {
     // 0.064, 0.042, 0.029, 0.016). The lobe's error is noise, ∝ 1/√n for n rays: RMSE falls
     // by at least 10% from a rung to the next and to under 40% from 1 to 16 rays (1/√16 = 25%
     // with a little floor); the two-seed noise estimate falls by 25% whenever n quadruples.
-    let rmse: Vec<f64> = points.iter().map(|p| p.measurement.error.rmse).collect();
+    let (rmse, noise) = errors_along(&points);
     for w in rmse.windows(2) {
         assert!(w[1] <= 0.9 * w[0], "RMSE along the ladder: {rmse:?}");
     }
     assert!(rmse[4] < 0.4 * rmse[0], "RMSE along the ladder: {rmse:?}");
-    let noise: Vec<f64> = points
-        .iter()
-        .map(|p| p.measurement.noise_rmse.unwrap())
-        .collect();
     for (a, b) in [(0, 2), (1, 3), (2, 4)] {
         assert!(
             noise[b] < 0.75 * noise[a],

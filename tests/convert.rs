@@ -18,7 +18,7 @@ use rtc::eval::{EvalOptions, load_file};
 use rtc::ir::{Material, Object, Scene, Shape, Texture};
 use rtc::source::{SourceMap, Span};
 
-use cli_support::{rtc, scratch};
+use cli_support::{files_below, rtc, scratch};
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -26,25 +26,10 @@ fn root() -> PathBuf {
 
 /// Every course scene, sorted.
 fn course_files() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .collect();
-        entries.sort();
-        for p in entries {
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|e| e == "in" || e == "yaml") {
-                out.push(p);
-            }
-        }
-    }
-    let mut out = Vec::new();
-    for d in ["in", "yaml"] {
-        walk(&root().join("tests/data/course").join(d), &mut out);
-    }
-    out
+    ["in", "yaml"]
+        .iter()
+        .flat_map(|d| files_below(&root().join("tests/data/course").join(d), &["in", "yaml"]))
+        .collect()
 }
 
 /// The course file as its front end reads it, and its conversion written into `dir`.

@@ -7,26 +7,10 @@ mod cli_support;
 
 use std::path::{Path, PathBuf};
 
-use cli_support::{rtc, scratch};
+use cli_support::{files_below, rtc, scratch};
 use rtc::eval::{EvalOptions, load_source};
 use rtc::source::{FileId, SourceMap};
 use rtc::syntax::format::{INTERNAL, format, strip_spans};
-
-/// Every `.rtc` file below `dir`.
-fn rtc_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            rtc_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "rtc") {
-            out.push(p);
-        }
-    }
-}
 
 /// The ```rtc blocks of docs/language.md that must evaluate cleanly, as whole files.
 fn doc_examples(root: &Path) -> Vec<(PathBuf, String)> {
@@ -82,7 +66,7 @@ fn formatting_keeps_the_meaning_of_every_file_and_is_idempotent() {
         "tests/diagnostics",
         "docs/examples",
     ] {
-        rtc_files(&root.join(dir), &mut files);
+        files.extend(files_below(&root.join(dir), &["rtc"]));
     }
     let mut inputs: Vec<(PathBuf, String)> = files
         .into_iter()
