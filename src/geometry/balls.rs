@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::primitive::{GeoHit, Geom, Primitive, SurfaceId, plain_sphere_hit};
+use super::primitive::{GeoHit, Geom, Primitive, SurfaceId, plain_sphere_hit, plain_sphere_hit_at};
 use super::shape::Leaf;
 use super::{Aabb, MappingFrame, Ray, sphere};
 use crate::ir::MaterialId;
@@ -63,6 +63,19 @@ impl Ball {
             ray,
             t_min,
             t_max,
+            Ball::surface(index),
+            self.material,
+        )
+    }
+
+    /// [`Ball::intersect`]'s hit at a `t` the same test already found (the world's lanes).
+    #[inline]
+    pub(super) fn hit_at(&self, index: u32, ray: &Ray, t: f64) -> GeoHit {
+        plain_sphere_hit_at(
+            self.center,
+            self.radius,
+            ray,
+            t,
             Ball::surface(index),
             self.material,
         )

@@ -46,14 +46,22 @@ pub fn roots(p: DVec3, v: DVec3, d: DirSquared, r: f64) -> Option<(f64, f64)> {
     if gap < 0.0 || gap.is_nan() {
         return None;
     }
+    Some(roots_past_gap(p, half_b, gap, d, rr))
+}
+
+/// The end of [`roots`] once the line is known to meet the circle (`gap ≥ 0`), from its
+/// intermediate values `half_b = p·v`, `gap` and `rr = r·r` (shared with the sphere lanes of
+/// `super::sphere_lanes`, which compute the gap of several spheres at once).
+#[inline]
+pub fn roots_past_gap(p: DVec3, half_b: f64, gap: f64, d: DirSquared, rr: f64) -> (f64, f64) {
     // The root whose two terms add (no cancellation) gives the other through the product c/a.
     let q = -half_b - (d.a * gap).sqrt().copysign(half_b);
     if q == 0.0 {
         // A tangent touching at t = 0 (half_b = 0 and disc = 0).
-        return Some((0.0, 0.0));
+        return (0.0, 0.0);
     }
     let (t0, t1) = (q * d.inv, (p.length_squared() - rr) / q);
-    Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
+    if t0 <= t1 { (t0, t1) } else { (t1, t0) }
 }
 
 #[cfg(test)]

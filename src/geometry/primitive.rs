@@ -412,21 +412,33 @@ pub(super) fn plain_sphere_hit(
     surface: SurfaceId,
     material: MaterialId,
 ) -> Option<GeoHit> {
-    sphere::hit_t(center, radius, r, t_min, t_max).map(|t| {
-        let local_point = r.at(t);
-        let normal = (local_point - center).normalize();
-        GeoHit {
-            t,
-            normal,
-            geometric_normal: normal,
-            uv: DVec2::ZERO,
-            local_point,
-            point: local_point,
-            error: sphere::point_error(center, radius, local_point),
-            surface,
-            material,
-        }
-    })
+    sphere::hit_t(center, radius, r, t_min, t_max)
+        .map(|t| plain_sphere_hit_at(center, radius, r, t, surface, material))
+}
+
+/// [`plain_sphere_hit`] at a `t` already found by the same test (`sphere::hit_t` or its lanes).
+#[inline]
+pub(super) fn plain_sphere_hit_at(
+    center: DVec3,
+    radius: f64,
+    r: &Ray,
+    t: f64,
+    surface: SurfaceId,
+    material: MaterialId,
+) -> GeoHit {
+    let local_point = r.at(t);
+    let normal = (local_point - center).normalize();
+    GeoHit {
+        t,
+        normal,
+        geometric_normal: normal,
+        uv: DVec2::ZERO,
+        local_point,
+        point: local_point,
+        error: sphere::point_error(center, radius, local_point),
+        surface,
+        material,
+    }
 }
 
 /// A CSG node's own boundary crossings along the whole line, in order.

@@ -27,6 +27,12 @@ pub fn hit_t_with(
     t_max: f64,
 ) -> Option<f64> {
     let (t0, t1) = circle::roots(ray.origin - center, ray.dir, dir, radius)?;
+    nearer_root(t0, t1, t_min, t_max)
+}
+
+/// The nearer of the ordered roots `t0 ≤ t1` in (t_min, t_max), if either lies there.
+#[inline]
+pub fn nearer_root(t0: f64, t1: f64, t_min: f64, t_max: f64) -> Option<f64> {
     if t0 > t_min && t0 < t_max {
         Some(t0)
     } else if t1 > t_min && t1 < t_max {

@@ -9,7 +9,8 @@ use obvhs::BvhBuildParams;
 use super::balls::{BALL, Ball, WorldParts};
 use super::bvh::{Bvh, BvhRay, to_f32_box};
 use super::primitive::{GeoHit, Geom, Primitive, SurfaceId};
-use super::{Aabb, MappingFrame, Ray, sphere};
+use super::sphere_lanes::SphereLanes;
+use super::{Aabb, MappingFrame, Ray};
 use crate::ir::MaterialId;
 
 /// A world-space hit with everything shading needs.
@@ -64,15 +65,6 @@ pub struct WorldStats {
     pub memory_bytes: usize,
 }
 
-/// An untransformed sphere on the linear fast path.
-#[derive(Clone, Copy, Debug)]
-struct LooseSphere {
-    center: DVec3,
-    radius: f64,
-    /// Its object id ([`BALL`] tagged).
-    node: u32,
-}
-
 /// All objects of a scene, ready for ray queries.
 #[derive(Clone, Debug)]
 pub struct World {
@@ -90,9 +82,11 @@ pub struct World {
     bvh: Option<Bvh>,
     /// Objects tested beside the BVH (all of them when there is no BVH), except `spheres`.
     loose: Vec<u32>,
-    /// The balls among the loose objects, tested first with a t-only quadratic; only the
-    /// winner computes its full hit (the course scenes are all spheres).
-    spheres: Vec<LooseSphere>,
+    /// The balls among the loose objects, tested first with a t-only quadratic, several at
+    /// once; only the winner computes its full hit (the course scenes are all spheres).
+    spheres: SphereLanes,
+    /// The object id ([`BALL`] tagged) of each of `spheres`.
+    sphere_ids: Vec<u32>,
     stats: WorldStats,
 }
 
@@ -177,20 +171,15 @@ impl World {
             + surfaces.len() * std::mem::size_of::<SurfaceInfo>();
         let (spheres, loose): (Vec<u32>, Vec<u32>) =
             loose.into_iter().partition(|&id| id & BALL != 0);
-        let spheres = spheres
-            .into_iter()
-            .map(|id| {
-                let b = &balls[(id & !BALL) as usize];
-                LooseSphere {
-                    center: b.center,
-                    radius: b.radius,
-                    node: id,
-                }
-            })
-            .collect();
+        let sphere_ids = spheres;
+        let spheres = SphereLanes::new(sphere_ids.iter().map(|&id| {
+            let b = &balls[(id & !BALL) as usize];
+            (b.center, b.radius)
+        }));
         World {
             need_uv: true,
             spheres,
+            sphere_ids,
             nodes,
             object_of,
             balls,
@@ -259,14 +248,11 @@ impl World {
         let mut best: Option<(GeoHit, u32)> = None;
         let mut far = t_max;
         let mut best_sphere = None;
-        if !self.spheres.is_empty() {
-            let dir = super::circle::DirSquared::of(ray.dir);
-            for s in &self.spheres {
-                if let Some(t) = sphere::hit_t_with(s.center, s.radius, dir, ray, t_min, far) {
-                    far = t;
-                    best_sphere = Some(s.node);
-                }
-            }
+        if !self.spheres.is_empty()
+            && let Some((k, t)) = self.spheres.nearest(ray, t_min, far)
+        {
+            far = t;
+            best_sphere = Some((self.sphere_ids[k], t));
         }
         for &i in &self.loose {
             if let Some(h) = self.hit(i, ray, t_min, far) {
@@ -298,9 +284,14 @@ impl World {
             }
         }
         if best.is_none() {
-            // The nearest hit is a fast-path sphere: now compute its normal and the rest. Its t
-            // in (t_min, t_max) is the one found above (the same quadratic on the same ray).
-            best = best_sphere.and_then(|i| Some((self.hit(i, ray, t_min, t_max)?, i)));
+            // The nearest hit is a fast-path sphere: now compute its normal and the rest at the
+            // t found above (the lanes compute `sphere::hit_t` bit for bit).
+            best = best_sphere.map(|(i, t)| {
+                (
+                    self.balls[(i & !BALL) as usize].hit_at(i & !BALL, ray, t),
+                    i,
+                )
+            });
         }
         best.map(|(mut h, i)| {
             if self.need_uv {
@@ -326,12 +317,7 @@ impl World {
 
     /// True when anything lies in (t_min, t_max) along the ray (shadow rays: any hit ends it).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        let dir = super::circle::DirSquared::of(ray.dir);
-        if self
-            .spheres
-            .iter()
-            .any(|s| sphere::hit_t_with(s.center, s.radius, dir, ray, t_min, t_max).is_some())
-        {
+        if self.spheres.any(ray, t_min, t_max) {
             return true;
         }
         if self
