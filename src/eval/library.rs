@@ -22,13 +22,14 @@ pub struct Library {
 
 /// True when a parsed file is a library: it exports something and emits nothing (every
 /// top-level statement is `let`, `fn`, `import`, or a call of `assert` or `print`).
-pub fn is_library(file: &File) -> bool {
-    let exports = file.stmts.iter().any(|s| match s {
+pub fn is_library(file: &File<'_>) -> bool {
+    // `pub` statements are never read by the fast path: the built ones hold every export.
+    let exports = file.built_stmts().iter().any(|s| match s {
         Stmt::Let(l) => l.public,
         Stmt::Fn(f) => f.public,
         _ => false,
     });
-    let emits = file.stmts.iter().any(|s| match s {
+    let emits = file.stmts().any(|s| match &*s {
         Stmt::Expr(e) => !is_statement_call(&e.kind),
         _ => false,
     });

@@ -35,7 +35,7 @@ pub fn parse_overrides(
         let (ast, errs) = crate::syntax::parse(file, &source);
         let failed = !errs.is_empty();
         diags.extend(errs);
-        let value = match ast.map(|f| f.stmts) {
+        let value = match ast.map(crate::syntax::ast::File::into_stmts) {
             Some(mut stmts) if stmts.len() == 1 => match stmts.pop() {
                 Some(Stmt::Expr(e)) => Some(e),
                 _ => None,

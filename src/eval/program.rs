@@ -53,8 +53,9 @@ impl Interp<'_> {
 
     /// Evaluates a module's statements. `scene` receives emitted values; `None` for libraries,
     /// where emitting is an error.
-    pub fn run_module(&mut self, file: &File, mut scene: Option<&mut Lowerer>) {
-        for st in &file.stmts {
+    pub fn run_module(&mut self, file: &File<'_>, mut scene: Option<&mut Lowerer>) {
+        // Every `fn` item is a statement pest built (the fast path reads none).
+        for st in file.built_stmts() {
             if let Stmt::Fn(def) = st {
                 let c = Closure {
                     def: def.clone(),
@@ -64,8 +65,9 @@ impl Interp<'_> {
                 self.bind_module(def.name, Value::Fn(Rc::new(c)), def.public, false);
             }
         }
-        for st in &file.stmts {
-            match st {
+        // A generated file's statements are read one at a time here, each dropped after use.
+        for st in file.stmts() {
+            match &*st {
                 Stmt::Fn(_) => {}
                 Stmt::Import(im) => {
                     if let Err(e) = self.import(im) {
@@ -244,7 +246,8 @@ impl Interp<'_> {
             },
             text,
         );
-        let (ast, diags) = crate::syntax::parse(file, &self.sources.get(file).text.clone());
+        let text = self.sources.get(file).text.clone();
+        let (ast, diags) = crate::syntax::parse(file, &text);
         let had_errors = diags.iter().any(Diagnostic::is_error);
         self.diags.extend(diags);
         let Some(ast) = ast.filter(|_| !had_errors) else {

@@ -2,7 +2,7 @@
 
 use std::rc::Rc;
 
-use crate::source::Span;
+use crate::source::{FileId, Span};
 use crate::syntax::intern::Sym;
 
 /// A name with the span where it was written.
@@ -14,13 +14,32 @@ pub struct Name {
     pub span: Span,
 }
 
-/// A parsed file: its header and statements.
-#[derive(Clone, Debug)]
-pub struct File {
+/// A parsed file: its header and statements, borrowing the text it was parsed from.
+///
+/// The statements the fast path read (one-line calls, names, numbers, `let`: most of a
+/// generated file) are kept as the offset of their line and read again each time they are
+/// visited ([`File::stmts`]), so the AST of a file of 100 000 sphere lines is never whole in
+/// memory (it was ~600 bytes a line); the statements pest read are kept built.
+#[derive(Clone)]
+pub struct File<'t> {
     /// The `rtc N` version as written (`1`, `1.1`), if the header was present.
     pub version: Option<(String, Span)>,
-    /// Top-level statements in order.
-    pub stmts: Vec<Stmt>,
+    /// The statements in order.
+    pub(super) items: Vec<Item>,
+    /// The statements pest read, which `Item::Built` indexes.
+    pub(super) built: Vec<Stmt>,
+    /// The file's id and text, to read the `Item::Line` statements again.
+    pub(super) file: FileId,
+    pub(super) text: &'t str,
+}
+
+/// One top-level statement of a [`File`].
+#[derive(Clone, Copy)]
+pub(super) enum Item {
+    /// The statement `File::built[i]`.
+    Built(u32),
+    /// A statement the fast path read from the line at this byte offset.
+    Line(u32),
 }
 
 /// A statement.

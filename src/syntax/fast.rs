@@ -43,8 +43,33 @@ pub fn statement<'t>(
     end: usize,
     memo: &mut Memo<'t>,
 ) -> Option<(Stmt, usize)> {
+    read::<true>(file, text, pos, end, memo)
+}
+
+/// What [`statement`] would return, without building the statement: the offset after its line,
+/// or `None` when the line is not of the fast forms. The same reader runs (allocating no nodes),
+/// so `statement` reads every line this accepts, to the same end.
+pub fn line_end<'t>(
+    file: FileId,
+    text: &'t str,
+    pos: usize,
+    end: usize,
+    memo: &mut Memo<'t>,
+) -> Option<usize> {
+    read::<false>(file, text, pos, end, memo).map(|(_, next)| next)
+}
+
+/// [`statement`] when `BUILD`; otherwise the statement returned is a placeholder (its
+/// expressions are their first operand).
+fn read<'t, const BUILD: bool>(
+    file: FileId,
+    text: &'t str,
+    pos: usize,
+    end: usize,
+    memo: &mut Memo<'t>,
+) -> Option<(Stmt, usize)> {
     memo.args.clear();
-    let mut r = Reader {
+    let mut r = Reader::<BUILD> {
         text,
         bytes: text.as_bytes(),
         at: pos,
@@ -111,8 +136,8 @@ impl<'t> Memo<'t> {
     }
 }
 
-/// A cursor over the input with `end` as its end.
-struct Reader<'t, 'n> {
+/// A cursor over the input with `end` as its end; it builds the nodes it reads when `BUILD`.
+struct Reader<'t, 'n, const BUILD: bool> {
     text: &'t str,
     bytes: &'t [u8],
     at: usize,
@@ -129,7 +154,20 @@ fn is_name_char(c: u8) -> bool {
     c.is_ascii_alphanumeric() || c == b'_'
 }
 
-impl Reader<'_, '_> {
+impl<const BUILD: bool> Reader<'_, '_, BUILD> {
+    /// `e` wrapped by `kind` (a call, member or negation) at `span`; `e` itself when only
+    /// checking, which saves the box.
+    fn wrap(e: Expr, kind: impl FnOnce(Box<Expr>) -> ExprKind, span: Span) -> Expr {
+        if BUILD {
+            Expr {
+                kind: kind(Box::new(e)),
+                span,
+            }
+        } else {
+            e
+        }
+    }
+
     fn peek(&self) -> Option<u8> {
         (self.at < self.end).then(|| self.bytes[self.at])
     }
@@ -272,10 +310,7 @@ impl Reader<'_, '_> {
                     return None;
                 }
                 let span = self.span(start, n.span.end as usize);
-                return Some(Expr {
-                    kind: ExprKind::Unary(UnOp::Neg, Box::new(n)),
-                    span,
-                });
+                return Some(Self::wrap(n, |n| ExprKind::Unary(UnOp::Neg, n), span));
             }
             c if c.is_ascii_digit() => self.number()?,
             b'[' => self.vec_lit()?,
@@ -300,19 +335,13 @@ impl Reader<'_, '_> {
                 Some(b'(') => {
                     let args = self.call_args()?;
                     let span = self.span(start, self.at);
-                    e = Expr {
-                        kind: ExprKind::Call(Box::new(e), args),
-                        span,
-                    };
+                    e = Self::wrap(e, |e| ExprKind::Call(e, args), span);
                 }
                 Some(b'.') => {
                     self.at += 1;
                     let name = self.name()?;
                     let span = self.span(start, self.at);
-                    e = Expr {
-                        kind: ExprKind::Member(Box::new(e), name),
-                        span,
-                    };
+                    e = Self::wrap(e, |e| ExprKind::Member(e, name), span);
                 }
                 Some(b'[' | b'{') => return None,
                 _ => return Some(e),
@@ -331,7 +360,9 @@ impl Reader<'_, '_> {
         let mark = self.memo.args.len();
         loop {
             let arg = self.arg()?;
-            self.memo.args.push(arg);
+            if BUILD {
+                self.memo.args.push(arg);
+            }
             self.spaces();
             match self.peek()? {
                 b',' => {
@@ -340,7 +371,12 @@ impl Reader<'_, '_> {
                 }
                 b')' => {
                     self.at += 1;
-                    return Some(self.memo.args.drain(mark..).collect());
+                    // Only checking: no vector (`Vec::new` does not allocate).
+                    return Some(if BUILD {
+                        self.memo.args.drain(mark..).collect()
+                    } else {
+                        Vec::new()
+                    });
                 }
                 _ => return None,
             }

@@ -10,8 +10,10 @@ pub mod format;
 pub mod intern;
 mod numbers;
 mod pratt;
+mod stmts;
 
 pub use build::srgb_to_linear;
+pub use stmts::Stmts;
 
 use pest::Parser;
 
@@ -32,7 +34,7 @@ pub const SUPPORTED_VERSIONS: &[&str] = &["1", "1.0", "1.1"];
 const MAX_NESTING: usize = 200;
 
 /// Parses a whole file. Returns the AST (only when there were no syntax errors) and diagnostics.
-pub fn parse(file: FileId, text: &str) -> (Option<ast::File>, Vec<crate::diag::Diagnostic>) {
+pub fn parse(file: FileId, text: &str) -> (Option<ast::File<'_>>, Vec<crate::diag::Diagnostic>) {
     let parsed = parse_with(file, text, Path::FastFirst);
     (parsed.ast, parsed.diags)
 }
@@ -47,14 +49,14 @@ enum Path {
 }
 
 /// A parse's result, with how many statements the fast path read (for its tests).
-struct Parsed {
-    ast: Option<ast::File>,
+struct Parsed<'t> {
+    ast: Option<ast::File<'t>>,
     diags: Vec<Diagnostic>,
     #[cfg_attr(not(test), allow(dead_code))]
     fast_statements: usize,
 }
 
-fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
+fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
     if let Some(d) = too_deep(file, text) {
         return Parsed {
             ast: None,
@@ -76,16 +78,21 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
     });
     let mut diags = scan.warnings;
     // Every statement starts a top-level line: one allocation for the statement list.
-    let mut stmts: Vec<ast::Stmt> = Vec::with_capacity(scan.top_level_lines.len());
+    let mut items: Vec<ast::Item> = Vec::with_capacity(scan.top_level_lines.len());
+    let mut stmts: Vec<ast::Stmt> = Vec::new();
+    // Whether the last statement was an expression or `let` (which a `-` line could continue).
+    let mut continuable = false;
     let mut fast_statements = 0;
     let mut memo = fast::Memo::default();
     let (version, mut pos) = header(file, text, &mut diags);
     while pos < cutoff {
         // Simple one-line statements (most of a generated file) skip pest; see fast.rs.
         if path == Path::FastFirst
-            && let Some((stmt, next)) = fast::statement(file, text, pos, cutoff, &mut memo)
+            && let Some(next) = fast::line_end(file, text, pos, cutoff, &mut memo)
         {
-            stmts.push(stmt);
+            // Only its place is kept: `File::stmts` reads it again when it is visited.
+            items.push(ast::Item::Line(pos as u32));
+            continuable = true;
             fast_statements += 1;
             pos = next;
             continue;
@@ -101,8 +108,11 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
                     if p.as_rule() == Rule::EOI {
                         done = true;
                     } else {
-                        b.check_minus_line(stmts.last(), &p);
-                        stmts.push(b.stmt(p));
+                        b.check_minus_line(continuable, &p);
+                        let stmt = b.stmt(p);
+                        continuable = build::continuable(&stmt);
+                        items.push(ast::Item::Built(stmts.len() as u32));
+                        stmts.push(stmt);
                     }
                 }
                 diags.extend(b.finish());
@@ -136,7 +146,13 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed {
     // Errors in file order: the delimiter error may lie before later statements' errors.
     diags.sort_by_key(|d| d.span.map_or(0, |s| s.start));
     let has_errors = diags.iter().any(Diagnostic::is_error);
-    let file_ast = ast::File { version, stmts };
+    let file_ast = ast::File {
+        version,
+        items,
+        built: stmts,
+        file,
+        text,
+    };
     Parsed {
         ast: if has_errors { None } else { Some(file_ast) },
         diags,

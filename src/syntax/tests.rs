@@ -4,15 +4,15 @@ use super::ast::*;
 use super::parse;
 use crate::source::FileId;
 
-fn ok(src: &str) -> File {
+fn ok(src: &str) -> File<'_> {
     let (f, d) = parse(FileId(0), src);
     assert!(d.is_empty(), "unexpected diagnostics for {src:?}: {d:#?}");
     f.expect("AST")
 }
 
 fn expr(src: &str) -> Expr {
-    let f = ok(&format!("rtc 1\n{src}\n"));
-    match f.stmts.into_iter().next() {
+    let text = format!("rtc 1\n{src}\n");
+    match ok(&text).into_stmts().into_iter().next() {
         Some(Stmt::Expr(e)) => e,
         other => panic!("not an expression statement: {other:?}"),
     }
@@ -35,8 +35,8 @@ fn errs(src: &str) -> Vec<(usize, &'static str, String)> {
 fn parses_the_proposal_example() {
     let src = include_str!("../../tests/lang/five_spheres_raw.rtc");
     let f = ok(src);
+    assert_eq!(f.len(), 18);
     assert_eq!(f.version.map(|v| v.0).as_deref(), Some("1"));
-    assert_eq!(f.stmts.len(), 18);
 }
 
 #[test]
@@ -87,12 +87,12 @@ fn newlines_end_statements_except_inside_brackets_and_before_dots() {
     let f = ok(
         "rtc 1\nlet a = sphere(\n  radius: 1,\n  center: [0, 0, 0]\n)\n  .scale(2)\n  .translate([1, 0, 0])\nlet b = 1 +\n  2\nb\n",
     );
-    assert_eq!(f.stmts.len(), 3);
+    assert_eq!(f.len(), 3);
     let f = ok("rtc 1\ncamera {\n  eye: [0, 3, 8]\n  fov: 40deg\n}\n");
     let Stmt::Expr(Expr {
         kind: ExprKind::Call(_, args),
         ..
-    }) = &f.stmts[0]
+    }) = &f.into_stmts()[0]
     else {
         panic!()
     };
@@ -106,12 +106,13 @@ fn newlines_end_statements_except_inside_brackets_and_before_dots() {
 fn every_node_has_a_span_inside_the_text() {
     let src = "rtc 1\nfn f(x: Float = 2) -> Float { let y = x * 2\n y }\nfor i in 0..3 if i > 0 { f(i) }\n";
     let f = ok(src);
-    let Stmt::Fn(def) = &f.stmts[0] else { panic!() };
+    let stmts = f.into_stmts();
+    let Stmt::Fn(def) = &stmts[0] else { panic!() };
     assert_eq!(
         &src[def.name.span.start as usize..def.name.span.end as usize],
         "f"
     );
-    let Stmt::Expr(e) = &f.stmts[1] else { panic!() };
+    let Stmt::Expr(e) = &stmts[1] else { panic!() };
     assert_eq!(
         &src[e.span.start as usize..e.span.end as usize],
         "for i in 0..3 if i > 0 { f(i) }"
