@@ -17,6 +17,7 @@
 # through the first point and the table gives the ratio measured/predicted.
 #
 #   benches/scaling.sh            # MAX=1000000 (largest N), RUNS=3
+#   PARTS=meshes benches/scaling.sh   # one or more of: objects resolution meshes
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=target/bench-scaling
@@ -65,18 +66,20 @@ first = s.median(x[0] for x in rows); render = s.median(x[1] for x in rows)
 print(sys.argv[1], f"{first:.4f}", f"{render:.4f}", max(x[2] for x in rows), rows[0][3])' "$1"
 }
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg); $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); $(nproc) cores" | tee "$out/machine"
-: >"$out/objects"
-for n in 1000 3162 10000 31623 100000 316228 1000000; do
+parts="${PARTS:-objects resolution meshes}"
+want() { [[ " $parts " == *" $1 "* ]]; }
+want objects && : >"$out/objects"
+want objects && for n in 1000 3162 10000 31623 100000 316228 1000000; do
     [ "$n" -le "$max" ] || continue
     measure "$n" "$(scene "$n" 320 240)" | tee -a "$out/objects"
 done
-: >"$out/resolution"
-for wh in "160 120" "320 240" "640 480" "1280 960"; do
+want resolution && : >"$out/resolution"
+want resolution && for wh in "160 120" "320 240" "640 480" "1280 960"; do
     set -- $wh
     measure "$(($1 * $2))" "$(scene 100000 "$1" "$2")" | tee -a "$out/resolution"
 done
-: >"$out/meshes"
-for n in 10000 31623 100000 316228 1000000 3162278 10000000; do
+want meshes && : >"$out/meshes"
+want meshes && for n in 10000 31623 100000 316228 1000000 3162278 10000000; do
     [ "$n" -le "${MESH_MAX:-10000000}" ] || continue
     [ -e "$out/sphere_$n.obj" ] || python3 benches/mesh_sphere.py "$n" "$out/sphere_$n.obj" >/dev/null
     cat >"$out/mesh_$n.rtc" <<RTC
