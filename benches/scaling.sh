@@ -7,12 +7,17 @@
 #    prepare, BVH) and the tracing time (render minus world build) and rays from `--stats`, peak
 #    RSS from /usr/bin/time.
 #  - resolution: the 10⁵-sphere scene at 160×120 … 1280×960 (render time should grow like pixels).
+#  - meshes: a unit sphere tessellated into 10⁴ … 10⁷ triangles (benches/mesh_sphere.py writes the
+#    OBJ files into target/bench-scaling; nothing large is committed), 320×240, one light with
+#    shadows; the same measurements (MESH_MAX, default 10⁷, is the largest count; MESH_RUNS=2).
 #
-# Writes docs/images/scaling-objects.svg and scaling-resolution.svg and prints the table.
+# Writes docs/images/scaling-objects.svg, scaling-resolution.svg and scaling-meshes.svg and prints
+# the tables.
 # Tracing time per ray should grow like log N for a BVH; the plot draws a log N reference line
 # through the first point and the table gives the ratio measured/predicted.
 #
 #   benches/scaling.sh            # MAX=1000000 (largest N), RUNS=3
+#   PARTS=meshes benches/scaling.sh   # one or more of: objects resolution meshes
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=target/bench-scaling
@@ -61,14 +66,30 @@ first = s.median(x[0] for x in rows); render = s.median(x[1] for x in rows)
 print(sys.argv[1], f"{first:.4f}", f"{render:.4f}", max(x[2] for x in rows), rows[0][3])' "$1"
 }
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg); $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); $(nproc) cores" | tee "$out/machine"
-: >"$out/objects"
-for n in 1000 3162 10000 31623 100000 316228 1000000; do
+parts="${PARTS:-objects resolution meshes}"
+want() { [[ " $parts " == *" $1 "* ]]; }
+want objects && : >"$out/objects"
+want objects && for n in 1000 3162 10000 31623 100000 316228 1000000; do
     [ "$n" -le "$max" ] || continue
     measure "$n" "$(scene "$n" 320 240)" | tee -a "$out/objects"
 done
-: >"$out/resolution"
-for wh in "160 120" "320 240" "640 480" "1280 960"; do
+want resolution && : >"$out/resolution"
+want resolution && for wh in "160 120" "320 240" "640 480" "1280 960"; do
     set -- $wh
     measure "$(($1 * $2))" "$(scene 100000 "$1" "$2")" | tee -a "$out/resolution"
+done
+want meshes && : >"$out/meshes"
+want meshes && for n in 10000 31623 100000 316228 1000000 3162278 10000000; do
+    [ "$n" -le "${MESH_MAX:-10000000}" ] || continue
+    [ -e "$out/sphere_$n.obj" ] || python3 benches/mesh_sphere.py "$n" "$out/sphere_$n.obj" >/dev/null
+    cat >"$out/mesh_$n.rtc" <<RTC
+rtc 1
+// A unit sphere of about $n triangles (benches/scaling.sh)
+camera { eye: [0, 0.8, 3.4], center: [0, 0, 0], fov: 45deg, resolution: [320, 240] }
+point_light { position: [2, 4, 3] }
+mesh("sphere_$n.obj").material(material { color: rgb(0.8, 0.3, 0.2), ka: 0.2, kd: 0.7, ks: 0.3, n: 16 })
+render { shadows: true, max_depth: 0, supersampling: 1 }
+RTC
+    runs="${MESH_RUNS:-2}" measure "$n" "$out/mesh_$n.rtc" | tee -a "$out/meshes"
 done
 python3 benches/scaling_plot.py "$out" docs/images

@@ -83,3 +83,22 @@ print("| pixels | tracing s | per Mpixel s |")
 print("|---|---|---|")
 for p, first, render, rss, rays in res:
     print(f"| {int(p)} | {render:.3f} | {render / p * 1e6:.3f} |")
+
+meshes_file = os.path.join(src, "meshes")
+if os.path.exists(meshes_file) and os.path.getsize(meshes_file) > 0:
+    mesh = rows("meshes")
+    m0, q0 = mesh[0][0], ns(mesh[0])
+    svg(os.path.join(dst, "scaling-meshes.svg"), "Meshes: time and memory against triangles",
+        "triangles", [("tracing ns/ray", "#1f77b4", [(r[0], ns(r)) for r in mesh], False),
+                      ("∝ log N", "#1f77b4", [(r[0], q0 * math.log(r[0]) / math.log(m0)) for r in mesh], True),
+                      ("first ray ms", "#ff7f0e", [(r[0], r[1] * 1000) for r in mesh], False),
+                      ("peak MiB", "#2ca02c", [(r[0], r[3]) for r in mesh], False)],
+        "ns per ray, ms, MiB")
+    print()
+    print("| triangles | first ray s | tracing s | rays | ns/ray | ns/ray ÷ log N prediction | peak MiB | B/triangle above 10⁴ |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in mesh:
+        n, first, render, rss, rays = r
+        pred = q0 * math.log(n) / math.log(m0)
+        per = f"{(rss - mesh[0][3]) * 1048576 / (n - m0):.0f}" if n > m0 else "—"
+        print(f"| {int(n)} | {first:.3f} | {render:.3f} | {rays} | {ns(r):.0f} | {ns(r) / pred:.2f} | {rss:.0f} | {per} |")

@@ -14,6 +14,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         return;
     };
     let mesh = Mesh::build(MeshParts {
+        vertices: &asset.vertices,
         triangles: &asset.triangles,
         normals: &asset.normals,
         uvs: &asset.uvs,

@@ -12,6 +12,7 @@ pub mod image;
 pub mod mtl;
 pub mod obj;
 pub mod obj_error;
+pub mod obj_fast;
 pub mod obj_file;
 pub mod search;
 

@@ -2,12 +2,15 @@
 //! the file or computed (smooth with a crease angle), texture coordinates, MTL materials. The
 //! result is plain data in file order; geometry builds its BVH from it.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 use std::time::Duration;
 
 use glam::{DVec3, Vec2, Vec3, Vec3A};
+
+use rayon::prelude::*;
 
 use super::obj_error::{MeshError, locate};
 use crate::ir::Material;
@@ -21,8 +24,10 @@ pub const CREASE_ANGLE_DEG: f64 = 60.0;
 pub struct MeshAsset {
     /// The file it came from.
     pub path: PathBuf,
-    /// Triangles in file order (faces with area only).
-    pub triangles: Vec<[Vec3A; 3]>,
+    /// Vertex positions the triangles index (unreferenced ones may be among them).
+    pub vertices: Vec<Vec3>,
+    /// Triangles in file order (faces with area only), as indices into `vertices`.
+    pub triangles: Vec<[u32; 3]>,
     /// Per-corner shading normals (empty unless loaded smooth).
     pub normals: Vec<[Vec3; 3]>,
     /// Per-corner texture coordinates (empty when the file has none).
@@ -42,139 +47,80 @@ pub struct MeshAsset {
     closed: OnceLock<bool>,
 }
 
+/// What either reader gives before the common finish: triangles with area, per-triangle
+/// attributes alongside.
+struct Faces {
+    vertices: Vec<Vec3>,
+    triangles: Vec<[u32; 3]>,
+    /// Per-triangle normals from the file (smooth only; `None` where a corner has none).
+    file_normals: Vec<Option<[Vec3; 3]>>,
+    uvs: Vec<[Vec2; 3]>,
+    material_of: Vec<u32>,
+    materials: Vec<Material>,
+    warnings: Vec<String>,
+}
+
 impl MeshAsset {
     /// Reads an OBJ file (and its MTL library); `smooth` computes per-corner normals.
     pub fn load(path: &Path, smooth: bool) -> Result<MeshAsset, MeshError> {
+        Self::load_by(path, smooth, true)
+    }
+
+    /// [`MeshAsset::load`] through tobj alone (what the parallel reader must agree with).
+    pub fn load_general(path: &Path, smooth: bool) -> Result<MeshAsset, MeshError> {
+        Self::load_by(path, smooth, false)
+    }
+
+    /// Loads with the parallel reader first (when `fast`) and tobj for what it leaves.
+    fn load_by(path: &Path, smooth: bool, fast: bool) -> Result<MeshAsset, MeshError> {
         let start = std::time::Instant::now();
-        // Separate index streams: `single_index` re-deduplicates every (position, uv, normal)
-        // tuple through a hash map, the largest cost of loading a million triangles.
-        let opts = tobj::LoadOptions {
-            triangulate: true,
-            single_index: false,
-            ..Default::default()
-        };
         if let Ok(meta) = std::fs::metadata(path) {
             within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
         }
-        let (models, mtl) = super::obj_file::read(path, &opts).map_err(|e| locate(path, e))?;
-        let mut warnings = Vec::new();
-        let materials = match mtl {
-            Ok(m) => m.iter().map(super::mtl::convert).collect(),
-            Err(e) => {
-                warnings.push(format!("its material library could not be read: {e}"));
-                Vec::new()
-            }
+        let text =
+            std::fs::read(path).map_err(|_| locate(path, tobj::LoadError::OpenFileFailed))?;
+        let faces = match fast.then(|| read_fast(path, &text, smooth)).flatten() {
+            Some(faces) => faces?,
+            None => read_tobj(path, &text, smooth)?,
         };
-        let mut tris: Vec<[Vec3A; 3]> = Vec::new();
-        let mut file_normals: Vec<Option<[Vec3; 3]>> = Vec::new();
-        let mut uvs: Vec<[Vec2; 3]> = Vec::new();
-        let mut material_of: Vec<u32> = Vec::new();
-        let mut any_uv = false;
-        let mut any_mat = false;
-        for m in &models {
-            let m = &m.mesh;
-            let pos = |i: u32| -> Option<Vec3A> {
-                let i = i as usize * 3;
-                Some(Vec3A::new(
-                    *m.positions.get(i)?,
-                    *m.positions.get(i + 1)?,
-                    *m.positions.get(i + 2)?,
-                ))
-            };
-            let nrm = |i: u32| -> Option<Vec3> {
-                let i = i as usize * 3;
-                Some(Vec3::new(
-                    *m.normals.get(i)?,
-                    *m.normals.get(i + 1)?,
-                    *m.normals.get(i + 2)?,
-                ))
-            };
-            let tex = |i: u32| -> Option<Vec2> {
-                let i = i as usize * 2;
-                Some(Vec2::new(*m.texcoords.get(i)?, *m.texcoords.get(i + 1)?))
-            };
-            let mat = m
-                .material_id
-                .filter(|&i| i < materials.len())
-                .map_or(u32::MAX, |i| i as u32);
-            any_mat |= mat != u32::MAX;
-            // Attribute indices per corner: their own stream, or the position's.
-            let pick = |own: &'_ [u32], values: usize, per: usize| -> Option<Vec<u32>> {
-                if own.len() == m.indices.len() {
-                    Some(own.to_vec())
-                } else if values > 0 && values / per == m.positions.len() / 3 {
-                    Some(m.indices.clone())
-                } else {
-                    None
-                }
-            };
-            // Only what will be used: file normals for smooth shading, uvs when present.
-            let n_idx = if smooth {
-                pick(&m.normal_indices, m.normals.len(), 3)
-            } else {
-                None
-            };
-            let t_idx = pick(&m.texcoord_indices, m.texcoords.len(), 2);
-            for (k, f) in m.indices.chunks_exact(3).enumerate() {
-                let corner = |idx: &Option<Vec<u32>>, c: usize| {
-                    idx.as_ref().and_then(|v| v.get(3 * k + c).copied())
-                };
-                let (Some(a), Some(b), Some(c)) = (pos(f[0]), pos(f[1]), pos(f[2])) else {
-                    return Err(MeshError::new("a face refers to a missing vertex", None));
-                };
-                if !(a.is_finite() && b.is_finite() && c.is_finite()) {
-                    return Err(MeshError::new("a vertex coordinate is not finite", None));
-                }
-                // Faces without area can never be hit; dropping them keeps normals clean.
-                if (b - a).cross(c - a) == Vec3A::ZERO {
-                    continue;
-                }
-                tris.push([a, b, c]);
-                if smooth {
-                    let n = |c| corner(&n_idx, c).and_then(nrm);
-                    file_normals.push(match (n(0), n(1), n(2)) {
-                        (Some(x), Some(y), Some(z)) => Some([x, y, z]),
-                        _ => None,
-                    });
-                }
-                if t_idx.is_some() || any_uv {
-                    let tc = |c| corner(&t_idx, c).and_then(tex);
-                    let t = [tc(0), tc(1), tc(2)];
-                    if !any_uv && t.iter().all(Option::is_some) {
-                        // Earlier faces (in other groups) had none: pad them.
-                        uvs.resize(tris.len() - 1, [Vec2::ZERO; 3]);
-                        any_uv = true;
-                    }
-                    if any_uv {
-                        uvs.push(t.map(|x| x.unwrap_or(Vec2::ZERO)));
-                    }
-                }
-                if any_mat {
-                    if material_of.len() + 1 < tris.len() {
-                        material_of.resize(tris.len() - 1, u32::MAX);
-                    }
-                    material_of.push(mat);
-                }
-            }
-        }
-        if any_uv {
-            uvs.resize(tris.len(), [Vec2::ZERO; 3]);
-        }
-        if any_mat {
-            material_of.resize(tris.len(), u32::MAX);
-        }
-        if tris.is_empty() {
+        drop(text);
+        Self::finish(path, faces, smooth, start)
+    }
+
+    /// The corners of triangle `i`.
+    #[inline]
+    pub fn corners(&self, i: usize) -> [Vec3A; 3] {
+        self.triangles[i].map(|v| Vec3A::from(self.vertices[v as usize]))
+    }
+
+    /// Budget, normals and bounds: the steps after either reader.
+    fn finish(
+        path: &Path,
+        faces: Faces,
+        smooth: bool,
+        start: std::time::Instant,
+    ) -> Result<MeshAsset, MeshError> {
+        let Faces {
+            vertices,
+            triangles,
+            file_normals,
+            uvs,
+            material_of,
+            materials,
+            warnings,
+        } = faces;
+        if triangles.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
         }
-        within_budget(tris.len() as u64, MAX_TRIANGLES as u64, "triangles")?;
+        within_budget(triangles.len() as u64, MAX_TRIANGLES as u64, "triangles")?;
         let usable = |n: &Option<[Vec3; 3]>| {
             n.is_some_and(|n| n.iter().all(|v| v.is_finite() && *v != Vec3::ZERO))
         };
         let normals = if smooth {
-            if file_normals.iter().all(usable) {
+            if file_normals.par_iter().all(usable) {
                 file_normals.into_iter().flatten().collect()
             } else {
-                let computed = smooth_normals(&tris);
+                let computed = smooth_normals(&vertices, &triangles);
                 file_normals
                     .iter()
                     .zip(computed)
@@ -184,16 +130,19 @@ impl MeshAsset {
         } else {
             Vec::new()
         };
-        let (min, max) =
-            tris.iter()
-                .flatten()
-                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
-                    let p = p.as_dvec3();
-                    (lo.min(p), hi.max(p))
-                });
+        // Bounds of the vertices the triangles use (a file may hold others), folded in order
+        // as always (the sign of a zero bound depends on it).
+        let (min, max) = triangles.iter().flatten().fold(
+            (DVec3::INFINITY, DVec3::NEG_INFINITY),
+            |(lo, hi), &v| {
+                let p = vertices[v as usize].as_dvec3();
+                (lo.min(p), hi.max(p))
+            },
+        );
         Ok(MeshAsset {
             path: path.to_path_buf(),
-            triangles: tris,
+            vertices,
+            triangles,
             normals,
             uvs,
             material_of,
@@ -210,15 +159,10 @@ impl MeshAsset {
     /// closed, consistently oriented surface: a solid CSG can use).
     pub fn is_closed(&self) -> bool {
         *self.closed.get_or_init(|| {
-            let mut ids: HashMap<[u32; 3], u32> = HashMap::new();
-            let mut id = |p: Vec3A| {
-                let n = ids.len() as u32;
-                *ids.entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
-                    .or_insert(n)
-            };
+            let ids = weld(&self.vertices);
             let mut edges: HashMap<(u32, u32), i32> = HashMap::new();
             for t in &self.triangles {
-                let v = [id(t[0]), id(t[1]), id(t[2])];
+                let v = t.map(|i| ids[i as usize]);
                 for k in 0..3 {
                     let (a, b) = (v[k], v[(k + 1) % 3]);
                     let e = edges.entry((a.min(b), a.max(b))).or_insert(0);
@@ -228,6 +172,223 @@ impl MeshAsset {
             edges.values().all(|&c| c == 1 + (1 << 16))
         })
     }
+}
+
+/// The material libraries' result as the asset keeps it: rtc materials, or a warning.
+fn convert_materials(mtl: super::obj_file::Materials, warnings: &mut Vec<String>) -> Vec<Material> {
+    match mtl {
+        Ok(m) => m.iter().map(super::mtl::convert).collect(),
+        Err(e) => {
+            warnings.push(format!("its material library could not be read: {e}"));
+            Vec::new()
+        }
+    }
+}
+
+/// The parallel reader's mesh (`None`: the file is outside its subset); tobj's load of the
+/// same file gives the same triangles, attributes and materials (tests/obj_fast.rs).
+fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, MeshError>> {
+    let libs = RefCell::new(super::obj_file::Libraries::new(path));
+    let data = super::obj_fast::read(text, &mut |lib| libs.borrow_mut().add(lib), &mut |name| {
+        libs.borrow().find(name)
+    })?;
+    let mut warnings = Vec::new();
+    let materials = convert_materials(libs.borrow_mut().merged(), &mut warnings);
+    let super::obj_fast::ObjData {
+        positions,
+        texcoords,
+        normals,
+        triangles,
+        tex_of,
+        normal_of,
+        material_of,
+        last_material,
+    } = data;
+    let valid = |m: &Option<usize>| {
+        m.filter(|&i| i < materials.len())
+            .map_or(u32::MAX, |i| i as u32)
+    };
+    // tobj's last group (possibly empty) carries the last material: with one, every triangle
+    // gets a slot (as from the other reader).
+    let any_mat =
+        valid(&last_material) != u32::MAX || material_of.par_iter().any(|m| valid(m) != u32::MAX);
+    // Faces without area can never be hit; dropping them keeps normals clean.
+    let kept: Result<Vec<u32>, ()> = triangles
+        .par_iter()
+        .enumerate()
+        .filter_map(|(k, t)| {
+            let [a, b, c] = t.map(|v| Vec3A::from(positions[v as usize]));
+            if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+                return Some(Err(()));
+            }
+            ((b - a).cross(c - a) != Vec3A::ZERO).then_some(Ok(k as u32))
+        })
+        .collect();
+    let Ok(kept) = kept else {
+        return Some(Err(MeshError::new(
+            "a vertex coordinate is not finite",
+            None,
+        )));
+    };
+    let uvs = if tex_of.is_empty() {
+        Vec::new()
+    } else {
+        kept.par_iter()
+            .map(|&k| tex_of[k as usize].map(|i| texcoords[i as usize]))
+            .collect()
+    };
+    let file_normals = if !smooth {
+        Vec::new()
+    } else if normal_of.is_empty() {
+        vec![None; kept.len()]
+    } else {
+        kept.par_iter()
+            .map(|&k| Some(normal_of[k as usize].map(|i| normals[i as usize])))
+            .collect()
+    };
+    let material_of = if any_mat {
+        kept.par_iter()
+            .map(|&k| material_of.get(k as usize).map_or(u32::MAX, valid))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let triangles = kept.par_iter().map(|&k| triangles[k as usize]).collect();
+    Some(Ok(Faces {
+        vertices: positions,
+        triangles,
+        file_normals,
+        uvs,
+        material_of,
+        materials,
+        warnings,
+    }))
+}
+
+/// tobj's load (the general case, and every diagnostic): its models' vertices end to end.
+fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError> {
+    // Separate index streams: `single_index` re-deduplicates every (position, uv, normal)
+    // tuple through a hash map, the largest cost of loading a million triangles.
+    let opts = tobj::LoadOptions {
+        triangulate: true,
+        single_index: false,
+        ..Default::default()
+    };
+    let (models, mtl) =
+        super::obj_file::read_text(path, text, &opts).map_err(|e| locate(path, e))?;
+    let mut warnings = Vec::new();
+    let materials = convert_materials(mtl, &mut warnings);
+    let mut vertices: Vec<Vec3> = Vec::new();
+    let mut tris: Vec<[u32; 3]> = Vec::new();
+    let mut file_normals: Vec<Option<[Vec3; 3]>> = Vec::new();
+    let mut uvs: Vec<[Vec2; 3]> = Vec::new();
+    let mut material_of: Vec<u32> = Vec::new();
+    let mut any_uv = false;
+    let mut any_mat = false;
+    for m in models {
+        let m = m.mesh;
+        let offset = vertices.len() as u32;
+        vertices.extend(m.positions.chunks_exact(3).map(Vec3::from_slice));
+        let pos = |i: u32| -> Option<Vec3A> {
+            let i = i as usize * 3;
+            Some(Vec3A::new(
+                *m.positions.get(i)?,
+                *m.positions.get(i + 1)?,
+                *m.positions.get(i + 2)?,
+            ))
+        };
+        let nrm = |i: u32| -> Option<Vec3> {
+            let i = i as usize * 3;
+            Some(Vec3::new(
+                *m.normals.get(i)?,
+                *m.normals.get(i + 1)?,
+                *m.normals.get(i + 2)?,
+            ))
+        };
+        let tex = |i: u32| -> Option<Vec2> {
+            let i = i as usize * 2;
+            Some(Vec2::new(*m.texcoords.get(i)?, *m.texcoords.get(i + 1)?))
+        };
+        let mat = m
+            .material_id
+            .filter(|&i| i < materials.len())
+            .map_or(u32::MAX, |i| i as u32);
+        any_mat |= mat != u32::MAX;
+        // Attribute indices per corner: their own stream, or the position's.
+        let pick = |own: &'_ [u32], values: usize, per: usize| -> Option<Vec<u32>> {
+            if own.len() == m.indices.len() {
+                Some(own.to_vec())
+            } else if values > 0 && values / per == m.positions.len() / 3 {
+                Some(m.indices.clone())
+            } else {
+                None
+            }
+        };
+        // Only what will be used: file normals for smooth shading, uvs when present.
+        let n_idx = if smooth {
+            pick(&m.normal_indices, m.normals.len(), 3)
+        } else {
+            None
+        };
+        let t_idx = pick(&m.texcoord_indices, m.texcoords.len(), 2);
+        for (k, f) in m.indices.chunks_exact(3).enumerate() {
+            let corner = |idx: &Option<Vec<u32>>, c: usize| {
+                idx.as_ref().and_then(|v| v.get(3 * k + c).copied())
+            };
+            let (Some(a), Some(b), Some(c)) = (pos(f[0]), pos(f[1]), pos(f[2])) else {
+                return Err(MeshError::new("a face refers to a missing vertex", None));
+            };
+            if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+                return Err(MeshError::new("a vertex coordinate is not finite", None));
+            }
+            // Faces without area can never be hit; dropping them keeps normals clean.
+            if (b - a).cross(c - a) == Vec3A::ZERO {
+                continue;
+            }
+            tris.push([f[0], f[1], f[2]].map(|i| i + offset));
+            if smooth {
+                let n = |c| corner(&n_idx, c).and_then(nrm);
+                file_normals.push(match (n(0), n(1), n(2)) {
+                    (Some(x), Some(y), Some(z)) => Some([x, y, z]),
+                    _ => None,
+                });
+            }
+            if t_idx.is_some() || any_uv {
+                let tc = |c| corner(&t_idx, c).and_then(tex);
+                let t = [tc(0), tc(1), tc(2)];
+                if !any_uv && t.iter().all(Option::is_some) {
+                    // Earlier faces (in other groups) had none: pad them.
+                    uvs.resize(tris.len() - 1, [Vec2::ZERO; 3]);
+                    any_uv = true;
+                }
+                if any_uv {
+                    uvs.push(t.map(|x| x.unwrap_or(Vec2::ZERO)));
+                }
+            }
+            if any_mat {
+                if material_of.len() + 1 < tris.len() {
+                    material_of.resize(tris.len() - 1, u32::MAX);
+                }
+                material_of.push(mat);
+            }
+        }
+    }
+    if any_uv {
+        uvs.resize(tris.len(), [Vec2::ZERO; 3]);
+    }
+    if any_mat {
+        material_of.resize(tris.len(), u32::MAX);
+    }
+
+    Ok(Faces {
+        vertices,
+        triangles: tris,
+        file_normals,
+        uvs,
+        material_of,
+        materials,
+        warnings,
+    })
 }
 
 /// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget).
@@ -245,21 +406,31 @@ fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
     })
 }
 
+/// For each vertex, an id shared by every vertex with the same coordinates (bit for bit).
+fn weld(vertices: &[Vec3]) -> Vec<u32> {
+    let mut ids: HashMap<[u32; 3], u32> = HashMap::with_capacity(vertices.len());
+    vertices
+        .iter()
+        .map(|p| {
+            let n = ids.len() as u32;
+            *ids.entry(p.to_array().map(f32::to_bits)).or_insert(n)
+        })
+        .collect()
+}
+
 /// Area-weighted vertex normals over positions welded by value, averaging only faces within
 /// [`CREASE_ANGLE_DEG`] of the face being shaded (so hard edges stay hard).
-fn smooth_normals(tris: &[[Vec3A; 3]]) -> Vec<[Vec3; 3]> {
-    let mut ids: HashMap<[u32; 3], u32> = HashMap::with_capacity(tris.len() / 2 + 1);
-    let mut corner = Vec::with_capacity(tris.len() * 3);
-    for t in tris {
-        for p in t {
-            let n = ids.len() as u32;
-            corner.push(
-                *ids.entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
-                    .or_insert(n),
-            );
-        }
-    }
-    let nv = ids.len();
+fn smooth_normals(vertices: &[Vec3], triangles: &[[u32; 3]]) -> Vec<[Vec3; 3]> {
+    let ids = weld(vertices);
+    let corner: Vec<u32> = triangles
+        .iter()
+        .flat_map(|t| t.map(|i| ids[i as usize]))
+        .collect();
+    let tris: Vec<[Vec3A; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|i| Vec3A::from(vertices[i as usize])))
+        .collect();
+    let nv = ids.iter().max().map_or(0, |&m| m as usize + 1);
     // Faces around each vertex (CSR).
     let mut start = vec![0u32; nv + 1];
     for &v in &corner {

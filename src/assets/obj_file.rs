@@ -6,6 +6,7 @@
 //!   arithmetic overflows (a panic with overflow checks, silently wrong normals without).
 
 use std::cell::RefCell;
+use std::collections::HashMap;
 use std::path::Path;
 
 use tobj::{LoadError, LoadOptions, Model};
@@ -16,28 +17,99 @@ pub type Materials = Result<Vec<tobj::Material>, String>;
 /// The models in the OBJ file at `path` and its materials (`mtllib` paths are relative to it).
 pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), LoadError> {
     let text = std::fs::read(path).map_err(|_| LoadError::OpenFileFailed)?;
-    if let Some(e) = bad_face_index(&text) {
+    read_text(path, &text, opts)
+}
+
+/// [`read`] of the file's bytes `text`, already read.
+pub fn read_text(
+    path: &Path,
+    text: &[u8],
+    opts: &LoadOptions,
+) -> Result<(Vec<Model>, Materials), LoadError> {
+    if let Some(e) = bad_face_index(text) {
         return Err(e);
     }
-    let problem: RefCell<Option<String>> = RefCell::new(None);
-    let (models, materials) = tobj::load_obj_buf(&mut text.as_slice(), opts, |lib| {
-        let full = path
+    let libs = Libraries::new(path);
+    let (models, materials) = tobj::load_obj_buf(&mut &text[..], opts, |lib| libs.load(lib))?;
+    Ok((models, libs.finish(materials)))
+}
+
+/// The material libraries of one OBJ file, loaded as tobj loads them (its loader callback and
+/// its merging, for the parallel reader of `obj_fast`, which meets the same lines in order).
+pub struct Libraries<'a> {
+    obj: &'a Path,
+    /// The first library with a colour line tobj would panic on.
+    problem: RefCell<Option<String>>,
+    /// Materials merged so far, their names, and the last library's error (tobj's rules).
+    merged: Vec<tobj::Material>,
+    names: HashMap<String, usize>,
+    error: Option<LoadError>,
+}
+
+impl<'a> Libraries<'a> {
+    /// No libraries yet, for the OBJ file `obj`.
+    pub fn new(obj: &'a Path) -> Libraries<'a> {
+        Libraries {
+            obj,
+            problem: RefCell::new(None),
+            merged: Vec::new(),
+            names: HashMap::new(),
+            error: None,
+        }
+    }
+
+    /// Reads the library `lib` (relative to the OBJ file) as tobj's material loader.
+    pub fn load(&self, lib: &Path) -> tobj::MTLLoadResult {
+        let full = self
+            .obj
             .parent()
             .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib));
         let text = std::fs::read(&full).map_err(|_| LoadError::OpenFileFailed)?;
         if let Some(what) = short_colour_line(&text) {
-            problem
+            self.problem
                 .borrow_mut()
                 .get_or_insert_with(|| format!("`{}` {what}", lib.display()));
             return Err(LoadError::MaterialParseError);
         }
         tobj::load_mtl_buf(&mut text.as_slice())
-    })?;
-    let materials = materials.map_err(|e| match problem.take() {
-        Some(p) => p,
-        None => e.to_string(),
-    });
-    Ok((models, materials))
+    }
+
+    /// Loads and merges the library an `mtllib` line names (tobj's `TmpMaterials::merge`).
+    pub fn add(&mut self, lib: &str) {
+        match self.load(Path::new(lib)) {
+            Ok((mut mats, map)) => {
+                let offset = self.merged.len();
+                self.merged.append(&mut mats);
+                for (name, i) in map {
+                    self.names.insert(name, i + offset);
+                }
+            }
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// The index a `usemtl` line's name selects, among the libraries merged so far.
+    pub fn find(&self, name: &str) -> Option<usize> {
+        self.names.get(name).copied()
+    }
+
+    /// The merged materials as tobj returns them (any material, else the last error).
+    pub fn merged(&mut self) -> Materials {
+        let merged = std::mem::take(&mut self.merged);
+        let result = match self.error.take() {
+            Some(e) if merged.is_empty() => Err(e),
+            _ => Ok(merged),
+        };
+        self.finish(result)
+    }
+
+    /// tobj's materials result, its error told as the problem found, if any.
+    fn finish(&self, materials: Result<Vec<tobj::Material>, LoadError>) -> Materials {
+        materials.map_err(|e| match self.problem.take() {
+            Some(p) => p,
+            None => e.to_string(),
+        })
+    }
 }
 
 /// The error tobj should give for the first face or line element whose index its arithmetic
@@ -107,7 +179,7 @@ impl FaceScan {
 }
 
 /// `s` as tobj reads an index (`isize::from_str`: an optional sign and digits), if it is one.
-fn integer(s: &[u8]) -> Option<i64> {
+pub(super) fn integer(s: &[u8]) -> Option<i64> {
     let (negative, digits) = match s {
         [b'-', d @ ..] => (true, d),
         [b'+', d @ ..] => (false, d),

@@ -205,6 +205,7 @@ impl Builder {
                     );
                 }
                 let mesh = Arc::new(Mesh::build(MeshParts {
+                    vertices: &asset.vertices,
                     triangles: &asset.triangles,
                     normals: &asset.normals,
                     uvs: &asset.uvs,

@@ -101,6 +101,7 @@ pub fn world(objects: Vec<Object>) -> World {
 /// The mesh (with its BVH) the preparation stage builds from a loaded OBJ file.
 pub fn mesh_of(asset: &MeshAsset) -> Mesh {
     Mesh::build(MeshParts {
+        vertices: &asset.vertices,
         triangles: &asset.triangles,
         normals: &asset.normals,
         uvs: &asset.uvs,
