@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
-use crate::opt::Effects;
+use crate::opt::{Content, Effects};
 
 /// Every finding about an evaluated scene: the lints, then what preparing it reports.
 pub fn check(scene: &Scene) -> Diagnostics {
@@ -20,28 +20,37 @@ pub fn check(scene: &Scene) -> Diagnostics {
 pub fn lint(scene: &Scene) -> Diagnostics {
     let mut out = Diagnostics::default();
     no_lights(scene, &mut out);
-    enclosed_points(scene, &mut out);
+    // One pass over the objects for the lints that look at each (a million objects make
+    // every pass cost): enclosed points now, the moving objects' spans for later.
+    let see_motion = !scene.camera.shutter.is_some_and(|s| s.is_open());
+    let mut moving = Vec::new();
+    for o in &scene.objects {
+        enclosed_points(scene, o, &mut out);
+        if see_motion {
+            moving_spans(o, &mut moving);
+        }
+    }
     invisible_bounces(scene, &mut out);
-    invisible_motion(scene, &mut out);
+    if see_motion {
+        invisible_motion(scene, moving, &mut out);
+    }
     out
 }
 
-/// Motion the film cannot see: something moves but the camera's shutter is not open.
-fn invisible_motion(scene: &Scene, out: &mut Diagnostics) {
-    if scene.camera.shutter.is_some_and(|s| s.is_open()) {
-        return;
+/// The spans of `o` and its CSG operands that move, each once, added to `spans`.
+fn moving_spans(o: &Object, spans: &mut Vec<crate::source::Span>) {
+    if o.motion.is_some() && !spans.contains(&o.span) {
+        spans.push(o.span);
     }
+    if let Shape::Csg { children, .. } = &o.shape {
+        children.iter().for_each(|c| moving_spans(c, spans));
+    }
+}
+
+/// Motion the film cannot see: something moves (the objects at `spans`, or the camera) but the
+/// camera's shutter is not open.
+fn invisible_motion(scene: &Scene, mut spans: Vec<crate::source::Span>, out: &mut Diagnostics) {
     let help = "open the shutter over the motion, e.g. `camera { ..., shutter: [0, 1] }` (fractions of a frame), or remove `.moving(...)`";
-    let mut spans = Vec::new();
-    fn visit(o: &Object, spans: &mut Vec<crate::source::Span>) {
-        if o.motion.is_some() && !spans.contains(&o.span) {
-            spans.push(o.span);
-        }
-        if let Shape::Csg { children, .. } = &o.shape {
-            children.iter().for_each(|c| visit(c, spans));
-        }
-    }
-    scene.objects.iter().for_each(|o| visit(o, &mut spans));
     if scene.camera.motion.is_some() {
         spans.push(scene.camera.span);
     }
@@ -89,38 +98,39 @@ fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
     uniform.then(|| (o.transform.transform_point3(center), radius * scales[0]))
 }
 
-fn enclosed_points(scene: &Scene, out: &mut Diagnostics) {
-    for o in &scene.objects {
-        let Some((c, r)) = opaque_sphere(scene, o) else {
-            continue;
-        };
-        for l in &scene.lights {
-            let p = l.kind.center();
-            if matches!(l.kind, LightKind::Point { .. }) && p.distance(c) < r {
-                out.push(
-                    Diagnostic::warning(
-                        "rtc::scene::light_enclosed",
-                        l.span,
-                        format!("the light at {p} is inside an opaque sphere; it lights nothing outside it"),
-                    )
-                    .with_label("this light")
-                    .with_secondary(o.span, "encloses the light")
-                    .with_help("move the light outside the sphere, or make the sphere refractive"),
-                );
-            }
-        }
-        if scene.camera.eye.distance(c) < r {
+/// A point light or the camera inside the opaque sphere `o` (if it is one).
+fn enclosed_points(scene: &Scene, o: &Object, out: &mut Diagnostics) {
+    let Some((c, r)) = opaque_sphere(scene, o) else {
+        return;
+    };
+    for l in &scene.lights {
+        let p = l.kind.center();
+        if matches!(l.kind, LightKind::Point { .. }) && p.distance(c) < r {
             out.push(
                 Diagnostic::warning(
-                    "rtc::scene::camera_enclosed",
-                    scene.camera.span,
-                    "the camera is inside an opaque sphere; the image will show only its inside",
+                    "rtc::scene::light_enclosed",
+                    l.span,
+                    format!(
+                        "the light at {p} is inside an opaque sphere; it lights nothing outside it"
+                    ),
                 )
-                .with_label("this camera")
-                .with_secondary(o.span, "encloses the eye")
-                .with_help("move `eye` outside the sphere"),
+                .with_label("this light")
+                .with_secondary(o.span, "encloses the light")
+                .with_help("move the light outside the sphere, or make the sphere refractive"),
             );
         }
+    }
+    if scene.camera.eye.distance(c) < r {
+        out.push(
+            Diagnostic::warning(
+                "rtc::scene::camera_enclosed",
+                scene.camera.span,
+                "the camera is inside an opaque sphere; the image will show only its inside",
+            )
+            .with_label("this camera")
+            .with_secondary(o.span, "encloses the eye")
+            .with_help("move `eye` outside the sphere"),
+        );
     }
 }
 
@@ -156,7 +166,10 @@ fn plural(kind: &str, count: usize) -> String {
 /// A one-line summary of an evaluated scene: objects by kind, lights, camera, effects.
 pub fn summary(scene: &Scene) -> String {
     let mut kinds: Vec<(&str, usize)> = Vec::new();
+    // The effects' object content is gathered in the same pass as the kinds.
+    let mut content = Content::without_objects(scene);
     for o in &scene.objects {
+        content.visit(o);
         let k = o.shape.kind_name();
         match kinds.iter_mut().find(|(n, _)| *n == k) {
             Some((_, c)) => *c += 1,
@@ -181,6 +194,6 @@ pub fn summary(scene: &Scene) -> String {
         if lights == 1 { "" } else { "s" },
         scene.camera.width,
         scene.camera.height,
-        Effects::of(scene)
+        Effects::new(&content, &scene.settings, &scene.camera)
     )
 }

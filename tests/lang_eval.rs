@@ -160,6 +160,22 @@ fn comprehensions_with_several_generators_and_filters() {
     assert_eq!(s.objects.len(), 2);
 }
 
+/// A top-level loop over integer-literal ranges reserves its objects at once: the vector ends
+/// with room for exactly 1000 (grown by doubling it would hold 1024), and the loop still makes
+/// every object, also when its body makes more or fewer than one per iteration.
+#[test]
+fn literal_range_loops_reserve_their_objects() {
+    let s = scene("for i in 0..10, j in 0..=99 { sphere(center: [i, 0, j], radius: 0.1) }");
+    assert_eq!(s.objects.len(), 1000);
+    assert_eq!(s.objects.capacity(), 1000);
+    let s = scene("for i in 0..3 { [sphere(), sphere()] }");
+    assert_eq!(s.objects.len(), 6);
+    let s = scene("for i in 0..5 { if i == 1 { sphere() } }");
+    assert_eq!(s.objects.len(), 1);
+    let s = scene("for i in 5..0 { sphere() }");
+    assert!(s.objects.is_empty());
+}
+
 #[test]
 fn functions_defaults_recursion_and_closures() {
     let n = notes(

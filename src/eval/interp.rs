@@ -657,6 +657,7 @@ impl<'a> Interp<'a> {
             return Ok(false);
         };
         let header = self.header_span(e.span, body.span);
+        lowerer.reserve_for(gens, filter.as_deref(), self.opts.max_objects);
         let mut sink = Sink::Emit(lowerer, e.span);
         self.for_level(gens, 0, filter.as_deref(), body, header, &mut sink)?;
         Ok(true)

@@ -9,6 +9,7 @@ use glam::DAffine3;
 use crate::diag::Diagnostic;
 use crate::ir;
 use crate::source::Span;
+use crate::syntax::ast::{Expr, ExprKind, Generator};
 
 use super::value::{Mat, Obj, ObjShape, RenderVal, Tex, Value};
 
@@ -89,6 +90,42 @@ impl Lowerer {
             }
         }
         Ok(())
+    }
+
+    /// Makes room at once for the objects of a top-level `for` whose generators are all
+    /// integer-literal ranges (`for i in 0..100, j in 0..100`) and that has no filter: it
+    /// makes one element per iteration, usually one object. Without it the object vector grows
+    /// by doubling on the way to a million objects, copying itself and touching its pages
+    /// twice. At most `limit` (the object budget) are reserved; a body that emits no object
+    /// leaves the room untouched (address space, never paged in).
+    pub fn reserve_for(&mut self, gens: &[Generator], filter: Option<&Expr>, limit: u64) {
+        let int = |e: &Expr| match e.kind {
+            ExprKind::Int(i) => Some(i),
+            _ => None,
+        };
+        let count = |g: &Generator| match &g.iter.kind {
+            ExprKind::Range {
+                start,
+                end,
+                inclusive,
+                step: None,
+            } => {
+                let (a, b) = (int(start)?, int(end)?);
+                let n = b.checked_sub(a)?.checked_add(i64::from(*inclusive))?;
+                u64::try_from(n.max(0)).ok()
+            }
+            _ => None,
+        };
+        if filter.is_some() {
+            return;
+        }
+        let total = gens
+            .iter()
+            .try_fold(1u64, |acc, g| acc.checked_mul(count(g)?));
+        if let Some(n) = total.map(|n| n.min(limit)) {
+            // Only a hint: where the room cannot be had, the vector grows as it would have.
+            let _ = self.objects.try_reserve(usize::try_from(n).unwrap_or(0));
+        }
     }
 
     fn texture(&mut self, t: &Rc<Tex>) -> ir::TextureId {

@@ -64,11 +64,21 @@ impl Content {
     /// What `scene` holds (its own materials; a mesh's MTL materials are not counted, so they
     /// reflect or refract only where a scene material does).
     pub fn of(scene: &Scene) -> Content {
+        let mut c = Content::without_objects(scene);
+        for o in &scene.objects {
+            c.visit(o);
+        }
+        c
+    }
+
+    /// What `scene` holds apart from its objects, which [`Content::visit`] then adds one by one
+    /// (so a caller that walks the objects anyway needs no pass of its own).
+    pub fn without_objects(scene: &Scene) -> Content {
         let mats = &scene.materials;
         let material_model = |want: fn(&ShadingModel) -> bool| {
             mats.iter().any(|m| m.shading.as_ref().is_some_and(want))
         };
-        let mut c = Content {
+        Content {
             reflective: mats.iter().any(|m| m.reflect > 0.0),
             refractive: mats.iter().any(|m| m.refract > 0.0),
             textured: mats.iter().any(|m| m.texture.is_some()),
@@ -86,14 +96,11 @@ impl Content {
             glossy: mats
                 .iter()
                 .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
-        };
-        for o in &scene.objects {
-            c.visit(o);
         }
-        c
     }
 
-    fn visit(&mut self, o: &Object) {
+    /// Adds what the object `o` (a top-level object or a CSG operand) holds.
+    pub fn visit(&mut self, o: &Object) {
         self.moving |= o.motion.as_ref().is_some_and(|m| !m.is_still());
         match &o.shape {
             Shape::Csg { children, .. } => {

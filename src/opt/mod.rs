@@ -29,9 +29,7 @@ pub use textures::{Picture, TextureMap};
 /// Prepares `scene` for rendering; on failure, every problem found (errors and warnings).
 pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
     let start = Instant::now();
-    let mut diags = Diagnostics::default();
-    validate::scene(scene, &mut diags);
-    prepare_objects(scene, &scene.objects, Content::of(scene), diags, start)
+    prepare_objects(scene, &scene.objects, start)
 }
 
 /// [`prepare`] for a caller that no longer needs the scene (`rtc render`): each IR object is
@@ -39,35 +37,36 @@ pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
 /// never both whole in memory (a million spheres: 208 MB less at the peak).
 pub fn prepare_owned(mut scene: Scene) -> Result<Prepared, Diagnostics> {
     let start = Instant::now();
-    let mut diags = Diagnostics::default();
-    validate::scene(&scene, &mut diags);
-    let content = Content::of(&scene);
     let objects = std::mem::take(&mut scene.objects);
-    prepare_objects(&scene, objects, content, diags, start)
+    prepare_objects(&scene, objects, start)
 }
 
-/// The rest of [`prepare`] once the scene is validated: `objects` are the scene's (which
-/// `scene.objects` may no longer hold) and `content` what they call for.
+/// [`prepare`] with `objects` the scene's (which `scene.objects` may no longer hold).
 fn prepare_objects<O: std::borrow::Borrow<Object>>(
     scene: &Scene,
     objects: impl IntoIterator<Item = O>,
-    content: Content,
-    mut diags: Diagnostics,
     start: Instant,
 ) -> Result<Prepared, Diagnostics> {
     // Objects are checked even after a scene-level error, so one run shows every problem.
+    let mut diags = Diagnostics::default();
+    let mut content = Content::without_objects(scene);
     let (mut materials, fallback) = material_table(scene);
     let mut b = objects::Builder::new(materials.len() as u32);
     // Each object goes straight into the world's storage (a plain sphere into its compact
     // form), so a million spheres never exist as a million full primitives.
     let mut parts = WorldParts::default();
     let mut instanced = 0;
+    // One pass validates, surveys and prepares each object (and frees it, when owned).
     for (i, o) in objects.into_iter().enumerate() {
-        if let Some(n) = b.object(o.borrow(), fallback) {
+        let o = o.borrow();
+        validate::object(scene, o, &mut diags);
+        content.visit(o);
+        if let Some(n) = b.object(o, fallback) {
             instanced += instanced_triangles(&n);
             parts.push(n, i as u32);
         }
     }
+    validate::scene(scene, &mut diags);
     let textures = textures::load_all(&scene.textures, &mut diags);
     let mesh_stats = b.stats();
     materials.extend(std::mem::take(&mut b.extra_materials));
@@ -141,13 +140,14 @@ fn material_table(scene: &Scene) -> (Vec<Material>, MaterialId) {
 /// and its BVH cannot fail, and for a million objects it was two thirds of `rtc check`.
 pub fn validate(scene: &Scene) -> Diagnostics {
     let mut diags = Diagnostics::default();
-    validate::scene(scene, &mut diags);
     let (materials, fallback) = material_table(scene);
     let mut b = objects::Builder::new(materials.len() as u32);
     for o in &scene.objects {
+        validate::object(scene, o, &mut diags);
         // Dropped at once: a check holds one prepared object at a time.
         drop(b.object(o, fallback));
     }
+    validate::scene(scene, &mut diags);
     // `prepare` loads the textures even after an object's error, so the check does too.
     let _ = textures::load_all(&scene.textures, &mut diags);
     diags.extend(std::mem::take(&mut b.diagnostics));

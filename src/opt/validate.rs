@@ -11,11 +11,10 @@ use crate::ir::limits::{
 };
 use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling, Scene, Shape};
 
-/// Every scene-level problem of `scene`, in a fixed order.
+/// Every scene-level problem of `scene` but its objects' (see [`object`], which callers run on
+/// each object first, in the pass that prepares it: a million objects make every pass cost),
+/// in a fixed order.
 pub fn scene(scene: &Scene, out: &mut Diagnostics) {
-    for o in &scene.objects {
-        material_ids(scene, o, out);
-    }
     for m in &scene.materials {
         let bad_texture = |t: Option<crate::ir::TextureId>| {
             t.is_some_and(|t| t.0 as usize >= scene.textures.len())
@@ -61,8 +60,9 @@ pub fn scene(scene: &Scene, out: &mut Diagnostics) {
     }
 }
 
-/// Objects (and CSG operands) may only name materials of the scene.
-fn material_ids(scene: &Scene, o: &Object, out: &mut Diagnostics) {
+/// The scene-level problems of the object `o` of `scene`: it (and its CSG operands) may only
+/// name materials of the scene.
+pub fn object(scene: &Scene, o: &Object, out: &mut Diagnostics) {
     if let Some(id) = o
         .material
         .filter(|id| id.0 as usize >= scene.materials.len())
@@ -78,7 +78,7 @@ fn material_ids(scene: &Scene, o: &Object, out: &mut Diagnostics) {
     }
     if let Shape::Csg { children, .. } = &o.shape {
         for c in children {
-            material_ids(scene, c, out);
+            object(scene, c, out);
         }
     }
 }
