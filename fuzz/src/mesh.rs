@@ -43,6 +43,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         },
         transform: DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span: Default::default(),
     });
     if centre.is_finite() && reach.is_finite() {

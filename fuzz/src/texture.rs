@@ -10,9 +10,11 @@ use rtc::ir::{
 
 /// Renders a sphere textured and bump-mapped by the image at `path`, under every mapping.
 pub fn exercise(path: &Path) {
-    // The asset cache keeps every (path, size, modification time) it has seen for the process's
-    // life; each input is a new version of the same file, so without this the fuzzer's memory
-    // grows with every input (the first texture run stopped out of memory at 92,832 inputs).
+    // The asset cache knows a file by (path, size, modification time). It keeps only the newest
+    // version of a path now (the first texture run, when it kept every version, stopped out of
+    // memory at 92,832 inputs), but two inputs of one size written within one tick of the
+    // file-system clock look like the same version: without this, an input could be rendered
+    // with the previous input's image.
     rtc::assets::clear_cache();
     for mapping in [
         Mapping::Uv,
@@ -27,6 +29,7 @@ pub fn exercise(path: &Path) {
             },
             transform: DAffine3::IDENTITY,
             material: None,
+            motion: None,
             span: Default::default(),
         });
         let tex = scene.add_texture(Texture::Image {
@@ -59,6 +62,8 @@ pub fn one_object_scene(object: Object) -> Scene {
             projection: Projection::Perspective { fov_y: 0.8 },
             aperture: 0.0,
             focus_distance: 0.0,
+            shutter: None,
+            motion: None,
             span: Default::default(),
         },
         lights: vec![Light {
