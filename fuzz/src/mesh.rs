@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
-use rtc::geometry::Ray;
 use rtc::assets::MeshAsset;
+use rtc::geometry::Ray;
 use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::ir::{Object, Shape};
 
