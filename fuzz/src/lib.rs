@@ -25,6 +25,7 @@ pub fn eval_options() -> EvalOptions {
         max_objects: 2_000,
         max_list_len: 20_000,
         max_string_len: 100_000,
+        ..EvalOptions::default()
     }
 }
 
@@ -76,7 +77,7 @@ pub fn synthetic_sources() -> SourceMap {
 }
 
 /// `rtc check`'s lints and the preparation stage (geometry, meshes, textures), then a render of
-/// at most 4×4 pixels.
+/// at most 4×4 pixels with every AOV layer.
 pub fn later_stages(mut scene: Scene, sources: &SourceMap) {
     clamp_work(&mut scene);
     for d in &rtc::check::lint(&scene).items {
@@ -94,7 +95,12 @@ pub fn later_stages(mut scene: Scene, sources: &SourceMap) {
     for d in prepared.warnings() {
         spans_ok(d, sources);
     }
-    let options = RenderOptions { threads: 1 };
+    // The AOV layers too: their paths (depth, normal, albedo, object id) run only when asked for.
+    let options = RenderOptions {
+        threads: 1,
+        aovs: rtc::render::Channel::AOVS.to_vec(),
+        ..RenderOptions::default()
+    };
     if let Ok(film) = rtc::render::render(&prepared, &options, &rtc::render::Silent) {
         let _ = film.to_image();
     }

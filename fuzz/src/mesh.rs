@@ -3,8 +3,8 @@
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
-use rtc::geometry::Ray;
 use rtc::assets::MeshAsset;
+use rtc::geometry::Ray;
 use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::ir::{Object, Shape};
 
@@ -44,6 +44,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         },
         transform: DAffine3::IDENTITY,
         material: None,
+        motion: None,
         span: Default::default(),
     });
     if centre.is_finite() && reach.is_finite() {

@@ -8,11 +8,28 @@ use rtc::ir::{
     Shape, Texture,
 };
 
+/// Most pixels an input image may claim in its header for the fuzzer to decode it: 2²⁰, a
+/// 24 MiB texture. rtc's own budget is 2²⁶ (`ir::limits::MAX_TEXTURE_PIXELS`, 1.5 GiB of texels,
+/// tested in `tests/budgets.rs`): a 358-byte JPEG claiming 65296×255 pixels decodes (the missing
+/// data is filled in) to 400 MB in 3 s, and 2²⁶ pixels would pass the fuzzer's 2 GB limit; both are
+/// within rtc's budget, so the fuzzer clamps the size as `later_stages` clamps the render.
+const MAX_FUZZ_PIXELS: u64 = 1 << 20;
+
 /// Renders a sphere textured and bump-mapped by the image at `path`, under every mapping.
 pub fn exercise(path: &Path) {
-    // The asset cache keeps every (path, size, modification time) it has seen for the process's
-    // life; each input is a new version of the same file, so without this the fuzzer's memory
-    // grows with every input (the first texture run stopped out of memory at 92,832 inputs).
+    // Headers that do not parse go on: reporting them is the loader's job under test.
+    if let Ok((w, h)) = image::ImageReader::open(path).and_then(|r| {
+        r.into_dimensions()
+            .map_err(|e| std::io::Error::other(e.to_string()))
+    }) && u64::from(w) * u64::from(h) > MAX_FUZZ_PIXELS
+    {
+        return;
+    }
+    // The asset cache knows a file by (path, size, modification time). It keeps only the newest
+    // version of a path now (the first texture run, when it kept every version, stopped out of
+    // memory at 92,832 inputs), but two inputs of one size written within one tick of the
+    // file-system clock look like the same version: without this, an input could be rendered
+    // with the previous input's image.
     rtc::assets::clear_cache();
     for mapping in [
         Mapping::Uv,
@@ -27,6 +44,7 @@ pub fn exercise(path: &Path) {
             },
             transform: DAffine3::IDENTITY,
             material: None,
+            motion: None,
             span: Default::default(),
         });
         let tex = scene.add_texture(Texture::Image {
@@ -59,6 +77,8 @@ pub fn one_object_scene(object: Object) -> Scene {
             projection: Projection::Perspective { fov_y: 0.8 },
             aperture: 0.0,
             focus_distance: 0.0,
+            shutter: None,
+            motion: None,
             span: Default::default(),
         },
         lights: vec![Light {

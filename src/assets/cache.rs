@@ -1,7 +1,9 @@
 //! Loaded assets shared across the whole process: evaluation (a mesh's `.bounds`), `rtc check`
 //! and the preparation stage ask for the same file, and it is read and decoded once. A file is
 //! known by its path, its size and its modification time, so a changed file loads again (what
-//! `rtc watch` needs); failures are not kept, so a fixed file loads on the next call.
+//! `rtc watch` needs); failures are not kept, so a fixed file loads on the next call. Loading a
+//! new version of a path drops the older ones, so a long-lived process (`rtc watch` re-rendering
+//! an edited texture) keeps one version per path instead of every version it ever saw.
 
 use std::collections::HashMap;
 use std::hash::Hash;
@@ -28,6 +30,11 @@ impl FileKey {
             len: meta.as_ref().map_or(0, |m| m.len()),
             modified: meta.and_then(|m| m.modified().ok()),
         }
+    }
+
+    /// Whether `other` is an older or newer version of the same path (either variant).
+    fn supersedes(&self, other: &FileKey) -> bool {
+        self.path == other.path && (self.len, self.modified) != (other.len, other.modified)
     }
 }
 
@@ -69,11 +76,43 @@ impl<T> Cache<T> {
         }
         // Loaded outside the lock: two threads may both load a new file, and the first one kept.
         let v = Arc::new(load()?);
-        Ok(self.map().entry(key).or_insert(v).clone())
+        let mut map = self.map();
+        map.retain(|k, _| !key.supersedes(k));
+        Ok(map.entry(key).or_insert(v).clone())
     }
 
     /// Forgets every value (they stay alive while others hold them).
     pub fn clear(&self) {
         self.map().clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every edit of a file is a new version; only the newest stays cached, in both variants.
+    #[test]
+    fn a_new_version_drops_the_older_ones() {
+        let dir = std::env::temp_dir().join(format!("rtc-cache-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (a, b) = (dir.join("a.txt"), dir.join("b.txt"));
+        std::fs::write(&b, "other file").unwrap();
+        let cache: Cache<usize> = Cache::new();
+        let load = |p: &Path| std::fs::read(p).map(|bytes| bytes.len());
+        let other = cache.get_or_load(FileKey::of(&b, false), || load(&b));
+        assert_eq!(*other.unwrap(), 10);
+        for n in 1..=5 {
+            // A different size each time: a new version even where the clock is too coarse to
+            // tell the writes apart.
+            std::fs::write(&a, "x".repeat(n)).unwrap();
+            for smooth in [false, true] {
+                let got = cache.get_or_load(FileKey::of(&a, smooth), || load(&a));
+                assert_eq!(*got.unwrap(), n);
+            }
+        }
+        // `b` once, `a` in its newest version twice (both variants); not 1 + 2 × 5.
+        assert_eq!(cache.map().len(), 3);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

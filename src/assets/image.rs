@@ -28,6 +28,27 @@ pub struct ImageError {
     pub too_large: bool,
 }
 
+/// The largest data window among an EXR file's parts, in pixels (0 for other formats). The
+/// decoder reports an EXR's display window as its size but reads, and allocates, by the data
+/// windows: a 537-byte file with a 2×2 display window and a 2×10⁹ data window took 1.7 GB
+/// (`fuzz/found/texture-3-exr-data-window`).
+fn exr_data_window_pixels(path: &Path) -> Result<u64, ImageError> {
+    if image::ImageFormat::from_path(path).ok() != Some(image::ImageFormat::OpenExr) {
+        return Ok(0);
+    }
+    let meta = exr::meta::MetaData::read_from_file(path, false).map_err(|e| ImageError {
+        message: e.to_string(),
+        missing: false,
+        too_large: false,
+    })?;
+    Ok(meta
+        .headers
+        .iter()
+        .map(|h| h.layer_size.width() as u64 * h.layer_size.height() as u64)
+        .max()
+        .unwrap_or(0))
+}
+
 impl Picture {
     /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
     pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
@@ -57,11 +78,17 @@ impl Picture {
         // a huge image); the decoder's own limits (512 MiB) stay as a second guard.
         let (w, h) = open()?.into_dimensions().map_err(malformed)?;
         let pixels = u64::from(w) * u64::from(h);
-        if pixels > MAX_TEXTURE_PIXELS {
+        let data_window = exr_data_window_pixels(path)?;
+        let over = if pixels > MAX_TEXTURE_PIXELS {
+            Some(format!("it is {w}×{h} = {pixels} pixels"))
+        } else if data_window > MAX_TEXTURE_PIXELS {
+            Some(format!("its data window has {data_window} pixels"))
+        } else {
+            None
+        };
+        if let Some(what) = over {
             return Err(ImageError {
-                message: format!(
-                    "it is {w}×{h} = {pixels} pixels; at most {MAX_TEXTURE_PIXELS} are decoded"
-                ),
+                message: format!("{what}; at most {MAX_TEXTURE_PIXELS} are decoded"),
                 missing: false,
                 too_large: true,
             });
@@ -153,6 +180,28 @@ mod tests {
         assert_eq!(p.nearest(DVec2::new(0.99, 0.99)).x, 1.0); // (int(1.98), int(0.99)) = (1, 0)
         assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
         assert!(Picture::new(0, 2, vec![]).is_none());
+    }
+
+    /// Found by the texture fuzzer: the display window (2×2) passed the budget while the
+    /// data window (1,056,964,608×2) made the decoder allocate gigabytes.
+    #[test]
+    fn an_exr_data_window_counts_against_the_budget() {
+        let dir = std::env::temp_dir().join(format!("rtc-exr-window-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("t.exr");
+        let input = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/found/texture-3-exr-data-window"),
+        )
+        .unwrap();
+        // The fuzz input's first byte chose the extension (3: exr); the file is the rest.
+        std::fs::write(&path, &input[1..]).unwrap();
+        let e = Picture::load(&path).unwrap_err();
+        assert!(e.too_large, "{e:?}");
+        assert!(
+            e.message.contains("data window has 2113929216 pixels"),
+            "{e:?}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
