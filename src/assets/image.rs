@@ -204,6 +204,26 @@ mod tests {
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
+    /// Found by the texture fuzzer: a B44A block whose values wrap (as OpenEXR's unsigned
+    /// arithmetic defines) panicked inside the exr crate in builds with overflow checks; it is
+    /// built without them (Cargo.toml), so the file fails as a malformed texture.
+    #[test]
+    fn a_b44_exr_with_wrapping_blocks_is_an_error_not_a_panic() {
+        let dir = std::env::temp_dir().join(format!("rtc-exr-b44-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("t.exr");
+        let input = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/found/texture-4-exr-b44-overflow"),
+        )
+        .unwrap();
+        // The fuzz input's first byte chose the extension (3: exr); the file is the rest.
+        std::fs::write(&path, &input[1..]).unwrap();
+        let e = Picture::load(&path).unwrap_err();
+        assert!(!e.missing && !e.too_large, "{e:?}");
+        assert!(e.message.contains("B44A"), "{e:?}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
     #[test]
     fn a_truncated_png_is_malformed_not_missing() {
         let dir = std::env::temp_dir().join(format!("rtc-truncated-{}", std::process::id()));
