@@ -184,25 +184,15 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
     Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
 }
 
-/// The first crossing in (t_min, t_max) among those `roots` reports (torus and blob hits): the
-/// smallest root whose direction flag is `first`, the direction a crossing must have when the
-/// ray starts on the side the caller classified (from outside the first crossing enters, from
-/// inside it leaves).
-///
-/// A quartic's roots are known far less exactly than a spawned ray's start is placed (the start
-/// sits outside the hit point's error bound, so a point test classifies it correctly): the
-/// polynomial of a ray leaving a surface can show that surface again at a tiny `t`, always as a
-/// crossing in the impossible direction (entering a solid the ray is already in, or leaving one
-/// it is outside). Skipping those is exact where a distance cut-off would have to guess.
+/// The smallest root in (t_min, t_max) among those `roots` reports (torus and blob hits).
 pub fn nearest_root(
     t_min: f64,
     t_max: f64,
-    first: bool,
     roots: impl FnOnce(&mut dyn FnMut(f64, bool)),
 ) -> Option<f64> {
     let mut best: Option<f64> = None;
-    roots(&mut |t, flag| {
-        if flag == first && t > t_min && t < t_max && best.is_none_or(|b| t < b) {
+    roots(&mut |t, _| {
+        if t > t_min && t < t_max && best.is_none_or(|b| t < b) {
             best = Some(t);
         }
     });

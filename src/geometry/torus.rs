@@ -110,17 +110,9 @@ impl Torus {
         }
     }
 
-    /// Nearest hit in (t_min, t_max): the first crossing consistent with the side of the
-    /// torus the ray starts on (see [`super::quartic::nearest_root`]).
+    /// Nearest hit in (t_min, t_max).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let start = if t_min.is_finite() {
-            ray.at(t_min)
-        } else {
-            ray.origin
-        };
-        // `rising` means leaving: a ray starting inside must leave first.
-        let inside = self.contains(start);
-        super::quartic::nearest_root(t_min, t_max, inside, |visit| self.roots(ray, visit))
+        super::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
             .map(|t| self.hit(ray, t))
     }
 
