@@ -168,8 +168,10 @@ pub fn scan(file: FileId, text: &str) -> Scan {
         .with_label("this delimiter is never closed")
         .with_help(format!("add the missing `{}`", closer_of(open) as char));
         if let Some(line) = dedented_line_after(text, at) {
+            // The label covers the line's first character whole (it may take several bytes).
+            let first = text[line..].chars().next().map_or(0, char::len_utf8);
             d = d.with_secondary(
-                sp(line, line + 1),
+                sp(line, line + first.max(1)),
                 format!(
                     "perhaps the `{}` belongs before this line",
                     closer_of(open) as char
@@ -238,4 +240,21 @@ fn dedented_line_after(text: &str, at: usize) -> Option<usize> {
         offset += line.len() + 1;
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Found by the rtc_eval fuzzer: a label one byte long cut the line's first character,
+    /// which takes two bytes in UTF-8.
+    #[test]
+    fn the_closer_hint_covers_a_multibyte_first_character() {
+        let text = "rtc 1\nprint(1,\n\u{4d9}ssert(2)\n";
+        let scan = scan(FileId(0), text);
+        let d = &scan.errors[0];
+        assert_eq!(d.code, "rtc::syntax::unclosed");
+        let hint = d.labels[0].span;
+        assert_eq!(&text[hint.start as usize..hint.end as usize], "\u{4d9}");
+    }
 }
