@@ -71,9 +71,9 @@ fn read<'t, const BUILD: bool>(
     memo.args.clear();
     let mut r = Reader::<BUILD> {
         text,
-        bytes: text.as_bytes(),
+        // Cut at `end`, so one bounds check is the end-of-input test too.
+        bytes: &text.as_bytes()[..end],
         at: pos,
-        end,
         file,
         memo,
     };
@@ -139,22 +139,39 @@ impl<'t> Memo<'t> {
 /// A cursor over the input with `end` as its end; it builds the nodes it reads when `BUILD`.
 struct Reader<'t, 'n, const BUILD: bool> {
     text: &'t str,
+    /// The input up to its end.
     bytes: &'t [u8],
     at: usize,
-    end: usize,
     file: FileId,
     memo: &'n mut Memo<'t>,
 }
 
+/// Bit 0: a name may start with the byte; bit 1: a name may continue with it. A table, since
+/// names are most of a generated line's bytes and each is read twice.
+const NAME_BYTES: [u8; 256] = {
+    let mut t = [0u8; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        if b.is_ascii_alphabetic() || b == b'_' {
+            t[c] = 0b11;
+        } else if b.is_ascii_digit() {
+            t[c] = 0b10;
+        }
+        c += 1;
+    }
+    t
+};
+
 fn is_name_start(c: u8) -> bool {
-    c.is_ascii_alphabetic() || c == b'_'
+    NAME_BYTES[c as usize] & 1 != 0
 }
 
 fn is_name_char(c: u8) -> bool {
-    c.is_ascii_alphanumeric() || c == b'_'
+    NAME_BYTES[c as usize] & 2 != 0
 }
 
-impl<const BUILD: bool> Reader<'_, '_, BUILD> {
+impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
     /// `e` wrapped by `kind` (a call, member or negation) at `span`; `e` itself when only
     /// checking, which saves the box.
     fn wrap(e: Expr, kind: impl FnOnce(Box<Expr>) -> ExprKind, span: Span) -> Expr {
@@ -169,11 +186,21 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
     }
 
     fn peek(&self) -> Option<u8> {
-        (self.at < self.end).then(|| self.bytes[self.at])
+        self.bytes.get(self.at).copied()
     }
 
     fn peek_at(&self, i: usize) -> Option<u8> {
-        (i < self.end).then(|| self.bytes[i])
+        self.bytes.get(i).copied()
+    }
+
+    /// The interned name `text`; only checking, a placeholder (interning is a third of the
+    /// check pass's name cost, and its nodes are dropped unread).
+    fn sym(&mut self, text: &'t str) -> Sym {
+        if BUILD {
+            self.memo.sym(text)
+        } else {
+            Sym::UNREAD
+        }
     }
 
     fn span(&self, start: usize, end: usize) -> Span {
@@ -225,6 +252,8 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
                         i += 1;
                     }
                 }
+                // Only `with`, `step` and `div` continue: no other name needs reading.
+                Some(c) if is_name_start(c) && !matches!(c, b'w' | b's' | b'd') => return false,
                 Some(c) if is_name_start(c) => {
                     let start = i;
                     while self.peek_at(i).is_some_and(is_name_char) {
@@ -252,12 +281,17 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
     /// A name that is not a keyword.
     fn name(&mut self) -> Option<Name> {
         let (s, e) = self.word()?;
+        self.name_at(s, e)
+    }
+
+    /// The word at `s..e` as a name, unless it is a keyword.
+    fn name_at(&mut self, s: usize, e: usize) -> Option<Name> {
         let text = &self.text[s..e];
         if is_keyword(text) {
             return None;
         }
         Some(Name {
-            sym: self.memo.sym(text),
+            sym: self.sym(text),
             span: self.span(s, e),
         })
     }
@@ -321,7 +355,7 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
                     "true" => ExprKind::Bool(true),
                     "false" => ExprKind::Bool(false),
                     _ if is_keyword(text) => return None,
-                    _ => ExprKind::Ident(self.memo.sym(text)),
+                    _ => ExprKind::Ident(self.sym(text)),
                 };
                 Expr {
                     kind,
@@ -386,13 +420,11 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
     /// `name: value` or `value`.
     fn arg(&mut self) -> Option<Arg> {
         let start = self.at;
-        if self.word().is_some() {
+        if let Some((s, e)) = self.word() {
             self.spaces();
             match self.peek() {
                 Some(b':') => {
-                    self.at = start;
-                    let name = self.name()?;
-                    self.spaces();
+                    let name = self.name_at(s, e)?;
                     self.at += 1;
                     self.spaces();
                     let value = self.operand()?;
@@ -449,7 +481,7 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
     fn number(&mut self) -> Option<Expr> {
         let start = self.at;
         self.unsigned_number()?;
-        let rest = &self.bytes[self.at..self.end];
+        let rest = &self.bytes[self.at..];
         if let Some(unit) = [&b"deg"[..], b"rad", b"turn", "°".as_bytes()]
             .into_iter()
             .find(|u| rest.starts_with(u))
@@ -460,6 +492,13 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
             return None;
         }
         let (digits, unit) = numbers::split_unit(&self.text[start..self.at]);
+        if !BUILD {
+            // Only checking: whether it has a value (its placeholder is dropped unread).
+            return numbers::has_value(digits).then(|| Expr {
+                kind: ExprKind::Int(0),
+                span: self.span(start, self.at),
+            });
+        }
         let kind = numbers::apply_unit(numbers::plain(digits).ok()?, unit);
         Some(Expr {
             kind,
@@ -479,8 +518,12 @@ impl<const BUILD: bool> Reader<'_, '_, BUILD> {
                 self.at += 1;
             }
             self.unsigned_number()?;
-            let plain = numbers::plain(&self.text[s..self.at]).ok()?;
-            *slot = numbers::component(&plain);
+            let text = &self.text[s..self.at];
+            if BUILD {
+                *slot = numbers::component(&numbers::plain(text).ok()?);
+            } else if !numbers::has_value(text) {
+                return None;
+            }
             self.spaces();
             let closer = if k == 2 { b']' } else { b',' };
             if self.peek() != Some(closer) {

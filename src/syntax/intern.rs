@@ -20,6 +20,10 @@ thread_local! {
 }
 
 impl Sym {
+    /// A name that was never interned: the fast path's check-only pass writes it where it reads
+    /// a name, since the nodes that pass builds are dropped unread (`as_str` would panic on it).
+    pub const UNREAD: Sym = Sym(u32::MAX);
+
     /// Interns `name` (numbered per thread; its text is stored once per process).
     pub fn new(name: &str) -> Sym {
         INTERNER.with(|i| {

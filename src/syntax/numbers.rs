@@ -15,6 +15,11 @@ pub enum NumberError {
 /// A plain number `3`, `0.5`, `2e6` (no unit, no sign except the one a vector literal carries):
 /// `Int` without `.`, `e` or `E`, `Float` otherwise.
 pub fn plain(text: &str) -> Result<ExprKind, NumberError> {
+    match quick(text) {
+        Quick::Int(i) => return Ok(ExprKind::Int(i)),
+        Quick::Float(v) => return Ok(ExprKind::Float(v)),
+        Quick::Slow => {}
+    }
     if !text.bytes().any(|b| matches!(b, b'.' | b'e' | b'E')) {
         return text
             .parse::<i64>()
@@ -26,6 +31,71 @@ pub fn plain(text: &str) -> Result<ExprKind, NumberError> {
         return Err(NumberError::TooLarge);
     }
     Ok(ExprKind::Float(v))
+}
+
+/// Whether [`plain`] gives `text` a value, without converting it where the answer is plain
+/// from its length: an integer of at most 18 digits fits an `i64`, and a float without an
+/// exponent needs over 300 digits to overflow (the fast path's check-only pass asks this).
+pub fn has_value(text: &str) -> bool {
+    let b = text.as_bytes();
+    let float = b.iter().any(|&c| matches!(c, b'.' | b'e' | b'E'));
+    let exponent = b.iter().any(|&c| matches!(c, b'e' | b'E'));
+    match (float, exponent) {
+        (false, _) if b.len() <= 18 => true,
+        (true, false) if b.len() <= 300 => true,
+        _ => plain(text).is_ok(),
+    }
+}
+
+/// What one pass over a number's bytes could tell.
+enum Quick {
+    Int(i64),
+    Float(f64),
+    /// Not of the quick forms: convert with the standard library.
+    Slow,
+}
+
+/// Powers of ten that are exact doubles (10²² is the largest).
+const EXACT_POWERS_OF_TEN: [f64; 23] = [
+    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
+];
+
+/// `[-]digits` of at most 18 digits (an exact `i64`), or `[-]digits.digits` (no exponent) of at
+/// most 19 digits whose value is `m / 10^k` for an integer `m ≤ 2⁵³` and `k ≤ 22`: then `m` and
+/// `10^k` are exact doubles and one IEEE division rounds their quotient correctly (Clinger's
+/// fast path), the same bits as `str::parse`, for a fraction of its cost (a generated file is
+/// mostly such numbers). [`Quick::Slow`] for anything else.
+fn quick(text: &str) -> Quick {
+    let (negative, digits) = match text.as_bytes() {
+        [b'-', rest @ ..] => (true, rest),
+        all => (false, all),
+    };
+    if digits.is_empty() || digits.len() > 19 {
+        return Quick::Slow;
+    }
+    let mut mantissa: u64 = 0;
+    let mut fraction_digits = None;
+    for (i, &b) in digits.iter().enumerate() {
+        match b {
+            b'0'..=b'9' => mantissa = mantissa * 10 + u64::from(b - b'0'),
+            b'.' if fraction_digits.is_none() => fraction_digits = Some(digits.len() - i - 1),
+            _ => return Quick::Slow,
+        }
+    }
+    let Some(k) = fraction_digits else {
+        // At most 19 digits did not overflow a u64; 18 fit an i64 with either sign.
+        if digits.len() > 18 {
+            return Quick::Slow;
+        }
+        let m = mantissa as i64;
+        return Quick::Int(if negative { -m } else { m });
+    };
+    if mantissa > 1 << 53 || k >= EXACT_POWERS_OF_TEN.len() {
+        return Quick::Slow;
+    }
+    let v = mantissa as f64 / EXACT_POWERS_OF_TEN[k];
+    Quick::Float(if negative { -v } else { v })
 }
 
 /// A unit's conversion to radians.
@@ -60,5 +130,110 @@ pub fn component(plain: &ExprKind) -> f64 {
         ExprKind::Int(i) => i as f64,
         ExprKind::Float(f) => f,
         _ => 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fast path gives `str::parse`'s bits (the reference) wherever it answers, on
+    /// generated decimals of every length and on the edges of its range.
+    #[test]
+    fn exact_decimals_match_the_standard_parser() {
+        let mut seed = 7u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let mut texts: Vec<String> = [
+            "0.0",
+            "-0.0",
+            "0.1",
+            "0.15000000000000002",
+            "-19.6",
+            "9007199254740992.0",
+            "9007199254740993.0",
+            "0.9007199254740993",
+            "1.0000000000000000000001",
+            "0.0000000000000000000001",
+            "0.00000000000000000000001",
+            "123456789.123456789",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        for _ in 0..20_000 {
+            let int_digits = 1 + next() % 12;
+            let frac_digits = 1 + next() % 14;
+            let int: String = (0..int_digits)
+                .map(|_| char::from(b'0' + (next() % 10) as u8))
+                .collect();
+            let frac: String = (0..frac_digits)
+                .map(|_| char::from(b'0' + (next() % 10) as u8))
+                .collect();
+            let sign = if next() % 2 == 0 { "-" } else { "" };
+            texts.push(format!("{sign}{int}.{frac}"));
+        }
+        let mut answered = 0;
+        for t in &texts {
+            if let Quick::Float(v) = quick(t) {
+                answered += 1;
+                assert_eq!(v.to_bits(), t.parse::<f64>().unwrap().to_bits(), "{t}");
+            }
+            let ExprKind::Float(v) = plain(t).unwrap() else {
+                panic!("{t} is a float")
+            };
+            assert_eq!(v.to_bits(), t.parse::<f64>().unwrap().to_bits(), "{t}");
+        }
+        // The fast path must actually be taken on typical numbers, or it is dead code.
+        assert!(answered > texts.len() / 2, "{answered} of {}", texts.len());
+        assert!(matches!(quick("9007199254740993.0"), Quick::Slow));
+        assert!(matches!(quick("1e5"), Quick::Slow));
+    }
+
+    /// Integers read quickly are the standard parser's, up to the edges of `i64`; `has_value`
+    /// answers what `plain` does, on both sides of its length shortcuts.
+    #[test]
+    fn integers_and_has_value_agree_with_plain() {
+        for t in [
+            "0",
+            "-0",
+            "7",
+            "-7",
+            "999999999999999999",
+            "-999999999999999999",
+            "9223372036854775807",
+            "9223372036854775808",
+            "-9223372036854775808",
+            "99999999999999999999999",
+            "1e308",
+            "1e309",
+            "1.5e-400",
+            "2E6",
+        ] {
+            // (is an integer, bits): ExprKind has no equality.
+            let want = if t.contains(['.', 'e', 'E']) {
+                t.parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .map(|v| (false, v.to_bits()))
+            } else {
+                t.parse::<i64>().ok().map(|i| (true, i as u64))
+            };
+            let got = match plain(t) {
+                Ok(ExprKind::Int(i)) => Some((true, i as u64)),
+                Ok(ExprKind::Float(v)) => Some((false, v.to_bits())),
+                Ok(_) => panic!("{t}: a plain number has no unit"),
+                Err(_) => None,
+            };
+            assert_eq!(got, want, "{t}");
+            assert_eq!(has_value(t), want.is_some(), "{t}");
+        }
+        let long_float = format!("{}.5", "9".repeat(320));
+        assert_eq!(has_value(&long_float), plain(&long_float).is_ok());
+        assert!(!has_value(&long_float), "10^320 overflows");
     }
 }
