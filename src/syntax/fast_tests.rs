@@ -7,7 +7,7 @@ use std::path::{Path as FsPath, PathBuf};
 
 use proptest::prelude::*;
 
-use super::{Path, parse_with};
+use super::{PARALLEL_LINES, Path, parse_with};
 use crate::source::FileId;
 
 /// Parses `text` both ways, fails on any difference, and returns how many statements the fast
@@ -142,7 +142,43 @@ fn the_whole_corpus_parses_the_same_both_ways() {
 
 #[test]
 fn edge_cases_parse_the_same_both_ways() {
-    let cases = [
+    for (k, c) in EDGE_CASES.iter().enumerate() {
+        assert_same(&format!("edge case {k}"), c);
+    }
+}
+
+/// A file with enough top-level lines to be read on several threads (`PARALLEL_LINES`), with
+/// every edge case spread through it, parses as pest alone does; so does the same file cut
+/// short by a delimiter error near its end.
+#[test]
+fn a_file_read_in_parallel_parses_the_same_both_ways() {
+    let mut text = String::from("rtc 1\n");
+    let mut cases = EDGE_CASES.iter().cycle();
+    let mut lines = 0;
+    while lines < PARALLEL_LINES + 500 {
+        for k in 0..150 {
+            text.push_str(&format!("f({k})\n"));
+        }
+        let case = cases
+            .next()
+            .expect("cycles")
+            .strip_prefix("rtc 1")
+            .expect("header");
+        // The delimiter cases would cut the file at once: one comes at the end instead.
+        if !case.contains("g(2))") && !case.contains("g([2)") {
+            text.push_str(case.trim_start_matches(['\r', '\n']));
+            text.push('\n');
+        }
+        lines = text.lines().count();
+    }
+    let fast = assert_same("long file", &text);
+    assert!(fast > PARALLEL_LINES, "only {fast} fast statements");
+    text.push_str("g([2)\nh(3)\n");
+    assert_same("long file with a delimiter error", &text);
+}
+
+const EDGE_CASES: &[&str] = {
+    &[
         // Continuations on the next line: pest extends the statement, so must the fast path.
         "rtc 1\nf(1)\n  .g(2)\n",
         "rtc 1\nf(1)\n\n// c\n  .g(2)\nh(3)\n",
@@ -191,11 +227,8 @@ fn edge_cases_parse_the_same_both_ways() {
         // A delimiter error cuts the file.
         "rtc 1\nf(1)\ng(2))\nh(3)\n",
         "rtc 1\nf(1)\ng([2)\nh(3)\n",
-    ];
-    for (k, c) in cases.iter().enumerate() {
-        assert_same(&format!("edge case {k}"), c);
-    }
-}
+    ]
+};
 
 /// Pieces the generated statements are made of: the fast path's forms and their near misses.
 mod near_misses {

@@ -83,13 +83,27 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
     // Whether the last statement was an expression or `let` (which a `-` line could continue).
     let mut continuable = false;
     let mut fast_statements = 0;
-    let mut memo = fast::Memo::default();
     let (version, mut pos) = header(file, text, &mut diags);
+    let fast_ends = match path {
+        Path::FastFirst => fast_line_ends(file, text, &scan.top_level_lines, cutoff),
+        #[cfg(test)]
+        Path::PestOnly => vec![None; scan.top_level_lines.len()],
+    };
+    // Statements start at top-level lines, in order: `line` follows `pos` through them.
+    let mut line = 0;
     while pos < cutoff {
+        while scan.top_level_lines.get(line).is_some_and(|&l| l < pos) {
+            line += 1;
+        }
+        let fast_end = match scan.top_level_lines.get(line) {
+            Some(&l) if l == pos => fast_ends[line],
+            _ if path == Path::FastFirst => {
+                fast::line_end(file, text, pos, cutoff, &mut fast::Memo::default())
+            }
+            _ => None,
+        };
         // Simple one-line statements (most of a generated file) skip pest; see fast.rs.
-        if path == Path::FastFirst
-            && let Some(next) = fast::line_end(file, text, pos, cutoff, &mut memo)
-        {
+        if let Some(next) = fast_end {
             // Only its place is kept: `File::stmts` reads it again when it is visited.
             items.push(ast::Item::Line(pos as u32));
             continuable = true;
@@ -158,6 +172,31 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
         diags,
         fast_statements,
     }
+}
+
+/// Top-level lines from which reading fast is worth a thread of its own.
+const PARALLEL_LINES: usize = 4096;
+
+/// Where the fast path's statement ends for each top-level line start (`None` where pest must
+/// read it, or past `cutoff`). Its check pass is a pure function of the text and the position
+/// (it interns no names), so a large file's lines are read on every core, in chunks, and the
+/// answers do not depend on how they were cut.
+fn fast_line_ends(file: FileId, text: &str, lines: &[usize], cutoff: usize) -> Vec<Option<usize>> {
+    use rayon::prelude::*;
+    let chunk_ends = |chunk: &[usize]| {
+        let mut memo = fast::Memo::default();
+        chunk
+            .iter()
+            .map(|&l| (l < cutoff).then(|| fast::line_end(file, text, l, cutoff, &mut memo))?)
+            .collect::<Vec<_>>()
+    };
+    if lines.len() < PARALLEL_LINES {
+        return chunk_ends(lines);
+    }
+    lines
+        .par_chunks(PARALLEL_LINES / 4)
+        .flat_map_iter(chunk_ends)
+        .collect()
 }
 
 /// Reads the `rtc N` header; returns the version and the offset after it.
