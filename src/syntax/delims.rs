@@ -13,6 +13,8 @@ pub struct Scan {
     pub warnings: Vec<Diagnostic>,
     /// Byte offsets of line starts whose bracket depth is zero.
     pub top_level_lines: Vec<usize>,
+    /// The deepest bracket nesting scanned (outside strings and comments).
+    pub max_depth: usize,
 }
 
 fn closer_of(open: u8) -> u8 {
@@ -41,6 +43,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
     let mut errors = Vec::new();
     let mut warnings = Vec::new();
     let mut top_level_lines = vec![0];
+    let mut max_depth = 0;
     let mut i = 0;
     let sp = |s: usize, e: usize| Span::new(file, s, e);
     while i < b.len() {
@@ -101,12 +104,14 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                         errors,
                         warnings,
                         top_level_lines,
+                        max_depth,
                     };
                 }
                 i += 1;
             }
             c @ (b'(' | b'[' | b'{') => {
                 stack.push((c, i));
+                max_depth = max_depth.max(stack.len());
                 i += 1;
             }
             c @ (b')' | b']' | b'}') => {
@@ -125,6 +130,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                             errors,
                             warnings,
                             top_level_lines,
+                            max_depth,
                         };
                     }
                     Some((open, at)) if closer_of(open) != c => {
@@ -149,6 +155,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
                             errors,
                             warnings,
                             top_level_lines,
+                            max_depth,
                         };
                     }
                     Some(_) => {}
@@ -184,6 +191,7 @@ pub fn scan(file: FileId, text: &str) -> Scan {
         errors,
         warnings,
         top_level_lines,
+        max_depth,
     }
 }
 

@@ -481,17 +481,14 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
     fn number(&mut self) -> Option<Expr> {
         let start = self.at;
         self.unsigned_number()?;
-        let rest = &self.bytes[self.at..];
-        if let Some(unit) = [&b"deg"[..], b"rad", b"turn", "°".as_bytes()]
-            .into_iter()
-            .find(|u| rest.starts_with(u))
-        {
-            self.at += unit.len();
-        }
+        let digits = &self.text[start..self.at];
+        let unit = numbers::unit_at(&self.bytes[self.at..]).map(|(len, to_radians)| {
+            self.at += len;
+            to_radians
+        });
         if self.peek().is_some_and(is_name_char) {
             return None;
         }
-        let (digits, unit) = numbers::split_unit(&self.text[start..self.at]);
         if !BUILD {
             // Only checking: whether it has a value (its placeholder is dropped unread).
             return numbers::has_value(digits).then(|| Expr {

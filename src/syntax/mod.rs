@@ -57,14 +57,19 @@ struct Parsed<'t> {
 }
 
 fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
-    if let Some(d) = too_deep(file, text) {
+    let scan = delims::scan(file, text);
+    // Only brackets the scan counts (outside strings and comments, before its first error:
+    // the statements read end there) reach pest, so the budget's own count runs only when they
+    // nest deeply; it counts every bracket, as it did when it ran first.
+    if scan.max_depth > MAX_NESTING
+        && let Some(d) = too_deep(file, text)
+    {
         return Parsed {
             ast: None,
             diags: vec![d],
             fast_statements: 0,
         };
     }
-    let scan = delims::scan(file, text);
     // A delimiter error cuts the file: statements before the one it is in are still parsed (so
     // their errors show too), later ones would only repeat it.
     let cutoff = scan.errors.first().map_or(text.len(), |d| {

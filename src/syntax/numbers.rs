@@ -62,10 +62,10 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
 ];
 
 /// `[-]digits` of at most 18 digits (an exact `i64`), or `[-]digits.digits` (no exponent) of at
-/// most 19 digits whose value is `m / 10^k` for an integer `m ≤ 2⁵³` and `k ≤ 22`: then `m` and
-/// `10^k` are exact doubles and one IEEE division rounds their quotient correctly (Clinger's
-/// fast path), the same bits as `str::parse`, for a fraction of its cost (a generated file is
-/// mostly such numbers). [`Quick::Slow`] for anything else.
+/// most 18 digits, whose value is `m / 10^k`: when `m ≤ 2⁵³` and `k ≤ 22`, `m` and `10^k` are
+/// exact doubles and one IEEE division rounds their quotient correctly (Clinger's fast path),
+/// otherwise [`quotient_rounded`] divides exactly. The same bits as `str::parse` for a fraction
+/// of its cost (a generated file is mostly such numbers). [`Quick::Slow`] for anything else.
 fn quick(text: &str) -> Quick {
     let (negative, digits) = match text.as_bytes() {
         [b'-', rest @ ..] => (true, rest),
@@ -91,28 +91,65 @@ fn quick(text: &str) -> Quick {
         let m = mantissa as i64;
         return Quick::Int(if negative { -m } else { m });
     };
-    if mantissa > 1 << 53 || k >= EXACT_POWERS_OF_TEN.len() {
-        return Quick::Slow;
-    }
-    let v = mantissa as f64 / EXACT_POWERS_OF_TEN[k];
+    let v = if mantissa <= 1 << 53 && k < EXACT_POWERS_OF_TEN.len() {
+        mantissa as f64 / EXACT_POWERS_OF_TEN[k]
+    } else {
+        // The 17-digit numbers that shortest round-trip printing (Python's `repr`, Rust's
+        // `{:?}`) writes, such as 0.15000000000000002.
+        quotient_rounded(mantissa, 10u64.pow(k as u32))
+    };
     Quick::Float(if negative { -v } else { v })
+}
+
+/// `m / d` rounded to the nearest double (ties to even), by long division in 128 bits: the
+/// quotient is taken to at least 55 bits, and the remainder decides the last one. Exact for
+/// every `m` and every `d ≥ 1` below 2⁶⁴ (the value then lies far inside the normal range).
+fn quotient_rounded(m: u64, d: u64) -> f64 {
+    if m == 0 {
+        return 0.0;
+    }
+    let (bits_m, bits_d) = (64 - m.leading_zeros(), 64 - d.leading_zeros());
+    // `m·2^shift / d > 2^54`, and `m·2^shift < 2^119` fits.
+    let shift = (55 + bits_d).saturating_sub(bits_m);
+    let scaled = u128::from(m) << shift;
+    let (q, r) = (scaled / u128::from(d), scaled % u128::from(d));
+    let drop = 128 - q.leading_zeros() - 53;
+    let (mut kept, rest, half) = (q >> drop, q & ((1 << drop) - 1), 1u128 << (drop - 1));
+    if rest > half || (rest == half && (r != 0 || kept & 1 == 1)) {
+        kept += 1;
+    }
+    // `kept ≤ 2^53` is exact, and so is scaling it by a power of two in this range.
+    let exponent = i64::from(drop) - i64::from(shift);
+    kept as f64 * f64::from_bits(((1023 + exponent) as u64) << 52)
 }
 
 /// A unit's conversion to radians.
 pub type ToRadians = fn(f64) -> f64;
 
+/// The units a number may carry and their conversions to radians.
+const UNITS: [(&str, ToRadians); 4] = [
+    ("deg", f64::to_radians),
+    ("°", f64::to_radians),
+    ("rad", |v| v),
+    ("turn", |v| v * std::f64::consts::TAU),
+];
+
 /// Splits a `number` token into its digits and the conversion of its unit to radians
 /// (`None` for a plain number).
 pub fn split_unit(text: &str) -> (&str, Option<ToRadians>) {
-    if let Some(d) = text.strip_suffix("deg").or_else(|| text.strip_suffix('°')) {
-        (d, Some(f64::to_radians))
-    } else if let Some(d) = text.strip_suffix("rad") {
-        (d, Some(|v| v))
-    } else if let Some(d) = text.strip_suffix("turn") {
-        (d, Some(|v| v * std::f64::consts::TAU))
-    } else {
-        (text, None)
-    }
+    UNITS
+        .iter()
+        .find_map(|&(u, f)| Some((text.strip_suffix(u)?, Some(f))))
+        .unwrap_or((text, None))
+}
+
+/// The unit that `rest` (the text after a number's digits) starts with: its length in bytes and
+/// its conversion to radians.
+pub fn unit_at(rest: &[u8]) -> Option<(usize, ToRadians)> {
+    UNITS
+        .iter()
+        .find(|(u, _)| rest.starts_with(u.as_bytes()))
+        .map(|&(u, f)| (u.len(), f))
 }
 
 /// The value of a plain number read by [`plain`] with the unit [`split_unit`] found.
@@ -190,8 +227,49 @@ mod tests {
         }
         // The fast path must actually be taken on typical numbers, or it is dead code.
         assert!(answered > texts.len() / 2, "{answered} of {}", texts.len());
-        assert!(matches!(quick("9007199254740993.0"), Quick::Slow));
+        assert!(matches!(quick("12345678901234567.89"), Quick::Slow));
         assert!(matches!(quick("1e5"), Quick::Slow));
+    }
+
+    /// The long division gives the standard parser's bits (the reference) on numbers of 15 to
+    /// 18 digits with every position of the point, halfway cases included.
+    #[test]
+    fn long_division_matches_the_standard_parser() {
+        let mut seed = 11u64;
+        let mut next = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 11
+        };
+        let mut texts = vec![
+            "0.15000000000000002".to_string(),
+            "1.2000000000000002".to_string(),
+            "9007199254740993.0".to_string(), // 2^53 + 1: a tie, to even
+            "9007199254740995.0".to_string(), // a tie, to even (up)
+            "18014398509481985.0".to_string(),
+            "0.000000000000000001".to_string(),
+            "999999999999999999.".to_string() + "0",
+        ];
+        for _ in 0..50_000 {
+            let digits = 15 + (next() % 4) as usize;
+            let all: String = (0..digits)
+                .map(|_| char::from(b'0' + (next() % 10) as u8))
+                .collect();
+            let point = 1 + (next() as usize) % (digits - 1);
+            texts.push(format!("{}.{}", &all[..point], &all[point..]));
+        }
+        let mut long = 0;
+        for t in &texts {
+            let want = t.parse::<f64>().unwrap();
+            let Quick::Float(v) = quick(t) else {
+                assert!(t.len() > 19, "{t} should be read quickly");
+                continue;
+            };
+            long += usize::from(t.len() > 17);
+            assert_eq!(v.to_bits(), want.to_bits(), "{t}: {v} != {want}");
+        }
+        assert!(long > 10_000, "only {long} numbers took the long division");
     }
 
     /// Integers read quickly are the standard parser's, up to the edges of `i64`; `has_value`
