@@ -144,8 +144,7 @@ pub fn validate(scene: &Scene) -> Diagnostics {
     let mut b = objects::Builder::new(materials.len() as u32);
     for o in &scene.objects {
         validate::object(scene, o, &mut diags);
-        // Dropped at once: a check holds one prepared object at a time.
-        drop(b.object(o, fallback));
+        b.check(o, fallback);
     }
     validate::scene(scene, &mut diags);
     // `prepare` loads the textures even after an object's error, so the check does too.
