@@ -35,7 +35,7 @@ impl Interp<'_> {
         for a in args {
             out.push(ArgVal {
                 name: a.name,
-                value: self.eval(&a.value)?,
+                value: self.operand(&a.value)?,
                 span: a.value.span,
             });
         }
