@@ -112,6 +112,9 @@ impl<'a> Interp<'a> {
             .rev()
             .find(|(k, _)| *k == sym)
         {
+            // Numbers (loop variables, mostly) copied without the out-of-line `clone`.
+            Some((_, Value::Int(i))) => Ok(Value::Int(*i)),
+            Some((_, Value::Float(f))) => Ok(Value::Float(*f)),
             Some((_, v)) => Ok(v.clone()),
             None => self.lookup_global(sym, span),
         }
