@@ -108,10 +108,28 @@ pub fn call_method(
 
 /// `obj.material(m)`: the object with its own material.
 fn set_material(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
-    let mut p = super::builtins::Params::new(site, &["material"], args)?;
-    let (m, ms) = p.req("material")?;
-    let Value::Material(m) = m else {
-        return Err(types::mismatch(it, "Material", &m, ms).into());
+    let m = match args.as_slice() {
+        // One material, positional or `material:`: what the schema below accepts, matched
+        // without it (a loop of a million spheres calls this once per sphere).
+        [
+            ArgVal {
+                name,
+                value: Value::Material(m),
+                ..
+            },
+        ] if name.is_none_or(|n| n.sym.as_str() == "material") => {
+            let m = m.clone();
+            super::call::recycle_args(args);
+            m
+        }
+        _ => {
+            let mut p = super::builtins::Params::new(site, &["material"], args)?;
+            let (m, ms) = p.req("material")?;
+            let Value::Material(m) = m else {
+                return Err(types::mismatch(it, "Material", &m, ms).into());
+            };
+            m
+        }
     };
     let o2 = Rc::make_mut(&mut o);
     o2.material = Some(m);
