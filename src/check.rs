@@ -3,7 +3,7 @@
 //! transforms, CSG operands, meshes, textures decoded, ids, limits), so a clean check means the
 //! render will start. Nothing here changes the scene.
 
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
@@ -148,6 +148,11 @@ fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
     let transparent = o.material.is_some_and(|m| scene.material(m).refract > 0.0);
     if transparent {
         return None;
+    }
+    if o.transform == DAffine3::IDENTITY {
+        // What the general case gives for it (up to the sign of a zero coordinate, which no
+        // distance sees), without three square roots.
+        return Some((center, radius));
     }
     let m = o.transform.matrix3;
     let scales = [m.x_axis.length(), m.y_axis.length(), m.z_axis.length()];

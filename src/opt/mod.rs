@@ -61,7 +61,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         let o = o.borrow();
         validate::object(scene, o, &mut diags);
         content.visit(o);
-        if let Some(n) = b.object(o, fallback) {
+        if let Some(ball) = b.ball(o, fallback, i as u32) {
+            parts.push_ball(ball);
+        } else if let Some(n) = b.object(o, fallback) {
             instanced += instanced_triangles(&n);
             parts.push(n, i as u32);
         }
