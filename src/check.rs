@@ -3,38 +3,96 @@
 //! transforms, CSG operands, meshes, textures decoded, ids, limits), so a clean check means the
 //! render will start. Nothing here changes the scene.
 
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
 use crate::opt::{Content, Effects};
 
-/// Every finding about an evaluated scene: the lints, then what preparing it reports.
+/// Every finding about an evaluated scene: the lints, then what preparing it reports. One pass
+/// over the objects serves both (a million objects make every pass cost).
 pub fn check(scene: &Scene) -> Diagnostics {
-    let mut out = lint(scene);
-    out.extend(crate::opt::validate(scene));
+    walk(scene, &scene.objects, None)
+}
+
+/// [`check`] and [`summary`] of a scene not needed afterwards (`rtc check`): one pass over the
+/// objects serves the lints, the preparation's checks and the summary, and frees each object
+/// once visited (no pass of its own to drop them).
+pub fn check_owned(mut scene: Scene) -> (Diagnostics, String) {
+    let objects = std::mem::take(&mut scene.objects);
+    let mut survey = Survey::new(&scene, objects.len());
+    let diags = walk(&scene, objects, Some(&mut survey));
+    (diags, survey.finish(&scene))
+}
+
+/// [`check`] over `objects`, the scene's (which `scene.objects` may no longer hold), each also
+/// given to `survey`.
+fn walk<O: std::borrow::Borrow<Object>>(
+    scene: &Scene,
+    objects: impl IntoIterator<Item = O, IntoIter: ExactSizeIterator>,
+    mut survey: Option<&mut Survey>,
+) -> Diagnostics {
+    let objects = objects.into_iter();
+    let mut lints = Lints::new(scene, objects.len() == 0);
+    let mut prepare = crate::opt::Validator::new(scene);
+    for o in objects {
+        let o = o.borrow();
+        lints.object(o);
+        prepare.object(o);
+        if let Some(s) = survey.as_deref_mut() {
+            s.object(o);
+        }
+    }
+    let mut out = lints.finish();
+    out.extend(prepare.finish());
     out
 }
 
 /// Runs every scene lint.
 pub fn lint(scene: &Scene) -> Diagnostics {
-    let mut out = Diagnostics::default();
-    no_lights(scene, &mut out);
-    // One pass over the objects for the lints that look at each (a million objects make
-    // every pass cost): enclosed points now, the moving objects' spans for later.
-    let see_motion = !scene.camera.shutter.is_some_and(|s| s.is_open());
-    let mut moving = Vec::new();
+    let mut lints = Lints::new(scene, scene.objects.is_empty());
     for o in &scene.objects {
-        enclosed_points(scene, o, &mut out);
-        if see_motion {
-            moving_spans(o, &mut moving);
+        lints.object(o);
+    }
+    lints.finish()
+}
+
+/// The scene lints, fed the objects one at a time: enclosed points as each comes, the moving
+/// objects' spans for the end.
+struct Lints<'a> {
+    scene: &'a Scene,
+    out: Diagnostics,
+    see_motion: bool,
+    moving: Vec<crate::source::Span>,
+}
+
+impl<'a> Lints<'a> {
+    /// The lints of `scene`, whose objects (none if `no_objects`) come next.
+    fn new(scene: &'a Scene, no_objects: bool) -> Lints<'a> {
+        let mut out = Diagnostics::default();
+        no_lights(scene, no_objects, &mut out);
+        Lints {
+            scene,
+            out,
+            see_motion: !scene.camera.shutter.is_some_and(|s| s.is_open()),
+            moving: Vec::new(),
         }
     }
-    invisible_bounces(scene, &mut out);
-    if see_motion {
-        invisible_motion(scene, moving, &mut out);
+
+    fn object(&mut self, o: &Object) {
+        enclosed_points(self.scene, o, &mut self.out);
+        if self.see_motion {
+            moving_spans(o, &mut self.moving);
+        }
     }
-    out
+
+    fn finish(mut self) -> Diagnostics {
+        invisible_bounces(self.scene, &mut self.out);
+        if self.see_motion {
+            invisible_motion(self.scene, self.moving, &mut self.out);
+        }
+        self.out
+    }
 }
 
 /// The spans of `o` and its CSG operands that move, each once, added to `spans`.
@@ -63,9 +121,9 @@ fn invisible_motion(scene: &Scene, mut spans: Vec<crate::source::Span>, out: &mu
     }
 }
 
-fn no_lights(scene: &Scene, out: &mut Diagnostics) {
+fn no_lights(scene: &Scene, no_objects: bool, out: &mut Diagnostics) {
     let shaded = scene.settings.mode == RenderMode::Shaded;
-    if shaded && scene.lights.is_empty() && !scene.objects.is_empty() {
+    if shaded && scene.lights.is_empty() && !no_objects {
         out.push(
             Diagnostic::warning(
                 "rtc::scene::no_lights",
@@ -90,6 +148,11 @@ fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
     let transparent = o.material.is_some_and(|m| scene.material(m).refract > 0.0);
     if transparent {
         return None;
+    }
+    if o.transform == DAffine3::IDENTITY {
+        // What the general case gives for it (up to the sign of a zero coordinate, which no
+        // distance sees), without three square roots.
+        return Some((center, radius));
     }
     let m = o.transform.matrix3;
     let scales = [m.x_axis.length(), m.y_axis.length(), m.z_axis.length()];
@@ -165,35 +228,60 @@ fn plural(kind: &str, count: usize) -> String {
 
 /// A one-line summary of an evaluated scene: objects by kind, lights, camera, effects.
 pub fn summary(scene: &Scene) -> String {
-    let mut kinds: Vec<(&str, usize)> = Vec::new();
-    // The effects' object content is gathered in the same pass as the kinds.
-    let mut content = Content::without_objects(scene);
+    let mut survey = Survey::new(scene, scene.objects.len());
     for o in &scene.objects {
-        content.visit(o);
-        let k = o.shape.kind_name();
-        match kinds.iter_mut().find(|(n, _)| *n == k) {
-            Some((_, c)) => *c += 1,
-            None => kinds.push((k, 1)),
+        survey.object(o);
+    }
+    survey.finish(scene)
+}
+
+/// What [`summary`] gathers, fed the objects one at a time: the kinds and, in the same pass, the
+/// effects' object content.
+struct Survey {
+    objects: usize,
+    kinds: Vec<(&'static str, usize)>,
+    content: Content,
+}
+
+impl Survey {
+    fn new(scene: &Scene, objects: usize) -> Survey {
+        Survey {
+            objects,
+            kinds: Vec::new(),
+            content: Content::without_objects(scene),
         }
     }
-    let kinds = kinds
-        .iter()
-        .map(|(k, c)| format!("{c} {}", plural(k, *c)))
-        .collect::<Vec<_>>()
-        .join(", ");
-    let objects = scene.objects.len();
-    let lights = scene.lights.len();
-    let kinds = if kinds.is_empty() {
-        String::new()
-    } else {
-        format!(" ({kinds})")
-    };
-    format!(
-        "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {}",
-        if objects == 1 { "" } else { "s" },
-        if lights == 1 { "" } else { "s" },
-        scene.camera.width,
-        scene.camera.height,
-        Effects::new(&content, &scene.settings, &scene.camera)
-    )
+
+    fn object(&mut self, o: &Object) {
+        self.content.visit(o);
+        let k = o.shape.kind_name();
+        match self.kinds.iter_mut().find(|(n, _)| *n == k) {
+            Some((_, c)) => *c += 1,
+            None => self.kinds.push((k, 1)),
+        }
+    }
+
+    fn finish(self, scene: &Scene) -> String {
+        let kinds = self
+            .kinds
+            .iter()
+            .map(|(k, c)| format!("{c} {}", plural(k, *c)))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let objects = self.objects;
+        let lights = scene.lights.len();
+        let kinds = if kinds.is_empty() {
+            String::new()
+        } else {
+            format!(" ({kinds})")
+        };
+        format!(
+            "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {}",
+            if objects == 1 { "" } else { "s" },
+            if lights == 1 { "" } else { "s" },
+            scene.camera.width,
+            scene.camera.height,
+            Effects::new(&self.content, &scene.settings, &scene.camera)
+        )
+    }
 }

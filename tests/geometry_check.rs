@@ -16,13 +16,12 @@ fn at(mut o: Object, start: usize) -> Object {
 }
 
 fn ball() -> Object {
-    object(
-        Shape::Sphere {
-            center: DVec3::ZERO,
-            radius: 1.0,
-        },
-        DAffine3::IDENTITY,
-    )
+    sphere(DVec3::ZERO, 1.0)
+}
+
+/// An untransformed sphere.
+fn sphere(center: DVec3, radius: f64) -> Object {
+    object(Shape::Sphere { center, radius }, DAffine3::IDENTITY)
 }
 
 fn csg(children: Vec<Object>) -> Object {
@@ -192,16 +191,7 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
             80,
         ),
     ]);
-    let zero = at(
-        object(
-            Shape::Sphere {
-                center: DVec3::ZERO,
-                radius: 0.0,
-            },
-            DAffine3::IDENTITY,
-        ),
-        90,
-    );
+    let zero = at(sphere(DVec3::ZERO, 0.0), 90);
     let bent = at(
         object(
             Shape::Polygon {
@@ -239,4 +229,33 @@ fn singular_transforms_and_degenerate_shapes_are_errors() {
         DAffine3::from_scale(DVec3::new(-1.0, 1.0, 1.0)),
     );
     assert!(validate(&scene(vec![mirrored])).items.is_empty());
+}
+
+/// `rtc check`'s one pass (`check_owned`: lints, preparation's checks and summary, freeing each
+/// object) finds and says what the separate functions do over the same scene.
+#[test]
+fn owned_check_is_check_and_summary() {
+    let zero = at(sphere(DVec3::ZERO, 0.0), 90);
+    let flat = at(
+        object(
+            ball().shape,
+            DAffine3::from_scale(DVec3::new(1.0, 0.0, 1.0)),
+        ),
+        70,
+    );
+    // The camera (at z = 10) inside an opaque sphere: a lint.
+    let around = sphere(DVec3::new(0.0, 0.0, 9.0), 2.0);
+    for objects in [
+        vec![],
+        vec![ball()],
+        vec![ball(), zero, flat, around, csg(vec![ball()])],
+    ] {
+        let sc = scene(objects);
+        let (diags, summary) = rtc::check::check_owned(sc.clone());
+        assert_eq!(
+            format!("{:?}", diags.items),
+            format!("{:?}", rtc::check::check(&sc).items)
+        );
+        assert_eq!(summary, rtc::check::summary(&sc));
+    }
 }

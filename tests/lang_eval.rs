@@ -176,6 +176,42 @@ fn literal_range_loops_reserve_their_objects() {
     assert!(s.objects.is_empty());
 }
 
+/// `.material(m)` takes its one argument positionally or as `material:` (a fast path matches
+/// those without the schema); anything else is the schema's error, as for every built-in.
+#[test]
+fn material_method_forms_and_errors() {
+    let s = scene(
+        "let red = material { color: rgb(1, 0, 0) }\nlet blue = material { color: rgb(0, 0, 1) }\n\
+         sphere().material(red)\nsphere().material(material: blue)\n\
+         for i in 0..3 { sphere(center: [i, 0, 0]).material(if i == 1 { blue } else { red }) }",
+    );
+    let colors: Vec<_> = s
+        .objects
+        .iter()
+        .map(|o| s.material(o.material.unwrap()).color.to_array())
+        .collect();
+    let (r, b) = ([1.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+    assert_eq!(colors, vec![r, b, r, b, r]);
+    let opts = EvalOptions::default();
+    let m = "let m = material { ks: 0.1 }\n";
+    assert_eq!(
+        codes(&format!("{m}sphere().material(mat: m)"), &opts),
+        vec!["rtc::arg::unknown"]
+    );
+    assert_eq!(
+        codes(&format!("{m}sphere().material(m, m)"), &opts),
+        vec!["rtc::arg::too_many"]
+    );
+    assert_eq!(
+        codes("sphere().material(1)", &opts),
+        vec!["rtc::type::mismatch"]
+    );
+    assert_eq!(
+        codes("sphere().material()", &opts),
+        vec!["rtc::arg::missing"]
+    );
+}
+
 #[test]
 fn functions_defaults_recursion_and_closures() {
     let n = notes(

@@ -145,14 +145,15 @@ fn check_file(file: &Path, deny_warnings: bool, options: &EvalOptions) -> FileCh
         };
     }
     let mut loaded = rtc::loader::load(file, &mut sources, options);
-    if let Some(scene) = &loaded.scene {
-        loaded.diagnostics.extend(rtc::check::check(scene));
-    }
+    // The scene is not needed after its check: it is freed as it is checked.
+    let summary = loaded.scene.take().map(|scene| {
+        let (diagnostics, summary) = rtc::check::check_owned(scene);
+        loaded.diagnostics.extend(diagnostics);
+        summary
+    });
     let outcome = crate::cli::outcome_of(&loaded.diagnostics, deny_warnings);
-    let summary = match (&outcome, &loaded.scene) {
-        (Outcome::Ok, Some(scene)) => {
-            format!("{}: ok: {}", file.display(), rtc::check::summary(scene))
-        }
+    let summary = match (&outcome, summary) {
+        (Outcome::Ok, Some(summary)) => format!("{}: ok: {summary}", file.display()),
         _ => count_line(&loaded.diagnostics),
     };
     FileCheck {

@@ -10,7 +10,7 @@ use super::call::{ArgVal, CallSite};
 use super::error::R;
 use super::interp::Interp;
 use super::types;
-use super::value::Value;
+use super::value::{Obj, Value};
 
 /// `recv.name(args)`.
 pub fn call_method(
@@ -22,6 +22,12 @@ pub fn call_method(
 ) -> R<Value> {
     let n = name.sym.as_str();
     let site = CallSite { span, name: n };
+    // `.material(m)`, the commonest method of loops that make many objects, before the scan of
+    // the transform methods' names (it is not one of them).
+    let recv = match recv {
+        Value::Object(o) if n == "material" => return set_material(it, o, site, args),
+        other => other,
+    };
     let is_t = super::transform::METHODS.contains(&n);
     // The receiver is owned: a temporary object (`sphere(..).translate(..)`) is updated in
     // place, and only a shared one is copied.
@@ -43,17 +49,6 @@ pub fn call_method(
             let o2 = Rc::make_mut(&mut o);
             o2.transform = t * o2.transform;
             o2.motion = o2.motion.map(|m| m.transformed(t));
-            o2.origin = it.derive(o2.origin);
-            return Ok(Value::Object(o));
-        }
-        Value::Object(mut o) if n == "material" => {
-            let mut p = super::builtins::Params::new(site, &["material"], args)?;
-            let (m, ms) = p.req("material")?;
-            let Value::Material(m) = m else {
-                return Err(types::mismatch(it, "Material", &m, ms).into());
-            };
-            let o2 = Rc::make_mut(&mut o);
-            o2.material = Some(m);
             o2.origin = it.derive(o2.origin);
             return Ok(Value::Object(o));
         }
@@ -109,6 +104,37 @@ pub fn call_method(
     Err(super::members::unknown(
         "method", &recv, n, name.span, &known,
     ))
+}
+
+/// `obj.material(m)`: the object with its own material.
+fn set_material(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+    let m = match args.as_slice() {
+        // One material, positional or `material:`: what the schema below accepts, matched
+        // without it (a loop of a million spheres calls this once per sphere).
+        [
+            ArgVal {
+                name,
+                value: Value::Material(m),
+                ..
+            },
+        ] if name.is_none_or(|n| n.sym.as_str() == "material") => {
+            let m = m.clone();
+            super::call::recycle_args(args);
+            m
+        }
+        _ => {
+            let mut p = super::builtins::Params::new(site, &["material"], args)?;
+            let (m, ms) = p.req("material")?;
+            let Value::Material(m) = m else {
+                return Err(types::mismatch(it, "Material", &m, ms).into());
+            };
+            m
+        }
+    };
+    let o2 = Rc::make_mut(&mut o);
+    o2.material = Some(m);
+    o2.origin = it.derive(o2.origin);
+    Ok(Value::Object(o))
 }
 
 /// List functions that are also methods of lists and vectors (`l.sum()` is `sum(l)`).

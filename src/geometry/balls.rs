@@ -134,6 +134,12 @@ impl WorldParts {
         }
     }
 
+    /// Adds a ball made without its primitive (what [`WorldParts::push`] would make of it),
+    /// scene object number `b.object` (objects are added in increasing order).
+    pub fn push_ball(&mut self, b: Ball) {
+        self.balls.push(b);
+    }
+
     /// The objects added so far.
     pub fn len(&self) -> usize {
         self.nodes.len() + self.balls.len()

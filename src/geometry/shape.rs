@@ -174,6 +174,13 @@ pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
     match shape {
         Shape::Mesh { .. } => Ok(()),
         Shape::Csg { children, .. } => csg_operands(children.len()),
+        // A valid sphere, the commonest shape of large scenes (checked when it is made and again
+        // when it is prepared), without building its `Leaf`: `leaf` accepts exactly these.
+        Shape::Sphere { center, radius }
+            if *radius > 0.0 && radius.is_finite() && center.is_finite() =>
+        {
+            Ok(())
+        }
         leaf_shape => leaf(leaf_shape).map(|_| ()),
     }
 }

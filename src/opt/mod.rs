@@ -61,7 +61,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         let o = o.borrow();
         validate::object(scene, o, &mut diags);
         content.visit(o);
-        if let Some(n) = b.object(o, fallback) {
+        if let Some(ball) = b.ball(o, fallback, i as u32) {
+            parts.push_ball(ball);
+        } else if let Some(n) = b.object(o, fallback) {
             instanced += instanced_triangles(&n);
             parts.push(n, i as u32);
         }
@@ -139,17 +141,46 @@ fn material_table(scene: &Scene) -> (Vec<Material>, MaterialId) {
 /// meshes and textures loaded) but keeps no geometry and builds no world: building the world
 /// and its BVH cannot fail, and for a million objects it was two thirds of `rtc check`.
 pub fn validate(scene: &Scene) -> Diagnostics {
-    let mut diags = Diagnostics::default();
-    let (materials, fallback) = material_table(scene);
-    let mut b = objects::Builder::new(materials.len() as u32);
+    let mut v = Validator::new(scene);
     for o in &scene.objects {
-        validate::object(scene, o, &mut diags);
-        // Dropped at once: a check holds one prepared object at a time.
-        drop(b.object(o, fallback));
+        v.object(o);
     }
-    validate::scene(scene, &mut diags);
-    // `prepare` loads the textures even after an object's error, so the check does too.
-    let _ = textures::load_all(&scene.textures, &mut diags);
-    diags.extend(std::mem::take(&mut b.diagnostics));
-    diags
+    v.finish()
+}
+
+/// [`validate`] fed the scene's objects one at a time, in order (so `rtc check` walks them
+/// once for the lints and this).
+pub struct Validator<'a> {
+    scene: &'a Scene,
+    diags: Diagnostics,
+    fallback: MaterialId,
+    b: objects::Builder,
+}
+
+impl<'a> Validator<'a> {
+    /// A validator of `scene`, before its objects.
+    pub fn new(scene: &'a Scene) -> Validator<'a> {
+        let (materials, fallback) = material_table(scene);
+        Validator {
+            scene,
+            diags: Diagnostics::default(),
+            fallback,
+            b: objects::Builder::new(materials.len() as u32),
+        }
+    }
+
+    /// Checks the next object of the scene.
+    pub fn object(&mut self, o: &Object) {
+        validate::object(self.scene, o, &mut self.diags);
+        self.b.check(o, self.fallback);
+    }
+
+    /// The findings, once every object was given.
+    pub fn finish(mut self) -> Diagnostics {
+        validate::scene(self.scene, &mut self.diags);
+        // `prepare` loads the textures even after an object's error, so the check does too.
+        let _ = textures::load_all(&self.scene.textures, &mut self.diags);
+        self.diags.extend(std::mem::take(&mut self.b.diagnostics));
+        self.diags
+    }
 }

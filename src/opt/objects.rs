@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::geometry::balls::Ball;
 use crate::geometry::mesh::{Mesh, MeshParts};
 use crate::geometry::primitive::{Geom, MeshRef, Primitive};
 use crate::geometry::shape;
@@ -81,7 +82,61 @@ impl Builder {
     /// Prepares one object (and its CSG children); `None` after recording an error.
     pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Primitive> {
         let material = o.material.unwrap_or(inherited);
+        if !self.invertible(o) {
+            return None;
+        }
+        let geom = self.geom(o, material)?;
         let t = &o.transform;
+        Some(match o.motion.as_deref() {
+            Some(m) => Primitive::moving(geom, *t, *m, material),
+            None => Primitive::new(geom, *t, material),
+        })
+    }
+
+    /// The compact ball [`Builder::object`]'s primitive for `o` would become in the world
+    /// (`Ball::of`): a valid sphere with no transform and no motion, straight into the world's
+    /// storage without the primitive. `None` for every other object (nothing recorded).
+    pub fn ball(&self, o: &Object, inherited: MaterialId, object: u32) -> Option<Ball> {
+        match o.shape {
+            Shape::Sphere { center, radius }
+                if o.motion.is_none()
+                    && o.transform == glam::DAffine3::IDENTITY
+                    && shape::check(&o.shape).is_ok() =>
+            {
+                Some(Ball {
+                    center,
+                    radius,
+                    material: o.material.unwrap_or(inherited),
+                    object,
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// Records what [`Builder::object`] would about `o`, in the same order, but keeps nothing:
+    /// a single shape is checked, not made into a primitive (its bounds, inverse transform)
+    /// only to be dropped, as `rtc check` of a million spheres did.
+    pub fn check(&mut self, o: &Object, inherited: MaterialId) {
+        if matches!(o.shape, Shape::Mesh { .. } | Shape::Csg { .. }) {
+            drop(self.object(o, inherited));
+            return;
+        }
+        if !self.invertible(o) {
+            return;
+        }
+        if let Err(flaw) = shape::check(&o.shape) {
+            self.diagnostics.push(flaw.diagnostic(o.span));
+        }
+    }
+
+    /// Whether `o`'s transform can be inverted; if not, the error is recorded.
+    fn invertible(&mut self, o: &Object) -> bool {
+        let t = &o.transform;
+        // The identity (most objects of large scenes) passes the test below; skip its roots.
+        if *t == glam::DAffine3::IDENTITY {
+            return true;
+        }
         let det = t.matrix3.determinant();
         let scale = t
             .matrix3
@@ -102,13 +157,9 @@ impl Builder {
                 "this object is flattened to zero thickness (or has a non-finite transform)",
                 "give every scale factor a non-zero value",
             );
-            return None;
+            return false;
         }
-        let geom = self.geom(o, material)?;
-        Some(match o.motion.as_deref() {
-            Some(m) => Primitive::moving(geom, *t, *m, material),
-            None => Primitive::new(geom, *t, material),
-        })
+        true
     }
 
     fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {

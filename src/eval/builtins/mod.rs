@@ -79,6 +79,13 @@ fn slot_of(names: &[&str], sym: Sym) -> Option<usize> {
     names.iter().position(|x| *x == text)
 }
 
+impl Drop for Params {
+    /// The argument vector is kept for the next call's arguments.
+    fn drop(&mut self) {
+        super::call::recycle_args(std::mem::take(&mut self.args));
+    }
+}
+
 impl Params {
     /// Matches `args` to the parameter `names`: positional first, then named; a single record
     /// argument (`f { a: 1 }`) supplies named arguments.
