@@ -247,7 +247,7 @@ impl<'a> Whitted<'a> {
             match refract(ray.dir, facing, n1, after.current()) {
                 Some(dir) if self.significant(path.bounce(after, kt), ctx) => {
                     let out = Outgoing {
-                        from: spawn.ray(dir).origin,
+                        from: spawn.origin_towards(dir),
                         dir,
                         side: -facing,
                         refracted: true,
@@ -275,7 +275,7 @@ impl<'a> Whitted<'a> {
             if self.significant(path.bounce(media, kr), ctx) {
                 let dir = reflect(ray.dir, facing);
                 let out = Outgoing {
-                    from: spawn.ray(dir).origin,
+                    from: spawn.origin_towards(dir),
                     dir,
                     side: facing,
                     refracted: false,
