@@ -68,7 +68,7 @@ impl SpawnPoint {
     /// A ray from the surface towards `target` (a light sample), re-aimed from its offset
     /// origin, with the parameter where it must stop short of the target; `None` when the
     /// target is the origin itself.
-    #[inline]
+    #[inline(always)]
     pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
         let origin = self.origin_towards(target - self.point);
         let d = target - origin;
