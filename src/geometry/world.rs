@@ -249,7 +249,10 @@ impl World {
             .fold(nodes, Aabb::union)
     }
 
-    /// The nearest hit in (t_min, t_max).
+    /// The nearest hit in (t_min, t_max). Inlined: a caller reading the 176-byte hit back
+    /// from memory right after this function stored it field by field stalled on store
+    /// forwarding (~10% of the Whitted recursion's time on scene A).
+    #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<SurfaceHit> {
         let mut best: Option<(GeoHit, u32)> = None;
         let mut far = t_max;

@@ -33,6 +33,7 @@ const SHADOW_ROUNDING_STEPS: u32 = 1024;
 
 impl SpawnPoint {
     /// Where rays leave the surface of `hit`.
+    #[inline]
     pub fn of(hit: &SurfaceHit) -> SpawnPoint {
         SpawnPoint {
             point: hit.surface_point,
@@ -42,7 +43,9 @@ impl SpawnPoint {
     }
 
     /// The origin of a ray leaving along `dir`: outside the error box on `dir`'s side, rounded
-    /// away from the surface.
+    /// away from the surface. Inlined: called out of line, its vector loads of `dir` and of the
+    /// point just stored by the caller stalled on store forwarding (~6% of scene A's time).
+    #[inline(always)]
     pub fn origin_towards(&self, dir: DVec3) -> DVec3 {
         let n = if dir.dot(self.normal) < 0.0 {
             -self.normal
@@ -50,20 +53,14 @@ impl SpawnPoint {
             self.normal
         };
         let d = n.abs().dot(self.error);
-        let mut o = self.point + d * n;
+        let o = self.point + d * n;
         // Rounded away from the surface (by the normal's signs, so a point known exactly still
         // leaves its surface by one step).
-        for i in 0..3 {
-            if n[i] > 0.0 {
-                o[i] = o[i].next_up();
-            } else if n[i] < 0.0 {
-                o[i] = o[i].next_down();
-            }
-        }
-        o
+        DVec3::new(away(o.x, n.x), away(o.y, n.y), away(o.z, n.z))
     }
 
     /// A ray leaving the surface along unit `dir` (reflection, refraction).
+    #[inline]
     pub fn ray(&self, dir: DVec3) -> crate::geometry::Ray {
         crate::geometry::Ray::new(self.origin_towards(dir), dir)
     }
@@ -71,6 +68,7 @@ impl SpawnPoint {
     /// A ray from the surface towards `target` (a light sample), re-aimed from its offset
     /// origin, with the parameter where it must stop short of the target; `None` when the
     /// target is the origin itself.
+    #[inline(always)]
     pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
         let origin = self.origin_towards(target - self.point);
         let d = target - origin;
@@ -82,6 +80,38 @@ impl SpawnPoint {
             crate::geometry::Ray::new(origin, d / dist),
             dist - shadow_margin(origin, target, dist),
         ))
+    }
+}
+
+/// `x.next_up()` when `s > 0`, `x.next_down()` when `s < 0`, else `x`, bit for bit; without a
+/// branch on either sign for finite non-zero `x`. Why: the signs of a hit's normal are random
+/// from one ray to the next, and the mispredicted branches of the plain `if`s made
+/// `origin_towards` ~9% of scene A's time.
+#[inline(always)]
+fn away(x: f64, s: f64) -> f64 {
+    let a = x.abs();
+    if !(a > 0.0 && a < f64::INFINITY) {
+        return away_rare(x, s);
+    }
+    // +1 towards +∞, −1 towards −∞, 0 to stay (NaN compares false both ways).
+    let dir = i64::from(s > 0.0) - i64::from(s < 0.0);
+    // A finite non-zero float's neighbour towards +∞ is one more bit pattern when it is
+    // positive and one less when it is negative (past f64::MAX it is ∞, as next_up gives).
+    let sign = 1 - 2 * (x.to_bits() >> 63) as i64;
+    f64::from_bits(x.to_bits().wrapping_add((dir * sign) as u64))
+}
+
+/// [`away`] of zeros, infinities and NaN, as the standard library steps them (out of line, so
+/// the common case stays small enough to inline).
+#[cold]
+#[inline(never)]
+fn away_rare(x: f64, s: f64) -> f64 {
+    if s > 0.0 {
+        x.next_up()
+    } else if s < 0.0 {
+        x.next_down()
+    } else {
+        x
     }
 }
 
@@ -118,6 +148,41 @@ mod tests {
         let s = at(DVec3::new(0.5, 1.0, 0.0), 0.0, DVec3::Y);
         assert_eq!(s.origin_towards(DVec3::Y).y, 1.0f64.next_up());
         assert_eq!(s.origin_towards(-DVec3::Y).y, 1.0f64.next_down());
+    }
+
+    #[test]
+    fn away_steps_exactly_as_next_up_and_next_down() {
+        let xs = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            1e-310,
+            -1e-310,
+            f64::from_bits(1),
+            -f64::from_bits(1),
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            123.456,
+            -7.0e200,
+        ];
+        for x in xs {
+            for s in [1.0, 0.5, -2.0, -1e-300, 0.0, -0.0, f64::NAN] {
+                let want = if s > 0.0 {
+                    x.next_up()
+                } else if s < 0.0 {
+                    x.next_down()
+                } else {
+                    x
+                };
+                assert_eq!(away(x, s).to_bits(), want.to_bits(), "{x:e} towards {s}");
+            }
+        }
     }
 
     #[test]

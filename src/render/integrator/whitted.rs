@@ -192,22 +192,25 @@ impl<'a> Whitted<'a> {
 
     fn shade_hit<R: Recorder>(&self, ray: &Ray, path: Path, ctx: &mut Ctx, rec: &mut R) -> Color {
         let scene = self.scene;
-        let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) else {
+        // Borrowed where the world wrote it: moving the 176-byte hit out of its `Option` was a
+        // `memcpy` per camera ray (5% of scene A's time).
+        let found = scene.world().intersect(ray, 0.0, f64::INFINITY);
+        let Some(hit) = &found else {
             return self.background;
         };
         if R::ON {
-            rec.hit(&hit);
+            rec.hit(hit);
         }
         let mat = scene.material(hit.material);
         let inside = hit.normal.dot(ray.dir) > 0.0;
         let facing = if inside { -hit.normal } else { hit.normal };
-        let spawn = SpawnPoint::of(&hit);
+        let spawn = SpawnPoint::of(hit);
         let s = Surface {
             p: hit.point,
             spawn,
-            n: self.bumped(&hit, facing, mat),
+            n: self.bumped(hit, facing, mat),
             v: -ray.dir,
-            color: self.base_color(&hit, mat),
+            color: self.base_color(hit, mat),
             mat,
             uv: hit.uv,
             depth: path.depth,
@@ -244,7 +247,7 @@ impl<'a> Whitted<'a> {
             match refract(ray.dir, facing, n1, after.current()) {
                 Some(dir) if self.significant(path.bounce(after, kt), ctx) => {
                     let out = Outgoing {
-                        from: spawn.ray(dir).origin,
+                        from: spawn.origin_towards(dir),
                         dir,
                         side: -facing,
                         refracted: true,
@@ -272,7 +275,7 @@ impl<'a> Whitted<'a> {
             if self.significant(path.bounce(media, kr), ctx) {
                 let dir = reflect(ray.dir, facing);
                 let out = Outgoing {
-                    from: spawn.ray(dir).origin,
+                    from: spawn.origin_towards(dir),
                     dir,
                     side: facing,
                     refracted: false,
