@@ -8,6 +8,9 @@ use rtc::compat::{load_in_source, load_yaml_source};
 use rtc::ir::Loaded;
 use rtc::source::SourceMap;
 
+mod fuzz_support;
+use fuzz_support::splice;
+
 const RT1: &str = include_str!("data/course/in/rt1.in");
 const SCENE01: &str = include_str!("data/course/yaml/scene01.yaml");
 const TEXTURE: &str =
@@ -22,19 +25,6 @@ fn spans_in_bounds(loaded: &Loaded, text: &str) {
         // A scene comes back exactly when there is no error.
     }
     assert_eq!(loaded.scene.is_some(), !loaded.diagnostics.has_errors());
-}
-
-/// Replaces `len` bytes at `at` (rounded to char boundaries) with `with`.
-fn splice(base: &str, at: usize, len: usize, with: &str) -> String {
-    let mut a = at.min(base.len());
-    while !base.is_char_boundary(a) {
-        a -= 1;
-    }
-    let mut b = (a + len).min(base.len());
-    while !base.is_char_boundary(b) {
-        b -= 1;
-    }
-    format!("{}{}{}", &base[..a], with, &base[b..])
 }
 
 const PIECES: &str = r#"(?s)[ \t\r\n#:\-\[\]{}()<>,.0-9eE+a-zA-Z"'&*!|>%@`~]{0,12}"#;

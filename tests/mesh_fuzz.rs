@@ -12,6 +12,9 @@ use proptest::prelude::*;
 use rtc::assets::MeshAsset;
 use rtc::geometry::Ray;
 
+mod fuzz_support;
+use fuzz_support::splice;
+
 const CUBE: &str = include_str!("data/course/models/cube.obj");
 const DUCK_MTL: &str = include_str!("data/course/models/devilduk.mtl");
 
@@ -20,19 +23,6 @@ fn scratch() -> PathBuf {
     let dir = std::env::temp_dir().join(format!("rtc-mesh-fuzz-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("create a temporary directory");
     dir
-}
-
-/// Replaces `len` bytes at `at` (rounded to char boundaries) with `with`.
-fn splice(base: &str, at: usize, len: usize, with: &str) -> String {
-    let mut a = at.min(base.len());
-    while !base.is_char_boundary(a) {
-        a -= 1;
-    }
-    let mut b = (a + len).min(base.len());
-    while !base.is_char_boundary(b) {
-        b -= 1;
-    }
-    format!("{}{}{}", &base[..a], with, &base[b..])
 }
 
 /// Writes `obj` (after an `mtllib` line naming `mtl`) and loads it; `case` names the files, one

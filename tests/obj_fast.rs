@@ -9,6 +9,9 @@ use proptest::prelude::*;
 use rtc::assets::MeshAsset;
 use rtc::assets::obj_fast::{ObjData, read_in_chunks};
 
+mod fuzz_support;
+use fuzz_support::splice;
+
 /// What a loaded mesh is to everything after loading, with floats as bits.
 #[derive(Debug, PartialEq)]
 struct Seen {
@@ -192,19 +195,6 @@ fn the_data_does_not_depend_on_chunks_or_threads() {
             }
         }
     }
-}
-
-/// Replaces `len` bytes at `at` (rounded to char boundaries) with `with`.
-fn splice(base: &str, at: usize, len: usize, with: &str) -> String {
-    let mut a = at.min(base.len());
-    while !base.is_char_boundary(a) {
-        a -= 1;
-    }
-    let mut b = (a + len).min(base.len());
-    while !base.is_char_boundary(b) {
-        b -= 1;
-    }
-    format!("{}{}{}", &base[..a], with, &base[b..])
 }
 
 const CUBE: &str = include_str!("data/course/models/cube.obj");
