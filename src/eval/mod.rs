@@ -1,6 +1,7 @@
 //! Evaluation of `.rtc` files to the IR: names, types, loops, functions, modules, budgets.
 
 pub(crate) mod assets;
+pub(crate) mod blocks;
 pub(crate) mod bounds;
 pub(crate) mod builtins;
 pub(crate) mod call;

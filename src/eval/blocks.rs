@@ -1,0 +1,258 @@
+//! Blocks and `for` loops: scopes of local bindings, loop headers with their filters, and the
+//! iteration budget (the statement side of the interpreter; expressions are in `interp.rs`).
+
+use std::rc::Rc;
+
+use crate::diag::Diagnostic;
+use crate::source::Span;
+use crate::syntax::ast::*;
+
+use super::error::{R, error};
+use super::interp::Interp;
+use super::value::{Closure, Value};
+
+impl Interp<'_> {
+    /// Evaluates a block in a new scope; its value is its last expression (`Unit` if none).
+    pub fn block(&mut self, b: &Block) -> R<Value> {
+        let mark = self.locals.len();
+        let r = self.block_inner(b, mark);
+        self.locals.truncate(mark);
+        r
+    }
+
+    fn block_inner(&mut self, b: &Block, mark: usize) -> R<Value> {
+        let mut last = Value::Unit;
+        let n = b.stmts.len();
+        for (i, st) in b.stmts.iter().enumerate() {
+            match st {
+                Stmt::Let(l) => {
+                    if l.param {
+                        return Err(super::params::misplaced(l).into());
+                    }
+                    let v = self.eval(&l.value)?;
+                    let v = match &l.ty {
+                        Some(t) => super::types::check_ann(self, t, v, l.value.span)?,
+                        None => v,
+                    };
+                    self.bind_local(l.name, v, mark)?;
+                }
+                Stmt::Fn(def) => {
+                    let c = Closure {
+                        def: def.clone(),
+                        captured: self.locals[self.frame_base..].to_vec(),
+                        module: self.scope.clone(),
+                    };
+                    self.bind_local(def.name, Value::Fn(Rc::new(c)), mark)?;
+                }
+                Stmt::Import(im) => {
+                    return Err(error(
+                        "rtc::module::import_position",
+                        im.span,
+                        "`import` inside a block",
+                    )
+                    .with_label("imports belong at the top of a file")
+                    .with_help("move this `import` to the top level of the file")
+                    .into());
+                }
+                Stmt::Expr(e) => {
+                    let v = self.eval(e)?;
+                    if i + 1 == n {
+                        last = v;
+                    } else if !matches!(v, Value::Unit) {
+                        return Err(error("rtc::value::discarded", e.span, "this value is discarded")
+                            .with_label(format!("{} that goes nowhere", super::value::a_type(v.type_name())))
+                            .with_help("only the last expression of a block is its value; collect several values in a list `[a, b]`")
+                            .into());
+                    }
+                }
+            }
+        }
+        Ok(last)
+    }
+
+    fn bind_local(&mut self, name: Name, v: Value, mark: usize) -> R<()> {
+        if self.locals[mark..].iter().any(|(k, _)| *k == name.sym) {
+            return Err(error(
+                "rtc::name::duplicate",
+                name.span,
+                format!("`{}` is already defined in this block", name.sym),
+            )
+            .with_label("second definition")
+            .with_help(format!(
+                "choose another name, or remove the earlier `let {}`",
+                name.sym
+            ))
+            .into());
+        }
+        let outer = self.locals[self.frame_base..mark]
+            .iter()
+            .any(|(k, _)| *k == name.sym)
+            || self.scope.items.borrow().contains_key(&name.sym);
+        if outer && !name.sym.as_str().starts_with('_') {
+            self.warn(
+                Diagnostic::warning(
+                    "rtc::name::shadowed",
+                    name.span,
+                    format!("`{}` shadows an outer binding", name.sym),
+                )
+                .with_label("this hides the outer value in this block")
+                .with_help(format!(
+                    "rename it, or write `_{}` if the shadowing is intended",
+                    name.sym
+                )),
+            );
+        }
+        self.locals.push((name.sym, v));
+        Ok(())
+    }
+
+    pub(super) fn for_level(
+        &mut self,
+        gens: &[Generator],
+        level: usize,
+        filter: Option<&Expr>,
+        body: &Block,
+        span: Span,
+        out: &mut Sink,
+    ) -> R<()> {
+        if level == gens.len() {
+            let saved = self
+                .prov
+                .is_some()
+                .then(|| self.enter_iteration(gens.len(), span));
+            let r = self.for_body(filter, body, out, span);
+            if let (Some(p), Some(s)) = (&mut self.prov, saved) {
+                p.leave(s);
+            }
+            return r.map_err(|e| {
+                let vars = &self.locals[self.locals.len() - gens.len()..];
+                let desc: Vec<String> = vars
+                    .iter()
+                    .map(|(k, v)| format!("{k} = {}", v.show()))
+                    .collect();
+                e.frame(span, || {
+                    format!("in iteration {} of this `for`", desc.join(", "))
+                })
+            });
+        }
+        let g = &gens[level];
+        let it = self.eval(&g.iter)?;
+        let step = |me: &mut Self, v: Value, out: &mut Sink| -> R<()> {
+            me.loop_iters += 1;
+            if me.loop_iters > me.opts.max_loop_iterations {
+                return Err(error("rtc::budget::loop", span, "loop budget exhausted")
+                    .with_label(format!(
+                        "the scene's loops ran more than {} iterations in total",
+                        me.opts.max_loop_iterations
+                    ))
+                    .with_help("reduce the ranges of the loops")
+                    .into());
+            }
+            me.locals.push((g.var.sym, v));
+            let r = me.for_level(gens, level + 1, filter, body, span, out);
+            me.locals.pop();
+            r
+        };
+        match it {
+            Value::Range(r) => {
+                for i in 0..r.len() {
+                    step(self, r.get(i), out)?;
+                }
+            }
+            Value::List(l) => {
+                for v in l.iter() {
+                    step(self, v.clone(), out)?;
+                }
+            }
+            Value::Vec3(v) => {
+                for x in v.to_array() {
+                    step(self, Value::Float(x), out)?;
+                }
+            }
+            other => {
+                let d = error(
+                    "rtc::type::mismatch",
+                    g.iter.span,
+                    format!(
+                        "cannot loop over {}",
+                        super::value::a_type(other.type_name())
+                    ),
+                )
+                .with_label("not a range or a list");
+                let d = if matches!(other, Value::Int(_)) {
+                    d.with_help(format!("write a range: `0..{}`", self.snippet(g.iter.span)))
+                } else {
+                    d.with_help("loop over a range such as `0..5` or a list")
+                };
+                return Err(d.into());
+            }
+        }
+        Ok(())
+    }
+
+    /// Enters the provenance step of the current iteration of the `for` at `header` (its
+    /// variables are the last `vars` locals).
+    #[cold]
+    #[inline(never)]
+    fn enter_iteration(&mut self, vars: usize, header: Span) -> u32 {
+        let bindings = self.locals[self.locals.len() - vars..]
+            .iter()
+            .map(|(k, v)| format!("{k} = {}", v.show()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let kind = crate::ir::provenance::StepKind::Iteration {
+            at: header,
+            bindings,
+        };
+        self.prov.as_mut().map_or(0, |p| p.enter(kind))
+    }
+
+    fn for_body(
+        &mut self,
+        filter: Option<&Expr>,
+        body: &Block,
+        out: &mut Sink,
+        span: Span,
+    ) -> R<()> {
+        if let Some(f) = filter {
+            match self.eval(f)? {
+                Value::Bool(true) => {}
+                Value::Bool(false) => return Ok(()),
+                other => return Err(super::types::mismatch(self, "Bool", &other, f.span).into()),
+            }
+        }
+        let v = self.block(body)?;
+        if matches!(v, Value::Unit) {
+            return Ok(());
+        }
+        match out {
+            Sink::List(list) => {
+                list.push(v);
+                self.check_list_len(list.len(), span)?;
+            }
+            Sink::Emit(lowerer, stmt) => lowerer.emit(&v, self.opts.max_objects, *stmt)?,
+        }
+        Ok(())
+    }
+
+    /// Evaluates a top-level `for` statement of a scene file, emitting each element as it is
+    /// made instead of building the whole list first (a million objects never coexist as values).
+    pub fn emit_for(&mut self, e: &Expr, lowerer: &mut super::lower::Lowerer) -> R<bool> {
+        let ExprKind::For(gens, filter, body) = &e.kind else {
+            return Ok(false);
+        };
+        let header = self.header_span(e.span, body.span);
+        lowerer.reserve_for(gens, filter.as_deref(), self.opts.max_objects);
+        let mut sink = Sink::Emit(lowerer, e.span);
+        self.for_level(gens, 0, filter.as_deref(), body, header, &mut sink)?;
+        Ok(true)
+    }
+}
+
+/// Where the elements of a `for` go.
+pub enum Sink<'a> {
+    /// Collected into a list value.
+    List(&'a mut Vec<Value>),
+    /// Emitted straight into the scene (top-level loops), with the statement's span.
+    Emit(&'a mut super::lower::Lowerer, Span),
+}
