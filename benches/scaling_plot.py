@@ -71,13 +71,22 @@ svg(os.path.join(dst, "scaling-resolution.svg"), "10⁵ spheres: tracing time ag
                ("∝ pixels", "#1f77b4", [(r[0], t0 * r[0] / p0) for r in res], True)],
     "seconds")
 print()
-print("| spheres | first ray s | tracing s | rays | ns/ray | ns/ray ÷ log N prediction | peak MiB | B/sphere above 10³ |")
-print("|---|---|---|---|---|---|---|---|")
-for r in obj:
-    n, first, render, rss, rays = r
-    pred = r0 * math.log(n) / math.log(n0)
-    per = f"{(rss - obj[0][3]) * 1048576 / (n - n0):.0f}" if n > n0 else "—"
-    print(f"| {int(n)} | {first:.3f} | {render:.3f} | {rays} | {ns(r):.0f} | {ns(r) / pred:.2f} | {rss:.0f} | {per} |")
+
+
+def count_table(rows, what, unit, first):
+    """Prints time and memory against the count of `what` (objects or triangles), with the
+    ns/ray a log N growth from the first row predicts and the bytes each one above it adds."""
+    n0, ns0, rss0 = rows[0][0], ns(rows[0]), rows[0][3]
+    print(f"| {what} | first ray s | tracing s | rays | ns/ray | ns/ray ÷ log N prediction | peak MiB | B/{unit} above {first} |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        n, first, render, rss, rays = r
+        pred = ns0 * math.log(n) / math.log(n0)
+        per = f"{(rss - rss0) * 1048576 / (n - n0):.0f}" if n > n0 else "—"
+        print(f"| {int(n)} | {first:.3f} | {render:.3f} | {rays} | {ns(r):.0f} | {ns(r) / pred:.2f} | {rss:.0f} | {per} |")
+
+
+count_table(obj, "spheres", "sphere", "10³")
 print()
 print("| pixels | tracing s | per Mpixel s |")
 print("|---|---|---|")
@@ -95,10 +104,4 @@ if os.path.exists(meshes_file) and os.path.getsize(meshes_file) > 0:
                       ("peak MiB", "#2ca02c", [(r[0], r[3]) for r in mesh], False)],
         "ns per ray, ms, MiB")
     print()
-    print("| triangles | first ray s | tracing s | rays | ns/ray | ns/ray ÷ log N prediction | peak MiB | B/triangle above 10⁴ |")
-    print("|---|---|---|---|---|---|---|---|")
-    for r in mesh:
-        n, first, render, rss, rays = r
-        pred = q0 * math.log(n) / math.log(m0)
-        per = f"{(rss - mesh[0][3]) * 1048576 / (n - m0):.0f}" if n > m0 else "—"
-        print(f"| {int(n)} | {first:.3f} | {render:.3f} | {rays} | {ns(r):.0f} | {ns(r) / pred:.2f} | {rss:.0f} | {per} |")
+    count_table(mesh, "triangles", "triangle", "10⁴")

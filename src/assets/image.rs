@@ -186,22 +186,30 @@ mod tests {
     /// data window (1,056,964,608×2) made the decoder allocate gigabytes.
     #[test]
     fn an_exr_data_window_counts_against_the_budget() {
-        let dir = std::env::temp_dir().join(format!("rtc-exr-window-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("t.exr");
-        let input = std::fs::read(
-            Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/found/texture-3-exr-data-window"),
-        )
-        .unwrap();
-        // The fuzz input's first byte chose the extension (3: exr); the file is the rest.
-        std::fs::write(&path, &input[1..]).unwrap();
-        let e = Picture::load(&path).unwrap_err();
+        let e = load_found_exr("texture-3-exr-data-window");
         assert!(e.too_large, "{e:?}");
         assert!(
             e.message.contains("data window has 2113929216 pixels"),
             "{e:?}"
         );
+    }
+
+    /// Loads the EXR of the texture fuzzer's input `fuzz/found/NAME` (its first byte chose the
+    /// extension, 3: exr; the file is the rest), which must fail.
+    fn load_found_exr(name: &str) -> ImageError {
+        let dir = std::env::temp_dir().join(format!("rtc-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("t.exr");
+        let input = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("fuzz/found")
+                .join(name),
+        )
+        .unwrap();
+        std::fs::write(&path, &input[1..]).unwrap();
+        let e = Picture::load(&path).unwrap_err();
         std::fs::remove_dir_all(&dir).unwrap();
+        e
     }
 
     /// Found by the texture fuzzer: a B44A block whose values wrap (as OpenEXR's unsigned
@@ -209,19 +217,9 @@ mod tests {
     /// built without them (Cargo.toml), so the file fails as a malformed texture.
     #[test]
     fn a_b44_exr_with_wrapping_blocks_is_an_error_not_a_panic() {
-        let dir = std::env::temp_dir().join(format!("rtc-exr-b44-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("t.exr");
-        let input = std::fs::read(
-            Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/found/texture-4-exr-b44-overflow"),
-        )
-        .unwrap();
-        // The fuzz input's first byte chose the extension (3: exr); the file is the rest.
-        std::fs::write(&path, &input[1..]).unwrap();
-        let e = Picture::load(&path).unwrap_err();
+        let e = load_found_exr("texture-4-exr-b44-overflow");
         assert!(!e.missing && !e.too_large, "{e:?}");
         assert!(e.message.contains("B44A"), "{e:?}");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

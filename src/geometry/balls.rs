@@ -174,13 +174,7 @@ mod tests {
     /// frame; with a BVH (30 spheres) and without one (5 spheres).
     #[test]
     fn balls_hit_exactly_like_the_primitives_they_replace() {
-        let mut seed = 17u64;
-        let mut rnd = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64) / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::geometry::test_uniform(17);
         for count in [5, 30] {
             let prims: Vec<Primitive> = (0..count)
                 .map(|i| {

@@ -170,13 +170,7 @@ mod tests {
     /// scalar code singles out (tangents at the origin, rays from inside, degenerate rays).
     #[test]
     fn lanes_find_what_the_scalar_test_finds() {
-        let mut seed = 5u64;
-        let mut rnd = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64) / (1u64 << 53) as f64
-        };
+        let mut rnd = crate::geometry::test_uniform(5);
         for count in [1usize, 3, 4, 6, 9] {
             let spheres: Vec<(DVec3, f64)> = (0..count)
                 .map(|_| (DVec3::new(rnd(), rnd(), rnd()) * 8.0 - 4.0, 0.3 + rnd()))

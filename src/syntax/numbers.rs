@@ -174,17 +174,22 @@ pub fn component(plain: &ExprKind) -> f64 {
 mod tests {
     use super::*;
 
-    /// The fast path gives `str::parse`'s bits (the reference) wherever it answers, on
-    /// generated decimals of every length and on the edges of its range.
-    #[test]
-    fn exact_decimals_match_the_standard_parser() {
-        let mut seed = 7u64;
-        let mut next = move || {
+    /// A seeded 64-bit LCG's top 53 bits: reproducible generated digits.
+    fn lcg(seed: u64) -> impl FnMut() -> u64 {
+        let mut seed = seed;
+        move || {
             seed = seed
                 .wrapping_mul(6364136223846793005)
                 .wrapping_add(1442695040888963407);
             seed >> 11
-        };
+        }
+    }
+
+    /// The fast path gives `str::parse`'s bits (the reference) wherever it answers, on
+    /// generated decimals of every length and on the edges of its range.
+    #[test]
+    fn exact_decimals_match_the_standard_parser() {
+        let mut next = lcg(7);
         let mut texts: Vec<String> = [
             "0.0",
             "-0.0",
@@ -211,7 +216,7 @@ mod tests {
             let frac: String = (0..frac_digits)
                 .map(|_| char::from(b'0' + (next() % 10) as u8))
                 .collect();
-            let sign = if next() % 2 == 0 { "-" } else { "" };
+            let sign = if next().is_multiple_of(2) { "-" } else { "" };
             texts.push(format!("{sign}{int}.{frac}"));
         }
         let mut answered = 0;
@@ -235,13 +240,7 @@ mod tests {
     /// 18 digits with every position of the point, halfway cases included.
     #[test]
     fn long_division_matches_the_standard_parser() {
-        let mut seed = 11u64;
-        let mut next = move || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            seed >> 11
-        };
+        let mut next = lcg(11);
         let mut texts = vec![
             "0.15000000000000002".to_string(),
             "1.2000000000000002".to_string(),

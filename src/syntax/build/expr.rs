@@ -263,7 +263,9 @@ impl Builder {
         );
     }
 
-    fn arg(&self, p: P) -> Arg {
+    /// The optional name and the value of an argument or a record field (`name: value`; a
+    /// `=` slipped in for `:` is reported).
+    fn named_value(&self, p: P) -> (Option<Name>, Option<Expr>) {
         let mut name = None;
         let mut value = None;
         for q in p.into_inner() {
@@ -273,6 +275,11 @@ impl Builder {
                 _ => value = Some(self.expr(q)),
             }
         }
+        (name, value)
+    }
+
+    fn arg(&self, p: P) -> Arg {
+        let (name, value) = self.named_value(p);
         Arg {
             name,
             value: value.expect("grammar: argument value"),
@@ -280,23 +287,16 @@ impl Builder {
     }
 
     fn fields(&self, record: P) -> Vec<Field> {
-        let mut out = Vec::new();
-        for f in record.into_inner() {
-            let mut name = None;
-            let mut value = None;
-            for q in f.into_inner() {
-                match q.as_rule() {
-                    Rule::ident => name = Some(self.name(&q)),
-                    Rule::eq_slip => self.eq_slip(&q),
-                    _ => value = Some(self.expr(q)),
+        record
+            .into_inner()
+            .map(|f| {
+                let (name, value) = self.named_value(f);
+                Field {
+                    name: name.expect("grammar: field name"),
+                    value: value.expect("grammar: field value"),
                 }
-            }
-            out.push(Field {
-                name: name.expect("grammar: field name"),
-                value: value.expect("grammar: field value"),
-            });
-        }
-        out
+            })
+            .collect()
     }
 
     fn number_error(&self, p: &P, message: &str, help: String) {
