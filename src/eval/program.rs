@@ -66,8 +66,9 @@ impl Interp<'_> {
             }
         }
         // A generated file's statements are read one at a time here, each dropped after use.
-        for st in file.stmts() {
-            match &*st {
+        let mut stmts = file.stmts();
+        while let Some(st) = stmts.next_ref() {
+            match st {
                 Stmt::Fn(_) => {}
                 Stmt::Import(im) => {
                     if let Err(e) = self.import(im) {

@@ -17,9 +17,9 @@ pub struct Name {
 /// A parsed file: its header and statements, borrowing the text it was parsed from.
 ///
 /// The statements the fast path read (one-line calls, names, numbers, `let`: most of a
-/// generated file) are kept as the offset of their line and read again each time they are
-/// visited ([`File::stmts`]), so the AST of a file of 100 000 sphere lines is never whole in
-/// memory (it was ~600 bytes a line); the statements pest read are kept built.
+/// generated file) are kept as the steps reading found (a tape, ~110 bytes a sphere line) and built
+/// each time they are visited ([`File::stmts`]), so the AST of a file of 100 000 sphere lines
+/// is never whole in memory (it was ~600 bytes a line); the statements pest read are kept built.
 #[derive(Clone)]
 pub struct File<'t> {
     /// The `rtc N` version as written (`1`, `1.1`), if the header was present.
@@ -28,7 +28,9 @@ pub struct File<'t> {
     pub(super) items: Vec<Item>,
     /// The statements pest read, which `Item::Built` indexes.
     pub(super) built: Vec<Stmt>,
-    /// The file's id and text, to read the `Item::Line` statements again.
+    /// What the fast path read, which `Item::Line` indexes.
+    pub(super) tapes: Vec<super::fast::Tape>,
+    /// The file's id and text (for the names of `Item::Line` statements).
     pub(super) file: FileId,
     pub(super) text: &'t str,
 }
@@ -38,8 +40,13 @@ pub struct File<'t> {
 pub(super) enum Item {
     /// The statement `File::built[i]`.
     Built(u32),
-    /// A statement the fast path read from the line at this byte offset.
-    Line(u32),
+    /// A statement the fast path read: written on `tapes[tape]` at `at`.
+    Line {
+        /// Which tape.
+        tape: u32,
+        /// Where on it.
+        at: super::fast::Mark,
+    },
 }
 
 /// A statement.

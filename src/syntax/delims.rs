@@ -6,6 +6,7 @@ use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
 
 /// What the scan learned.
+#[derive(Debug, PartialEq)]
 pub struct Scan {
     /// Delimiter and string errors (at most one: later ones usually cascade).
     pub errors: Vec<Diagnostic>,
@@ -36,15 +37,68 @@ const SPECIAL: [bool; 256] = {
     t
 };
 
+/// Texts from this size on are scanned in parts on every core.
+const PARALLEL_BYTES: usize = 1 << 20;
+
 /// Scans `text` for delimiter balance.
 pub fn scan(file: FileId, text: &str) -> Scan {
-    let b = text.as_bytes();
+    if text.len() < PARALLEL_BYTES {
+        return scan_range(file, text, 0, text.len());
+    }
+    scan_in_parts(file, text, PARALLEL_BYTES / 4)
+}
+
+/// [`scan`] of parts of about `part` bytes, cut after newlines, on every core. Each part is
+/// scanned as if it started at depth zero outside any comment; that holds when every part
+/// ends at depth zero without an error (as in a file of one-line statements), and then the
+/// parts' findings, in order, are the whole scan's. Otherwise the text is scanned whole.
+fn scan_in_parts(file: FileId, text: &str, part: usize) -> Scan {
+    use rayon::prelude::*;
+    let mut cuts = vec![0];
+    while let Some(&last) = cuts.last() {
+        let want = last + part;
+        if want >= text.len() {
+            break;
+        }
+        match memchr::memchr(b'\n', &text.as_bytes()[want..]) {
+            Some(nl) if want + nl + 1 < text.len() => cuts.push(want + nl + 1),
+            _ => break,
+        }
+    }
+    cuts.push(text.len());
+    let parts: Vec<Scan> = cuts
+        .par_windows(2)
+        .map(|w| scan_range(file, text, w[0], w[1]))
+        .collect();
+    // A part scanned whole ends at depth zero: an unclosed opener would be an error.
+    if parts.iter().any(|p| !p.errors.is_empty()) {
+        return scan_range(file, text, 0, text.len());
+    }
+    let mut whole = Scan {
+        errors: Vec::new(),
+        warnings: Vec::new(),
+        top_level_lines: Vec::with_capacity(parts.iter().map(|p| p.top_level_lines.len()).sum()),
+        max_depth: 0,
+    };
+    for (k, p) in parts.into_iter().enumerate() {
+        // A part's first line is the line the part before it ended with.
+        let skip = usize::from(k > 0);
+        whole.top_level_lines.extend(&p.top_level_lines[skip..]);
+        whole.warnings.extend(p.warnings);
+        whole.max_depth = whole.max_depth.max(p.max_depth);
+    }
+    whole
+}
+
+/// Scans `text[from..to]`, starting at depth zero outside any comment or string.
+fn scan_range(file: FileId, text: &str, from: usize, to: usize) -> Scan {
+    let b = &text.as_bytes()[..to];
     let mut stack: Vec<(u8, usize)> = Vec::new();
     let mut errors = Vec::new();
     let mut warnings = Vec::new();
-    let mut top_level_lines = vec![0];
+    let mut top_level_lines = vec![from];
     let mut max_depth = 0;
-    let mut i = 0;
+    let mut i = from;
     let sp = |s: usize, e: usize| Span::new(file, s, e);
     while i < b.len() {
         if !SPECIAL[b[i] as usize] {
@@ -264,5 +318,47 @@ mod tests {
         assert_eq!(d.code, "rtc::syntax::unclosed");
         let hint = d.labels[0].span;
         assert_eq!(&text[hint.start as usize..hint.end as usize], "\u{4d9}");
+    }
+
+    /// Scanning in parts gives the whole scan's findings, whatever the cut: where every part
+    /// ends at depth zero (one-line statements, comments, strings with brackets, `n // 2`)
+    /// and where one does not (a list over several lines, a block comment across a cut) or
+    /// the text has an error (then the whole text is scanned).
+    #[test]
+    fn a_scan_in_parts_finds_what_the_whole_scan_finds() {
+        let lines = [
+            "sphere(center: [1, 2, 3], radius: 0.5).material(m)\n",
+            "let n = 4 // 2\n",
+            "print(\"(( [{\")\n",
+            "// a comment (with [brackets]\n",
+            "\n",
+        ];
+        let mut plain = String::from("rtc 1\n");
+        for k in 0..200 {
+            plain.push_str(lines[k % lines.len()]);
+        }
+        let mut texts = vec![plain.clone()];
+        for odd in [
+            "let xs = [\n  1,\n  2\n]\n",
+            "/* a block comment\n over lines ( */\n",
+            "let bad = (1, 2]\n",
+            "let open = (1,\n",
+            "print(\"unterminated)\n",
+            "let stray = 1)\n",
+        ] {
+            let at = plain.len() / 2;
+            let at = plain[at..].find('\n').map_or(at, |p| at + p + 1);
+            texts.push(format!("{}{odd}{}", &plain[..at], &plain[at..]));
+        }
+        for text in &texts {
+            let whole = scan_range(FileId(0), text, 0, text.len());
+            for part in [1, 7, 64, 500] {
+                assert_eq!(
+                    scan_in_parts(FileId(0), text, part),
+                    whole,
+                    "parts of {part}"
+                );
+            }
+        }
     }
 }

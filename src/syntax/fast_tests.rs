@@ -38,6 +38,17 @@ fn assert_same(what: &str, text: &str) -> usize {
             context(&p)
         );
     }
+    // Visiting with `next_ref` (which builds into the previous statement's nodes) gives what
+    // the iterator (which builds each afresh) gives.
+    if let Some(file) = &fast.ast {
+        let mut reusing = file.stmts();
+        let mut built = Vec::new();
+        while let Some(st) = reusing.next_ref() {
+            built.push(format!("{st:#?}"));
+        }
+        let fresh: Vec<String> = file.stmts().map(|st| format!("{st:#?}")).collect();
+        assert_eq!(built, fresh, "{what}: building into reused nodes differs");
+    }
     fast.fast_statements
 }
 
@@ -403,7 +414,8 @@ mod fast_forms {
         ]
     }
 
-    fn operand() -> impl Strategy<Value = String> {
+    /// A name, number, negated number, vector or boolean.
+    pub fn leaf() -> BoxedStrategy<String> {
         let vec = prop::collection::vec((any::<bool>(), number()), 3).prop_map(|v| {
             let parts: Vec<String> = v
                 .iter()
@@ -417,14 +429,18 @@ mod fast_forms {
                 .collect();
             format!("[{}]", parts.join(", "))
         });
-        let leaf = prop_oneof![
+        prop_oneof![
             name().prop_map(str::to_owned),
             number(),
             number().prop_map(|n| format!("-{n}")),
             vec,
             prop::sample::select(vec!["true", "false"]).prop_map(str::to_owned),
-        ];
-        leaf.prop_recursive(3, 16, 3, |inner| {
+        ]
+        .boxed()
+    }
+
+    fn operand() -> impl Strategy<Value = String> {
+        leaf().prop_recursive(3, 16, 3, |inner| {
             prop_oneof![
                 (
                     name(),
@@ -456,6 +472,26 @@ mod fast_forms {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(500))]
+
+    /// Lines of a few shapes with leaves of every kind, so that most statements are built into
+    /// the nodes of the one before (`Stmts::next_ref`), and some cannot be (a negated number
+    /// where a plain one was, another shape).
+    #[test]
+    fn lines_of_one_shape_build_the_same_reusing_nodes(
+        lines in prop::collection::vec(
+            prop_oneof![
+                4 => (fast_forms::leaf(), fast_forms::leaf(), fast_forms::leaf()).prop_map(|(a, b, c)| {
+                    format!("sphere(center: {a}, radius: {b}).material({c})")
+                }),
+                1 => (fast_forms::leaf(), fast_forms::leaf()).prop_map(|(a, b)| format!("sphere({a}, r: {b})")),
+                1 => fast_forms::leaf().prop_map(|a| format!("let v = {a}")),
+            ],
+            1..12,
+        ),
+    ) {
+        let text = format!("rtc 1\n{}\n", lines.join("\n"));
+        prop_assert_eq!(assert_same("one shape", &text), lines.len());
+    }
 
     #[test]
     fn every_fast_form_skips_pest(lines in prop::collection::vec(fast_forms::line(), 1..10)) {

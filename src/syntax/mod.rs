@@ -89,11 +89,14 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
     let mut continuable = false;
     let mut fast_statements = 0;
     let (version, mut pos) = header(file, text, &mut diags);
-    let fast_ends = match path {
-        Path::FastFirst => fast_line_ends(file, text, &scan.top_level_lines, cutoff),
+    let (fast_ends, mut tapes) = match path {
+        Path::FastFirst => fast_line_ends(text, &scan.top_level_lines, cutoff),
         #[cfg(test)]
-        Path::PestOnly => vec![None; scan.top_level_lines.len()],
+        Path::PestOnly => (vec![None; scan.top_level_lines.len()], Vec::new()),
     };
+    // Lines read here (not at a top-level line start) go on a tape of their own, the last.
+    let own = tapes.len() as u32;
+    tapes.push(fast::Tape::default());
     // Statements start at top-level lines, in order: `line` follows `pos` through them.
     let mut line = 0;
     while pos < cutoff {
@@ -103,14 +106,16 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
         let fast_end = match scan.top_level_lines.get(line) {
             Some(&l) if l == pos => fast_ends[line],
             _ if path == Path::FastFirst => {
-                fast::line_end(file, text, pos, cutoff, &mut fast::Memo::default())
+                let tape = &mut tapes[own as usize];
+                let at = tape.mark();
+                fast::read(text, pos, cutoff, tape).map(|next| (next, own, at))
             }
             _ => None,
         };
-        // Simple one-line statements (most of a generated file) skip pest; see fast.rs.
-        if let Some(next) = fast_end {
-            // Only its place is kept: `File::stmts` reads it again when it is visited.
-            items.push(ast::Item::Line(pos as u32));
+        // Simple one-line statements (most of a generated file) skip pest; see fast/mod.rs.
+        if let Some((next, tape, at)) = fast_end {
+            // Only what reading found is kept: `File::stmts` builds it when it is visited.
+            items.push(ast::Item::Line { tape, at });
             continuable = true;
             fast_statements += 1;
             pos = next;
@@ -169,6 +174,7 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
         version,
         items,
         built: stmts,
+        tapes,
         file,
         text,
     };
@@ -182,26 +188,47 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
 /// Top-level lines from which reading fast is worth a thread of its own.
 const PARALLEL_LINES: usize = 4096;
 
-/// Where the fast path's statement ends for each top-level line start (`None` where pest must
-/// read it, or past `cutoff`). Its check pass is a pure function of the text and the position
-/// (it interns no names), so a large file's lines are read on every core, in chunks, and the
-/// answers do not depend on how they were cut.
-fn fast_line_ends(file: FileId, text: &str, lines: &[usize], cutoff: usize) -> Vec<Option<usize>> {
+/// A fast statement's line: the offset after it, and where it was written (tape, mark).
+type FastLine = Option<(usize, u32, fast::Mark)>;
+
+/// What the fast path reads at each top-level line start (`None` where pest must read it, or
+/// past `cutoff`), with the tapes it wrote. Reading is a pure function of the text and the
+/// position (it interns no names), so a large file's lines are read on every core, in chunks,
+/// each chunk writing a tape of its own; the answers do not depend on how they were cut.
+fn fast_line_ends(text: &str, lines: &[usize], cutoff: usize) -> (Vec<FastLine>, Vec<fast::Tape>) {
     use rayon::prelude::*;
-    let chunk_ends = |chunk: &[usize]| {
-        let mut memo = fast::Memo::default();
-        chunk
+    let read_chunk = |chunk: &[usize]| {
+        let mut tape = fast::Tape::default();
+        let ends = chunk
             .iter()
-            .map(|&l| (l < cutoff).then(|| fast::line_end(file, text, l, cutoff, &mut memo))?)
-            .collect::<Vec<_>>()
+            .map(|&l| {
+                let at = tape.mark();
+                (l < cutoff)
+                    .then(|| fast::read(text, l, cutoff, &mut tape))?
+                    .map(|n| (n, at))
+            })
+            .collect::<Vec<_>>();
+        (ends, tape)
     };
-    if lines.len() < PARALLEL_LINES {
-        return chunk_ends(lines);
+    let chunks: Vec<_> = if lines.len() < PARALLEL_LINES {
+        vec![read_chunk(lines)]
+    } else {
+        lines
+            .par_chunks(PARALLEL_LINES / 4)
+            .map(read_chunk)
+            .collect()
+    };
+    let mut ends = Vec::with_capacity(lines.len());
+    let mut tapes = Vec::with_capacity(chunks.len() + 1);
+    for (k, (chunk_ends, tape)) in chunks.into_iter().enumerate() {
+        ends.extend(
+            chunk_ends
+                .into_iter()
+                .map(|e| e.map(|(n, at)| (n, k as u32, at))),
+        );
+        tapes.push(tape);
     }
-    lines
-        .par_chunks(PARALLEL_LINES / 4)
-        .flat_map_iter(chunk_ends)
-        .collect()
+    (ends, tapes)
 }
 
 /// Reads the `rtc N` header; returns the version and the offset after it.

@@ -33,20 +33,6 @@ pub fn plain(text: &str) -> Result<ExprKind, NumberError> {
     Ok(ExprKind::Float(v))
 }
 
-/// Whether [`plain`] gives `text` a value, without converting it where the answer is plain
-/// from its length: an integer of at most 18 digits fits an `i64`, and a float without an
-/// exponent needs over 300 digits to overflow (the fast path's check-only pass asks this).
-pub fn has_value(text: &str) -> bool {
-    let b = text.as_bytes();
-    let float = b.iter().any(|&c| matches!(c, b'.' | b'e' | b'E'));
-    let exponent = b.iter().any(|&c| matches!(c, b'e' | b'E'));
-    match (float, exponent) {
-        (false, _) if b.len() <= 18 => true,
-        (true, false) if b.len() <= 300 => true,
-        _ => plain(text).is_ok(),
-    }
-}
-
 /// What one pass over a number's bytes could tell.
 enum Quick {
     Int(i64),
@@ -271,10 +257,10 @@ mod tests {
         assert!(long > 10_000, "only {long} numbers took the long division");
     }
 
-    /// Integers read quickly are the standard parser's, up to the edges of `i64`; `has_value`
-    /// answers what `plain` does, on both sides of its length shortcuts.
+    /// Integers read quickly are the standard parser's, up to the edges of `i64`, and numbers
+    /// too large for a value have none.
     #[test]
-    fn integers_and_has_value_agree_with_plain() {
+    fn integers_and_overflows_agree_with_the_standard_parser() {
         for t in [
             "0",
             "-0",
@@ -307,10 +293,8 @@ mod tests {
                 Err(_) => None,
             };
             assert_eq!(got, want, "{t}");
-            assert_eq!(has_value(t), want.is_some(), "{t}");
         }
         let long_float = format!("{}.5", "9".repeat(320));
-        assert_eq!(has_value(&long_float), plain(&long_float).is_ok());
-        assert!(!has_value(&long_float), "10^320 overflows");
+        assert!(plain(&long_float).is_err(), "10^320 overflows");
     }
 }

@@ -1,6 +1,5 @@
-//! Visiting a parsed file's statements: the ones the fast path read are read again from their
-//! line at each visit (about 1 500 instructions for a sphere line), which keeps a generated
-//! file's AST out of memory; see [`File`].
+//! Visiting a parsed file's statements: the ones the fast path read are built from its tape at
+//! each visit, which keeps a generated file's AST out of memory; see [`File`].
 
 use std::borrow::Cow;
 use std::fmt;
@@ -9,14 +8,14 @@ use crate::syntax::ast::{File, Item, Stmt};
 use crate::syntax::fast;
 
 impl<'t> File<'t> {
-    /// The statements in file order. A fast-path statement is built afresh (and owned) at each
-    /// visit; it equals the one the first reading built, since the same reader reads the same
-    /// text.
+    /// The statements in file order. A fast-path statement is built afresh (and owned) from
+    /// its tape at each visit.
     pub fn stmts(&self) -> Stmts<'_, 't> {
         Stmts {
             file: self,
             next: 0,
             memo: fast::Memo::default(),
+            reused: None,
         }
     }
 
@@ -47,6 +46,32 @@ pub struct Stmts<'f, 't> {
     file: &'f File<'t>,
     next: usize,
     memo: fast::Memo<'t>,
+    /// The last fast statement [`Stmts::next_ref`] built, whose nodes the next one reuses.
+    reused: Option<Stmt>,
+}
+
+impl<'f> Stmts<'f, '_> {
+    /// The next statement, borrowed: a fast-path statement is built into the nodes of the
+    /// previous one when the two have the same shape, so visiting a generated file's lines
+    /// allocates nothing (`next` builds each afresh).
+    pub fn next_ref(&mut self) -> Option<&Stmt> {
+        let item = *self.file.items.get(self.next)?;
+        self.next += 1;
+        Some(match item {
+            Item::Built(i) => &self.file.built[i as usize],
+            Item::Line { tape, at } => {
+                let f = self.file;
+                let t = &f.tapes[tape as usize];
+                match &mut self.reused {
+                    Some(stmt) => fast::statement_into(stmt, f.file, f.text, t, at, &mut self.memo),
+                    None => {
+                        self.reused = Some(fast::statement(f.file, f.text, t, at, &mut self.memo))
+                    }
+                }
+                self.reused.as_ref().expect("built above")
+            }
+        })
+    }
 }
 
 impl<'f> Iterator for Stmts<'f, '_> {
@@ -57,14 +82,10 @@ impl<'f> Iterator for Stmts<'f, '_> {
         self.next += 1;
         Some(match item {
             Item::Built(i) => Cow::Borrowed(&self.file.built[i as usize]),
-            Item::Line(at) => {
+            Item::Line { tape, at } => {
                 let f = self.file;
-                // A file is only returned when it parsed without errors, so its input ended at
-                // the end of the text, as it does here.
-                let (stmt, _) =
-                    fast::statement(f.file, f.text, at as usize, f.text.len(), &mut self.memo)
-                        .expect("the fast path reads again a line it read before");
-                Cow::Owned(stmt)
+                let t = &f.tapes[tape as usize];
+                Cow::Owned(fast::statement(f.file, f.text, t, at, &mut self.memo))
             }
         })
     }

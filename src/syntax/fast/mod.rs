@@ -1,14 +1,16 @@
 //! The fast statement path: a hand-written reader for the simplest one-line statements, the
 //! ones generated files are made of (`sphere(center: [1, 2, 3], radius: 0.5).material(m)`,
-//! `let r = 0.25`). It builds exactly the AST that pest and the tree builder build, spans
-//! included, and gives up (returns `None`) on anything else, which pest then parses: it never
+//! `let r = 0.25`). It reads a line once, on any core, into a tape (tape.rs) from which the
+//! evaluating thread builds exactly the AST that pest and the tree builder build, spans
+//! included. It gives up (returns `None`) on anything else, which pest then parses: it never
 //! reports an error, so every diagnostic still comes from the grammar.
 //!
 //! Why it exists: pest spends about 120 000 instructions on such a line (docs/benchmarks.md,
 //! "Parse speed"), and even a stripped-down pest grammar without whitespace, keywords or
 //! operators still spends 27 000, too many for issue 11's 30 MB/s. This reader spends about
-//! 1 500. `src/syntax/fast_tests.rs` proves it equal to pest on the whole corpus and on
-//! generated statements.
+//! 3 000 with its numbers converted, and building from the tape about 1 300.
+//! `src/syntax/fast_tests.rs` proves it equal to pest on the whole corpus and on generated
+//! statements.
 //!
 //! What it reads, in the grammar's terms (`ws` is spaces and tabs only):
 //!
@@ -27,123 +29,70 @@
 //! keyword. No operators, strings, lists, records, blocks, newlines inside a statement or
 //! carriage returns: those lines go to pest.
 
-use crate::source::{FileId, Span};
-use crate::syntax::ast::{Arg, Expr, ExprKind, Let, Name, Stmt, UnOp};
+mod tape;
+
+pub use tape::{Mark, Memo, Tape};
+use tape::{Op, Step};
+
+use crate::source::FileId;
+use crate::syntax::ast::{ExprKind, Stmt};
 use crate::syntax::errors::is_keyword;
-use crate::syntax::intern::Sym;
 use crate::syntax::numbers;
 
-/// Reads the statement line starting at byte `pos` of `text`, with `end` as the end of input.
-/// Returns the statement and the offset after its line (where pest's `stmt_line` would end),
-/// or `None` when the line is not of the fast forms.
-pub fn statement<'t>(
-    file: FileId,
-    text: &'t str,
-    pos: usize,
-    end: usize,
-    memo: &mut Memo<'t>,
-) -> Option<(Stmt, usize)> {
-    read::<true>(file, text, pos, end, memo)
-}
-
-/// What [`statement`] would return, without building the statement: the offset after its line,
-/// or `None` when the line is not of the fast forms. The same reader runs (allocating no nodes),
-/// so `statement` reads every line this accepts, to the same end.
-pub fn line_end<'t>(
-    file: FileId,
-    text: &'t str,
-    pos: usize,
-    end: usize,
-    memo: &mut Memo<'t>,
-) -> Option<usize> {
-    read::<false>(file, text, pos, end, memo).map(|(_, next)| next)
-}
-
-/// [`statement`] when `BUILD`; otherwise the statement returned is a placeholder (its
-/// expressions are their first operand).
-fn read<'t, const BUILD: bool>(
-    file: FileId,
-    text: &'t str,
-    pos: usize,
-    end: usize,
-    memo: &mut Memo<'t>,
-) -> Option<(Stmt, usize)> {
-    memo.args.clear();
-    let mut r = Reader::<BUILD> {
+/// Reads the statement line starting at byte `pos` of `text`, with `end` as the end of input,
+/// and appends what it read to `tape` (see [`tape`]). Returns the offset after its line (where
+/// pest's `stmt_line` would end), or `None` (and `tape` unchanged) when the line is not of the
+/// fast forms. Pure: the same text and position give the same steps on any thread.
+pub fn read(text: &str, pos: usize, end: usize, tape: &mut Tape) -> Option<usize> {
+    let mark = tape.mark();
+    let next = Reader {
         text,
         // Cut at `end`, so one bounds check is the end-of-input test too.
         bytes: &text.as_bytes()[..end],
         at: pos,
-        file,
-        memo,
-    };
-    r.blank_lines();
-    r.spaces();
-    let mut stmt = r.stmt()?;
-    r.spaces();
-    r.line_comment();
-    // pest's `let_stmt` ends where its `expr` does, and that rule takes the whitespace and
-    // comment after its last operand (they are skipped before its `(infix operand)*`, which
-    // then matches nothing): a `let` statement's span runs to the end of the line's text.
-    if let Stmt::Let(l) = &mut stmt {
-        l.span.end = r.at as u32;
+        tape,
     }
-    match r.peek() {
-        None => {}
-        Some(b'\n') => {
-            r.at += 1;
-            if r.next_line_continues() {
-                return None;
-            }
-        }
-        Some(_) => return None,
+    .line();
+    if next.is_none() {
+        tape.truncate(mark);
     }
-    Some((stmt, r.at))
+    next
 }
 
-/// What the fast path keeps between the statements of one file.
-pub struct Memo<'t> {
-    /// Recent names: a generated file repeats a handful of names, and this small
-    /// direct-mapped table finds them without hashing into the interner.
-    names: [Option<(&'t str, Sym)>; 64],
-    /// Arguments being read (nested calls stack theirs on top), so that each call's argument
-    /// list is allocated once at its exact size.
-    args: Vec<Arg>,
+/// The statement [`read`] wrote at `at`: exactly the AST pest and the tree builder build for
+/// its line, spans included.
+pub fn statement<'t>(
+    file: FileId,
+    text: &'t str,
+    tape: &Tape,
+    at: Mark,
+    memo: &mut Memo<'t>,
+) -> Stmt {
+    tape::build(file, text, tape, at, memo)
 }
 
-impl Default for Memo<'_> {
-    fn default() -> Self {
-        Memo {
-            names: [None; 64],
-            args: Vec::new(),
-        }
+/// Makes `stmt` the [`statement`] whose steps start `ops`, reusing its nodes when the two have
+/// the same shape (as a generated file's lines do), else building it afresh.
+pub fn statement_into<'t>(
+    stmt: &mut Stmt,
+    file: FileId,
+    text: &'t str,
+    tape: &Tape,
+    at: Mark,
+    memo: &mut Memo<'t>,
+) {
+    if !tape::rebuild(stmt, file, text, tape, at, memo) {
+        *stmt = tape::build(file, text, tape, at, memo);
     }
 }
 
-impl<'t> Memo<'t> {
-    /// The interned name `text` (not empty).
-    fn sym(&mut self, text: &'t str) -> Sym {
-        let b = text.as_bytes();
-        let slot = (b[0] as usize * 31 + b[b.len() - 1] as usize + b.len() * 7) % 64;
-        match self.names[slot] {
-            Some((known, sym)) if known == text => sym,
-            _ => {
-                let sym = Sym::new(text);
-                self.names[slot] = Some((text, sym));
-                sym
-            }
-        }
-    }
-}
-
-/// A cursor over the input with `end` as its end; it builds the nodes it reads when `BUILD`.
-struct Reader<'t, 'n, const BUILD: bool> {
+/// A cursor over the input with `end` as its end, writing what it reads to a tape.
+struct Reader<'t, 'o> {
     text: &'t str,
     /// The input up to its end.
     bytes: &'t [u8],
     at: usize,
-    file: FileId,
-    memo: &'n mut Memo<'t>,
+    tape: &'o mut Tape,
 }
 
 /// Bit 0: a name may start with the byte; bit 1: a name may continue with it. A table, since
@@ -171,18 +120,39 @@ fn is_name_char(c: u8) -> bool {
     NAME_BYTES[c as usize] & 2 != 0
 }
 
-impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
-    /// `e` wrapped by `kind` (a call, member or negation) at `span`; `e` itself when only
-    /// checking, which saves the box.
-    fn wrap(e: Expr, kind: impl FnOnce(Box<Expr>) -> ExprKind, span: Span) -> Expr {
-        if BUILD {
-            Expr {
-                kind: kind(Box::new(e)),
-                span,
-            }
-        } else {
-            e
+impl Reader<'_, '_> {
+    /// The whole line: blank and comment lines, the statement, its trailing comment and
+    /// newline. The offset after it, or `None` where pest must read it.
+    fn line(&mut self) -> Option<usize> {
+        self.blank_lines();
+        self.spaces();
+        let head = self.stmt()?;
+        self.spaces();
+        self.line_comment();
+        // pest's `let_stmt` ends where its `expr` does, and that rule takes the whitespace and
+        // comment after its last operand (they are skipped before its `(infix operand)*`, which
+        // then matches nothing): a `let` statement's span runs to the end of the line's text.
+        if let Some(h) = head {
+            self.tape.values[h] = self.at as u64;
         }
+        self.push(Step::End, self.at, self.at)?;
+        match self.peek() {
+            None => {}
+            Some(b'\n') => {
+                self.at += 1;
+                if self.next_line_continues() {
+                    return None;
+                }
+            }
+            Some(_) => return None,
+        }
+        Some(self.at)
+    }
+
+    /// Writes a step over `start..end`; `None` when it does not fit one.
+    fn push(&mut self, step: Step, start: usize, end: usize) -> Option<()> {
+        self.tape.ops.push(Op::new(step, start, end)?);
+        Some(())
     }
 
     fn peek(&self) -> Option<u8> {
@@ -191,20 +161,6 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
 
     fn peek_at(&self, i: usize) -> Option<u8> {
         self.bytes.get(i).copied()
-    }
-
-    /// The interned name `text`; only checking, a placeholder (interning is a third of the
-    /// check pass's name cost, and its nodes are dropped unread).
-    fn sym(&mut self, text: &'t str) -> Sym {
-        if BUILD {
-            self.memo.sym(text)
-        } else {
-            Sym::UNREAD
-        }
-    }
-
-    fn span(&self, start: usize, end: usize) -> Span {
-        Span::new(self.file, start, end)
     }
 
     fn spaces(&mut self) {
@@ -278,25 +234,17 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
         Some((start, self.at))
     }
 
-    /// A name that is not a keyword.
-    fn name(&mut self) -> Option<Name> {
-        let (s, e) = self.word()?;
-        self.name_at(s, e)
-    }
-
-    /// The word at `s..e` as a name, unless it is a keyword.
-    fn name_at(&mut self, s: usize, e: usize) -> Option<Name> {
-        let text = &self.text[s..e];
-        if is_keyword(text) {
+    /// The word at `s..e` as a name (a `step` over it), unless it is a keyword.
+    fn name_at(&mut self, step: Step, s: usize, e: usize) -> Option<()> {
+        if is_keyword(&self.text[s..e]) {
             return None;
         }
-        Some(Name {
-            sym: self.sym(text),
-            span: self.span(s, e),
-        })
+        self.push(step, s, e)
     }
 
-    fn stmt(&mut self) -> Option<Stmt> {
+    /// The statement; for a `let`, where its span's end goes in the value stream (the line
+    /// sets it).
+    fn stmt(&mut self) -> Option<Option<usize>> {
         let start = self.at;
         let text = self.text;
         if self.word().is_none_or(|(s, e)| &text[s..e] != "let") {
@@ -305,98 +253,91 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
             if self.peek() == Some(b'-') {
                 return None;
             }
-            return self.operand().map(Stmt::Expr);
+            self.operand()?;
+            return Some(None);
         }
         if !matches!(self.peek(), Some(b' ' | b'\t')) {
             return None;
         }
+        self.push(Step::Let, start, start)?;
+        let head = self.tape.values.len();
+        self.tape.values.push(0);
         self.spaces();
-        let name = self.name()?;
+        let (s, e) = self.word()?;
+        self.name_at(Step::Name, s, e)?;
         self.spaces();
         if self.peek() != Some(b'=') {
             return None;
         }
         self.at += 1;
         self.spaces();
-        let value = self.operand()?;
-        let span = self.span(start, value.span.end as usize);
-        Some(Stmt::Let(Let {
-            public: false,
-            param: false,
-            name,
-            ty: None,
-            value,
-            span,
-        }))
+        self.operand()?;
+        Some(Some(head))
     }
 
     /// One operand: a negated number, or a primary with its calls and members.
-    fn operand(&mut self) -> Option<Expr> {
+    fn operand(&mut self) -> Option<()> {
         let start = self.at;
-        let mut e = match self.peek()? {
+        match self.peek()? {
             b'-' => {
                 self.at += 1;
                 if !self.peek().is_some_and(|c| c.is_ascii_digit()) {
                     return None;
                 }
-                let n = self.number()?;
+                self.number()?;
                 if matches!(self.peek(), Some(b'(' | b'[' | b'{' | b'.')) {
                     return None;
                 }
-                let span = self.span(start, n.span.end as usize);
-                return Some(Self::wrap(n, |n| ExprKind::Unary(UnOp::Neg, n), span));
+                return self.push(Step::Neg, start, start);
             }
             c if c.is_ascii_digit() => self.number()?,
             b'[' => self.vec_lit()?,
             c if is_name_start(c) => {
                 let (s, e) = self.word()?;
-                let text = &self.text[s..e];
-                let kind = match text {
-                    "true" => ExprKind::Bool(true),
-                    "false" => ExprKind::Bool(false),
-                    _ if is_keyword(text) => return None,
-                    _ => ExprKind::Ident(self.sym(text)),
+                let step = match &self.text[s..e] {
+                    "true" | "false" => Step::Bool,
+                    text if is_keyword(text) => return None,
+                    _ => Step::Ident,
                 };
-                Expr {
-                    kind,
-                    span: self.span(s, e),
-                }
+                self.push(step, s, e)?;
             }
             _ => return None,
-        };
+        }
         loop {
             match self.peek() {
                 Some(b'(') => {
-                    let args = self.call_args()?;
-                    let span = self.span(start, self.at);
-                    e = Self::wrap(e, |e| ExprKind::Call(e, args), span);
+                    // A call's step holds its argument count and where it ends.
+                    let args = u16::try_from(self.call_args()?).ok()?;
+                    let end = u32::try_from(self.at).ok()?;
+                    self.tape.ops.push(Op {
+                        start: end,
+                        len: args,
+                        step: Step::Call,
+                    });
                 }
                 Some(b'.') => {
                     self.at += 1;
-                    let name = self.name()?;
-                    let span = self.span(start, self.at);
-                    e = Self::wrap(e, |e| ExprKind::Member(e, name), span);
+                    let (s, e) = self.word()?;
+                    self.name_at(Step::Member, s, e)?;
                 }
                 Some(b'[' | b'{') => return None,
-                _ => return Some(e),
+                _ => return Some(()),
             }
         }
     }
 
-    /// `(args)` on one line, without a trailing comma.
-    fn call_args(&mut self) -> Option<Vec<Arg>> {
+    /// `(args)` on one line, without a trailing comma: how many arguments.
+    fn call_args(&mut self) -> Option<u64> {
         self.at += 1;
         self.spaces();
         if self.peek() == Some(b')') {
             self.at += 1;
-            return Some(Vec::new());
+            return Some(0);
         }
-        let mark = self.memo.args.len();
+        let mut count = 0;
         loop {
-            let arg = self.arg()?;
-            if BUILD {
-                self.memo.args.push(arg);
-            }
+            self.arg()?;
+            count += 1;
             self.spaces();
             match self.peek()? {
                 b',' => {
@@ -405,12 +346,7 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
                 }
                 b')' => {
                     self.at += 1;
-                    // Only checking: no vector (`Vec::new` does not allocate).
-                    return Some(if BUILD {
-                        self.memo.args.drain(mark..).collect()
-                    } else {
-                        Vec::new()
-                    });
+                    return Some(count);
                 }
                 _ => return None,
             }
@@ -418,20 +354,20 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
     }
 
     /// `name: value` or `value`.
-    fn arg(&mut self) -> Option<Arg> {
+    fn arg(&mut self) -> Option<()> {
         let start = self.at;
         if let Some((s, e)) = self.word() {
             self.spaces();
             match self.peek() {
                 Some(b':') => {
-                    let name = self.name_at(s, e)?;
+                    if is_keyword(&self.text[s..e]) {
+                        return None;
+                    }
                     self.at += 1;
                     self.spaces();
-                    let value = self.operand()?;
-                    return Some(Arg {
-                        name: Some(name),
-                        value,
-                    });
+                    self.operand()?;
+                    // After its value, which is on top when building reaches it.
+                    return self.push(Step::Named, s, e);
                 }
                 // `name = value` is the `=`-for-`:` slip, which pest reports.
                 Some(b'=') => return None,
@@ -439,10 +375,7 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
             }
             self.at = start;
         }
-        Some(Arg {
-            name: None,
-            value: self.operand()?,
-        })
+        self.operand()
     }
 
     fn digits(&mut self) -> bool {
@@ -478,7 +411,7 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
     }
 
     /// The grammar's `number` token: `3`, `0.5`, `2e6`, `30deg`, `1rad`, `0.25turn`, `45°`.
-    fn number(&mut self) -> Option<Expr> {
+    fn number(&mut self) -> Option<()> {
         let start = self.at;
         self.unsigned_number()?;
         let digits = &self.text[start..self.at];
@@ -489,22 +422,19 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
         if self.peek().is_some_and(is_name_char) {
             return None;
         }
-        if !BUILD {
-            // Only checking: whether it has a value (its placeholder is dropped unread).
-            return numbers::has_value(digits).then(|| Expr {
-                kind: ExprKind::Int(0),
-                span: self.span(start, self.at),
-            });
-        }
-        let kind = numbers::apply_unit(numbers::plain(digits).ok()?, unit);
-        Some(Expr {
-            kind,
-            span: self.span(start, self.at),
-        })
+        let (step, bits) = match numbers::apply_unit(numbers::plain(digits).ok()?, unit) {
+            ExprKind::Int(i) => (Step::Int, i as u64),
+            ExprKind::Float(f) => (Step::Float, f.to_bits()),
+            ExprKind::Angle(a) => (Step::Angle, a.to_bits()),
+            _ => return None,
+        };
+        self.push(step, start, self.at)?;
+        self.tape.values.push(bits);
+        Some(())
     }
 
     /// The grammar's `vec_lit` token: `[x, y, z]` of plain numbers on one line.
-    fn vec_lit(&mut self) -> Option<Expr> {
+    fn vec_lit(&mut self) -> Option<()> {
         let start = self.at;
         self.at += 1;
         let mut out = [0.0; 3];
@@ -515,12 +445,7 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
                 self.at += 1;
             }
             self.unsigned_number()?;
-            let text = &self.text[s..self.at];
-            if BUILD {
-                *slot = numbers::component(&numbers::plain(text).ok()?);
-            } else if !numbers::has_value(text) {
-                return None;
-            }
+            *slot = numbers::component(&numbers::plain(&self.text[s..self.at]).ok()?);
             self.spaces();
             let closer = if k == 2 { b']' } else { b',' };
             if self.peek() != Some(closer) {
@@ -528,9 +453,8 @@ impl<'t, const BUILD: bool> Reader<'t, '_, BUILD> {
             }
             self.at += 1;
         }
-        Some(Expr {
-            kind: ExprKind::Vec3(out),
-            span: self.span(start, self.at),
-        })
+        self.push(Step::Vec3, start, self.at)?;
+        self.tape.values.extend(out.map(f64::to_bits));
+        Some(())
     }
 }
