@@ -1,6 +1,6 @@
 //! The camera samples of a pixel traced side by side: each stage of the Whitted recursion (the
-//! nearest hits, the shading with its shadow rays, the reflected rays) runs over up to
-//! [`BATCH`] rays before the next stage starts.
+//! nearest hits and their surfaces, the shading with its shadow rays, the reflected rays) runs
+//! over up to [`BATCH`] rays before the next stage starts.
 //!
 //! Why: every ray is a chain of dependent square roots and divisions (camera direction, root,
 //! normal, error bound, light direction, re-aimed shadow ray, its root), so a ray traced alone
@@ -12,7 +12,7 @@
 use glam::DVec3;
 
 use super::{Path, Whitted, reflect};
-use crate::geometry::{Ray, SurfaceHit};
+use crate::geometry::Ray;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::record::NoRecord;
 use crate::render::shading::{BATCH, Ctx, Surface, phong};
@@ -39,14 +39,13 @@ impl Whitted<'_> {
     pub fn trace_batch(&self, rays: &[Ray], paths: &[Path], ctx: &mut Ctx, out: &mut [Color]) {
         let scene = self.scene;
         let world = scene.world();
-        let mut hits: [Option<SurfaceHit>; BATCH] = [None; BATCH];
-        for (h, ray) in hits.iter_mut().zip(rays) {
-            *h = world.intersect(ray, 0.0, f64::INFINITY);
-        }
+        // The hits are read where `intersect` returned them: stored in an array they were
+        // copied there (a `memcpy` per ray, 8% of scene A's profile).
         let mut live: [Option<Surface<'_>>; BATCH] = [None; BATCH];
         let mut facing = [DVec3::ZERO; BATCH];
         for i in 0..rays.len() {
-            let Some(hit) = &hits[i] else {
+            let found = world.intersect(&rays[i], 0.0, f64::INFINITY);
+            let Some(hit) = &found else {
                 out[i] = self.background;
                 continue;
             };
