@@ -47,6 +47,8 @@ pub mod shard;
 pub mod texture;
 pub mod tiles;
 
+use glam::DVec3;
+
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::geometry::Ray;
 use crate::ir::{Color, Scene};
@@ -54,8 +56,9 @@ use crate::opt::Prepared;
 use camera::{Camera, MovingCamera};
 use film::Film;
 use integrator::Integrator;
+use integrator::whitted::Path;
 use sampler::{Grid, PixelSampler, Rng};
-use shading::{Ctx, LightShare};
+use shading::{BATCH, Ctx, LightShare};
 use shard::{Rows, Shard};
 
 pub use film::{Channel, Stats};
@@ -320,6 +323,38 @@ impl View<'_> {
         out: &mut [Color],
     ) {
         out.fill(Color::ZERO);
+        if let (Some(w), [out]) = (integrator.batch(), &mut *out) {
+            // The samples in batches, summed in the same order as one by one below.
+            let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
+            let mut colors = [Color::ZERO; BATCH];
+            let mut k = 0;
+            while k < grid.len() {
+                let m = (grid.len() - k).min(BATCH as u32);
+                for (j, ray) in (k..k + m).zip(&mut rays) {
+                    *ray = self.camera_sample(
+                        x,
+                        y,
+                        first_index + j,
+                        (j, grid.len()),
+                        grid.offset(j),
+                        ctx,
+                    );
+                }
+                let m = m as usize;
+                w.trace_batch(
+                    &rays[..m],
+                    &[Path::CAMERA; BATCH][..m],
+                    ctx,
+                    &mut colors[..m],
+                );
+                for c in &colors[..m] {
+                    *out += *c;
+                }
+                k += m as u32;
+            }
+            *out /= f64::from(grid.len());
+            return;
+        }
         let mut sample = [Color::ZERO; film::MAX_CHANNELS];
         let sample = &mut sample[..out.len()];
         for k in 0..grid.len() {

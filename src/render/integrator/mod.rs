@@ -58,6 +58,15 @@ impl<'a> Integrator<'a> {
         }
     }
 
+    /// The Whitted integrator when it can trace a pixel's samples side by side
+    /// ([`Whitted::trace_batch`]).
+    pub fn batch(&self) -> Option<&Whitted<'a>> {
+        match self {
+            Integrator::Whitted(w) if w.batches() => Some(w),
+            _ => None,
+        }
+    }
+
     /// One camera ray's value for each channel, into `out`.
     pub fn sample(&self, ray: &Ray, ctx: &mut Ctx, out: &mut [Color]) {
         self.sample_with(ray, ctx, out, &mut NoRecord);

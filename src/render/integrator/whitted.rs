@@ -8,6 +8,8 @@
 //! `dot(normal, dir)` (normals are outward); media are tracked on a small stack so nested
 //! transparent objects refract by the ratio of the indices on both sides of each interface.
 
+mod batch;
+
 use glam::DVec3;
 
 use super::gloss;
@@ -198,24 +200,27 @@ impl<'a> Whitted<'a> {
         let Some(hit) = &found else {
             return self.background;
         };
+        self.shade_at(ray, hit, path, ctx, rec)
+    }
+
+    /// The colour of `ray`'s nearest hit `hit` (everything [`Whitted::trace_with`] does after
+    /// the intersection).
+    #[inline]
+    fn shade_at<R: Recorder>(
+        &self,
+        ray: &Ray,
+        hit: &SurfaceHit,
+        path: Path,
+        ctx: &mut Ctx,
+        rec: &mut R,
+    ) -> Color {
+        let scene = self.scene;
         if R::ON {
             rec.hit(hit);
         }
         let mat = scene.material(hit.material);
-        let inside = hit.normal.dot(ray.dir) > 0.0;
-        let facing = if inside { -hit.normal } else { hit.normal };
-        let spawn = SpawnPoint::of(hit);
-        let s = Surface {
-            p: hit.point,
-            spawn,
-            n: self.bumped(hit, facing, mat),
-            v: -ray.dir,
-            color: self.base_color(hit, mat),
-            mat,
-            uv: hit.uv,
-            depth: path.depth,
-            time: ray.time,
-        };
+        let (s, inside, facing) = self.surface(ray, hit, path, mat);
+        let spawn = s.spawn;
         let mut c = match mat.shading.unwrap_or(self.shading) {
             ShadingModel::Phong => shading::phong::shade(scene, &s, ctx, rec),
             ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx, rec),
@@ -290,6 +295,33 @@ impl<'a> Whitted<'a> {
             }
         }
         c
+    }
+
+    /// The surface point `hit` of `ray` to shade, whether the ray arrives from inside, and the
+    /// unit normal facing the ray (before any bump map). Always inlined: returned from a call,
+    /// the 208-byte surface was copied twice more (`memcpy`) on its way into a batch.
+    #[inline(always)]
+    fn surface<'m>(
+        &self,
+        ray: &Ray,
+        hit: &SurfaceHit,
+        path: Path,
+        mat: &'m Material,
+    ) -> (Surface<'m>, bool, DVec3) {
+        let inside = hit.normal.dot(ray.dir) > 0.0;
+        let facing = if inside { -hit.normal } else { hit.normal };
+        let s = Surface {
+            p: hit.point,
+            spawn: SpawnPoint::of(hit),
+            n: self.bumped(hit, facing, mat),
+            v: -ray.dir,
+            color: self.base_color(hit, mat),
+            mat,
+            uv: hit.uv,
+            depth: path.depth,
+            time: ray.time,
+        };
+        (s, inside, facing)
     }
 
     /// The light arriving along a secondary ray `out` for a path now in state `next`: one ray,

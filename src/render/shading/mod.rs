@@ -11,9 +11,13 @@ use glam::DVec3;
 use super::film::Stats;
 use super::offset::SpawnPoint;
 use super::sampler::Rng;
-use crate::geometry::SurfaceHit;
+use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
+
+/// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
+/// (`phong::shade_batch`, `integrator::whitted`'s batches).
+pub const BATCH: usize = 16;
 
 /// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
 pub struct Ctx {
@@ -54,6 +58,7 @@ impl LightShare {
 }
 
 /// A surface point to shade.
+#[derive(Clone, Copy)]
 pub struct Surface<'m> {
     /// The hit point.
     pub p: DVec3,
@@ -76,6 +81,7 @@ pub struct Surface<'m> {
 }
 
 /// One sample of one light as seen from a surface point.
+#[derive(Clone, Copy)]
 pub struct LightSample {
     /// Unit vector from the surface to the sample.
     pub l: DVec3,
@@ -129,14 +135,27 @@ pub fn light_sample(
 /// shadows). The shadow ray leaves the surface's error box towards the light and is aimed at the
 /// sample from there ([`SpawnPoint::ray_to`]), so a light lying on a surface is not shadowed by it.
 pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
-    if !scene.effects().shadows {
-        return true;
-    }
-    stats.shadow_rays += 1;
-    match s.spawn.ray_to(ls.position) {
-        Some((ray, t_max)) => !scene.world().occluded(&ray.at_time(s.time), 0.0, t_max),
+    match shadow_ray(scene, s, ls, stats) {
+        Some((ray, t_max)) => !scene.world().occluded(&ray, 0.0, t_max),
         None => true,
     }
+}
+
+/// The shadow ray [`visible`] casts and where it stops, counted; `None` when it casts none
+/// (no shadows, or the sample is the ray's origin itself), which leaves the light visible.
+#[inline]
+pub fn shadow_ray(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ls: &LightSample,
+    stats: &mut Stats,
+) -> Option<(Ray, f64)> {
+    if !scene.effects().shadows {
+        return None;
+    }
+    stats.shadow_rays += 1;
+    let (ray, t_max) = s.spawn.ray_to(ls.position)?;
+    Some((ray.at_time(s.time), t_max))
 }
 
 /// The first opaque surface between `s` and light sample `ls` (for explanations: the shadow
