@@ -436,9 +436,21 @@ impl<'a> Interp<'a> {
         if matches!(op, BinOp::And | BinOp::Or) {
             return None;
         }
-        let l = self.pure_num(a, budget)?;
-        let r = self.pure_num(b, budget)?;
+        let l = self.pure_leaf(a, budget)?;
+        let r = self.pure_leaf(b, budget)?;
         super::ops::num_op(op, l, r)
+    }
+
+    /// [`Interp::pure_num`] with the leaves (numbers, locals) taken here, without a call, as
+    /// [`Interp::operand`] does for [`Interp::eval`].
+    #[inline(always)]
+    fn pure_leaf(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
+        match &e.kind {
+            ExprKind::Int(i) => Some(Num::Int(*i)),
+            ExprKind::Float(f) => Some(Num::Float(*f)),
+            ExprKind::Ident(s) => self.pure_name(*s),
+            _ => self.pure_num(e, budget),
+        }
     }
 
     /// The number `e` evaluates to, when it is built from number literals, names bound to
