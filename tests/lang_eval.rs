@@ -176,6 +176,58 @@ fn literal_range_loops_reserve_their_objects() {
     assert!(s.objects.is_empty());
 }
 
+/// Arithmetic over numbers and names of numbers is computed on a fast path (in registers, no
+/// values built); its results are IEEE arithmetic on the same operands (computed here in Rust),
+/// Int stays Int (it overflows), and what it leaves to the general operator keeps its error.
+#[test]
+fn arithmetic_fast_path_agrees_with_the_general_rules() {
+    let s = scene(
+        "let s = 0.4\n\
+         fn at(r) { sphere(center: [r * s - 20.0, -r, 2 - r * r], radius: 0.1 + 0.05 * ((r + 1) % 3)) }\n\
+         for i in 0..3 { at(i) }\n\
+         sphere(center: [7 / 2, -(3 - 5), 9 % -4], radius: 1 + 2 * 3)",
+    );
+    for i in 0..3 {
+        let r = i as f64;
+        let want = DVec3::new(r * 0.4 - 20.0, -r, (2 - i * i) as f64);
+        let radius = 0.1 + 0.05 * ((i + 1) % 3) as f64;
+        match &s.objects[i as usize].shape {
+            Shape::Sphere {
+                center,
+                radius: got,
+            } => {
+                assert_eq!((*center, *got), (want, radius), "i = {i}")
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+    match &s.objects[3].shape {
+        // 9 % -4 is Euclidean (1); Int results stay exact.
+        Shape::Sphere { center, radius } => {
+            assert_eq!((*center, *radius), (DVec3::new(3.5, 2.0, 1.0), 7.0))
+        }
+        other => panic!("{other:?}"),
+    }
+    let o = &EvalOptions::default();
+    for (expr, code) in [
+        ("9223372036854775807 + 1", "rtc::value::overflow"),
+        ("-(-9223372036854775807 - 1)", "rtc::value::overflow"),
+        ("1.0 / 0", "rtc::value::division_by_zero"),
+        ("5 % 0", "rtc::value::division_by_zero"),
+    ] {
+        let got = codes(&format!("sphere(radius: 1 + {expr})"), o);
+        assert!(got.contains(&code), "{expr}: {got:?}");
+    }
+    // A tree the fast path gives up on (a call at the bottom) is evaluated the general way, at
+    // every depth, with the same result.
+    let deep = format!("{}sqrt(4.0){}", "1 + (".repeat(40), ")".repeat(40));
+    let s = scene(&format!("sphere(radius: {deep})"));
+    match &s.objects[0].shape {
+        Shape::Sphere { radius, .. } => assert_eq!(*radius, 42.0),
+        other => panic!("{other:?}"),
+    }
+}
+
 /// `.material(m)` takes its one argument positionally or as `material:` (a fast path matches
 /// those without the schema); anything else is the schema's error, as for every built-in.
 #[test]

@@ -13,7 +13,11 @@ use super::EvalOptions;
 use super::blocks::Sink;
 use super::error::{EvalError, R, error, suggest};
 use super::modules::{Module, Scope};
+use super::ops::Num;
 use super::value::{Closure, Record, Value};
+
+/// Most operator nodes one try of the pure arithmetic path visits (`Interp::pure_num`).
+const PURE_NODES: u32 = 16;
 
 /// Evaluation state for one run (the scene file and everything it imports).
 pub struct Interp<'a> {
@@ -339,7 +343,16 @@ impl<'a> Interp<'a> {
     #[inline(never)]
     fn list(&mut self, items: &[Expr], span: Span) -> R<Value> {
         if let [a, b, c] = items {
-            // `[x, y, z]` of numbers is a Vec3; evaluate without a heap list first.
+            // `[x, y, z]` of numbers is a Vec3: pure arithmetic in registers first (as in
+            // `binary`), then each element evaluated without a heap list.
+            let budget = &mut { PURE_NODES };
+            if let (Some(x), Some(y), Some(z)) = (
+                self.pure_num(a, budget),
+                self.pure_num(b, budget),
+                self.pure_num(c, budget),
+            ) {
+                return Ok(Value::Vec3(glam::DVec3::new(x.f64(), y.f64(), z.f64())));
+            }
             let vals = [self.operand(a)?, self.operand(b)?, self.operand(c)?];
             if let (Some(x), Some(y), Some(z)) =
                 (vals[0].as_f64(), vals[1].as_f64(), vals[2].as_f64())
@@ -397,6 +410,14 @@ impl<'a> Interp<'a> {
                 other => Err(super::types::mismatch(self, "Bool", &other, b.span).into()),
             };
         }
+        // Arithmetic over numbers and names of numbers, nested or not, is computed in registers
+        // first; anything else, or an operation `num_op` leaves to the general path (overflow,
+        // division by zero), is evaluated below as before. The fast path only reads, so
+        // evaluating a subtree again there repeats no effect, and its node budget keeps the
+        // repeated work linear however deep a tree that fails is.
+        if let Some(n) = self.pure_binary(op, a, b, &mut { PURE_NODES }) {
+            return Ok(n.value());
+        }
         let l = self.operand(a)?;
         let r = self.operand(b)?;
         if let Some(v) = super::ops::arithmetic(op, &l, &r) {
@@ -407,6 +428,75 @@ impl<'a> Interp<'a> {
             return Ok(v);
         }
         super::ops::binary(self, op, l, r, a.span, b.span, span)
+    }
+
+    /// `a op b` when both sides are pure arithmetic (see [`Interp::pure_num`]).
+    #[inline(always)]
+    fn pure_binary(&self, op: BinOp, a: &Expr, b: &Expr, budget: &mut u32) -> Option<Num> {
+        if matches!(op, BinOp::And | BinOp::Or) {
+            return None;
+        }
+        let l = self.pure_leaf(a, budget)?;
+        let r = self.pure_leaf(b, budget)?;
+        super::ops::num_op(op, l, r)
+    }
+
+    /// [`Interp::pure_num`] with the leaves (numbers, locals) taken here, without a call, as
+    /// [`Interp::operand`] does for [`Interp::eval`].
+    #[inline(always)]
+    fn pure_leaf(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
+        match &e.kind {
+            ExprKind::Int(i) => Some(Num::Int(*i)),
+            ExprKind::Float(f) => Some(Num::Float(*f)),
+            ExprKind::Ident(s) => self.pure_name(*s),
+            _ => self.pure_num(e, budget),
+        }
+    }
+
+    /// The number `e` evaluates to, when it is built from number literals, names bound to
+    /// numbers, negation and the four arithmetic operators (plus `%`) alone, with ordinary
+    /// results, within `budget` operator nodes; `None` otherwise (then [`Interp::eval`] gives
+    /// the value or the error). Reads names only: nothing is evaluated for effect.
+    fn pure_num(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
+        match &e.kind {
+            ExprKind::Int(i) => Some(Num::Int(*i)),
+            ExprKind::Float(f) => Some(Num::Float(*f)),
+            ExprKind::Ident(s) => self.pure_name(*s),
+            ExprKind::Binary(op, a, b) if *budget > 0 => {
+                *budget -= 1;
+                self.pure_binary(*op, a, b, budget)
+            }
+            ExprKind::Unary(UnOp::Neg, x) if *budget > 0 => {
+                *budget -= 1;
+                match self.pure_num(x, budget)? {
+                    Num::Int(i) => Some(Num::Int(i.checked_neg()?)),
+                    Num::Float(f) => Some(Num::Float(-f)),
+                }
+            }
+            _ => None,
+        }
+    }
+
+    /// The number a name is bound to (a local, else a module item), as [`Interp::lookup`]
+    /// would find it; `None` for anything else.
+    #[inline]
+    fn pure_name(&self, sym: Sym) -> Option<Num> {
+        match self.locals[self.frame_base..]
+            .iter()
+            .rev()
+            .find(|(k, _)| *k == sym)
+        {
+            Some((_, v)) => Num::of(v),
+            None => self.pure_item(sym),
+        }
+    }
+
+    /// [`Interp::pure_name`] for a module item (out of line: loop arithmetic reads locals).
+    #[inline(never)]
+    fn pure_item(&self, sym: Sym) -> Option<Num> {
+        let items = self.scope.items.borrow();
+        let b = items.get(&sym).filter(|b| !b.poisoned)?;
+        Num::of(&b.value)
     }
 
     fn range(

@@ -45,22 +45,61 @@ fn overflow(span: Span) -> crate::diag::Diagnostic {
         .with_help("use floats for very large numbers, e.g. `1.0e20`")
 }
 
+/// A number in flight on the arithmetic fast paths: held in registers, not as a [`Value`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Num {
+    /// An `Int`.
+    Int(i64),
+    /// A `Float`.
+    Float(f64),
+}
+
+impl Num {
+    /// The number `v` is, if it is one.
+    #[inline(always)]
+    pub fn of(v: &Value) -> Option<Num> {
+        match *v {
+            Value::Int(i) => Some(Num::Int(i)),
+            Value::Float(f) => Some(Num::Float(f)),
+            _ => None,
+        }
+    }
+
+    /// As a float (what [`Value::as_f64`] gives for it).
+    #[inline(always)]
+    pub fn f64(self) -> f64 {
+        match self {
+            Num::Int(i) => i as f64,
+            Num::Float(f) => f,
+        }
+    }
+
+    /// As a value.
+    #[inline(always)]
+    pub fn value(self) -> Value {
+        match self {
+            Num::Int(i) => Value::Int(i),
+            Num::Float(f) => Value::Float(f),
+        }
+    }
+}
+
 /// `a op b` on two numbers when the result is ordinary (no overflow, no division by zero,
 /// finite): the arithmetic of loops, without the general operator's checks and messages. `None`
 /// sends the operation to [`binary`], which gives the same value or the error.
-#[inline]
-pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
+#[inline(always)]
+pub fn num_op(op: BinOp, l: Num, r: Num) -> Option<Num> {
     use BinOp::*;
     match (l, r) {
-        (Value::Int(a), Value::Int(b)) => Some(Value::Int(match op {
-            Add => a.checked_add(*b)?,
-            Sub => a.checked_sub(*b)?,
-            Mul => a.checked_mul(*b)?,
-            Rem => a.checked_rem_euclid(*b)?,
+        (Num::Int(a), Num::Int(b)) => Some(Num::Int(match op {
+            Add => a.checked_add(b)?,
+            Sub => a.checked_sub(b)?,
+            Mul => a.checked_mul(b)?,
+            Rem => a.checked_rem_euclid(b)?,
             _ => return None,
         })),
-        (Value::Int(_) | Value::Float(_), Value::Int(_) | Value::Float(_)) => {
-            let (a, b) = (l.as_f64()?, r.as_f64()?);
+        _ => {
+            let (a, b) = (l.f64(), r.f64());
             let v = match op {
                 Add => a + b,
                 Sub => a - b,
@@ -68,10 +107,15 @@ pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
                 Div if b != 0.0 => a / b,
                 _ => return None,
             };
-            v.is_finite().then_some(Value::Float(v))
+            v.is_finite().then_some(Num::Float(v))
         }
-        _ => None,
     }
+}
+
+/// [`num_op`] on two values (`None` unless both are numbers).
+#[inline]
+pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
+    num_op(op, Num::of(l)?, Num::of(r)?).map(Num::value)
 }
 
 /// `a op b` for every operator except the short-circuit `&&` and `||`.

@@ -250,37 +250,24 @@ fn collapse(bvh2: &Bvh2, group: u32) -> (Vec<WideNode>, Vec<u32>) {
         return (Vec::new(), Vec::new());
     };
     let mut out = vec![WideNode::empty()];
-    // Grouping lays the slots out anew, each group's primitives together; without it the
-    // slots are obvhs's primitive order (its leaves are already contiguous ranges).
-    let counts = (group > 1).then(|| subtree_counts(bin));
-    let mut slots = if group > 1 {
-        Vec::with_capacity(bvh2.primitive_indices.len())
-    } else {
-        bvh2.primitive_indices.clone()
-    };
-    let leafish = |k: usize| bin[k].is_leaf() || counts.as_ref().is_some_and(|c| c[k] <= group);
-    let mut stack = Vec::new();
-    let mut leaf_of = |k: usize, slots: &mut Vec<u32>| -> u32 {
-        let Some(c) = &counts else {
-            return leaf_child(&bin[k]);
-        };
-        // The primitives under `k`, left to right, become one contiguous slot range.
-        let start = slots.len() as u32;
-        stack.push(k);
-        while let Some(n) = stack.pop() {
-            let node = &bin[n];
-            if node.is_leaf() {
-                let first = node.first_index as usize;
-                slots.extend(&bvh2.primitive_indices[first..first + node.prim_count as usize]);
-            } else {
-                stack.extend([node.first_index as usize + 1, node.first_index as usize]);
-            }
+    // Grouping lays the slots out anew, in depth-first order, where every subtree's primitives
+    // are one contiguous range, left to right: a group's leaf is its subtree's range. Without
+    // grouping the slots are obvhs's primitive order (its leaves are already contiguous ranges).
+    let (slots, ranges) = match group > 1 {
+        true => {
+            let r = subtree_ranges(bvh2);
+            (r.slots, Some((r.start, r.count)))
         }
-        leaf(start, c[k].clamp(1, MAX_LEAF))
+        false => (bvh2.primitive_indices.clone(), None),
+    };
+    let leafish = |k: usize| bin[k].is_leaf() || ranges.as_ref().is_some_and(|r| r.1[k] <= group);
+    let leaf_of = |k: usize| match &ranges {
+        Some((start, count)) => leaf(start[k], count[k].clamp(1, MAX_LEAF)),
+        None => leaf_child(&bin[k]),
     };
     if leafish(0) {
         out[0].set_box(0, &root.aabb);
-        out[0].child[0] = leaf_of(0, &mut slots);
+        out[0].child[0] = leaf_of(0);
         return (out, slots);
     }
     // (binary inner node, wide node it becomes)
@@ -308,7 +295,7 @@ fn collapse(bvh2: &Bvh2, group: u32) -> (Vec<WideNode>, Vec<u32>) {
         for (lane, &k) in kids.iter().enumerate() {
             out[w].set_box(lane, &bin[k].aabb);
             out[w].child[lane] = if leafish(k) {
-                leaf_of(k, &mut slots)
+                leaf_of(k)
             } else {
                 out.push(WideNode::empty());
                 let id = out.len() - 1;
@@ -320,28 +307,49 @@ fn collapse(bvh2: &Bvh2, group: u32) -> (Vec<WideNode>, Vec<u32>) {
     (out, slots)
 }
 
-/// The number of primitives under each node of a binary tree rooted at 0 (children after
-/// their parent in breadth-first order, so a reverse sweep sums them bottom-up).
-fn subtree_counts(bin: &[obvhs::bvh2::node::Bvh2Node]) -> Vec<u32> {
-    let mut bfs = vec![0u32];
-    let mut i = 0;
-    while let Some(&b) = bfs.get(i) {
-        let n = &bin[b as usize];
-        if !n.is_leaf() {
-            bfs.extend([n.first_index, n.first_index + 1]);
+/// Every primitive of a binary tree in depth-first order, left child first, and for each node
+/// the range of that order its subtree covers.
+struct SubtreeRanges {
+    /// Primitive indices, depth first.
+    slots: Vec<u32>,
+    /// `start[k]`: where node `k`'s primitives begin in `slots`.
+    start: Vec<u32>,
+    /// `count[k]`: how many primitives lie under node `k`.
+    count: Vec<u32>,
+}
+
+/// One depth-first walk of a binary tree rooted at 0 (one visit per node, so the cost does not
+/// depend on how obvhs laid the nodes out).
+fn subtree_ranges(bvh2: &Bvh2) -> SubtreeRanges {
+    let bin = &bvh2.nodes[..];
+    let mut r = SubtreeRanges {
+        slots: Vec::with_capacity(bvh2.primitive_indices.len()),
+        start: vec![0; bin.len()],
+        count: vec![0; bin.len()],
+    };
+    // (node, whether its children are done)
+    let mut stack = vec![(0u32, false)];
+    while let Some((k, done)) = stack.pop() {
+        let (n, ku) = (&bin[k as usize], k as usize);
+        if done {
+            r.count[ku] = r.slots.len() as u32 - r.start[ku];
+            continue;
         }
-        i += 1;
-    }
-    let mut counts = vec![0u32; bin.len()];
-    for &b in bfs.iter().rev() {
-        let n = &bin[b as usize];
-        counts[b as usize] = if n.is_leaf() {
-            n.prim_count
+        r.start[ku] = r.slots.len() as u32;
+        if n.is_leaf() {
+            let first = n.first_index as usize;
+            r.slots
+                .extend(&bvh2.primitive_indices[first..first + n.prim_count as usize]);
+            r.count[ku] = n.prim_count;
         } else {
-            counts[n.first_index as usize] + counts[n.first_index as usize + 1]
-        };
+            stack.extend([
+                (k, true),
+                (n.first_index + 1, false),
+                (n.first_index, false),
+            ]);
+        }
     }
-    counts
+    r
 }
 
 fn leaf_child(node: &obvhs::bvh2::node::Bvh2Node) -> u32 {
