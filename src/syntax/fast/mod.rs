@@ -31,11 +31,10 @@
 
 mod tape;
 
-pub use tape::{Mark, Memo, Tape};
+pub use tape::{Mark, Memo, Tape, build as statement, build_into as statement_into};
 use tape::{Op, Step};
 
-use crate::source::FileId;
-use crate::syntax::ast::{ExprKind, Stmt};
+use crate::syntax::ast::ExprKind;
 use crate::syntax::errors::is_keyword;
 use crate::syntax::numbers;
 
@@ -57,33 +56,6 @@ pub fn read(text: &str, pos: usize, end: usize, tape: &mut Tape) -> Option<usize
         tape.truncate(mark);
     }
     next
-}
-
-/// The statement [`read`] wrote at `at`: exactly the AST pest and the tree builder build for
-/// its line, spans included.
-pub fn statement<'t>(
-    file: FileId,
-    text: &'t str,
-    tape: &Tape,
-    at: Mark,
-    memo: &mut Memo<'t>,
-) -> Stmt {
-    tape::build(file, text, tape, at, memo)
-}
-
-/// Makes `stmt` the [`statement`] whose steps start `ops`, reusing its nodes when the two have
-/// the same shape (as a generated file's lines do), else building it afresh.
-pub fn statement_into<'t>(
-    stmt: &mut Stmt,
-    file: FileId,
-    text: &'t str,
-    tape: &Tape,
-    at: Mark,
-    memo: &mut Memo<'t>,
-) {
-    if !tape::rebuild(stmt, file, text, tape, at, memo) {
-        *stmt = tape::build(file, text, tape, at, memo);
-    }
 }
 
 /// A cursor over the input with `end` as its end, writing what it reads to a tape.

@@ -192,15 +192,9 @@ impl<'t> Memo<'t> {
     }
 }
 
-/// Builds the statement written at `at` (up to its `End`), reading only its names from
-/// `text`: the same nodes and spans the reader would have built from the text.
-pub(super) fn build<'t>(
-    file: FileId,
-    text: &'t str,
-    tape: &Tape,
-    at: Mark,
-    memo: &mut Memo<'t>,
-) -> Stmt {
+/// Builds the statement the reader wrote at `at` (up to its `End`), reading only its names
+/// from `text`: exactly the AST pest and the tree builder build for its line, spans included.
+pub fn build<'t>(file: FileId, text: &'t str, tape: &Tape, at: Mark, memo: &mut Memo<'t>) -> Stmt {
     let span = |start: u32, end: u32| Span::new(file, start as usize, end as usize);
     let name = |memo: &mut Memo<'t>, op: &Op| Name {
         sym: memo.sym_at(text, op),
@@ -281,39 +275,28 @@ fn wrap(kind: ExprKind, span: Span) -> Arg {
     }
 }
 
-/// Rewrites `stmt` in place into the statement written at `at`, when both have the same
-/// shape (the same calls, members and argument names in the same places; leaves may differ):
-/// the nodes of a generated file's previous line are reused, without allocating or freeing
-/// any. `false` when the shapes differ; `stmt` is then partly rewritten, to be dropped.
-pub(super) fn rebuild<'t>(
+/// Makes `stmt` the statement written at `at` ([`build`]). When both have the same shape (the
+/// same calls, members and argument names in the same places; leaves may differ) it is
+/// rewritten in place: the nodes of a generated file's previous line are reused, without
+/// allocating or freeing any. Otherwise it is built afresh.
+pub fn build_into<'t>(
     stmt: &mut Stmt,
     file: FileId,
     text: &'t str,
     tape: &Tape,
     at: Mark,
     memo: &mut Memo<'t>,
-) -> bool {
+) {
     let mut r = Rebuild {
         file,
         text,
         c: Cursor::new(tape, at),
         memo,
     };
-    let value = match (stmt, r.c.peek()) {
-        (Stmt::Let(l), Step::Let) => {
-            let start = r.c.op().start;
-            let end = r.c.value() as u32;
-            l.span = r.span(start, end);
-            match r.take(Step::Name) {
-                Some(op) => l.name = r.name(&op),
-                None => return false,
-            }
-            &mut l.value
-        }
-        (Stmt::Expr(e), step) if step != Step::Let => e,
-        _ => return false,
-    };
-    r.expr(value) && r.c.peek() == Step::End
+    // A failed match leaves `stmt` partly rewritten: it is replaced whole.
+    if !r.statement(stmt) {
+        *stmt = build(file, text, tape, at, r.memo);
+    }
 }
 
 /// A walk over a statement in the order its steps were written (operands before what applies
@@ -326,6 +309,25 @@ struct Rebuild<'t, 'a, 'm> {
 }
 
 impl Rebuild<'_, '_, '_> {
+    /// Rewrites `stmt` step by step; `false` at the first step its shape does not match.
+    fn statement(&mut self, stmt: &mut Stmt) -> bool {
+        let value = match (stmt, self.c.peek()) {
+            (Stmt::Let(l), Step::Let) => {
+                let start = self.c.op().start;
+                let end = self.c.value() as u32;
+                l.span = self.span(start, end);
+                match self.take(Step::Name) {
+                    Some(op) => l.name = self.name(&op),
+                    None => return false,
+                }
+                &mut l.value
+            }
+            (Stmt::Expr(e), step) if step != Step::Let => e,
+            _ => return false,
+        };
+        self.expr(value) && self.c.peek() == Step::End
+    }
+
     fn span(&self, start: u32, end: u32) -> Span {
         Span::new(self.file, start as usize, end as usize)
     }
