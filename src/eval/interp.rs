@@ -112,17 +112,23 @@ impl<'a> Interp<'a> {
     /// Looks a name up: locals of this frame, then module items, then built-ins.
     #[inline]
     pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
-        match self.locals[self.frame_base..]
+        match self.local(sym) {
+            // Numbers (loop variables, mostly) copied without the out-of-line `clone`.
+            Some(Value::Int(i)) => Ok(Value::Int(*i)),
+            Some(Value::Float(f)) => Ok(Value::Float(*f)),
+            Some(v) => Ok(v.clone()),
+            None => self.lookup_global(sym, span),
+        }
+    }
+
+    /// The innermost local named `sym` in the current frame.
+    #[inline(always)]
+    fn local(&self, sym: Sym) -> Option<&Value> {
+        self.locals[self.frame_base..]
             .iter()
             .rev()
             .find(|(k, _)| *k == sym)
-        {
-            // Numbers (loop variables, mostly) copied without the out-of-line `clone`.
-            Some((_, Value::Int(i))) => Ok(Value::Int(*i)),
-            Some((_, Value::Float(f))) => Ok(Value::Float(*f)),
-            Some((_, v)) => Ok(v.clone()),
-            None => self.lookup_global(sym, span),
-        }
+            .map(|(_, v)| v)
     }
 
     /// Looks up a name that is not a local: module items, then built-ins.
@@ -436,32 +442,30 @@ impl<'a> Interp<'a> {
         if matches!(op, BinOp::And | BinOp::Or) {
             return None;
         }
-        let l = self.pure_leaf(a, budget)?;
-        let r = self.pure_leaf(b, budget)?;
+        let l = self.pure_num(a, budget)?;
+        let r = self.pure_num(b, budget)?;
         super::ops::num_op(op, l, r)
-    }
-
-    /// [`Interp::pure_num`] with the leaves (numbers, locals) taken here, without a call, as
-    /// [`Interp::operand`] does for [`Interp::eval`].
-    #[inline(always)]
-    fn pure_leaf(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
-        match &e.kind {
-            ExprKind::Int(i) => Some(Num::Int(*i)),
-            ExprKind::Float(f) => Some(Num::Float(*f)),
-            ExprKind::Ident(s) => self.pure_name(*s),
-            _ => self.pure_num(e, budget),
-        }
     }
 
     /// The number `e` evaluates to, when it is built from number literals, names bound to
     /// numbers, negation and the four arithmetic operators (plus `%`) alone, with ordinary
     /// results, within `budget` operator nodes; `None` otherwise (then [`Interp::eval`] gives
-    /// the value or the error). Reads names only: nothing is evaluated for effect.
+    /// the value or the error). Reads names only: nothing is evaluated for effect. The leaves
+    /// (numbers, locals) are taken here, without a call, as [`Interp::operand`] does for
+    /// [`Interp::eval`].
+    #[inline(always)]
     fn pure_num(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
         match &e.kind {
             ExprKind::Int(i) => Some(Num::Int(*i)),
             ExprKind::Float(f) => Some(Num::Float(*f)),
             ExprKind::Ident(s) => self.pure_name(*s),
+            _ => self.pure_operation(e, budget),
+        }
+    }
+
+    /// [`Interp::pure_num`] of an operator node (out of line: it recurses).
+    fn pure_operation(&self, e: &Expr, budget: &mut u32) -> Option<Num> {
+        match &e.kind {
             ExprKind::Binary(op, a, b) if *budget > 0 => {
                 *budget -= 1;
                 self.pure_binary(*op, a, b, budget)
@@ -481,12 +485,8 @@ impl<'a> Interp<'a> {
     /// would find it; `None` for anything else.
     #[inline]
     fn pure_name(&self, sym: Sym) -> Option<Num> {
-        match self.locals[self.frame_base..]
-            .iter()
-            .rev()
-            .find(|(k, _)| *k == sym)
-        {
-            Some((_, v)) => Num::of(v),
+        match self.local(sym) {
+            Some(v) => Num::of(v),
             None => self.pure_item(sym),
         }
     }

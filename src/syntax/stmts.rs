@@ -63,12 +63,12 @@ impl<'f> Stmts<'f, '_> {
                 let f = self.file;
                 let t = &f.tapes[tape as usize];
                 match &mut self.reused {
-                    Some(stmt) => fast::statement_into(stmt, f.file, f.text, t, at, &mut self.memo),
-                    None => {
-                        self.reused = Some(fast::statement(f.file, f.text, t, at, &mut self.memo))
+                    Some(stmt) => {
+                        fast::statement_into(stmt, f.file, f.text, t, at, &mut self.memo);
+                        stmt
                     }
+                    empty => empty.insert(fast::statement(f.file, f.text, t, at, &mut self.memo)),
                 }
-                self.reused.as_ref().expect("built above")
             }
         })
     }

@@ -232,11 +232,7 @@ impl<'a> Whitted<'a> {
         if path.depth >= self.max_depth {
             return c;
         }
-        let mut kr = if self.effects.reflection {
-            mat.reflect
-        } else {
-            0.0
-        };
+        let mut kr = self.reflectance(mat);
         let kt = if self.effects.refraction {
             mat.refract
         } else {
@@ -295,6 +291,16 @@ impl<'a> Whitted<'a> {
             }
         }
         c
+    }
+
+    /// How much of the light `mat` reflects, when the scene reflects at all.
+    #[inline(always)]
+    fn reflectance(&self, mat: &Material) -> f64 {
+        if self.effects.reflection {
+            mat.reflect
+        } else {
+            0.0
+        }
     }
 
     /// The surface point `hit` of `ray` to shade, whether the ray arrives from inside, and the

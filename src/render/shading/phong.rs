@@ -52,12 +52,12 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
                 }
                 continue;
             };
-            c += lit(s, &ls, n_dot_l, pass);
+            let (diffuse, specular) = lit(s, &ls, n_dot_l, pass);
+            c += diffuse + specular;
             if R::ON {
-                let lc = ls.color * pass;
                 term.tinted += u32::from(pass != Color::ONE);
-                term.diffuse += (m.kd * n_dot_l) * s.color * lc;
-                term.specular += highlight(s, ls.l, n_dot_l) * lc;
+                term.diffuse += diffuse;
+                term.specular += specular;
             }
         }
         if R::ON {
@@ -69,10 +69,13 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
 
 /// The diffuse and specular light of sample `ls` at `s`, `pass` of it getting through.
 #[inline]
-fn lit(s: &Surface<'_>, ls: &LightSample, n_dot_l: f64, pass: Color) -> Color {
+fn lit(s: &Surface<'_>, ls: &LightSample, n_dot_l: f64, pass: Color) -> (Color, Color) {
     // `pass` is exactly ONE without glass in the way, so this is the plain sum then.
     let lc = ls.color * pass;
-    (s.mat.kd * n_dot_l) * s.color * lc + highlight(s, ls.l, n_dot_l) * lc
+    (
+        (s.mat.kd * n_dot_l) * s.color * lc,
+        highlight(s, ls.l, n_dot_l) * lc,
+    )
 }
 
 /// [`shade`] of up to [`BATCH`] surface points side by side, into `out` (entries without a
@@ -122,7 +125,8 @@ pub fn shade_batch(scene: &Prepared, ss: &[Option<Surface<'_>>], ctx: &mut Ctx, 
             }
             for (((c, s), l), o) in out.iter_mut().zip(ss).zip(&lights).zip(open) {
                 if let (Some(s), Some((ls, n_dot_l)), true) = (s, l, o) {
-                    *c += lit(s, ls, *n_dot_l, Color::ONE);
+                    let (diffuse, specular) = lit(s, ls, *n_dot_l, Color::ONE);
+                    *c += diffuse + specular;
                 }
             }
         }

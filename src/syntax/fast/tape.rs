@@ -195,69 +195,24 @@ impl<'t> Memo<'t> {
 /// Builds the statement the reader wrote at `at` (up to its `End`), reading only its names
 /// from `text`: exactly the AST pest and the tree builder build for its line, spans included.
 pub fn build<'t>(file: FileId, text: &'t str, tape: &Tape, at: Mark, memo: &mut Memo<'t>) -> Stmt {
-    let span = |start: u32, end: u32| Span::new(file, start as usize, end as usize);
-    let name = |memo: &mut Memo<'t>, op: &Op| Name {
-        sym: memo.sym_at(text, op),
-        span: span(op.start, op.end()),
-    };
-    let mut c = Cursor::new(tape, at);
-    let mut head = None;
-    if c.peek() == Step::Let {
-        let start = c.op().start;
-        let end = c.value() as u32;
-        let n = c.op();
-        head = Some((span(start, end), name(memo, &n)));
-    }
-    let base = memo.stack.len();
-    loop {
-        let op = c.op();
-        if let Some(kind) = c.leaf(&op, text, memo) {
-            memo.stack.push(wrap(kind, span(op.start, op.end())));
-            continue;
-        }
-        match op.step {
-            Step::Neg => {
-                let n = pop(memo, base);
-                let s = span(op.start, n.span.end);
-                memo.stack
-                    .push(wrap(ExprKind::Unary(UnOp::Neg, Box::new(n)), s));
-            }
-            Step::Named => {
-                let n = name(memo, &op);
-                if let Some(top) = memo.stack.last_mut() {
-                    top.name = Some(n);
-                }
-            }
-            Step::Call => {
-                let first = memo.stack.len() - op.len as usize;
-                let args: Vec<Arg> = memo.stack.drain(first..).collect();
-                let callee = pop(memo, base);
-                let s = span(callee.span.start, op.start);
-                memo.stack
-                    .push(wrap(ExprKind::Call(Box::new(callee), args), s));
-            }
-            Step::Member => {
-                let n = name(memo, &op);
-                let object = pop(memo, base);
-                let s = span(object.span.start, op.end());
-                memo.stack
-                    .push(wrap(ExprKind::Member(Box::new(object), n), s));
-            }
-            Step::End => break,
-            _ => unreachable!("tape: {op:?} out of place"),
-        }
-    }
-    let value = pop(memo, base);
-    match head {
-        Some((span, name)) => Stmt::Let(Let {
-            public: false,
-            param: false,
-            name,
-            ty: None,
-            value,
-            span,
-        }),
-        None => Stmt::Expr(value),
+    Replay::new(file, text, tape, at, memo).build()
+}
+
+/// Makes `stmt` the statement written at `at` ([`build`]). When both have the same shape (the
+/// same calls, members and argument names in the same places; leaves may differ) it is
+/// rewritten in place: the nodes of a generated file's previous line are reused, without
+/// allocating or freeing any. Otherwise it is built afresh.
+pub fn build_into<'t>(
+    stmt: &mut Stmt,
+    file: FileId,
+    text: &'t str,
+    tape: &Tape,
+    at: Mark,
+    memo: &mut Memo<'t>,
+) {
+    // A failed match leaves `stmt` partly rewritten: it is replaced whole.
+    if !Replay::new(file, text, tape, at, memo).rebuild(stmt) {
+        *stmt = build(file, text, tape, at, memo);
     }
 }
 
@@ -275,42 +230,89 @@ fn wrap(kind: ExprKind, span: Span) -> Arg {
     }
 }
 
-/// Makes `stmt` the statement written at `at` ([`build`]). When both have the same shape (the
-/// same calls, members and argument names in the same places; leaves may differ) it is
-/// rewritten in place: the nodes of a generated file's previous line are reused, without
-/// allocating or freeing any. Otherwise it is built afresh.
-pub fn build_into<'t>(
-    stmt: &mut Stmt,
-    file: FileId,
-    text: &'t str,
-    tape: &Tape,
-    at: Mark,
-    memo: &mut Memo<'t>,
-) {
-    let mut r = Rebuild {
-        file,
-        text,
-        c: Cursor::new(tape, at),
-        memo,
-    };
-    // A failed match leaves `stmt` partly rewritten: it is replaced whole.
-    if !r.statement(stmt) {
-        *stmt = build(file, text, tape, at, r.memo);
-    }
-}
-
-/// A walk over a statement in the order its steps were written (operands before what applies
-/// to them), matching each node with its step.
-struct Rebuild<'t, 'a, 'm> {
+/// One statement's steps replayed: built into new nodes, or matched node by node against a
+/// statement in the order they were written (operands before what applies to them).
+struct Replay<'t, 'a, 'm> {
     file: FileId,
     text: &'t str,
     c: Cursor<'a>,
     memo: &'m mut Memo<'t>,
 }
 
-impl Rebuild<'_, '_, '_> {
+impl<'t, 'a, 'm> Replay<'t, 'a, 'm> {
+    fn new(file: FileId, text: &'t str, tape: &'a Tape, at: Mark, memo: &'m mut Memo<'t>) -> Self {
+        Replay {
+            file,
+            text,
+            c: Cursor::new(tape, at),
+            memo,
+        }
+    }
+
+    /// The statement, in new nodes.
+    fn build(mut self) -> Stmt {
+        let mut head = None;
+        if self.c.peek() == Step::Let {
+            let start = self.c.op().start;
+            let end = self.c.value() as u32;
+            let n = self.c.op();
+            head = Some((self.span(start, end), self.name(&n)));
+        }
+        let base = self.memo.stack.len();
+        loop {
+            let op = self.c.op();
+            if let Some(kind) = self.c.leaf(&op, self.text, self.memo) {
+                let s = self.span(op.start, op.end());
+                self.memo.stack.push(wrap(kind, s));
+                continue;
+            }
+            let node = match op.step {
+                Step::Neg => {
+                    let n = pop(self.memo, base);
+                    let s = self.span(op.start, n.span.end);
+                    wrap(ExprKind::Unary(UnOp::Neg, Box::new(n)), s)
+                }
+                Step::Named => {
+                    let n = self.name(&op);
+                    if let Some(top) = self.memo.stack.last_mut() {
+                        top.name = Some(n);
+                    }
+                    continue;
+                }
+                Step::Call => {
+                    let first = self.memo.stack.len() - op.len as usize;
+                    let args: Vec<Arg> = self.memo.stack.drain(first..).collect();
+                    let callee = pop(self.memo, base);
+                    let s = self.span(callee.span.start, op.start);
+                    wrap(ExprKind::Call(Box::new(callee), args), s)
+                }
+                Step::Member => {
+                    let n = self.name(&op);
+                    let object = pop(self.memo, base);
+                    let s = self.span(object.span.start, op.end());
+                    wrap(ExprKind::Member(Box::new(object), n), s)
+                }
+                Step::End => break,
+                _ => unreachable!("tape: {op:?} out of place"),
+            };
+            self.memo.stack.push(node);
+        }
+        let value = pop(self.memo, base);
+        match head {
+            Some((span, name)) => Stmt::Let(Let {
+                public: false,
+                param: false,
+                name,
+                ty: None,
+                value,
+                span,
+            }),
+            None => Stmt::Expr(value),
+        }
+    }
+
     /// Rewrites `stmt` step by step; `false` at the first step its shape does not match.
-    fn statement(&mut self, stmt: &mut Stmt) -> bool {
+    fn rebuild(&mut self, stmt: &mut Stmt) -> bool {
         let value = match (stmt, self.c.peek()) {
             (Stmt::Let(l), Step::Let) => {
                 let start = self.c.op().start;

@@ -72,11 +72,7 @@ impl Whitted<'_> {
             if path.depth >= self.max_depth {
                 continue;
             }
-            let kr = if self.effects.reflection {
-                s.mat.reflect
-            } else {
-                0.0
-            };
+            let kr = self.reflectance(s.mat);
             if kr > 0.0 && self.significant(path.bounce(path.media, kr), ctx) {
                 let dir = reflect(rays[i].dir, facing[i]);
                 ctx.stats.secondary_rays += 1;
