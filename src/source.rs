@@ -1,6 +1,7 @@
 //! Source files and spans: every IR node and diagnostic points back into a file through a `Span`.
 
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, OnceLock};
 
 /// Index of a file in a [`SourceMap`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
@@ -52,28 +53,38 @@ impl Span {
 pub struct SourceFile {
     /// The path as the user wrote it or as it was resolved (shown in messages).
     pub path: PathBuf,
-    /// The whole text.
-    pub text: String,
-    line_starts: Vec<usize>,
+    /// The whole text, shared: the evaluator parses from it while the map takes more files,
+    /// and a generated scene's megabytes are not copied for that.
+    pub text: Arc<String>,
+    /// Where each line starts, found when a position is first asked for (only diagnostics
+    /// ask: a file that evaluates cleanly is never indexed).
+    line_starts: OnceLock<Vec<usize>>,
 }
 
 impl SourceFile {
-    /// Wraps a text, indexing its line starts.
+    /// Wraps a text.
     pub fn new(path: PathBuf, text: String) -> SourceFile {
-        let mut line_starts = vec![0];
-        line_starts.extend(memchr::memchr_iter(b'\n', text.as_bytes()).map(|i| i + 1));
         SourceFile {
             path,
-            text,
-            line_starts,
+            text: Arc::new(text),
+            line_starts: OnceLock::new(),
         }
+    }
+
+    fn line_starts(&self) -> &[usize] {
+        self.line_starts.get_or_init(|| {
+            let mut starts = vec![0];
+            starts.extend(memchr::memchr_iter(b'\n', self.text.as_bytes()).map(|i| i + 1));
+            starts
+        })
     }
 
     /// 1-based (line, column) of a byte offset; the column counts characters, not bytes.
     pub fn line_col(&self, offset: usize) -> (usize, usize) {
         let offset = offset.min(self.text.len());
-        let line = self.line_starts.partition_point(|&s| s <= offset) - 1;
-        let start = self.line_starts[line];
+        let starts = self.line_starts();
+        let line = starts.partition_point(|&s| s <= offset) - 1;
+        let start = starts[line];
         let col = self
             .text
             .get(start..offset)
@@ -83,7 +94,7 @@ impl SourceFile {
 
     /// Byte offset of a 1-based (line, column) position, clamped to the text.
     pub fn offset_of(&self, line: usize, col: usize) -> usize {
-        let Some(&start) = self.line_starts.get(line.saturating_sub(1)) else {
+        let Some(&start) = self.line_starts().get(line.saturating_sub(1)) else {
             return self.text.len();
         };
         let rest = &self.text[start..];

@@ -209,7 +209,7 @@ impl Report {
 
 fn named_source(sources: &SourceMap, file: rtc::source::FileId) -> NamedSource<String> {
     let f = sources.get(file);
-    NamedSource::new(f.path.display().to_string(), f.text.clone())
+    NamedSource::new(f.path.display().to_string(), String::clone(&f.text))
 }
 
 fn miette_span(s: Span) -> SourceSpan {

@@ -27,6 +27,7 @@ pub(crate) mod with;
 
 use std::path::Path;
 use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::diag::{Diagnostic, Severity};
 use crate::ir::Loaded;
@@ -79,7 +80,7 @@ impl Default for EvalOptions {
 /// Parses and evaluates the scene file at `path`, reading it from disk.
 pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
     match std::fs::read(path).map(String::from_utf8) {
-        Ok(Ok(text)) => load_source(path, &text, sources, options),
+        Ok(Ok(text)) => load_source(path, text, sources, options),
         Ok(Err(e)) => {
             let mut loaded = Loaded::default();
             loaded
@@ -143,10 +144,11 @@ fn not_text(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> Diagnostic {
 /// directory).
 pub fn load_source(
     path: &Path,
-    text: &str,
+    text: impl Into<String>,
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Loaded {
+    let text = text.into();
     on_eval_stack(|| load_source_here(path, text, sources, options)).unwrap_or_else(|| {
         Loaded::failure(
             crate::diag::IO_ERROR,
@@ -176,13 +178,15 @@ const EVAL_STACK_BYTES: usize = 256 << 20;
 
 fn load_source_here(
     path: &Path,
-    text: &str,
+    text: String,
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Loaded {
     let file = sources.add(path, text);
+    // The map's copy, shared: the AST borrows it while evaluation adds imported files.
+    let text = Arc::clone(&sources.get(file).text);
     let mut loaded = Loaded::default();
-    let (ast, diags) = crate::syntax::parse(file, text);
+    let (ast, diags) = crate::syntax::parse(file, &text);
     for d in diags {
         loaded.diagnostics.push(d);
     }

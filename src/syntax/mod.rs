@@ -198,7 +198,8 @@ type FastLine = Option<(usize, u32, fast::Mark)>;
 fn fast_line_ends(text: &str, lines: &[usize], cutoff: usize) -> (Vec<FastLine>, Vec<fast::Tape>) {
     use rayon::prelude::*;
     let read_chunk = |chunk: &[usize]| {
-        let mut tape = fast::Tape::default();
+        let bytes = chunk.last().zip(chunk.first()).map_or(0, |(l, f)| l - f);
+        let mut tape = fast::Tape::for_bytes(bytes);
         let ends = chunk
             .iter()
             .map(|&l| {

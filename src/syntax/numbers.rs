@@ -12,25 +12,47 @@ pub enum NumberError {
     TooLarge,
 }
 
+/// A number literal's value: the number leaves of [`ExprKind`], without its drop glue (the fast
+/// path converts four numbers a line).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Number {
+    /// An integer.
+    Int(i64),
+    /// A float.
+    Float(f64),
+    /// An angle, in radians.
+    Angle(f64),
+}
+
+impl From<Number> for ExprKind {
+    fn from(n: Number) -> ExprKind {
+        match n {
+            Number::Int(i) => ExprKind::Int(i),
+            Number::Float(f) => ExprKind::Float(f),
+            Number::Angle(a) => ExprKind::Angle(a),
+        }
+    }
+}
+
 /// A plain number `3`, `0.5`, `2e6` (no unit, no sign except the one a vector literal carries):
 /// `Int` without `.`, `e` or `E`, `Float` otherwise.
-pub fn plain(text: &str) -> Result<ExprKind, NumberError> {
+pub fn plain(text: &str) -> Result<Number, NumberError> {
     match quick(text) {
-        Quick::Int(i) => return Ok(ExprKind::Int(i)),
-        Quick::Float(v) => return Ok(ExprKind::Float(v)),
+        Quick::Int(i) => return Ok(Number::Int(i)),
+        Quick::Float(v) => return Ok(Number::Float(v)),
         Quick::Slow => {}
     }
     if !text.bytes().any(|b| matches!(b, b'.' | b'e' | b'E')) {
         return text
             .parse::<i64>()
-            .map(ExprKind::Int)
+            .map(Number::Int)
             .map_err(|_| NumberError::IntTooLarge);
     }
     let v = text.parse::<f64>().unwrap_or(f64::NAN);
     if !v.is_finite() {
         return Err(NumberError::TooLarge);
     }
-    Ok(ExprKind::Float(v))
+    Ok(Number::Float(v))
 }
 
 /// What one pass over a number's bytes could tell.
@@ -48,43 +70,89 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
 ];
 
 /// `[-]digits` of at most 18 digits (an exact `i64`), or `[-]digits.digits` (no exponent) of at
-/// most 18 digits, whose value is `m / 10^k`: when `m ≤ 2⁵³` and `k ≤ 22`, `m` and `10^k` are
-/// exact doubles and one IEEE division rounds their quotient correctly (Clinger's fast path),
-/// otherwise [`quotient_rounded`] divides exactly. The same bits as `str::parse` for a fraction
-/// of its cost (a generated file is mostly such numbers). [`Quick::Slow`] for anything else.
+/// most 18 digits: see [`signed`]. [`Quick::Slow`] for anything else.
 fn quick(text: &str) -> Quick {
-    let (negative, digits) = match text.as_bytes() {
-        [b'-', rest @ ..] => (true, rest),
-        all => (false, all),
-    };
-    if digits.is_empty() || digits.len() > 19 {
-        return Quick::Slow;
+    match signed(text.as_bytes()) {
+        Some((len, Some(Number::Int(i)))) if len == text.len() => Quick::Int(i),
+        Some((len, Some(Number::Float(v)))) if len == text.len() => Quick::Float(v),
+        _ => Quick::Slow,
     }
+}
+
+/// The grammar's number without its unit, with an optional `-` (a vector literal's component),
+/// at the start of `bytes`: see [`unsigned`].
+pub fn signed(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
+    let Some(rest) = bytes.strip_prefix(b"-") else {
+        return unsigned(bytes);
+    };
+    let (len, value) = unsigned(rest)?;
+    let negated = value.map(|n| match n {
+        Number::Int(i) => Number::Int(-i),
+        Number::Float(v) => Number::Float(-v),
+        Number::Angle(a) => Number::Angle(-a),
+    });
+    Some((len + 1, negated))
+}
+
+/// The grammar's unsigned number without its unit (`digits ("." digits)? (("e" | "E") ("+" |
+/// "-")? digits)?`) at the start of `bytes`: its length, and in the same pass its value when
+/// it is one of the quick forms (otherwise `None`: [`plain`] converts it with the standard
+/// library). `None` when no such token starts there.
+///
+/// The quick forms: at most 18 digits without `.` or exponent (an exact `i64`), or
+/// `digits.digits` of at most 19 bytes, whose value is `m / 10^k`: when `m ≤ 2⁵³` and `k ≤ 22`,
+/// `m` and `10^k` are exact doubles and one IEEE division rounds their quotient correctly
+/// (Clinger's fast path), otherwise [`quotient_rounded`] divides exactly. The same bits as
+/// `str::parse` for a fraction of its cost (a generated file is mostly such numbers).
+pub fn unsigned(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
+    // Wrapping: the mantissa is used only when at most 19 digits were read, which fit.
     let mut mantissa: u64 = 0;
-    let mut fraction_digits = None;
-    for (i, &b) in digits.iter().enumerate() {
-        match b {
-            b'0'..=b'9' => mantissa = mantissa * 10 + u64::from(b - b'0'),
-            b'.' if fraction_digits.is_none() => fraction_digits = Some(digits.len() - i - 1),
-            _ => return Quick::Slow,
+    let digits = |from: usize, m: &mut u64| {
+        let mut i = from;
+        while let Some(&b) = bytes.get(i).filter(|b| b.is_ascii_digit()) {
+            *m = m.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+            i += 1;
         }
+        i
+    };
+    let mut end = digits(0, &mut mantissa);
+    if end == 0 {
+        return None;
     }
-    let Some(k) = fraction_digits else {
-        // At most 19 digits did not overflow a u64; 18 fit an i64 with either sign.
-        if digits.len() > 18 {
-            return Quick::Slow;
+    let mut fraction_digits = None;
+    if bytes.get(end) == Some(&b'.') {
+        let after = digits(end + 1, &mut mantissa);
+        if after == end + 1 {
+            return None;
         }
-        let m = mantissa as i64;
-        return Quick::Int(if negative { -m } else { m });
+        fraction_digits = Some(after - end - 1);
+        end = after;
+    }
+    if matches!(bytes.get(end), Some(b'e' | b'E')) {
+        end += 1;
+        if matches!(bytes.get(end), Some(b'+' | b'-')) {
+            end += 1;
+        }
+        let after = digits(end, &mut 0);
+        if after == end {
+            return None;
+        }
+        return Some((after, None));
+    }
+    let value = match fraction_digits {
+        None if end <= 18 => Some(Number::Int(mantissa as i64)),
+        Some(k) if end <= 19 => Some(Number::Float(
+            if mantissa <= 1 << 53 && k < EXACT_POWERS_OF_TEN.len() {
+                mantissa as f64 / EXACT_POWERS_OF_TEN[k]
+            } else {
+                // The 17-digit numbers that shortest round-trip printing (Python's `repr`,
+                // Rust's `{:?}`) writes, such as 0.15000000000000002.
+                quotient_rounded(mantissa, 10u64.pow(k as u32))
+            },
+        )),
+        _ => None,
     };
-    let v = if mantissa <= 1 << 53 && k < EXACT_POWERS_OF_TEN.len() {
-        mantissa as f64 / EXACT_POWERS_OF_TEN[k]
-    } else {
-        // The 17-digit numbers that shortest round-trip printing (Python's `repr`, Rust's
-        // `{:?}`) writes, such as 0.15000000000000002.
-        quotient_rounded(mantissa, 10u64.pow(k as u32))
-    };
-    Quick::Float(if negative { -v } else { v })
+    Some((end, value))
 }
 
 /// `m / d` rounded to the nearest double (ties to even), by long division in 128 bits: the
@@ -139,20 +207,19 @@ pub fn unit_at(rest: &[u8]) -> Option<(usize, ToRadians)> {
 }
 
 /// The value of a plain number read by [`plain`] with the unit [`split_unit`] found.
-pub fn apply_unit(plain: ExprKind, unit: Option<ToRadians>) -> ExprKind {
+pub fn apply_unit(plain: Number, unit: Option<ToRadians>) -> Number {
     match (unit, plain) {
-        (Some(to_radians), ExprKind::Int(i)) => ExprKind::Angle(to_radians(i as f64)),
-        (Some(to_radians), ExprKind::Float(f)) => ExprKind::Angle(to_radians(f)),
+        (Some(to_radians), Number::Int(i)) => Number::Angle(to_radians(i as f64)),
+        (Some(to_radians), Number::Float(f)) => Number::Angle(to_radians(f)),
         (_, other) => other,
     }
 }
 
 /// A component of a vector literal `[x, y, z]` as the vector stores it.
-pub fn component(plain: &ExprKind) -> f64 {
-    match *plain {
-        ExprKind::Int(i) => i as f64,
-        ExprKind::Float(f) => f,
-        _ => 0.0,
+pub fn component(plain: Number) -> f64 {
+    match plain {
+        Number::Int(i) => i as f64,
+        Number::Float(f) | Number::Angle(f) => f,
     }
 }
 
@@ -211,7 +278,7 @@ mod tests {
                 answered += 1;
                 assert_eq!(v.to_bits(), t.parse::<f64>().unwrap().to_bits(), "{t}");
             }
-            let ExprKind::Float(v) = plain(t).unwrap() else {
+            let Number::Float(v) = plain(t).unwrap() else {
                 panic!("{t} is a float")
             };
             assert_eq!(v.to_bits(), t.parse::<f64>().unwrap().to_bits(), "{t}");
@@ -287,8 +354,8 @@ mod tests {
                 t.parse::<i64>().ok().map(|i| (true, i as u64))
             };
             let got = match plain(t) {
-                Ok(ExprKind::Int(i)) => Some((true, i as u64)),
-                Ok(ExprKind::Float(v)) => Some((false, v.to_bits())),
+                Ok(Number::Int(i)) => Some((true, i as u64)),
+                Ok(Number::Float(v)) => Some((false, v.to_bits())),
                 Ok(_) => panic!("{t}: a plain number has no unit"),
                 Err(_) => None,
             };

@@ -61,7 +61,7 @@ impl<'f> Stmts<'f, '_> {
             Item::Built(i) => &self.file.built[i as usize],
             Item::Line { tape, at } => {
                 let f = self.file;
-                let t = &f.tapes[tape as usize];
+                let t = (tape, &f.tapes[tape as usize]);
                 match &mut self.reused {
                     Some(stmt) => {
                         fast::statement_into(stmt, f.file, f.text, t, at, &mut self.memo);
@@ -84,7 +84,7 @@ impl<'f> Iterator for Stmts<'f, '_> {
             Item::Built(i) => Cow::Borrowed(&self.file.built[i as usize]),
             Item::Line { tape, at } => {
                 let f = self.file;
-                let t = &f.tapes[tape as usize];
+                let t = (tape, &f.tapes[tape as usize]);
                 Cow::Owned(fast::statement(f.file, f.text, t, at, &mut self.memo))
             }
         })

@@ -8,7 +8,7 @@ use crate::source::Span;
 use crate::syntax::Rule;
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
-use crate::syntax::numbers::{self, NumberError};
+use crate::syntax::numbers::{self, Number, NumberError};
 use crate::syntax::pratt;
 
 use super::{Builder, P, srgb_to_linear, unescape};
@@ -310,16 +310,16 @@ impl Builder {
 
     /// A plain number `3`, `0.5`, `2e6` (no unit) as `Int` or `Float`; a too-large integer or
     /// a float that overflows to infinity is an error.
-    fn plain_number(&self, p: &P, text: &str) -> ExprKind {
+    fn plain_number(&self, p: &P, text: &str) -> Number {
         match numbers::plain(text) {
-            Ok(kind) => kind,
+            Ok(n) => n,
             Err(NumberError::IntTooLarge) => {
                 self.number_error(
                     p,
                     "integer literal is too large",
                     format!("write it as a float: `{}.0`", text.trim_start_matches('-')),
                 );
-                ExprKind::Int(0)
+                Number::Int(0)
             }
             Err(NumberError::TooLarge) => {
                 self.number_error(
@@ -327,7 +327,7 @@ impl Builder {
                     "number is too large",
                     "numbers must be below about 1.8e308".to_owned(),
                 );
-                ExprKind::Float(0.0)
+                Number::Float(0.0)
             }
         }
     }
@@ -335,7 +335,7 @@ impl Builder {
     /// `number`: an Int, a Float or an Angle (`30deg`, `0.5rad`, `0.25turn`, `45°`).
     fn number(&self, p: &P) -> ExprKind {
         let (digits, unit) = numbers::split_unit(p.as_str());
-        numbers::apply_unit(self.plain_number(p, digits), unit)
+        numbers::apply_unit(self.plain_number(p, digits), unit).into()
     }
 
     /// `vec_lit`: `[x, y, z]` of plain numbers, read from the token's text.
@@ -343,7 +343,7 @@ impl Builder {
         let text = p.as_str();
         let mut out = [0.0; 3];
         for (slot, part) in out.iter_mut().zip(text[1..text.len() - 1].split(',')) {
-            *slot = numbers::component(&self.plain_number(p, part.trim()));
+            *slot = numbers::component(self.plain_number(p, part.trim()));
         }
         ExprKind::Vec3(out)
     }

@@ -34,9 +34,8 @@ mod tape;
 pub use tape::{Mark, Memo, Tape, build as statement, build_into as statement_into};
 use tape::{Op, Step};
 
-use crate::syntax::ast::ExprKind;
 use crate::syntax::errors::is_keyword;
-use crate::syntax::numbers;
+use crate::syntax::numbers::{self, Number};
 
 /// Reads the statement line starting at byte `pos` of `text`, with `end` as the end of input,
 /// and appends what it read to `tape` (see [`tape`]). Returns the offset after its line (where
@@ -121,9 +120,14 @@ impl Reader<'_, '_> {
         Some(self.at)
     }
 
-    /// Writes a step over `start..end`; `None` when it does not fit one.
+    /// Writes a step over `start..end` (numbering it if it is a name); `None` when it does not
+    /// fit one.
     fn push(&mut self, step: Step, start: usize, end: usize) -> Option<()> {
-        self.tape.ops.push(Op::new(step, start, end)?);
+        let mut op = Op::new(step, start, end)?;
+        if matches!(step, Step::Ident | Step::Named | Step::Member | Step::Name) {
+            op.name = self.tape.names.number(self.text, op.start, op.len);
+        }
+        self.tape.ops.push(op);
         Some(())
     }
 
@@ -285,6 +289,7 @@ impl Reader<'_, '_> {
                         start: end,
                         len: args,
                         step: Step::Call,
+                        name: tape::UNNUMBERED,
                     });
                 }
                 Some(b'.') => {
@@ -350,43 +355,24 @@ impl Reader<'_, '_> {
         self.operand()
     }
 
-    fn digits(&mut self) -> bool {
-        let start = self.at;
-        while self.peek().is_some_and(|c| c.is_ascii_digit()) {
-            self.at += 1;
-        }
-        self.at > start
-    }
-
     /// The digits, fraction and exponent of a number (the grammar's `number` without its unit,
-    /// and `vec_num` without its sign). `None` where the grammar would read something else.
-    fn unsigned_number(&mut self) -> Option<()> {
-        if !self.digits() {
-            return None;
-        }
-        if self.peek() == Some(b'.') {
-            self.at += 1;
-            if !self.digits() {
-                return None;
-            }
-        }
-        if matches!(self.peek(), Some(b'e' | b'E')) {
-            self.at += 1;
-            if matches!(self.peek(), Some(b'+' | b'-')) {
-                self.at += 1;
-            }
-            if !self.digits() {
-                return None;
-            }
-        }
-        Some(())
+    /// and `vec_num` without its sign), with its value when one pass could tell it
+    /// ([`numbers::unsigned`]). `None` where the grammar would read something else.
+    fn unsigned_number(&mut self) -> Option<Option<Number>> {
+        let (len, value) = numbers::unsigned(&self.bytes[self.at..])?;
+        self.at += len;
+        Some(value)
     }
 
     /// The grammar's `number` token: `3`, `0.5`, `2e6`, `30deg`, `1rad`, `0.25turn`, `45°`.
     fn number(&mut self) -> Option<()> {
         let start = self.at;
-        self.unsigned_number()?;
+        let quick = self.unsigned_number()?;
         let digits = &self.text[start..self.at];
+        let value = match quick {
+            Some(n) => n,
+            None => numbers::plain(digits).ok()?,
+        };
         let unit = numbers::unit_at(&self.bytes[self.at..]).map(|(len, to_radians)| {
             self.at += len;
             to_radians
@@ -394,11 +380,10 @@ impl Reader<'_, '_> {
         if self.peek().is_some_and(is_name_char) {
             return None;
         }
-        let (step, bits) = match numbers::apply_unit(numbers::plain(digits).ok()?, unit) {
-            ExprKind::Int(i) => (Step::Int, i as u64),
-            ExprKind::Float(f) => (Step::Float, f.to_bits()),
-            ExprKind::Angle(a) => (Step::Angle, a.to_bits()),
-            _ => return None,
+        let (step, bits) = match numbers::apply_unit(value, unit) {
+            Number::Int(i) => (Step::Int, i as u64),
+            Number::Float(f) => (Step::Float, f.to_bits()),
+            Number::Angle(a) => (Step::Angle, a.to_bits()),
         };
         self.push(step, start, self.at)?;
         self.tape.values.push(bits);
@@ -413,11 +398,13 @@ impl Reader<'_, '_> {
         for (k, slot) in out.iter_mut().enumerate() {
             self.spaces();
             let s = self.at;
-            if self.peek() == Some(b'-') {
-                self.at += 1;
-            }
-            self.unsigned_number()?;
-            *slot = numbers::component(&numbers::plain(&self.text[s..self.at]).ok()?);
+            let (len, quick) = numbers::signed(&self.bytes[s..])?;
+            self.at += len;
+            let value = match quick {
+                Some(n) => n,
+                None => numbers::plain(&self.text[s..self.at]).ok()?,
+            };
+            *slot = numbers::component(value);
             self.spaces();
             let closer = if k == 2 { b']' } else { b',' };
             if self.peek() != Some(closer) {

@@ -10,6 +10,11 @@
 //! A tape is two streams: steps of 8 bytes (a token's place and length) and the 64-bit values
 //! of numbers, read in the same order. A sphere line of a generated file takes ~110 bytes;
 //! compactness matters, since a generated file's tape is in memory while the file is.
+//!
+//! Names: the reader numbers the distinct names of its tape (a generated file repeats a
+//! handful), and a name step carries its number, so building interns each distinct name once
+//! a tape and then looks it up by number; finding the repeats is the reader's work, on every
+//! core, instead of the evaluating thread's.
 
 use crate::source::{FileId, Span};
 use crate::syntax::ast::{Arg, Expr, ExprKind, Let, Name, Stmt, UnOp};
@@ -53,7 +58,13 @@ pub struct Op {
     pub(super) start: u32,
     pub(super) len: u16,
     pub(super) step: Step,
+    /// A name step's number in its tape's [`Names`]; [`UNNUMBERED`] otherwise, or when the
+    /// table was full.
+    pub(super) name: u8,
 }
+
+/// The number of a step that is not a numbered name.
+pub(super) const UNNUMBERED: u8 = u8::MAX;
 
 impl Op {
     /// A step over `start..end`, or `None` when the token is too long for a step (pest then
@@ -63,6 +74,7 @@ impl Op {
             start: u32::try_from(start).ok()?,
             len: u16::try_from(end - start).ok()?,
             step,
+            name: UNNUMBERED,
         })
     }
 
@@ -71,11 +83,63 @@ impl Op {
     }
 }
 
-/// What the fast path read from some lines: their steps, and the values of their numbers.
+/// What the fast path read from some lines: their steps, the values of their numbers, and
+/// their distinct names.
 #[derive(Clone, Default, Debug)]
 pub struct Tape {
     pub(super) ops: Vec<Op>,
     pub(super) values: Vec<u64>,
+    pub(super) names: Names,
+}
+
+/// A tape's distinct names, numbered in the order first read: each is kept as the place of its
+/// first occurrence in the text.
+#[derive(Clone, Debug)]
+pub(super) struct Names {
+    first: Vec<(u32, u16)>,
+    /// A direct-mapped index into `first` (plus one; zero is empty): the repeats of a generated
+    /// file's few names are found without hashing.
+    slots: [u8; NAME_SLOTS],
+}
+
+const NAME_SLOTS: usize = 64;
+
+impl Default for Names {
+    fn default() -> Self {
+        Names {
+            first: Vec::new(),
+            slots: [0; NAME_SLOTS],
+        }
+    }
+}
+
+/// Where a name's slot is: a hash of its first and last bytes and its length.
+fn slot_of(name: &[u8]) -> usize {
+    (name[0] as usize * 31 + name[name.len() - 1] as usize + name.len() * 7) % NAME_SLOTS
+}
+
+impl Names {
+    /// The number of the name `text[start..start + len]` (not empty), numbering it if it is new;
+    /// [`UNNUMBERED`] once 254 names are numbered and its slot holds another.
+    pub(super) fn number(&mut self, text: &str, start: u32, len: u16) -> u8 {
+        let name = &text.as_bytes()[start as usize..start as usize + len as usize];
+        let slot = slot_of(name);
+        let held = self.slots[slot];
+        if held != 0 {
+            let (s, l) = self.first[held as usize - 1];
+            if &text.as_bytes()[s as usize..s as usize + l as usize] == name {
+                return held - 1;
+            }
+        }
+        // A name whose slot another holds is numbered again (a second number for the same
+        // name is harmless: both intern to the same `Sym`).
+        if self.first.len() >= UNNUMBERED as usize {
+            return UNNUMBERED;
+        }
+        self.first.push((start, len));
+        self.slots[slot] = self.first.len() as u8;
+        self.first.len() as u8 - 1
+    }
 }
 
 /// Where a statement starts on its tape.
@@ -88,6 +152,16 @@ pub struct Mark {
 }
 
 impl Tape {
+    /// An empty tape with room for what reading `bytes` of generated lines writes (a sphere
+    /// line of ~60 bytes writes ~10 steps and 4 values), so it is not copied as it grows.
+    pub fn for_bytes(bytes: usize) -> Tape {
+        Tape {
+            ops: Vec::with_capacity(bytes / 5),
+            values: Vec::with_capacity(bytes / 12),
+            names: Names::default(),
+        }
+    }
+
     /// Where the next statement written starts.
     pub fn mark(&self) -> Mark {
         Mark {
@@ -154,9 +228,12 @@ impl<'a> Cursor<'a> {
 
 /// What building keeps between the statements of one file.
 pub struct Memo<'t> {
-    /// Recent names: a generated file repeats a handful of names, and this small
-    /// direct-mapped table finds them without hashing into the interner.
-    names: [Option<(&'t str, Sym)>; 64],
+    /// The interned names of the tape being built from, by number, and which tape that is.
+    numbered: Vec<Sym>,
+    tape: Option<u32>,
+    /// Recent names that have no number: a small direct-mapped table finds the repeats
+    /// without hashing into the interner.
+    names: [Option<(&'t str, Sym)>; NAME_SLOTS],
     /// Operands being built (each with the name of the argument it is, if any); a call takes
     /// its arguments off the top, so each argument list is allocated once at its exact size.
     stack: Vec<Arg>,
@@ -165,22 +242,40 @@ pub struct Memo<'t> {
 impl Default for Memo<'_> {
     fn default() -> Self {
         Memo {
-            names: [None; 64],
+            numbered: Vec::new(),
+            tape: None,
+            names: [None; NAME_SLOTS],
             stack: Vec::new(),
         }
     }
 }
 
 impl<'t> Memo<'t> {
+    /// Makes `tape` (number `id` of its file) the one numbered names are looked up in,
+    /// interning its names when it was not.
+    fn enter(&mut self, id: u32, tape: &Tape, text: &'t str) {
+        if self.tape == Some(id) {
+            return;
+        }
+        self.tape = Some(id);
+        self.numbered.clear();
+        for &(s, l) in &tape.names.first {
+            let sym = self.sym(&text[s as usize..s as usize + l as usize]);
+            self.numbered.push(sym);
+        }
+    }
+
     /// The interned name a step points at in `text`.
     fn sym_at(&mut self, text: &'t str, op: &Op) -> Sym {
-        self.sym(&text[op.start as usize..op.end() as usize])
+        match self.numbered.get(op.name as usize) {
+            Some(&sym) => sym,
+            None => self.sym(&text[op.start as usize..op.end() as usize]),
+        }
     }
 
     /// The interned name `text` (not empty).
     fn sym(&mut self, text: &'t str) -> Sym {
-        let b = text.as_bytes();
-        let slot = (b[0] as usize * 31 + b[b.len() - 1] as usize + b.len() * 7) % 64;
+        let slot = slot_of(text.as_bytes());
         match self.names[slot] {
             Some((known, sym)) if known == text => sym,
             _ => {
@@ -194,7 +289,15 @@ impl<'t> Memo<'t> {
 
 /// Builds the statement the reader wrote at `at` (up to its `End`), reading only its names
 /// from `text`: exactly the AST pest and the tree builder build for its line, spans included.
-pub fn build<'t>(file: FileId, text: &'t str, tape: &Tape, at: Mark, memo: &mut Memo<'t>) -> Stmt {
+/// `id` is the tape's number in its file (names are looked up by it).
+pub fn build<'t>(
+    file: FileId,
+    text: &'t str,
+    (id, tape): (u32, &Tape),
+    at: Mark,
+    memo: &mut Memo<'t>,
+) -> Stmt {
+    memo.enter(id, tape, text);
     Replay::new(file, text, tape, at, memo).build()
 }
 
@@ -206,13 +309,14 @@ pub fn build_into<'t>(
     stmt: &mut Stmt,
     file: FileId,
     text: &'t str,
-    tape: &Tape,
+    (id, tape): (u32, &Tape),
     at: Mark,
     memo: &mut Memo<'t>,
 ) {
+    memo.enter(id, tape, text);
     // A failed match leaves `stmt` partly rewritten: it is replaced whole.
     if !Replay::new(file, text, tape, at, memo).rebuild(stmt) {
-        *stmt = build(file, text, tape, at, memo);
+        *stmt = build(file, text, (id, tape), at, memo);
     }
 }
 
@@ -403,7 +507,9 @@ impl<'t, 'a, 'm> Replay<'t, 'a, 'm> {
                     return false;
                 };
                 self.c.op();
-                e.kind = kind;
+                // The kind replaced is a leaf (matched above), which owns nothing: forgetting
+                // it skips the drop glue's dispatch on every leaf of every line.
+                std::mem::forget(std::mem::replace(&mut e.kind, kind));
                 e.span = self.span(op.start, op.end());
                 true
             }
