@@ -158,6 +158,23 @@ fn edge_cases_parse_the_same_both_ways() {
     }
 }
 
+/// More distinct names than a tape numbers (254), many sharing a slot of its table, each used
+/// again later: every name builds to itself, numbered or not.
+#[test]
+fn a_tape_with_more_names_than_it_numbers_parses_the_same_both_ways() {
+    let mut text = String::from("rtc 1\n");
+    for k in 0..600 {
+        text.push_str(&format!("let n{k}x = {k}\n"));
+    }
+    for k in (0..600).rev() {
+        text.push_str(&format!(
+            "f(a{k}: n{k}x, b: n{}x).m{k}(n0x)\n",
+            (k * 7) % 600
+        ));
+    }
+    assert_eq!(assert_same("many names", &text), 1200);
+}
+
 /// A file with enough top-level lines to be read on several threads (`PARALLEL_LINES`), with
 /// every edge case spread through it, parses as pest alone does; so does the same file cut
 /// short by a delimiter error near its end.

@@ -92,7 +92,7 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
     let (fast_ends, mut tapes) = match path {
         Path::FastFirst => fast_line_ends(text, &scan.top_level_lines, cutoff),
         #[cfg(test)]
-        Path::PestOnly => (vec![None; scan.top_level_lines.len()], Vec::new()),
+        Path::PestOnly => (FastLines { chunks: Vec::new() }, Vec::new()),
     };
     // Lines read here (not at a top-level line start) go on a tape of their own, the last.
     let own = tapes.len() as u32;
@@ -104,7 +104,7 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
             line += 1;
         }
         let fast_end = match scan.top_level_lines.get(line) {
-            Some(&l) if l == pos => fast_ends[line],
+            Some(&l) if l == pos => fast_ends.get(line),
             _ if path == Path::FastFirst => {
                 let tape = &mut tapes[own as usize];
                 let at = tape.mark();
@@ -188,14 +188,33 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
 /// Top-level lines from which reading fast is worth a thread of its own.
 const PARALLEL_LINES: usize = 4096;
 
+/// Top-level lines read into one tape (a unit of parallel work).
+const CHUNK_LINES: usize = PARALLEL_LINES / 4;
+
 /// A fast statement's line: the offset after it, and where it was written (tape, mark).
 type FastLine = Option<(usize, u32, fast::Mark)>;
 
-/// What the fast path reads at each top-level line start (`None` where pest must read it, or
-/// past `cutoff`), with the tapes it wrote. Reading is a pure function of the text and the
-/// position (it interns no names), so a large file's lines are read on every core, in chunks,
-/// each chunk writing a tape of its own; the answers do not depend on how they were cut.
-fn fast_line_ends(text: &str, lines: &[usize], cutoff: usize) -> (Vec<FastLine>, Vec<fast::Tape>) {
+/// What the fast path read at each top-level line start, chunk by chunk: the offset after each
+/// line read (`None` where pest must read it, or past `cutoff`) and where it was written; chunk
+/// `k` wrote tape `k`.
+struct FastLines {
+    chunks: Vec<Vec<Option<(u32, fast::Mark)>>>,
+}
+
+impl FastLines {
+    /// What reading top-level line `line` found.
+    fn get(&self, line: usize) -> FastLine {
+        let (k, i) = (line / CHUNK_LINES, line % CHUNK_LINES);
+        let (next, at) = self.chunks.get(k)?.get(i).copied().flatten()?;
+        Some((next as usize, k as u32, at))
+    }
+}
+
+/// Reads every top-level line start with the fast path, returning what it found and the tapes
+/// it wrote. Reading is a pure function of the text and the position (it interns no names), so
+/// a large file's chunks are read on every core, each writing a tape of its own; the answers
+/// do not depend on how they were cut.
+fn fast_line_ends(text: &str, lines: &[usize], cutoff: usize) -> (FastLines, Vec<fast::Tape>) {
     use rayon::prelude::*;
     let read_chunk = |chunk: &[usize]| {
         let bytes = chunk.last().zip(chunk.first()).map_or(0, |(l, f)| l - f);
@@ -204,32 +223,19 @@ fn fast_line_ends(text: &str, lines: &[usize], cutoff: usize) -> (Vec<FastLine>,
             .iter()
             .map(|&l| {
                 let at = tape.mark();
-                (l < cutoff)
-                    .then(|| fast::read(text, l, cutoff, &mut tape))?
-                    .map(|n| (n, at))
+                let next = (l < cutoff).then(|| fast::read(text, l, cutoff, &mut tape))??;
+                Some((u32::try_from(next).ok()?, at))
             })
             .collect::<Vec<_>>();
         (ends, tape)
     };
     let chunks: Vec<_> = if lines.len() < PARALLEL_LINES {
-        vec![read_chunk(lines)]
+        lines.chunks(CHUNK_LINES).map(read_chunk).collect()
     } else {
-        lines
-            .par_chunks(PARALLEL_LINES / 4)
-            .map(read_chunk)
-            .collect()
+        lines.par_chunks(CHUNK_LINES).map(read_chunk).collect()
     };
-    let mut ends = Vec::with_capacity(lines.len());
-    let mut tapes = Vec::with_capacity(chunks.len() + 1);
-    for (k, (chunk_ends, tape)) in chunks.into_iter().enumerate() {
-        ends.extend(
-            chunk_ends
-                .into_iter()
-                .map(|e| e.map(|(n, at)| (n, k as u32, at))),
-        );
-        tapes.push(tape);
-    }
-    (ends, tapes)
+    let (chunks, tapes) = chunks.into_iter().unzip();
+    (FastLines { chunks }, tapes)
 }
 
 /// Reads the `rtc N` header; returns the version and the offset after it.
