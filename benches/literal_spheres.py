@@ -4,6 +4,7 @@
   spheres_literal.rtc  one `sphere(center: [x, y, z], radius: r).material(m)` per line (~7 MB)
   spheres_loop.rtc     a `for` over the same grid that computes the same numbers
   spheres_literal.pov  the POV-Ray 3.7 twin of the literal file
+  spheres_loop.pov     the POV-Ray 3.7 twin of the loop file (`#while`, issue 12's 100k row)
   points_literal.rtc   a 100 000-point list literal bound with `let` (the memory case)
 
 Every coordinate is computed here exactly as the loop computes it (IEEE doubles, same operations
@@ -54,7 +55,7 @@ with open(os.path.join(out, "spheres_loop.rtc"), "w") as f:
         "}\n"
     )
 
-with open(os.path.join(out, "spheres_literal.pov"), "w") as f:
+def pov_header(f):
     # POV-Ray is left-handed: z is negated so the image is not mirrored.
     f.write("#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n")
     f.write(
@@ -66,8 +67,25 @@ with open(os.path.join(out, "spheres_literal.pov"), "w") as f:
         "#declare M = texture { pigment { color rgb <0.8, 0.3, 0.2> }\n"
         "  finish { ambient 0.2 diffuse 0.7 specular 0.3 roughness 1/16 } }\n"
     )
+
+
+with open(os.path.join(out, "spheres_literal.pov"), "w") as f:
+    pov_header(f)
     for x, y, z, r in spheres():
         f.write(f"sphere {{ <{x!r}, {y!r}, {-z!r}>, {r!r} texture {{ M }} }}\n")
+
+with open(os.path.join(out, "spheres_loop.pov"), "w") as f:
+    pov_header(f)
+    f.write(
+        f"#declare I = 0;\n#while (I < {nx})\n"
+        f"  #declare J = 0;\n  #while (J < {nz})\n"
+        f"    #declare K = 0;\n    #while (K < {ny})\n"
+        "      sphere { <I * 0.4 - 20.0, K * 0.4, -(J * 0.4 - 20.0)>, 0.1 + 0.05 * mod(I + J + K, 3)\n"
+        "        texture { M } }\n"
+        "      #declare K = K + 1;\n    #end\n"
+        "    #declare J = J + 1;\n  #end\n"
+        "  #declare I = I + 1;\n#end\n"
+    )
 
 with open(os.path.join(out, "points_literal.rtc"), "w") as f:
     header(f)
@@ -77,4 +95,7 @@ with open(os.path.join(out, "points_literal.rtc"), "w") as f:
     f.write("]\nassert(len(points) == {})\n".format(nx * ny * nz))
     f.write("sphere(center: points[0], radius: 0.5).material(m)\n")
 
-print(f"wrote {out}/spheres_literal.rtc, spheres_loop.rtc, spheres_literal.pov, points_literal.rtc")
+print(
+    f"wrote {out}/spheres_literal.rtc, spheres_loop.rtc, spheres_literal.pov, spheres_loop.pov,"
+    " points_literal.rtc"
+)
