@@ -188,7 +188,7 @@ mod tests {
                 parts.push(p.clone(), 2 * i as u32);
             }
             assert_eq!((parts.balls.len(), parts.nodes.len()), (count as usize, 0));
-            let world = World::new(parts);
+            let world = World::new(parts, u64::MAX);
             for _ in 0..400 {
                 let origin = DVec3::new(rnd(), rnd(), rnd()) * 20.0 - 10.0;
                 let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).normalize();

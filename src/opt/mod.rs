@@ -77,7 +77,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         Some(t) if !diags.has_errors() => t,
         _ => return Err(diags),
     };
-    let mut world = World::new(parts);
+    let mut world = World::new(parts, expected_rays(scene));
     let effects = Effects::new(&content, &scene.settings, &scene.camera);
     world.need_uv(effects.textures || effects.bump || effects.hatching);
     let lights = scene
@@ -119,6 +119,34 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         warnings: diags.items,
         stats,
     })
+}
+
+/// About how many rays a frame of `scene` traces: camera samples (the most a pixel may take),
+/// each with its shadow rays when shadows are on. An estimate for choosing how much effort the
+/// world's BVH deserves, never a limit.
+fn expected_rays(scene: &Scene) -> u64 {
+    use crate::ir::Sampling;
+    let per_axis = match scene.settings.sampling {
+        Sampling::Grid { factor } => factor,
+        Sampling::Adaptive { max, .. } => max,
+    } as u64;
+    let shadow_rays: u64 = match scene.settings.shadows {
+        true => scene
+            .lights
+            .iter()
+            .map(|l| match l.kind {
+                LightKind::Area { samples, .. } => {
+                    samples[0].max(1) as u64 * samples[1].max(1) as u64
+                }
+                _ => 1,
+            })
+            .sum(),
+        false => 0,
+    };
+    let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+    pixels
+        .saturating_mul(per_axis * per_axis)
+        .saturating_mul(1 + shadow_rays)
 }
 
 /// The scene's materials plus the fallback for objects that name none (the scene's default
