@@ -148,6 +148,41 @@ impl SourceMap {
     }
 }
 
+/// Files from this size on are read in two halves at once.
+const PARALLEL_READ_BYTES: u64 = 1 << 20;
+
+/// Reads a whole file, like `std::fs::read`. A large one (a generated scene of megabytes) is
+/// read in two halves at once, so the kernel's copy into the new buffer, and the page faults it
+/// takes, run on two cores.
+pub fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
+    #[cfg(unix)]
+    {
+        use std::io::{Read, Seek, SeekFrom};
+        use std::os::unix::fs::FileExt;
+        let mut file = std::fs::File::open(path)?;
+        let len = file.metadata()?.len();
+        if len >= PARALLEL_READ_BYTES
+            && let Ok(size) = usize::try_from(len)
+        {
+            // Zeroed by the allocator's fresh pages, not by a pass over the buffer.
+            let mut buf = vec![0u8; size];
+            let (front, back) = buf.split_at_mut(size / 2);
+            let (a, b) = rayon::join(
+                || file.read_exact_at(front, 0),
+                || file.read_exact_at(back, (size / 2) as u64),
+            );
+            // A file that shrank meanwhile is read again as a whole; one that grew gets its
+            // tail read too, as `std::fs::read` would have read it.
+            if a.is_ok() && b.is_ok() {
+                file.seek(SeekFrom::Start(len))?;
+                file.read_to_end(&mut buf)?;
+                return Ok(buf);
+            }
+        }
+    }
+    std::fs::read(path)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -160,5 +195,21 @@ mod tests {
         // "°" is two bytes; the byte after it is column 3.
         assert_eq!(f.line_col(6), (2, 3));
         assert_eq!(f.offset_of(2, 3), 6);
+    }
+
+    /// A large file (read in two halves at once) and a small one read as `std::fs::read` reads
+    /// them.
+    #[test]
+    fn files_read_in_halves_are_read_whole() {
+        let dir = std::env::temp_dir().join(format!("rtc-read-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for len in [0, 10, (3 << 20) + 7] {
+            let bytes: Vec<u8> = (0..len).map(|i: usize| (i * 31 % 251) as u8).collect();
+            let path = dir.join(format!("f{len}"));
+            std::fs::write(&path, &bytes).unwrap();
+            assert_eq!(super::read_file(&path).unwrap(), bytes, "{len} bytes");
+        }
+        assert!(super::read_file(&dir.join("absent")).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -428,7 +428,7 @@ fn modules_are_evaluated_once_and_exports_checked() {
     let mut sm = SourceMap::new();
     let l = load_source(
         Path::new("tests/lang/mods.rtc"),
-        &format!("{src}{CAM}"),
+        format!("{src}{CAM}"),
         &mut sm,
         &EvalOptions::default(),
     );

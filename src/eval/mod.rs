@@ -79,7 +79,7 @@ impl Default for EvalOptions {
 
 /// Parses and evaluates the scene file at `path`, reading it from disk.
 pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
-    match std::fs::read(path).map(String::from_utf8) {
+    match crate::source::read_file(path).map(String::from_utf8) {
         Ok(Ok(text)) => load_source(path, text, sources, options),
         Ok(Err(e)) => {
             let mut loaded = Loaded::default();
