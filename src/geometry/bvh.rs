@@ -65,13 +65,17 @@ fn leaf(start: u32, count: u32) -> u32 {
     LEAF | (count - 1) << LEAF_START_BITS | start
 }
 
-/// The primitive slot range of a leaf child.
+/// A leaf child's start field (its first slot, or its first block after [`Bvh::into_blocks`])
+/// and its primitive count.
 #[inline(always)]
-pub(super) fn leaf_range(child: u32) -> std::ops::Range<usize> {
+pub(super) fn leaf_parts(child: u32) -> (usize, usize) {
     let start = (child & ((1 << LEAF_START_BITS) - 1)) as usize;
     let count = ((child & !LEAF) >> LEAF_START_BITS) as usize + 1;
-    start..start + count
+    (start, count)
 }
+
+/// Slots per block after [`Bvh::into_blocks`] (the lanes of one 4-wide triangle test).
+pub const BLOCK: usize = 4;
 
 /// A wide BVH over a list of boxes; primitive slots in callbacks index [`Bvh::order`].
 #[derive(Clone, Debug)]
@@ -207,6 +211,35 @@ impl Bvh {
     /// Approximate heap bytes.
     pub fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
+    }
+
+    /// Lays the slots out anew in blocks of [`BLOCK`]: every leaf starts a fresh block, so a
+    /// leaf of up to four primitives is one block (one 4-wide test), and a leaf's start field
+    /// becomes its first block. Its slots are `BLOCK·start ..` (`count` of them, in the order
+    /// they had), and [`Bvh::order`] is `u32::MAX` in the padding slots after a leaf. Leaves
+    /// keep their order in memory. Only the leaf-wise traversals ([`Bvh::closest_leaves`],
+    /// [`Bvh::any_leaves`]) may be used afterwards.
+    pub(super) fn into_blocks(mut self) -> Bvh {
+        // (first slot, node, lane) of every leaf, in slot order.
+        let mut leaves: Vec<(usize, usize, usize)> = Vec::new();
+        for (n, node) in self.nodes.iter().enumerate() {
+            for (lane, &c) in node.child.iter().enumerate() {
+                if c != EMPTY && c & LEAF != 0 {
+                    leaves.push((leaf_parts(c).0, n, lane));
+                }
+            }
+        }
+        leaves.sort_unstable();
+        let mut order = Vec::with_capacity(self.order.len() + self.order.len() / 2);
+        for (start, n, lane) in leaves {
+            let count = leaf_parts(self.nodes[n].child[lane]).1;
+            let block = order.len() / BLOCK;
+            order.extend_from_slice(&self.order[start..start + count]);
+            order.resize(order.len().next_multiple_of(BLOCK), u32::MAX);
+            self.nodes[n].child[lane] = leaf(block as u32, count as u32);
+        }
+        self.order = order;
+        self
     }
 }
 
@@ -489,9 +522,9 @@ mod tests {
         assert!(sorted.iter().enumerate().all(|(i, &x)| i as u32 == x));
         let leaves = grouped.nodes.iter().flat_map(|n| n.child);
         let leaves: Vec<_> = leaves.filter(|&c| c != EMPTY && c & LEAF != 0).collect();
-        assert!(leaves.iter().all(|&c| leaf_range(c).len() <= 4));
+        assert!(leaves.iter().all(|&c| leaf_parts(c).1 <= 4));
         assert_eq!(
-            leaves.iter().map(|&c| leaf_range(c).len()).sum::<usize>(),
+            leaves.iter().map(|&c| leaf_parts(c).1).sum::<usize>(),
             20_000
         );
         assert!(
