@@ -119,6 +119,7 @@ impl BvhRay {
     }
 
     /// Like [`BvhRay::new`] with the f64 reciprocal direction already known.
+    #[inline]
     pub fn with_inverse(
         origin: DVec3,
         dir: DVec3,

@@ -138,8 +138,16 @@ impl Bvh {
                     }
                 }
             }
-            for &item in &inner[..count] {
-                stack.push(item);
+            // The nearest goes next without a trip through the stack (the same order as
+            // pushing it last and popping it).
+            if let Some((&(n, d), farther)) = inner[..count].split_last() {
+                for &item in farther {
+                    stack.push(item);
+                }
+                if d <= t_max {
+                    node = n;
+                    continue;
+                }
             }
             node = loop {
                 match stack.pop() {
@@ -168,12 +176,16 @@ impl Bvh {
         loop {
             let (_, mut mask) = test(&self.nodes[node as usize], ray, ray.t_max);
             let children = &self.nodes[node as usize].child;
+            // The last inner child met: it goes next, as if pushed and popped at once.
+            let mut last = None;
             while mask != 0 {
                 let lane = mask.trailing_zeros() as usize;
                 mask &= mask - 1;
                 let c = children[lane];
                 if c & LEAF == 0 {
-                    stack.push((c, 0.0));
+                    if let Some(earlier) = last.replace(c) {
+                        stack.push((earlier, 0.0));
+                    }
                 } else if c != EMPTY {
                     let (start, n) = leaf_parts(c);
                     if f(start, n) {
@@ -181,8 +193,8 @@ impl Bvh {
                     }
                 }
             }
-            match stack.pop() {
-                Some((n, _)) => node = n,
+            match last.or_else(|| stack.pop().map(|(n, _)| n)) {
+                Some(n) => node = n,
                 None => return false,
             }
         }

@@ -118,7 +118,7 @@ impl ShearedRay {
     }
 
     /// Like [`ShearedRay::new`] with `dir.recip()` already known (saves a division).
-    #[inline]
+    #[inline(always)]
     pub fn with_inverse(origin: DVec3, dir: DVec3, recip: DVec3) -> Option<ShearedRay> {
         let d = dir.to_array();
         let (kx, ky, kz) = shear_axes(d);
