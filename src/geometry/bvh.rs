@@ -480,6 +480,69 @@ mod tests {
         }
     }
 
+    /// Laid out in blocks, the tree visits the same primitives in the same order, leaf by
+    /// leaf, as before (the mesh's nearest hit and its tie-breaking depend on that order); every
+    /// leaf starts a block and the padding slots map to no primitive.
+    #[test]
+    fn blocks_keep_the_visiting_order() {
+        for (n, leaf, seed) in [
+            (1, 1, 1),
+            (7, 4, 2),
+            (600, 4, 3),
+            (3000, 4, 4),
+            (3000, 8, 5),
+        ] {
+            let boxes = random_boxes(n, seed);
+            let params = BvhBuildParams {
+                max_prims_per_leaf: leaf,
+                ..BvhBuildParams::medium_build()
+            };
+            let plain = Bvh::build(&boxes, (0..n as u32).collect(), params);
+            let blocked = plain.clone().into_blocks();
+            let mut ids: Vec<u32> = (blocked.order.iter().copied())
+                .filter(|&i| i != u32::MAX)
+                .collect();
+            ids.sort_unstable();
+            assert!(ids.iter().enumerate().all(|(i, &x)| i as u32 == x), "n={n}");
+            assert_eq!(blocked.order.len() % BLOCK, 0);
+            let mut seed = 17u64;
+            let mut rnd = move || {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+                ((seed >> 33) as f64) / (1u64 << 31) as f64
+            };
+            for _ in 0..200 {
+                let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
+                let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).normalize();
+                let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
+                // A hit distance per primitive (its box's entry), so t_max shrinks as in a
+                // closest-hit search.
+                let entry =
+                    |i: u32| slab(&boxes[i as usize], o, d).map_or(f32::INFINITY, |t| t as f32);
+                let (mut want, mut got) = (Vec::new(), Vec::new());
+                plain.closest(&r, |slot, _| {
+                    want.push(plain.order[slot]);
+                    entry(plain.order[slot])
+                });
+                blocked.closest_leaves(&r, |first, count, mut t_max| {
+                    assert!(count <= MAX_LEAF as usize);
+                    for slot in first * BLOCK..first * BLOCK + count {
+                        got.push(blocked.order[slot]);
+                        t_max = t_max.min(entry(blocked.order[slot]));
+                    }
+                    t_max
+                });
+                assert_eq!(got, want, "closest, n={n}");
+                let (mut want, mut got) = (Vec::new(), Vec::<u32>::new());
+                plain.all(&r, |slot| want.push(plain.order[slot]));
+                blocked.any_leaves(&r, |first, count| {
+                    got.extend(&blocked.order[first * BLOCK..first * BLOCK + count]);
+                    false
+                });
+                assert_eq!(got, want, "any, n={n}");
+            }
+        }
+    }
+
     /// obvhs builds in parallel; the tree must not depend on the thread count (deterministic
     /// output for any `--threads`).
     #[test]

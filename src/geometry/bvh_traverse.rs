@@ -100,11 +100,7 @@ impl Bvh {
     /// (its first slot, or its first block after [`Bvh::into_blocks`]) and its primitive count,
     /// and returns the nearest hit so far (at most `t_max`).
     #[inline]
-    pub(super) fn closest_leaves(
-        &self,
-        ray: &BvhRay,
-        mut f: impl FnMut(usize, usize, f32) -> f32,
-    ) {
+    pub(super) fn closest_leaves(&self, ray: &BvhRay, mut f: impl FnMut(usize, usize, f32) -> f32) {
         if self.nodes.is_empty() {
             return;
         }

@@ -331,4 +331,3 @@ impl Mesh {
         out[start..].sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     }
 }
-

@@ -249,7 +249,8 @@ impl TriBlock {
     /// The corners of the triangle in `lane`.
     #[inline]
     pub fn corners(&self, lane: usize) -> [Vec3A; 3] {
-        self.v.map(|c| Vec3A::new(c[0][lane], c[1][lane], c[2][lane]))
+        self.v
+            .map(|c| Vec3A::new(c[0][lane], c[1][lane], c[2][lane]))
     }
 }
 
