@@ -1,5 +1,6 @@
 //! Triangle meshes ready for rays: the triangles of a loaded OBJ file (see `assets::obj`) in
-//! the order of their own BVH, with per-corner normals and uvs and per-triangle material slots.
+//! the order of their own BVH, four to a block for the 4-wide test, with per-corner normals and
+//! uvs and per-triangle material slots (in file order, read once per hit).
 
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
