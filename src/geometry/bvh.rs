@@ -65,13 +65,17 @@ fn leaf(start: u32, count: u32) -> u32 {
     LEAF | (count - 1) << LEAF_START_BITS | start
 }
 
-/// The primitive slot range of a leaf child.
+/// A leaf child's start field (its first slot, or its first block after [`Bvh::into_blocks`])
+/// and its primitive count.
 #[inline(always)]
-pub(super) fn leaf_range(child: u32) -> std::ops::Range<usize> {
+pub(super) fn leaf_parts(child: u32) -> (usize, usize) {
     let start = (child & ((1 << LEAF_START_BITS) - 1)) as usize;
     let count = ((child & !LEAF) >> LEAF_START_BITS) as usize + 1;
-    start..start + count
+    (start, count)
 }
+
+/// Slots per block after [`Bvh::into_blocks`] (the lanes of one 4-wide triangle test).
+pub const BLOCK: usize = 4;
 
 /// A wide BVH over a list of boxes; primitive slots in callbacks index [`Bvh::order`].
 #[derive(Clone, Debug)]
@@ -115,6 +119,7 @@ impl BvhRay {
     }
 
     /// Like [`BvhRay::new`] with the f64 reciprocal direction already known.
+    #[inline]
     pub fn with_inverse(
         origin: DVec3,
         dir: DVec3,
@@ -207,6 +212,35 @@ impl Bvh {
     /// Approximate heap bytes.
     pub fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
+    }
+
+    /// Lays the slots out anew in blocks of [`BLOCK`]: every leaf starts a fresh block, so a
+    /// leaf of up to four primitives is one block (one 4-wide test), and a leaf's start field
+    /// becomes its first block. Its slots are `BLOCK·start ..` (`count` of them, in the order
+    /// they had), and [`Bvh::order`] is `u32::MAX` in the padding slots after a leaf. Leaves
+    /// keep their order in memory. Only the leaf-wise traversals ([`Bvh::closest_leaves`],
+    /// [`Bvh::any_leaves`]) may be used afterwards.
+    pub(super) fn into_blocks(mut self) -> Bvh {
+        // (first slot, node, lane) of every leaf, in slot order.
+        let mut leaves: Vec<(usize, usize, usize)> = Vec::new();
+        for (n, node) in self.nodes.iter().enumerate() {
+            for (lane, &c) in node.child.iter().enumerate() {
+                if c != EMPTY && c & LEAF != 0 {
+                    leaves.push((leaf_parts(c).0, n, lane));
+                }
+            }
+        }
+        leaves.sort_unstable();
+        let mut order = Vec::with_capacity(self.order.len() + self.order.len() / 2);
+        for (start, n, lane) in leaves {
+            let count = leaf_parts(self.nodes[n].child[lane]).1;
+            let block = order.len() / BLOCK;
+            order.extend_from_slice(&self.order[start..start + count]);
+            order.resize(order.len().next_multiple_of(BLOCK), u32::MAX);
+            self.nodes[n].child[lane] = leaf(block as u32, count as u32);
+        }
+        self.order = order;
+        self
     }
 }
 
@@ -446,6 +480,69 @@ mod tests {
         }
     }
 
+    /// Laid out in blocks, the tree visits the same primitives in the same order, leaf by
+    /// leaf, as before (the mesh's nearest hit and its tie-breaking depend on that order); every
+    /// leaf starts a block and the padding slots map to no primitive.
+    #[test]
+    fn blocks_keep_the_visiting_order() {
+        for (n, leaf, seed) in [
+            (1, 1, 1),
+            (7, 4, 2),
+            (600, 4, 3),
+            (3000, 4, 4),
+            (3000, 8, 5),
+        ] {
+            let boxes = random_boxes(n, seed);
+            let params = BvhBuildParams {
+                max_prims_per_leaf: leaf,
+                ..BvhBuildParams::medium_build()
+            };
+            let plain = Bvh::build(&boxes, (0..n as u32).collect(), params);
+            let blocked = plain.clone().into_blocks();
+            let mut ids: Vec<u32> = (blocked.order.iter().copied())
+                .filter(|&i| i != u32::MAX)
+                .collect();
+            ids.sort_unstable();
+            assert!(ids.iter().enumerate().all(|(i, &x)| i as u32 == x), "n={n}");
+            assert_eq!(blocked.order.len() % BLOCK, 0);
+            let mut seed = 17u64;
+            let mut rnd = move || {
+                seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+                ((seed >> 33) as f64) / (1u64 << 31) as f64
+            };
+            for _ in 0..200 {
+                let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
+                let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).normalize();
+                let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
+                // A hit distance per primitive (its box's entry), so t_max shrinks as in a
+                // closest-hit search.
+                let entry =
+                    |i: u32| slab(&boxes[i as usize], o, d).map_or(f32::INFINITY, |t| t as f32);
+                let (mut want, mut got) = (Vec::new(), Vec::new());
+                plain.closest(&r, |slot, _| {
+                    want.push(plain.order[slot]);
+                    entry(plain.order[slot])
+                });
+                blocked.closest_leaves(&r, |first, count, mut t_max| {
+                    assert!(count <= MAX_LEAF as usize);
+                    for slot in first * BLOCK..first * BLOCK + count {
+                        got.push(blocked.order[slot]);
+                        t_max = t_max.min(entry(blocked.order[slot]));
+                    }
+                    t_max
+                });
+                assert_eq!(got, want, "closest, n={n}");
+                let (mut want, mut got) = (Vec::new(), Vec::<u32>::new());
+                plain.all(&r, |slot| want.push(plain.order[slot]));
+                blocked.any_leaves(&r, |first, count| {
+                    got.extend(&blocked.order[first * BLOCK..first * BLOCK + count]);
+                    false
+                });
+                assert_eq!(got, want, "any, n={n}");
+            }
+        }
+    }
+
     /// obvhs builds in parallel; the tree must not depend on the thread count (deterministic
     /// output for any `--threads`).
     #[test]
@@ -489,9 +586,9 @@ mod tests {
         assert!(sorted.iter().enumerate().all(|(i, &x)| i as u32 == x));
         let leaves = grouped.nodes.iter().flat_map(|n| n.child);
         let leaves: Vec<_> = leaves.filter(|&c| c != EMPTY && c & LEAF != 0).collect();
-        assert!(leaves.iter().all(|&c| leaf_range(c).len() <= 4));
+        assert!(leaves.iter().all(|&c| leaf_parts(c).1 <= 4));
         assert_eq!(
-            leaves.iter().map(|&c| leaf_range(c).len()).sum::<usize>(),
+            leaves.iter().map(|&c| leaf_parts(c).1).sum::<usize>(),
             20_000
         );
         assert!(

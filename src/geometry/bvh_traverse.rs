@@ -4,7 +4,7 @@
 
 use glam::Vec4;
 
-use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, WIDTH, WideNode, leaf_range};
+use super::bvh::{Bvh, BvhRay, EMPTY, LEAF, WIDTH, WideNode, leaf_parts};
 
 /// Slab distances are rounded in f32; widening the exit by a few ulps (Ize 2013, 1 + 2γ₃)
 /// keeps a box that the exact ray grazes from being culled. (A negative exit is narrowed
@@ -85,6 +85,22 @@ impl Bvh {
     /// children are visited nearest first and anything beyond the best hit is skipped.
     #[inline]
     pub fn closest(&self, ray: &BvhRay, mut f: impl FnMut(usize, f32) -> f32) {
+        self.closest_leaves(ray, |start, count, mut t_max| {
+            for slot in start..start + count {
+                let t = f(slot, t_max);
+                if t < t_max {
+                    t_max = t;
+                }
+            }
+            t_max
+        });
+    }
+
+    /// [`Bvh::closest`] a leaf at a time: `f(start, count, t_max)` gets the leaf's start field
+    /// (its first slot, or its first block after [`Bvh::into_blocks`]) and its primitive count,
+    /// and returns the nearest hit so far (at most `t_max`).
+    #[inline]
+    pub(super) fn closest_leaves(&self, ray: &BvhRay, mut f: impl FnMut(usize, usize, f32) -> f32) {
         if self.nodes.is_empty() {
             return;
         }
@@ -111,16 +127,23 @@ impl Bvh {
                     inner[k] = (c, near[lane]);
                     count += 1;
                 } else if c != EMPTY && near[lane] <= t_max {
-                    for slot in leaf_range(c) {
-                        let t = f(slot, t_max);
-                        if t < t_max {
-                            t_max = t;
-                        }
+                    let (start, n) = leaf_parts(c);
+                    let t = f(start, n, t_max);
+                    if t < t_max {
+                        t_max = t;
                     }
                 }
             }
-            for &item in &inner[..count] {
-                stack.push(item);
+            // The nearest goes next without a trip through the stack (the same order as
+            // pushing it last and popping it).
+            if let Some((&(n, d), farther)) = inner[..count].split_last() {
+                for &item in farther {
+                    stack.push(item);
+                }
+                if d <= t_max {
+                    node = n;
+                    continue;
+                }
             }
             node = loop {
                 match stack.pop() {
@@ -135,6 +158,12 @@ impl Bvh {
     /// Any-hit traversal: stops at the first slot for which `f` returns true.
     #[inline]
     pub fn any(&self, ray: &BvhRay, mut f: impl FnMut(usize) -> bool) -> bool {
+        self.any_leaves(ray, |start, count| (start..start + count).any(&mut f))
+    }
+
+    /// [`Bvh::any`] a leaf at a time: `f(start, count)` as in [`Bvh::closest_leaves`].
+    #[inline]
+    pub(super) fn any_leaves(&self, ray: &BvhRay, mut f: impl FnMut(usize, usize) -> bool) -> bool {
         if self.nodes.is_empty() {
             return false;
         }
@@ -143,18 +172,25 @@ impl Bvh {
         loop {
             let (_, mut mask) = test(&self.nodes[node as usize], ray, ray.t_max);
             let children = &self.nodes[node as usize].child;
+            // The last inner child met: it goes next, as if pushed and popped at once.
+            let mut last = None;
             while mask != 0 {
                 let lane = mask.trailing_zeros() as usize;
                 mask &= mask - 1;
                 let c = children[lane];
                 if c & LEAF == 0 {
-                    stack.push((c, 0.0));
-                } else if c != EMPTY && leaf_range(c).any(&mut f) {
-                    return true;
+                    if let Some(earlier) = last.replace(c) {
+                        stack.push((earlier, 0.0));
+                    }
+                } else if c != EMPTY {
+                    let (start, n) = leaf_parts(c);
+                    if f(start, n) {
+                        return true;
+                    }
                 }
             }
-            match stack.pop() {
-                Some((n, _)) => node = n,
+            match last.or_else(|| stack.pop().map(|(n, _)| n)) {
+                Some(n) => node = n,
                 None => return false,
             }
         }

@@ -1,12 +1,13 @@
 //! Triangle meshes ready for rays: the triangles of a loaded OBJ file (see `assets::obj`) in
-//! the order of their own BVH, with per-corner normals and uvs and per-triangle material slots.
+//! the order of their own BVH, four to a block for the 4-wide test, with per-corner normals and
+//! uvs and per-triangle material slots (in file order, read once per hit).
 
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use rayon::prelude::*;
 
-use super::bvh::{Bvh, BvhRay};
-use super::triangle::ShearedRay;
+use super::bvh::{BLOCK, Bvh, BvhRay};
+use super::triangle::{ShearedRay, TriBlock};
 use super::{Aabb, Ray};
 use crate::ir::limits::MAX_TRIANGLES;
 
@@ -38,15 +39,20 @@ pub struct MeshParts<'a> {
 /// A mesh with its BVH, shared (`Arc`) by every object that places the same file.
 #[derive(Debug)]
 pub struct Mesh {
-    /// Triangles' corners in BVH order (gathered once: a leaf's triangles sit side by side,
-    /// and 12 bytes a corner instead of 16).
-    tris: Vec<[Vec3; 3]>,
-    /// Per-corner shading normals (empty for flat shading).
+    /// Triangles' corners in BVH order, four side by side per block (a BVH leaf starts a
+    /// block, so a leaf of up to four triangles is one 4-wide test); slot `s` is lane `s % 4`
+    /// of block `s / 4`.
+    blocks: Vec<TriBlock>,
+    /// Number of triangles.
+    triangles: usize,
+    /// Per-corner shading normals in file order (empty for flat shading).
     normals: Vec<[Vec3; 3]>,
-    /// Per-corner texture coordinates (empty when the file has none).
+    /// Per-corner texture coordinates in file order (empty when the file has none).
     uvs: Vec<[Vec2; 3]>,
-    /// Per-triangle material slot (`u32::MAX`: none); empty when no face has one.
+    /// Per-triangle material slot in file order (`u32::MAX`: none); empty when no face has one.
     material_of: Vec<u32>,
+    /// The tree, its leaves in blocks ([`Bvh::into_blocks`]); `order` maps a slot to its
+    /// triangle's index in the file.
     bvh: Bvh,
     bounds: Aabb,
     /// How far before the bounds a ray restarts (a thousandth of the diagonal).
@@ -111,20 +117,27 @@ impl Mesh {
             },
         );
         drop(boxes);
-        // Per-triangle data in BVH slot order, so a leaf's triangles sit side by side.
-        let tris2 = bvh
+        let bvh = bvh.into_blocks();
+        // Corners in BVH slot order, so a leaf's triangles sit side by side.
+        let blocks = bvh
             .order
-            .par_iter()
-            .map(|&i| corners(&parts.triangles[i as usize]))
+            .par_chunks(BLOCK)
+            .map(|ids| {
+                let mut block = TriBlock::EMPTY;
+                for (lane, &i) in ids.iter().enumerate() {
+                    if let Some(t) = parts.triangles.get(i as usize) {
+                        block.set(lane, corners(t));
+                    }
+                }
+                block
+            })
             .collect();
-        let normals = in_order(parts.normals, &bvh.order);
-        let uvs = in_order(parts.uvs, &bvh.order);
-        let material_of = in_order(parts.material_of, &bvh.order);
         Mesh {
-            tris: tris2,
-            normals,
-            uvs,
-            material_of,
+            blocks,
+            triangles: parts.triangles.len(),
+            normals: parts.normals.to_vec(),
+            uvs: parts.uvs.to_vec(),
+            material_of: parts.material_of.to_vec(),
             bvh,
             bounds,
             margin: 1e-3 * (bounds.max - bounds.min).length(),
@@ -134,7 +147,7 @@ impl Mesh {
 
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
-        self.tris.len()
+        self.triangles
     }
 
     /// Object-space bounds.
@@ -149,27 +162,35 @@ impl Mesh {
 
     /// Approximate heap bytes.
     pub fn memory(&self) -> usize {
-        self.tris.len() * std::mem::size_of::<[Vec3; 3]>()
+        self.blocks.len() * std::mem::size_of::<TriBlock>()
             + self.normals.len() * std::mem::size_of::<[Vec3; 3]>()
             + self.uvs.len() * std::mem::size_of::<[Vec2; 3]>()
             + self.material_of.len() * 4
             + self.bvh.memory()
     }
 
+    /// The corners of the triangle in `slot`.
+    #[inline]
+    fn corners(&self, slot: usize) -> [Vec3A; 3] {
+        self.blocks[slot / BLOCK].corners(slot % BLOCK)
+    }
+
     fn hit(&self, slot: usize, t: f32, b: [f32; 3]) -> MeshHit {
-        let tri = self.tris[slot].map(Vec3A::from);
+        let tri = self.corners(slot);
+        // The triangle's index in the file, for its attributes.
+        let file = self.bvh.order[slot] as usize;
         let geometric = (tri[1] - tri[0])
             .cross(tri[2] - tri[0])
             .as_dvec3()
             .normalize_or(DVec3::Y);
-        let shading = match self.normals.get(slot) {
+        let shading = match self.normals.get(file) {
             Some(n) => (n[0] * b[0] + n[1] * b[1] + n[2] * b[2])
                 .as_dvec3()
                 .try_normalize()
                 .unwrap_or(geometric),
             None => geometric,
         };
-        let uv = match self.uvs.get(slot) {
+        let uv = match self.uvs.get(file) {
             Some(u) => (u[0] * b[0] + u[1] * b[1] + u[2] * b[2]).as_dvec2(),
             None => DVec2::new(b[1] as f64, b[2] as f64),
         };
@@ -180,7 +201,7 @@ impl Mesh {
             uv,
             material: self
                 .material_of
-                .get(slot)
+                .get(file)
                 .copied()
                 .filter(|&m| m != u32::MAX),
             error: DVec3::ZERO,
@@ -190,13 +211,14 @@ impl Mesh {
     /// Error bound of the computed point `p` on the triangle in `slot`: its residual off the
     /// triangle's plane, evaluated in f64 from the stored corners.
     fn point_error(&self, slot: usize, p: DVec3) -> DVec3 {
-        let [a, b, c] = self.tris[slot].map(|v| v.as_dvec3());
+        let [a, b, c] = self.corners(slot).map(|v| v.as_dvec3());
         let n = (b - a).cross(c - a).normalize_or(DVec3::Y);
         super::plane::point_error(a, n, p)
     }
 
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
+    #[inline(always)]
     fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, BvhRay, f32)> {
         // Slab test against the mesh bounds, keeping the reciprocal for the f32 ray.
         let inv = ray.dir.recip();
@@ -227,14 +249,22 @@ impl Mesh {
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<MeshHit> {
         let (s, sr, r, lo) = self.near(ray, t_min, t_max)?;
         let mut best: Option<(usize, f32, [f32; 3])> = None;
-        self.bvh.closest(&r, |slot, t_far| {
-            match sr.intersect(&self.tris[slot].map(Vec3A::from)) {
-                Some((t, b)) if t > lo && t < t_far => {
-                    best = Some((slot, t, b));
-                    t
+        // Each leaf's triangles in slot order, each against the nearest hit so far, as a
+        // triangle-by-triangle loop would test them (the first of equally near hits wins).
+        self.bvh.closest_leaves(&r, |first, count, mut t_far| {
+            for (slot, e) in self.leaf(&sr, first, count) {
+                let mut mask = e.mask;
+                while mask != 0 {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    let (t, b) = e.hit(lane);
+                    if t > lo && t < t_far {
+                        best = Some((slot + lane, t, b));
+                        t_far = t;
+                    }
                 }
-                _ => f32::INFINITY,
             }
+            t_far
         });
         let (slot, t, b) = best?;
         let mut h = self.hit(slot, t, b);
@@ -249,9 +279,35 @@ impl Mesh {
             return false;
         };
         let hi = (t_max - s) as f32;
-        self.bvh.any(&r, |slot| {
-            sr.intersect(&self.tris[slot].map(Vec3A::from))
-                .is_some_and(|(t, _)| t > lo && t < hi)
+        self.bvh.any_leaves(&r, |first, count| {
+            self.leaf(&sr, first, count).any(|(_, e)| {
+                let mut mask = e.mask;
+                while mask != 0 {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    let (t, _) = e.hit(lane);
+                    if t > lo && t < hi {
+                        return true;
+                    }
+                }
+                false
+            })
+        })
+    }
+
+    /// The 4-wide tests of a leaf (`count` triangles from block `first`): per block, its first
+    /// slot and the edge functions of its used lanes.
+    #[inline(always)]
+    fn leaf<'a>(
+        &'a self,
+        sr: &'a ShearedRay,
+        first: usize,
+        count: usize,
+    ) -> impl Iterator<Item = (usize, super::triangle::Edges4)> + 'a {
+        let blocks = &self.blocks[first..first + count.div_ceil(BLOCK)];
+        blocks.iter().enumerate().map(move |(k, block)| {
+            let lanes = (count - k * BLOCK).min(BLOCK);
+            ((first + k) * BLOCK, sr.intersect4(block, lanes))
         })
     }
 
@@ -261,23 +317,18 @@ impl Mesh {
             return;
         };
         let start = out.len();
-        self.bvh.all(&r, |slot| {
-            if let Some((t, b)) = sr.intersect(&self.tris[slot].map(Vec3A::from)) {
-                let mut h = self.hit(slot, t, b);
-                h.t += s;
-                h.error = self.point_error(slot, ray.at(h.t));
-                out.push((h, h.geometric.dot(ray.dir) < 0.0));
+        self.bvh.any_leaves(&r, |first, count| {
+            for (slot, e) in self.leaf(&sr, first, count) {
+                for lane in (0..BLOCK).filter(|l| e.mask >> l & 1 == 1) {
+                    let (t, b) = e.hit(lane);
+                    let mut h = self.hit(slot + lane, t, b);
+                    h.t += s;
+                    h.error = self.point_error(slot + lane, ray.at(h.t));
+                    out.push((h, h.geometric.dot(ray.dir) < 0.0));
+                }
             }
+            false
         });
         out[start..].sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     }
-}
-
-/// `values` permuted into `order` (BVH slot → original index); empty stays empty (an attribute
-/// the file does not have).
-fn in_order<T: Copy>(values: &[T], order: &[u32]) -> Vec<T> {
-    if values.is_empty() {
-        return Vec::new();
-    }
-    order.iter().map(|&i| values[i as usize]).collect()
 }
