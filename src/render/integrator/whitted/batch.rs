@@ -13,6 +13,7 @@ use glam::DVec3;
 
 use super::{Path, Whitted, reflect};
 use crate::geometry::Ray;
+use crate::geometry::sphere_cull::Bundle;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::record::NoRecord;
 use crate::render::shading::{BATCH, Ctx, Surface, phong};
@@ -43,8 +44,20 @@ impl Whitted<'_> {
         // copied there (a `memcpy` per ray, 8% of scene A's profile).
         let mut live: [Option<Surface<'_>>; BATCH] = [None; BATCH];
         let mut facing = [DVec3::ZERO; BATCH];
+        // The spheres a pixel's camera rays can meet at all: the few in the pixel. (Reflected
+        // rays spread too far for it to pay: they test every sphere, in lanes.)
+        let among = paths.first().is_some_and(|p| p.depth == 0).then(|| {
+            let mut bundle = Bundle::new();
+            for r in rays {
+                bundle.push(r, f64::INFINITY);
+            }
+            world.among(&bundle)
+        });
         for i in 0..rays.len() {
-            let found = world.intersect(&rays[i], 0.0, f64::INFINITY);
+            let found = match among {
+                Some(among) => world.intersect_among(&rays[i], 0.0, f64::INFINITY, among),
+                None => world.intersect(&rays[i], 0.0, f64::INFINITY),
+            };
             let Some(hit) = &found else {
                 out[i] = self.background;
                 continue;
