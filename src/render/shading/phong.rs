@@ -111,17 +111,22 @@ pub fn shade_batch(scene: &Prepared, ss: &[Option<Surface<'_>>], ctx: &mut Ctx, 
             // The shadow rays' segments (from nearby points to one light sample), to skip the
             // spheres none of them can meet.
             let mut bundle = Bundle::new();
-            for ((s, l), r) in ss.iter().zip(&mut lights).zip(&mut rays) {
+            for (s, l) in ss.iter().zip(&mut lights) {
                 let Some(s) = s else { continue };
                 let ls = light_sample(light, i, k, count, s, &ctx.rng);
                 let n_dot_l = s.n.dot(ls.l);
                 // Facing away: neither light nor shadow ray (as in `shade`).
                 if n_dot_l > 0.0 {
-                    *r = shadow_ray(scene, s, &ls, &mut ctx.stats);
+                    *l = Some((ls, n_dot_l));
+                }
+            }
+            // The shadow rays in a loop of their own: shorter loops overlap more points' chains.
+            for ((s, l), r) in ss.iter().zip(&lights).zip(&mut rays) {
+                if let (Some(s), Some((ls, _))) = (s, l) {
+                    *r = shadow_ray(scene, s, ls, &mut ctx.stats);
                     if let Some((ray, t_max)) = r {
                         bundle.push(ray, *t_max);
                     }
-                    *l = Some((ls, n_dot_l));
                 }
             }
             let among = world.among(&bundle);

@@ -13,7 +13,8 @@ use glam::DVec3;
 
 use super::{Path, Whitted, reflect};
 use crate::geometry::Ray;
-use crate::geometry::sphere_cull::Bundle;
+use crate::geometry::sphere_cull::{Among, Bundle};
+use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::record::NoRecord;
 use crate::render::shading::{BATCH, Ctx, Surface, phong};
@@ -46,18 +47,22 @@ impl Whitted<'_> {
         let mut facing = [DVec3::ZERO; BATCH];
         // The spheres a pixel's camera rays can meet at all: the few in the pixel. (Reflected
         // rays spread too far for it to pay: they test every sphere, in lanes.)
-        let among = paths.first().is_some_and(|p| p.depth == 0).then(|| {
+        let among = if paths.first().is_some_and(|p| p.depth == 0) {
             let mut bundle = Bundle::new();
             for r in rays {
                 bundle.push(r, f64::INFINITY);
             }
             world.among(&bundle)
-        });
+        } else {
+            Among::ALL
+        };
+        // The spheres' `t`s first, then the hits: two short loops overlap more rays' chains.
+        let mut first = [SphereHit::default(); BATCH];
+        for (f, r) in first.iter_mut().zip(rays) {
+            *f = world.nearest_sphere(r, 0.0, f64::INFINITY, among);
+        }
         for i in 0..rays.len() {
-            let found = match among {
-                Some(among) => world.intersect_among(&rays[i], 0.0, f64::INFINITY, among),
-                None => world.intersect(&rays[i], 0.0, f64::INFINITY),
-            };
+            let found = world.intersect_after(&rays[i], 0.0, f64::INFINITY, first[i]);
             let Some(hit) = &found else {
                 out[i] = self.background;
                 continue;
