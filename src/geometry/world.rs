@@ -382,25 +382,31 @@ impl World {
 
     /// The world-space hit of `ray` from object `i`'s hit `h`, with uv when needed.
     #[inline(always)]
-    fn surface_hit(&self, ray: &Ray, mut h: GeoHit, i: u32) -> SurfaceHit {
-        if self.need_uv {
-            match i & BALL {
-                0 => self.nodes[i as usize].finish(&mut h),
-                _ => self.balls[(i & !BALL) as usize].finish(&mut h),
-            }
-        }
+    fn surface_hit(&self, ray: &Ray, h: GeoHit, i: u32) -> SurfaceHit {
+        // The uv from a copy: `h` itself never has its address taken, so it can stay in
+        // registers (stored and reloaded, it stalled on store forwarding).
+        let uv = if self.need_uv { self.uv(h, i) } else { h.uv };
         SurfaceHit {
             t: h.t,
             point: ray.at(h.t),
             normal: h.normal,
             geometric_normal: h.geometric_normal,
-            uv: h.uv,
+            uv,
             local_point: h.local_point,
             surface_point: h.point,
             error: h.error,
             material: h.material,
             surface: h.surface,
         }
+    }
+
+    /// The uv of object `i`'s hit `h`, which `intersect` leaves out for speed.
+    fn uv(&self, mut h: GeoHit, i: u32) -> DVec2 {
+        match i & BALL {
+            0 => self.nodes[i as usize].finish(&mut h),
+            _ => self.balls[(i & !BALL) as usize].finish(&mut h),
+        }
+        h.uv
     }
 
     /// True when anything lies in (t_min, t_max) along the ray (shadow rays: any hit ends it).

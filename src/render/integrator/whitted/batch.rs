@@ -62,17 +62,20 @@ impl Whitted<'_> {
             *f = world.nearest_sphere(r, 0.0, f64::INFINITY, among);
         }
         for i in 0..rays.len() {
-            let found = world.intersect_after(&rays[i], 0.0, f64::INFINITY, first[i]);
-            let Some(hit) = &found else {
+            // By value, and lent out only as a copy: a hit whose address is taken lives in
+            // memory, and reading it back in wider pieces than it was stored in stalled on
+            // store forwarding.
+            let Some(hit) = world.intersect_after(&rays[i], 0.0, f64::INFINITY, first[i]) else {
                 out[i] = self.background;
                 continue;
             };
             let mat = scene.material(hit.material);
             if !self.batched(mat) {
-                out[i] = self.shade_at(&rays[i], hit, paths[i], ctx, &mut NoRecord);
+                let lent = hit;
+                out[i] = self.shade_at(&rays[i], &lent, paths[i], ctx, &mut NoRecord);
                 continue;
             }
-            let (s, _, f) = self.surface(&rays[i], hit, paths[i], mat);
+            let (s, _, f) = self.surface(&rays[i], &hit, paths[i], mat);
             (live[i], facing[i]) = (Some(s), f);
         }
         let n = rays.len();
