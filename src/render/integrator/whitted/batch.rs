@@ -13,7 +13,7 @@ use glam::DVec3;
 
 use super::{Path, Whitted, reflect};
 use crate::geometry::Ray;
-use crate::geometry::sphere_cull::{Among, Bundle};
+use crate::geometry::sphere_cull::Bundle;
 use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::record::NoRecord;
@@ -45,17 +45,13 @@ impl Whitted<'_> {
         // copied there (a `memcpy` per ray, 8% of scene A's profile).
         let mut live: [Option<Surface<'_>>; BATCH] = [None; BATCH];
         let mut facing = [DVec3::ZERO; BATCH];
-        // The spheres a pixel's camera rays can meet at all: the few in the pixel. (Reflected
-        // rays spread too far for it to pay: they test every sphere, in lanes.)
-        let among = if paths.first().is_some_and(|p| p.depth == 0) {
-            let mut bundle = Bundle::new();
-            for r in rays {
-                bundle.push(r, f64::INFINITY);
-            }
-            world.among(&bundle)
-        } else {
-            Among::ALL
-        };
+        // The spheres the batch's rays can meet at all: a pixel's camera rays, the few in the
+        // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
+        let mut bundle = Bundle::new();
+        for r in rays {
+            bundle.push(r, f64::INFINITY);
+        }
+        let among = world.among(&bundle);
         // The spheres' `t`s first, then the hits: two short loops overlap more rays' chains.
         let mut first = [SphereHit::default(); BATCH];
         for (f, r) in first.iter_mut().zip(rays) {
