@@ -16,6 +16,8 @@
 //! [`MARGIN`] = 10⁻⁵ of that magnitude, 100 times more; the capsule's own rounding (a few ε)
 //! is inside that margin too.
 
+use std::cmp::Ordering;
+
 use glam::DVec3;
 
 use super::Ray;
@@ -148,7 +150,7 @@ pub(super) fn among(spheres: &[(DVec3, f64)], reach: Reach, bundle: &Bundle) -> 
     let (m0, rho0) = center_and_radius(bundle.origins);
     let mut ends = bundle.ends;
     if bundle.infinite {
-        if !(bundle.unit >= 1.0 - UNIT_SLACK) {
+        if bundle.unit < 1.0 - UNIT_SLACK || bundle.unit.is_nan() {
             return Among::ALL;
         }
         // No hit of any sphere lies farther along a unit ray than the reach's far side, so
@@ -179,8 +181,8 @@ pub(super) fn among(spheres: &[(DVec3, f64)], reach: Reach, bundle: &Bundle) -> 
         };
         let scale = l1(m0) + l1(m1) + l1(c) + r + rho;
         let reach = r + rho + MARGIN * scale;
-        // NaN compares false: kept.
-        if !(gap2 > reach * reach * unit2) {
+        // Anything but "clearly farther" (NaN included) keeps the sphere.
+        if gap2.partial_cmp(&(reach * reach * unit2)) != Some(Ordering::Greater) {
             mask |= 1 << k;
         }
     }
