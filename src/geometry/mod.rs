@@ -26,6 +26,7 @@ pub mod ray;
 pub mod rounding;
 pub mod shape;
 pub mod sphere;
+pub mod sphere_cull;
 pub mod sphere_lanes;
 pub mod torus;
 pub mod triangle;

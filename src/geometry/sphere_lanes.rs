@@ -15,7 +15,8 @@ use glam::DVec3;
 
 use super::Ray;
 use super::circle::{DirSquared, roots_past_gap};
-use super::sphere::nearer_root;
+use super::sphere::{hit_t_with, nearer_root};
+use super::sphere_cull::{self, Among, Bundle, Reach};
 
 /// Spheres per lane group.
 pub const LANES: usize = 4;
@@ -31,6 +32,10 @@ pub struct SphereLanes {
     /// `r·r` as the scalar test computes it; padding lanes hold −∞ (a gap below zero: a miss).
     rr: Vec<Lane>,
     len: usize,
+    /// The spheres one by one, for bundles that test only a few of them ([`Among`]).
+    each: Vec<(DVec3, f64)>,
+    /// Where every sphere lies (how far infinite rays of a bundle reach).
+    reach: Reach,
 }
 
 /// One group's intermediate values of `circle::roots` for one ray.
@@ -59,8 +64,63 @@ impl SphereLanes {
             (s.x[g][l], s.y[g][l], s.z[g][l]) = (c.x, c.y, c.z);
             s.rr[g][l] = r * r;
             s.len += 1;
+            s.each.push((c, r));
         }
+        s.reach = Reach::of(&s.each);
         s
+    }
+
+    /// The spheres any segment of `bundle` may meet ([`sphere_cull`]); queries with it ask
+    /// for sub-intervals of those segments.
+    pub fn among(&self, bundle: &Bundle) -> Among {
+        sphere_cull::among(&self.each, self.reach, bundle)
+    }
+
+    /// [`SphereLanes::nearest`] when only the spheres of `among` can be hit: the others are
+    /// not tested. The spheres are tested one by one in order, with the scalar test the lanes
+    /// compute bit for bit, so the result is the same.
+    #[inline]
+    pub fn nearest_among(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        among: Among,
+    ) -> Option<(usize, f64)> {
+        let d = DirSquared::of(ray.dir);
+        let mut best = None;
+        let mut far = t_max;
+        let mut bits = among.0;
+        while bits != 0 {
+            let k = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let Some(&(c, r)) = self.each.get(k) else {
+                break;
+            };
+            if let Some(t) = hit_t_with(c, r, d, ray, t_min, far) {
+                far = t;
+                best = Some((k, t));
+            }
+        }
+        best
+    }
+
+    /// [`SphereLanes::any`] when only the spheres of `among` can be hit.
+    #[inline]
+    pub fn any_among(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> bool {
+        let d = DirSquared::of(ray.dir);
+        let mut bits = among.0;
+        while bits != 0 {
+            let k = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            let Some(&(c, r)) = self.each.get(k) else {
+                break;
+            };
+            if hit_t_with(c, r, d, ray, t_min, t_max).is_some() {
+                return true;
+            }
+        }
+        false
     }
 
     /// Number of spheres.

@@ -9,6 +9,7 @@ use obvhs::BvhBuildParams;
 use super::balls::{BALL, Ball, WorldParts};
 use super::bvh::{Bvh, BvhRay, to_f32_box};
 use super::primitive::{GeoHit, Geom, Primitive, SurfaceId};
+use super::sphere_cull::{Among, Bundle};
 use super::sphere_lanes::SphereLanes;
 use super::{Aabb, MappingFrame, Ray};
 use crate::ir::MaterialId;
@@ -42,6 +43,11 @@ pub struct SurfaceHit {
     /// frame (kept out of the hit so it stays small: hits are copied on every candidate).
     pub surface: SurfaceId,
 }
+
+/// The nearest loose sphere along a ray (its lane position and `t`), from
+/// [`World::nearest_sphere`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SphereHit(Option<(usize, f64)>);
 
 /// What the world knows about one surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -265,12 +271,78 @@ impl World {
     /// forwarding (~10% of the Whitted recursion's time on scene A).
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<SurfaceHit> {
+        let sphere = if self.spheres.is_empty() {
+            None
+        } else {
+            self.spheres.nearest(ray, t_min, t_max)
+        };
+        self.intersect_past(ray, t_min, t_max, sphere)
+    }
+
+    /// The loose spheres a bundle of ray segments may meet at all, for
+    /// [`World::intersect_among`] and [`World::occluded_among`] (`geometry::sphere_cull`).
+    pub fn among(&self, bundle: &Bundle) -> Among {
+        if self.spheres.is_empty() {
+            return Among::ALL;
+        }
+        self.spheres.among(bundle)
+    }
+
+    /// [`World::intersect`] of a ray of the bundle `among` was made of, in a sub-interval of
+    /// its segment: the same hit, without testing the loose spheres the bundle cannot meet
+    /// ([`Among::ALL`]: all of them, in lanes).
+    #[inline(always)]
+    pub fn intersect_among(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        among: Among,
+    ) -> Option<SurfaceHit> {
+        let first = self.nearest_sphere(ray, t_min, t_max, among);
+        self.intersect_after(ray, t_min, t_max, first)
+    }
+
+    /// The first half of [`World::intersect_among`]: the nearest loose sphere's `t` only, so a
+    /// batch of rays can find theirs before any of them builds its hit (their chains of square
+    /// roots and divisions overlap).
+    #[inline(always)]
+    pub fn nearest_sphere(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> SphereHit {
+        SphereHit(if among == Among::ALL {
+            self.spheres.nearest(ray, t_min, t_max)
+        } else {
+            self.spheres.nearest_among(ray, t_min, t_max, among)
+        })
+    }
+
+    /// The second half of [`World::intersect_among`]: everything else, and the hit. Always
+    /// inlined: returned through memory, the 176-byte hit was reloaded in wider pieces than it
+    /// was stored in, which stalled on store forwarding (~5% of scene A's time).
+    #[inline(always)]
+    pub fn intersect_after(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        first: SphereHit,
+    ) -> Option<SurfaceHit> {
+        self.intersect_past(ray, t_min, t_max, first.0)
+    }
+
+    /// The rest of [`World::intersect`] once the nearest loose sphere `sphere` (its lane
+    /// position and `t`) is known.
+    #[inline(always)]
+    fn intersect_past(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        sphere: Option<(usize, f64)>,
+    ) -> Option<SurfaceHit> {
         let mut best: Option<(GeoHit, u32)> = None;
         let mut far = t_max;
         let mut best_sphere = None;
-        if !self.spheres.is_empty()
-            && let Some((k, t)) = self.spheres.nearest(ray, t_min, far)
-        {
+        if let Some((k, t)) = sphere {
             far = t;
             best_sphere = Some((self.sphere_ids[k], t));
         }
@@ -303,43 +375,65 @@ impl World {
                 }
             }
         }
-        if best.is_none() {
+        match best {
+            Some((h, i)) => Some(self.surface_hit(ray, h, i)),
             // The nearest hit is a fast-path sphere: now compute its normal and the rest at the
-            // t found above (the lanes compute `sphere::hit_t` bit for bit).
-            best = best_sphere.map(|(i, t)| {
-                (
-                    self.balls[(i & !BALL) as usize].hit_at(i & !BALL, ray, t),
-                    i,
-                )
-            });
-        }
-        best.map(|(mut h, i)| {
-            if self.need_uv {
-                match i & BALL {
-                    0 => self.nodes[i as usize].finish(&mut h),
-                    _ => self.balls[(i & !BALL) as usize].finish(&mut h),
+            // t found above (the lanes compute `sphere::hit_t` bit for bit). Built straight
+            // into the result: moved through `best` it was a 152-byte `memcpy` per hit.
+            // (Not a closure: LLVM kept it out of line, and the hit went through memory.)
+            None => match best_sphere {
+                Some((i, t)) => {
+                    let h = self.balls[(i & !BALL) as usize].hit_at(i & !BALL, ray, t);
+                    Some(self.surface_hit(ray, h, i))
                 }
-            }
-            SurfaceHit {
-                t: h.t,
-                point: ray.at(h.t),
-                normal: h.normal,
-                geometric_normal: h.geometric_normal,
-                uv: h.uv,
-                local_point: h.local_point,
-                surface_point: h.point,
-                error: h.error,
-                material: h.material,
-                surface: h.surface,
-            }
-        })
+                None => None,
+            },
+        }
+    }
+
+    /// The world-space hit of `ray` from object `i`'s hit `h`, with uv when needed.
+    #[inline(always)]
+    fn surface_hit(&self, ray: &Ray, h: GeoHit, i: u32) -> SurfaceHit {
+        // The uv from a copy: `h` itself never has its address taken, so it can stay in
+        // registers (stored and reloaded, it stalled on store forwarding).
+        let uv = if self.need_uv { self.uv(h, i) } else { h.uv };
+        SurfaceHit {
+            t: h.t,
+            point: ray.at(h.t),
+            normal: h.normal,
+            geometric_normal: h.geometric_normal,
+            uv,
+            local_point: h.local_point,
+            surface_point: h.point,
+            error: h.error,
+            material: h.material,
+            surface: h.surface,
+        }
+    }
+
+    /// The uv of object `i`'s hit `h`, which `intersect` leaves out for speed.
+    fn uv(&self, mut h: GeoHit, i: u32) -> DVec2 {
+        match i & BALL {
+            0 => self.nodes[i as usize].finish(&mut h),
+            _ => self.balls[(i & !BALL) as usize].finish(&mut h),
+        }
+        h.uv
     }
 
     /// True when anything lies in (t_min, t_max) along the ray (shadow rays: any hit ends it).
     pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
-        if self.spheres.any(ray, t_min, t_max) {
-            return true;
-        }
+        self.spheres.any(ray, t_min, t_max) || self.occluded_past(ray, t_min, t_max)
+    }
+
+    /// [`World::occluded`] of a ray of the bundle `among` was made of, in a sub-interval of its
+    /// segment, without testing the loose spheres the bundle cannot meet.
+    pub fn occluded_among(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> bool {
+        self.spheres.any_among(ray, t_min, t_max, among) || self.occluded_past(ray, t_min, t_max)
+    }
+
+    /// Whether anything but the loose spheres lies in (t_min, t_max) along the ray.
+    #[inline(always)]
+    fn occluded_past(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         if self
             .loose
             .iter()

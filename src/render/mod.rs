@@ -329,18 +329,36 @@ impl View<'_> {
             // The samples in batches, summed in the same order as one by one below.
             let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
             let mut colors = [Color::ZERO; BATCH];
+            // What `camera_sample` does then is only the ray (and its count).
+            let pinhole = !self.random
+                && !self.spread_lights
+                && !self.motion_blur
+                && !self.camera.has_lens()
+                && BATCH <= camera::PINHOLE_BATCH;
             let mut k = 0;
             while k < grid.len() {
                 let m = (grid.len() - k).min(BATCH as u32);
-                for (j, ray) in (k..k + m).zip(&mut rays) {
-                    *ray = self.camera_sample(
-                        x,
-                        y,
-                        first_index + j,
-                        (j, grid.len()),
-                        grid.offset(j),
-                        ctx,
-                    );
+                if pinhole {
+                    // Nothing to set up per sample: the rays of the batch at once.
+                    let mut offsets = [(0.0, 0.0); BATCH];
+                    for (j, o) in (k..k + m).zip(&mut offsets) {
+                        *o = grid.offset(j);
+                    }
+                    let m = m as usize;
+                    self.camera
+                        .pinhole_rays(x, y, &offsets[..m], &mut rays[..m]);
+                    ctx.stats.camera_rays += m as u64;
+                } else {
+                    for (j, ray) in (k..k + m).zip(&mut rays) {
+                        *ray = self.camera_sample(
+                            x,
+                            y,
+                            first_index + j,
+                            (j, grid.len()),
+                            grid.offset(j),
+                            ctx,
+                        );
+                    }
                 }
                 let m = m as usize;
                 w.trace_batch(

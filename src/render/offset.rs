@@ -33,7 +33,7 @@ const SHADOW_ROUNDING_STEPS: u32 = 1024;
 
 impl SpawnPoint {
     /// Where rays leave the surface of `hit`.
-    #[inline]
+    #[inline(always)]
     pub fn of(hit: &SurfaceHit) -> SpawnPoint {
         SpawnPoint {
             point: hit.surface_point,

@@ -390,29 +390,42 @@ impl<'a> Whitted<'a> {
         false
     }
 
-    /// Material colour, or the texture's where the material has one.
+    /// Material colour, or the texture's where the material has one. The texture is read
+    /// from a copy of the hit: a hit whose address is taken lives in memory, and reloading it
+    /// stalled the batch on store forwarding.
+    #[inline(always)]
     pub(crate) fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
         match mat.texture {
-            Some(t) if self.effects.textures => {
-                let frame = self.scene.world().frame(hit);
-                texture::color(&self.scene.textures()[t.0 as usize], hit, frame)
-            }
+            Some(t) if self.effects.textures => self.textured(*hit, t),
             _ => mat.color,
         }
     }
 
-    /// The shading normal: `facing`, tilted by the material's bump map where it has one.
+    /// The colour of texture `t` at `hit`.
+    fn textured(&self, hit: SurfaceHit, t: crate::ir::TextureId) -> Color {
+        let frame = self.scene.world().frame(&hit);
+        texture::color(&self.scene.textures()[t.0 as usize], &hit, frame)
+    }
+
+    /// The shading normal: `facing`, tilted by the material's bump map where it has one (read
+    /// from a copy of the hit, as in [`Whitted::base_color`]).
+    #[inline(always)]
     pub(crate) fn bumped(&self, hit: &SurfaceHit, facing: DVec3, mat: &Material) -> DVec3 {
         match mat.bump {
-            Some(b) if self.effects.bump => bump::perturb(
-                &self.scene.textures()[b.texture.0 as usize],
-                b.scale,
-                hit,
-                self.scene.world().frame(hit),
-                facing,
-            ),
+            Some(b) if self.effects.bump => self.bump_tilt(*hit, facing, b),
             _ => facing,
         }
+    }
+
+    /// `facing` tilted by bump map `b` at `hit`.
+    fn bump_tilt(&self, hit: SurfaceHit, facing: DVec3, b: crate::ir::Bump) -> DVec3 {
+        bump::perturb(
+            &self.scene.textures()[b.texture.0 as usize],
+            b.scale,
+            &hit,
+            self.scene.world().frame(&hit),
+            facing,
+        )
     }
 }
 

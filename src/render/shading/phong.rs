@@ -7,6 +7,7 @@ use super::{
     BATCH, Ctx, LightSample, Surface, highlight, light_sample, occluder, shadow_ray, transmission,
 };
 use crate::geometry::Ray;
+use crate::geometry::sphere_cull::Bundle;
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
 use crate::render::record::{LightTerm, Recorder};
@@ -107,20 +108,32 @@ pub fn shade_batch(scene: &Prepared, ss: &[Option<Surface<'_>>], ctx: &mut Ctx, 
             let k = (first + j) % light.samples;
             let mut lights: [Option<(LightSample, f64)>; BATCH] = [None; BATCH];
             let mut rays: [Option<(Ray, f64)>; BATCH] = [None; BATCH];
-            for ((s, l), r) in ss.iter().zip(&mut lights).zip(&mut rays) {
+            // The shadow rays' segments (from nearby points to one light sample), to skip the
+            // spheres none of them can meet.
+            let mut bundle = Bundle::new();
+            for (s, l) in ss.iter().zip(&mut lights) {
                 let Some(s) = s else { continue };
                 let ls = light_sample(light, i, k, count, s, &ctx.rng);
                 let n_dot_l = s.n.dot(ls.l);
                 // Facing away: neither light nor shadow ray (as in `shade`).
                 if n_dot_l > 0.0 {
-                    *r = shadow_ray(scene, s, &ls, &mut ctx.stats);
                     *l = Some((ls, n_dot_l));
                 }
             }
+            // The shadow rays in a loop of their own: shorter loops overlap more points' chains.
+            for ((s, l), r) in ss.iter().zip(&lights).zip(&mut rays) {
+                if let (Some(s), Some((ls, _))) = (s, l) {
+                    *r = shadow_ray(scene, s, ls, &mut ctx.stats);
+                    if let Some((ray, t_max)) = r {
+                        bundle.push(ray, *t_max);
+                    }
+                }
+            }
+            let among = world.among(&bundle);
             let mut open = [true; BATCH];
             for (o, r) in open.iter_mut().zip(&rays) {
                 if let Some((ray, t_max)) = r {
-                    *o = !world.occluded(ray, 0.0, *t_max);
+                    *o = !world.occluded_among(ray, 0.0, *t_max, among);
                 }
             }
             for (((c, s), l), o) in out.iter_mut().zip(ss).zip(&lights).zip(open) {

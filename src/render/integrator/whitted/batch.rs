@@ -13,6 +13,8 @@ use glam::DVec3;
 
 use super::{Path, Whitted, reflect};
 use crate::geometry::Ray;
+use crate::geometry::sphere_cull::Bundle;
+use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::record::NoRecord;
 use crate::render::shading::{BATCH, Ctx, Surface, phong};
@@ -43,18 +45,33 @@ impl Whitted<'_> {
         // copied there (a `memcpy` per ray, 8% of scene A's profile).
         let mut live: [Option<Surface<'_>>; BATCH] = [None; BATCH];
         let mut facing = [DVec3::ZERO; BATCH];
+        // The spheres the batch's rays can meet at all: a pixel's camera rays, the few in the
+        // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
+        let mut bundle = Bundle::new();
+        for r in rays {
+            bundle.push(r, f64::INFINITY);
+        }
+        let among = world.among(&bundle);
+        // The spheres' `t`s first, then the hits: two short loops overlap more rays' chains.
+        let mut first = [SphereHit::default(); BATCH];
+        for (f, r) in first.iter_mut().zip(rays) {
+            *f = world.nearest_sphere(r, 0.0, f64::INFINITY, among);
+        }
         for i in 0..rays.len() {
-            let found = world.intersect(&rays[i], 0.0, f64::INFINITY);
-            let Some(hit) = &found else {
+            // By value, and lent out only as a copy: a hit whose address is taken lives in
+            // memory, and reading it back in wider pieces than it was stored in stalled on
+            // store forwarding.
+            let Some(hit) = world.intersect_after(&rays[i], 0.0, f64::INFINITY, first[i]) else {
                 out[i] = self.background;
                 continue;
             };
             let mat = scene.material(hit.material);
             if !self.batched(mat) {
-                out[i] = self.shade_at(&rays[i], hit, paths[i], ctx, &mut NoRecord);
+                let lent = hit;
+                out[i] = self.shade_at(&rays[i], &lent, paths[i], ctx, &mut NoRecord);
                 continue;
             }
-            let (s, _, f) = self.surface(&rays[i], hit, paths[i], mat);
+            let (s, _, f) = self.surface(&rays[i], &hit, paths[i], mat);
             (live[i], facing[i]) = (Some(s), f);
         }
         let n = rays.len();
