@@ -37,6 +37,16 @@ pub struct Among(pub(super) u64);
 impl Among {
     /// Every sphere (nothing skipped).
     pub const ALL: Among = Among(u64::MAX);
+
+    /// The lane positions of the spheres kept, in increasing order (the lanes' test order).
+    pub(super) fn positions(self) -> impl Iterator<Item = usize> {
+        let mut bits = self.0;
+        std::iter::from_fn(move || {
+            let k = bits.trailing_zeros() as usize;
+            bits &= bits.wrapping_sub(1);
+            (k < 64).then_some(k)
+        })
+    }
 }
 
 /// The smallest sphere around a set of spheres' bounds (centre, radius), padded: the reach of

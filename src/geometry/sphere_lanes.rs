@@ -90,10 +90,7 @@ impl SphereLanes {
         let d = DirSquared::of(ray.dir);
         let mut best = None;
         let mut far = t_max;
-        let mut bits = among.0;
-        while bits != 0 {
-            let k = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
+        for k in among.positions() {
             let Some(&(c, r)) = self.each.get(k) else {
                 break;
             };
@@ -109,10 +106,7 @@ impl SphereLanes {
     #[inline]
     pub fn any_among(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> bool {
         let d = DirSquared::of(ray.dir);
-        let mut bits = among.0;
-        while bits != 0 {
-            let k = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
+        for k in among.positions() {
             let Some(&(c, r)) = self.each.get(k) else {
                 break;
             };
