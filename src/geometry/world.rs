@@ -172,7 +172,14 @@ impl World {
             let (build, group) = if boxes.len() <= LARGE_WORLD && !few_rays {
                 (BvhBuildParams::medium_build(), 1)
             } else {
-                (BvhBuildParams::very_fast_build(), LARGE_LEAF)
+                // Without very_fast_build's one reinsertion pass: measured on 100k spheres at
+                // 640×480 (~6 rays an object), 2.5% less wall for the whole render, on a
+                // million 2-4% less CPU, on 100k scattered spheres (~24) no difference.
+                let speed = BvhBuildParams {
+                    reinsertion_batch_ratio: 0.0,
+                    ..BvhBuildParams::very_fast_build()
+                };
+                (speed, LARGE_LEAF)
             };
             let params = BvhBuildParams {
                 max_prims_per_leaf: 1,
