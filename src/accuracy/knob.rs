@@ -197,10 +197,7 @@ impl Setting {
 
     /// Camera samples per pixel at most (adaptive: its `max` grid).
     pub fn pixel_samples(&self) -> u32 {
-        match self.sampling {
-            Sampling::Grid { factor } => factor * factor,
-            Sampling::Adaptive { max, .. } => max * max,
-        }
+        self.sampling.max_per_pixel()
     }
 
     /// A short label: `grid 4, depth 2, light 3, gloss 8, cutoff 1.0e-2` (the cut-off only

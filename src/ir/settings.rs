@@ -208,6 +208,16 @@ pub enum Sampling {
     },
 }
 
+impl Sampling {
+    /// Camera samples a pixel takes at most (adaptive: its `max` grid).
+    pub fn max_per_pixel(&self) -> u32 {
+        match *self {
+            Sampling::Grid { factor } => factor * factor,
+            Sampling::Adaptive { max, .. } => max * max,
+        }
+    }
+}
+
 /// How Phong's ambient term is counted (COURSE.md §2.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum AmbientConvention {

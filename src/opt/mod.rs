@@ -77,10 +77,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         Some(t) if !diags.has_errors() => t,
         _ => return Err(diags),
     };
-    let mut world = World::new(parts, expected_rays(scene));
-    let effects = Effects::new(&content, &scene.settings, &scene.camera);
-    world.need_uv(effects.textures || effects.bump || effects.hatching);
-    let lights = scene
+    let lights: Vec<PreparedLight> = scene
         .lights
         .iter()
         .map(|l| PreparedLight {
@@ -93,6 +90,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
             },
         })
         .collect();
+    let mut world = World::new(parts, expected_rays(scene, &lights));
+    let effects = Effects::new(&content, &scene.settings, &scene.camera);
+    world.need_uv(effects.textures || effects.bump || effects.hatching);
     let w = world.stats();
     let stats = Stats {
         objects: w.objects,
@@ -122,30 +122,16 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
 }
 
 /// About how many rays a frame of `scene` traces: camera samples (the most a pixel may take),
-/// each with its shadow rays when shadows are on. An estimate for choosing how much effort the
-/// world's BVH deserves, never a limit.
-fn expected_rays(scene: &Scene) -> u64 {
-    use crate::ir::Sampling;
-    let per_axis = match scene.settings.sampling {
-        Sampling::Grid { factor } => factor,
-        Sampling::Adaptive { max, .. } => max,
-    } as u64;
+/// each with its shadow rays (every sample of every light) when shadows are on. An estimate
+/// for choosing how much effort the world's BVH deserves, never a limit.
+fn expected_rays(scene: &Scene, lights: &[PreparedLight]) -> u64 {
     let shadow_rays: u64 = match scene.settings.shadows {
-        true => scene
-            .lights
-            .iter()
-            .map(|l| match l.kind {
-                LightKind::Area { samples, .. } => {
-                    samples[0].max(1) as u64 * samples[1].max(1) as u64
-                }
-                _ => 1,
-            })
-            .sum(),
+        true => lights.iter().map(|l| u64::from(l.samples)).sum(),
         false => 0,
     };
-    let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+    let pixels = u64::from(scene.camera.width) * u64::from(scene.camera.height);
     pixels
-        .saturating_mul(per_axis * per_axis)
+        .saturating_mul(u64::from(scene.settings.sampling.max_per_pixel()))
         .saturating_mul(1 + shadow_rays)
 }
 
