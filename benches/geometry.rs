@@ -8,6 +8,7 @@
 //! Large models are looked up in /work/shared/models and the peers' work directory (or
 //! `RTC_MODELS`); a missing one is skipped with a message.
 
+use rtc::num::Norm;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -94,7 +95,7 @@ fn camera(w: &World) -> Cam {
         forward: -DVec3::Z,
         tan: (fov / 2.0).tan(),
         light: c + DVec3::new(-0.6 * d, 0.8 * d, 0.9 * d),
-        scale: (b.max - b.min).length(),
+        scale: (b.max - b.min).norm(),
     }
 }
 
@@ -104,7 +105,7 @@ impl Cam {
         let sy = (1.0 - 2.0 * y / h as f64) * self.tan;
         Ray::new(
             self.eye,
-            (self.forward + sx * self.right + sy * self.up).normalize(),
+            (self.forward + sx * self.right + sy * self.up).unit(),
         )
     }
 }
@@ -146,7 +147,7 @@ fn row(w: &World, cam: &Cam, y: u32, width: u32, height: u32, ss: u32, shadows: 
                 };
                 c.hits += 1;
                 let to_light = cam.light - h.point;
-                let dist = to_light.length();
+                let dist = to_light.norm();
                 let l = to_light / dist;
                 let n = if h.normal.dot(ray.dir) > 0.0 {
                     -h.normal

@@ -3,6 +3,7 @@
 //! transforms, CSG operands, meshes, textures decoded, ids, limits), so a clean check means the
 //! render will start. Nothing here changes the scene.
 
+use crate::num::Norm;
 use glam::{DAffine3, DVec3};
 
 use crate::diag::{Diagnostic, Diagnostics};
@@ -155,7 +156,7 @@ fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
         return Some((center, radius));
     }
     let m = o.transform.matrix3;
-    let scales = [m.x_axis.length(), m.y_axis.length(), m.z_axis.length()];
+    let scales = [m.x_axis.norm(), m.y_axis.norm(), m.z_axis.norm()];
     let uniform = (scales[0] - scales[1]).abs() < 1e-9 * scales[0]
         && (scales[0] - scales[2]).abs() < 1e-9 * scales[0];
     uniform.then(|| (o.transform.transform_point3(center), radius * scales[0]))
@@ -168,7 +169,7 @@ fn enclosed_points(scene: &Scene, o: &Object, out: &mut Diagnostics) {
     };
     for l in &scene.lights {
         let p = l.kind.center();
-        if matches!(l.kind, LightKind::Point { .. }) && p.distance(c) < r {
+        if matches!(l.kind, LightKind::Point { .. }) && p.distance_to(c) < r {
             out.push(
                 Diagnostic::warning(
                     "rtc::scene::light_enclosed",
@@ -183,7 +184,7 @@ fn enclosed_points(scene: &Scene, o: &Object, out: &mut Diagnostics) {
             );
         }
     }
-    if scene.camera.eye.distance(c) < r {
+    if scene.camera.eye.distance_to(c) < r {
         out.push(
             Diagnostic::warning(
                 "rtc::scene::camera_enclosed",

@@ -22,6 +22,7 @@ pub mod geometry;
 pub mod ir;
 pub mod loader;
 pub mod metrics;
+pub mod num;
 pub mod opt;
 pub mod render;
 pub mod source;

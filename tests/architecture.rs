@@ -9,12 +9,13 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// Leaves every module may use.
-const LEAVES: &[&str] = &["diag", "source"];
+const LEAVES: &[&str] = &["diag", "source", "num"];
 
 /// Who may import whom (besides the leaves). A new top-level module gets its row here first.
 const ALLOWED: &[(&str, &[&str])] = &[
     ("source", &[]),
     ("diag", &[]),
+    ("num", &[]),
     ("syntax", &[]),
     ("ir", &[]),
     ("assets", &["ir"]),

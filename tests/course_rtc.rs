@@ -6,6 +6,7 @@
 
 mod common;
 
+use rtc::num::Norm;
 use std::path::PathBuf;
 
 use common::scene_of;
@@ -23,8 +24,8 @@ fn root() -> PathBuf {
 fn as_perspective(mut s: Scene) -> Scene {
     if s.camera.projection == Projection::Course {
         let c = &mut s.camera;
-        let size = c.up.length();
-        let d = (c.center - c.eye).length();
+        let size = c.up.norm();
+        let d = (c.center - c.eye).norm();
         c.projection = Projection::Perspective {
             fov_y: 2.0 * (f64::from(c.height) * size / 2.0 / d).atan(),
         };

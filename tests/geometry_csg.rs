@@ -10,6 +10,7 @@ use geometry_support::{Rng, mirrored_transform, object, ray_at_box, world};
 use glam::{DAffine3, DQuat, DVec2, DVec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{CsgOp, MaterialId, Object, Shape};
+use rtc::num::Norm;
 
 /// An independent model of a solid for membership tests.
 #[derive(Clone)]
@@ -33,7 +34,7 @@ impl Solid {
             Solid::Box(lo, hi) => p.cmpge(*lo).all() && p.cmple(*hi).all(),
             Solid::CylY(h, r) => (0.0..=*h).contains(&p.y) && p.x * p.x + p.z * p.z <= r * r,
             Solid::Torus(big, small) => {
-                DVec2::new(DVec2::new(p.x, p.z).length() - big, p.y).length() <= *small
+                DVec2::new(DVec2::new(p.x, p.z).norm() - big, p.y).norm() <= *small
             }
             Solid::Half(q, n) => (p - *q).dot(*n) <= 0.0,
             Solid::Placed(m, s) => s.inside(m.inverse().transform_point3(p)),
@@ -180,10 +181,7 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                 CsgOp::Difference,
                 vec![
                     Sphere(DVec3::ZERO, 1.0),
-                    Half(
-                        DVec3::new(0.0, 0.3, 0.0),
-                        DVec3::new(0.3, -1.0, 0.2).normalize(),
-                    ),
+                    Half(DVec3::new(0.0, 0.3, 0.0), DVec3::new(0.3, -1.0, 0.2).unit()),
                 ],
             ),
         ),
@@ -193,7 +191,7 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                 CsgOp::Intersection,
                 vec![
                     Torus(1.0, 0.4),
-                    Half(DVec3::ZERO, DVec3::new(0.0, 0.2, 1.0).normalize()),
+                    Half(DVec3::ZERO, DVec3::new(0.0, 0.2, 1.0).unit()),
                 ],
             ),
         ),
@@ -218,7 +216,7 @@ fn csg_matches_point_membership_along_every_ray() {
         let w = world(vec![solid.ir()]);
         let b = w.bounds();
         assert!(b.is_finite(), "{name}: bounds {b:?}");
-        let scale = (b.max - b.min).length();
+        let scale = (b.max - b.min).norm();
         let mut rng = Rng(77 + k as u64);
         let mut transitions = 0;
         for i in 0..2_000 {
@@ -234,10 +232,10 @@ fn csg_matches_point_membership_along_every_ray() {
                     !solid.inside(h.point + d * h.normal) && solid.inside(h.point - d * h.normal),
                     "{ctx}: normal not outward"
                 );
-                assert!((h.normal.length() - 1.0).abs() < 1e-12);
+                assert!((h.normal.norm() - 1.0).abs() < 1e-12);
             }
             // Every membership change seen by dense sampling is reported.
-            let far = (ray.origin - b.center()).length() + scale;
+            let far = (ray.origin - b.center()).norm() + scale;
             let n = 3_000;
             let step = far / n as f64;
             let mut prev = at(0.0);
@@ -309,7 +307,7 @@ fn cut_faces_take_the_cutters_material() {
     for _ in 0..5_000 {
         let ray = ray_at_box(&mut rng, DVec3::splat(-1.0), DVec3::splat(1.0));
         if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
-            let on_sphere = ((h.point - DVec3::new(0.5, 0.6, 0.7)).length() - 0.9).abs() < 1e-9;
+            let on_sphere = ((h.point - DVec3::new(0.5, 0.6, 0.7)).norm() - 0.9).abs() < 1e-9;
             if on_sphere {
                 cut += 1;
                 assert_eq!(h.material, MaterialId(1), "cut face");

@@ -7,6 +7,7 @@ use geometry_support::{object, world};
 use glam::{DAffine3, DVec3};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{BlobComponent, Shape};
+use rtc::num::Norm;
 
 /// √(a² − b²) without cancellation.
 fn leg(a: f64, b: f64) -> f64 {
@@ -36,7 +37,7 @@ fn sweep(
             "{what}: 1−1e-{k}: t = {} want {want}",
             h.t
         );
-        assert!((h.normal.length() - 1.0).abs() < 1e-12);
+        assert!((h.normal.norm() - 1.0).abs() < 1e-12);
         let outside = ray_at(tangent * (1.0 + 10f64.powi(-k)));
         assert!(
             w.intersect(&outside, 0.0, f64::INFINITY).is_none(),
@@ -131,13 +132,12 @@ fn torus_rotated_and_far_away_stays_accurate() {
             (i / 20) as f64 * 0.5 - 2.5,
             0.1,
         );
-        let ray = Ray::new(origin, (target - origin).normalize());
+        let ray = Ray::new(origin, (target - origin).unit());
         if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
             hits += 1;
             let q = inv.transform_point3(h.point);
-            let d = (glam::DVec2::new(glam::DVec2::new(q.x, q.z).length() - 2.0, q.y).length()
-                - 0.5)
-                .abs();
+            let d =
+                (glam::DVec2::new(glam::DVec2::new(q.x, q.z).norm() - 2.0, q.y).norm() - 0.5).abs();
             // Coordinates near 2e6 carry ~4e-10 of rounding each.
             assert!(d < 1e-8, "ray {i}: {d:e} off the surface");
         }

@@ -3,6 +3,7 @@
 
 mod geometry_support;
 
+use rtc::num::Norm;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
@@ -47,7 +48,7 @@ fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
             for k in 0..3 {
                 let (a, b) = (t[k].min(t[(k + 1) % 3]), t[k].max(t[(k + 1) % 3]));
                 m[k] = *mid.entry((a, b)).or_insert_with(|| {
-                    v.push((v[a] + v[b]).normalize());
+                    v.push((v[a] + v[b]).unit());
                     v.len() - 1
                 });
             }
@@ -105,7 +106,7 @@ fn rays_through_shared_edges_and_vertices_never_pass_through() {
     let mut rng = Rng(11);
     let mut rays = 0;
     for target in &targets {
-        let inward = -target.normalize();
+        let inward = -target.unit();
         for _ in 0..4 {
             // From outside, steeply into the surface through the target (a ray that only
             // grazes a silhouette vertex may legitimately pass it by a rounding error).
@@ -117,7 +118,7 @@ fn rays_through_shared_edges_and_vertices_never_pass_through() {
             };
             let len = rng.range(2.0, 50.0);
             let origin = *target - len * d;
-            let ray = Ray::new(origin, (*target - origin).normalize());
+            let ray = Ray::new(origin, (*target - origin).unit());
             rays += 1;
             let h = w.intersect(&ray, 0.0, f64::INFINITY);
             let h = h.unwrap_or_else(|| panic!("ray {ray:?} aimed at {target} passed through"));
@@ -128,7 +129,7 @@ fn rays_through_shared_edges_and_vertices_never_pass_through() {
             );
             assert!(w.occluded(&ray, 0.0, 2.0 * len));
             // Shot from the centre outwards through the same point it must leave the sphere.
-            let out = Ray::new(DVec3::ZERO, target.normalize());
+            let out = Ray::new(DVec3::ZERO, target.unit());
             assert!(
                 w.intersect(&out, 0.0, f64::INFINITY).is_some(),
                 "escaped through {target}"
@@ -166,16 +167,16 @@ fn mesh_hits_keep_the_invariants() {
             hits += 1;
             let q = inv.transform_point3(h.point);
             // The tessellated unit sphere lies between radius cos(half the edge angle) and 1.
-            let r = q.length();
+            let r = q.norm();
             assert!(
                 (0.99..=1.0 + 1e-5).contains(&r),
                 "ray {i}: object-space radius {r}"
             );
             assert!(
-                (h.normal.length() - 1.0).abs() < 1e-6
-                    && (h.geometric_normal.length() - 1.0).abs() < 1e-12
+                (h.normal.norm() - 1.0).abs() < 1e-6
+                    && (h.geometric_normal.norm() - 1.0).abs() < 1e-12
             );
-            let outward = (xf.matrix3.inverse().transpose() * q).normalize();
+            let outward = (xf.matrix3.inverse().transpose() * q).unit();
             assert!(
                 h.geometric_normal.dot(outward) > 0.9,
                 "ray {i}: geometric normal inward"
@@ -304,7 +305,7 @@ fn closed_mesh_works_in_csg() {
     let p = rtc::opt::prepare(&sc).unwrap();
     let w = p.world();
     let inside =
-        |p: DVec3| p.cmpge(DVec3::ZERO).all() && p.cmple(DVec3::ONE).all() && (p - c).length() > r;
+        |p: DVec3| p.cmpge(DVec3::ZERO).all() && p.cmple(DVec3::ONE).all() && (p - c).norm() > r;
     let mut rng = Rng(21);
     let mut cut = 0;
     for i in 0..5_000 {
@@ -317,7 +318,7 @@ fn closed_mesh_works_in_csg() {
                 "ray {i} t {}",
                 h.t
             );
-            if ((h.point - c).length() - r).abs() < 1e-9 {
+            if ((h.point - c).norm() - r).abs() < 1e-9 {
                 cut += 1;
             }
             t = h.t + 1e-6;

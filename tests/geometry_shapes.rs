@@ -9,6 +9,7 @@ use geometry_support::{Rng, hemisphere, mirrored_transform, object, ray_at_box, 
 use glam::{DAffine3, DVec2, DVec3};
 use rtc::geometry::Ray;
 use rtc::ir::{BlobComponent, Shape};
+use rtc::num::Norm;
 
 const RAYS: usize = 10_000;
 
@@ -32,15 +33,15 @@ fn box_sdf(q: DVec3, lo: DVec3, hi: DVec3) -> f64 {
     let c = 0.5 * (lo + hi);
     let h = 0.5 * (hi - lo);
     let d = (q - c).abs() - h;
-    d.max(DVec3::ZERO).length() + d.max_element().min(0.0)
+    d.max(DVec3::ZERO).norm() + d.max_element().min(0.0)
 }
 
 /// (height along the axis, radial distance) of `q` for the segment base→top.
 fn axial(q: DVec3, base: DVec3, top: DVec3) -> (f64, f64, f64) {
-    let a = (top - base).normalize();
+    let a = (top - base).unit();
     let w = q - base;
     let y = w.dot(a);
-    (y, (w - y * a).length(), (top - base).length())
+    (y, (w - y * a).norm(), (top - base).norm())
 }
 
 fn plane_frame(n: DVec3) -> (DVec3, DVec3) {
@@ -58,8 +59,8 @@ fn cases() -> Vec<Case> {
                 center: c,
                 radius: r,
             },
-            side: Box::new(move |q| (q - c).length() - r),
-            dist: Box::new(move |q| ((q - c).length() - r).abs()),
+            side: Box::new(move |q| (q - c).norm() - r),
+            dist: Box::new(move |q| ((q - c).norm() - r).abs()),
             aim: (c - r, c + r),
             size: 2.0 * r,
             min_hit_share: 0.25,
@@ -73,13 +74,13 @@ fn cases() -> Vec<Case> {
             side: Box::new(move |q| box_sdf(q, lo, hi)),
             dist: Box::new(move |q| box_sdf(q, lo, hi).abs()),
             aim: (lo, hi),
-            size: (hi - lo).length(),
+            size: (hi - lo).norm(),
             min_hit_share: 0.9,
         });
     }
     {
         let p = DVec3::new(0.0, 0.5, 0.0);
-        let n = DVec3::new(0.2, 1.0, 0.1).normalize();
+        let n = DVec3::new(0.2, 1.0, 0.1).unit();
         v.push(Case {
             name: "plane",
             shape: Shape::Plane {
@@ -103,7 +104,7 @@ fn cases() -> Vec<Case> {
         v.push(Case {
             name: "triangle",
             shape: Shape::Triangle { vertices: t },
-            side: Box::new(move |q| (q - t[0]).dot(n.normalize())),
+            side: Box::new(move |q| (q - t[0]).dot(n.unit())),
             dist: Box::new(move |q| {
                 // Barycentric coordinates of the projection onto the plane.
                 let nn = n.length_squared();
@@ -111,7 +112,7 @@ fn cases() -> Vec<Case> {
                 let b2 = (t[1] - t[0]).cross(q - t[0]).dot(n) / nn;
                 let inside = b1 >= -1e-9 && b2 >= -1e-9 && b1 + b2 <= 1.0 + 1e-9;
                 if inside {
-                    (q - t[0]).dot(n.normalize()).abs()
+                    (q - t[0]).dot(n.unit()).abs()
                 } else {
                     1e9
                 }
@@ -131,7 +132,7 @@ fn cases() -> Vec<Case> {
         v.push(Case {
             name: "quad",
             shape: Shape::Quad { corner: c, u, v: w },
-            side: Box::new(move |q| (q - c).dot(n.normalize())),
+            side: Box::new(move |q| (q - c).dot(n.unit())),
             dist: Box::new(move |q| {
                 let nn = n.length_squared();
                 let s = (q - c).cross(w).dot(n) / nn;
@@ -139,7 +140,7 @@ fn cases() -> Vec<Case> {
                 let e = 1e-9;
                 let inside = (-e..=1.0 + e).contains(&s) && (-e..=1.0 + e).contains(&r);
                 if inside {
-                    (q - c).dot(n.normalize()).abs()
+                    (q - c).dot(n.unit()).abs()
                 } else {
                     1e9
                 }
@@ -151,7 +152,7 @@ fn cases() -> Vec<Case> {
     }
     {
         // A concave "L" in a tilted plane; winding-number test written here.
-        let n = DVec3::new(0.3, 0.2, 1.0).normalize();
+        let n = DVec3::new(0.3, 0.2, 1.0).unit();
         let (e1, e2) = plane_frame(n);
         let o = DVec3::new(0.2, 0.1, -0.3);
         let flat = [
@@ -194,7 +195,7 @@ fn cases() -> Vec<Case> {
     {
         let (c, n, r) = (
             DVec3::new(0.1, 0.0, -0.2),
-            DVec3::new(-0.4, 1.0, 0.3).normalize(),
+            DVec3::new(-0.4, 1.0, 0.3).unit(),
             0.9,
         );
         v.push(Case {
@@ -207,7 +208,7 @@ fn cases() -> Vec<Case> {
             side: Box::new(move |q| (q - c).dot(n)),
             dist: Box::new(move |q| {
                 let w = q - c;
-                let radial = (w - w.dot(n) * n).length();
+                let radial = (w - w.dot(n) * n).norm();
                 if radial <= r * (1.0 + 1e-9) {
                     w.dot(n).abs()
                 } else {
@@ -225,7 +226,7 @@ fn cases() -> Vec<Case> {
             Box::new(move |q| {
                 let (y, rad, h) = axial(q, b, t);
                 let d = DVec2::new(rad - r, (y - 0.5 * h).abs() - 0.5 * h);
-                d.max(DVec2::ZERO).length() + d.max_element().min(0.0)
+                d.max(DVec2::ZERO).norm() + d.max_element().min(0.0)
             })
         } else {
             Box::new(move |q| axial(q, b, t).1 - r)
@@ -234,7 +235,7 @@ fn cases() -> Vec<Case> {
             Box::new(move |q| {
                 let (y, rad, h) = axial(q, b, t);
                 let d = DVec2::new(rad - r, (y - 0.5 * h).abs() - 0.5 * h);
-                (d.max(DVec2::ZERO).length() + d.max_element().min(0.0)).abs()
+                (d.max(DVec2::ZERO).norm() + d.max_element().min(0.0)).abs()
             })
         } else {
             Box::new(move |q| {
@@ -326,7 +327,7 @@ fn cases() -> Vec<Case> {
         let (c, big, small) = (DVec3::new(0.1, 0.2, -0.3), 1.2, 0.4);
         let sdf = move |q: DVec3| {
             let p = q - c;
-            DVec2::new(DVec2::new(p.x, p.z).length() - big, p.y).length() - small
+            DVec2::new(DVec2::new(p.x, p.z).norm() - big, p.y).norm() - small
         };
         v.push(Case {
             name: "torus",
@@ -385,7 +386,7 @@ fn cases() -> Vec<Case> {
             side: Box::new(move |q| threshold - field(q).0),
             dist: Box::new(move |q| {
                 let (f, g) = f2(q);
-                (f - threshold).abs() / g.length().max(1e-300)
+                (f - threshold).abs() / g.norm().max(1e-300)
             }),
             aim: (DVec3::new(-1.5, -1.0, -1.0), DVec3::new(1.5, 1.1, 1.0)),
             size: 3.0,
@@ -401,9 +402,9 @@ fn check(case: &Case, xf: DAffine3, seed: u64) {
     let world_scale = case.size
         * xf.matrix3
             .x_axis
-            .length()
-            .max(xf.matrix3.y_axis.length())
-            .max(xf.matrix3.z_axis.length());
+            .norm()
+            .max(xf.matrix3.y_axis.norm())
+            .max(xf.matrix3.z_axis.norm());
     let aim = rtc::geometry::Aabb::new(case.aim.0, case.aim.1).transformed(&xf);
     let bounds = w.bounds();
     let mut rng = Rng(seed);
@@ -419,9 +420,9 @@ fn check(case: &Case, xf: DAffine3, seed: u64) {
         let d = (case.dist)(q);
         assert!(d < 1e-9 * case.size, "{ctx}: off the surface by {d:e}");
         assert!(
-            (h.normal.length() - 1.0).abs() < 1e-12,
+            (h.normal.norm() - 1.0).abs() < 1e-12,
             "{ctx}: |n| = {}",
-            h.normal.length()
+            h.normal.norm()
         );
         let eps = 1e-6 * world_scale;
         let out = (case.side)(inv.transform_point3(h.point + eps * h.normal));

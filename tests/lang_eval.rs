@@ -1,5 +1,6 @@
 //! Evaluation tests: source text in, IR (or diagnostics) out.
 
+use rtc::num::Norm;
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
@@ -50,7 +51,7 @@ fn notes(body: &str) -> Vec<String> {
 }
 
 fn close(a: DVec3, b: DVec3) -> bool {
-    (a - b).length() < 1e-9
+    (a - b).norm() < 1e-9
 }
 
 #[test]
@@ -322,7 +323,7 @@ fn camera_and_render_settings() {
         panic!()
     };
     assert!((fov_y - 60f64.to_radians()).abs() < 1e-12);
-    assert!((s.camera.focus_distance - DVec3::new(0.0, 3.0, 8.0).length()).abs() < 1e-12);
+    assert!((s.camera.focus_distance - DVec3::new(0.0, 3.0, 8.0).norm()).abs() < 1e-12);
     assert_eq!(
         s.settings.sampling,
         Sampling::Adaptive {
@@ -495,7 +496,7 @@ fn random_streams_are_keyed_and_pinned() {
     );
     assert_eq!(n, vec!["0.729392 true"]);
     let p = rtc::eval::rng::sphere_point(3, "k", 5, false);
-    assert!((p.length() - 1.0).abs() < 1e-12);
+    assert!((p.norm() - 1.0).abs() < 1e-12);
 }
 
 #[test]

@@ -5,6 +5,7 @@
 
 mod geometry_support;
 
+use rtc::num::Norm;
 use std::path::PathBuf;
 
 use glam::DVec3;
@@ -36,11 +37,7 @@ fn load_and_trace(obj: &str, mtl: &str, smooth: bool, case: u32) {
         let mesh = geometry_support::mesh_of(&asset);
         let b = mesh.bounds();
         let centre = 0.5 * (b.min + b.max);
-        for dir in [
-            DVec3::X,
-            DVec3::NEG_Y,
-            DVec3::new(0.3, 0.5, -0.8).normalize(),
-        ] {
+        for dir in [DVec3::X, DVec3::NEG_Y, DVec3::new(0.3, 0.5, -0.8).unit()] {
             let ray = Ray::new(centre - 10.0 * dir, dir);
             if let Some(h) = mesh.intersect(&ray, 0.0, f64::INFINITY) {
                 let finite = h.geometric.is_finite() && h.shading.is_finite();

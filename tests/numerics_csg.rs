@@ -13,6 +13,7 @@ use glam::{DAffine3, DQuat, DVec3};
 use numerics_support::{differing, render_rtc};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{CsgOp, Object, Shape};
+use rtc::num::Norm;
 use rtc::render::offset::SpawnPoint;
 
 fn cuboid(min: [f64; 3], max: [f64; 3]) -> Shape {
@@ -61,7 +62,7 @@ fn check_hole(w: &World, placement: DAffine3, label: &str) {
     let (mut through, mut walls) = (0, 0);
     for _ in 0..4000 {
         let mouth = DVec3::new(rng.range(-0.399, 0.399), rng.range(-0.399, 0.399), 1.0);
-        let dir = (mouth - eye).normalize();
+        let dir = (mouth - eye).unit();
         let back = eye + dir * ((-1.0 - eye.z) / dir.z);
         let leaves = back.x.abs() < 0.399 && back.y.abs() < 0.399;
         let near_edge = back.x.abs().max(back.y.abs()) > 0.4 - 1e-3
@@ -71,7 +72,7 @@ fn check_hole(w: &World, placement: DAffine3, label: &str) {
         }
         let ray = Ray::new(
             placement.transform_point3(eye),
-            placement.transform_vector3(dir).normalize(),
+            placement.transform_vector3(dir).unit(),
         );
         let hit = w.intersect(&ray, 0.0, f64::INFINITY);
         match (leaves, hit) {
@@ -199,7 +200,7 @@ fn a_merge_of_boxes_sharing_a_face_has_no_face_inside() {
         for w in [&merged, &nested] {
             for _ in 0..2000 {
                 let from = DVec3::new(-0.5, rng.range(-0.9, 0.9), rng.range(-0.9, 0.9));
-                let dir = DVec3::new(1.0, rng.range(-0.3, 0.3), rng.range(-0.3, 0.3)).normalize();
+                let dir = DVec3::new(1.0, rng.range(-0.3, 0.3), rng.range(-0.3, 0.3)).unit();
                 let h = w
                     .intersect(&Ray::new(from, dir), 0.0, f64::INFINITY)
                     .expect("leaves the solid");
@@ -228,7 +229,7 @@ fn an_intersection_of_boxes_touching_at_a_face_is_empty() {
         let mut rng = Rng(9);
         for _ in 0..2000 {
             let from = DVec3::new(-3.0, rng.range(-0.9, 0.9), rng.range(-0.9, 0.9));
-            let dir = DVec3::new(1.0, rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)).normalize();
+            let dir = DVec3::new(1.0, rng.range(-0.2, 0.2), rng.range(-0.2, 0.2)).unit();
             let h = w.intersect(&Ray::new(from, dir), 0.0, f64::INFINITY);
             assert!(h.is_none(), "exact {exact}: met {:?}", h.map(|h| h.point));
         }

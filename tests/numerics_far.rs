@@ -15,6 +15,7 @@ use glam::{DAffine3, DQuat, DVec3};
 use numerics_support::render_rtc;
 use rtc::geometry::{Ray, World};
 use rtc::ir::Shape;
+use rtc::num::Norm;
 use rtc::render::Image;
 
 /// Image side in pixels; the view spans [−1.5, 1.5]² at the origin.
@@ -182,7 +183,7 @@ fn solids() -> Vec<Solid> {
                 center: DVec3::ZERO,
                 radius: 1.0,
             },
-            dist: |p| (p.length() - 1.0).abs(),
+            dist: |p| (p.norm() - 1.0).abs(),
             inner: |rng| rng.dir() * rng.range(0.0, 0.999),
         },
         Solid {
@@ -263,13 +264,13 @@ fn worst_error(w: &World, s: &Solid, m: DAffine3, distance: f64, rng: &mut Rng) 
     for _ in 0..1000 {
         let target = m.transform_point3((s.inner)(rng));
         let origin = m.translation + rng.dir() * distance;
-        let ray = Ray::new(origin, (target - origin).normalize());
+        let ray = Ray::new(origin, (target - origin).unit());
         match w.intersect(&ray, 0.0, f64::INFINITY) {
             None => misses += 1,
             Some(h) => {
                 let local = inv.transform_point3(h.point);
                 let err = (s.dist)(local);
-                worst = worst.max(err / (f64::EPSILON * origin.length()));
+                worst = worst.max(err / (f64::EPSILON * origin.norm()));
             }
         }
     }

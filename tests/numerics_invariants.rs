@@ -25,6 +25,7 @@ use glam::{DAffine3, DQuat, DVec3};
 use rtc::geometry::rounding::gamma;
 use rtc::geometry::{Ray, SurfaceHit, World};
 use rtc::ir::{BlobComponent, Shape};
+use rtc::num::Norm;
 use rtc::render::offset::SpawnPoint;
 
 /// One shape in object space, about unit size, with the test's own distance function.
@@ -60,7 +61,7 @@ fn revolved_edge(q: DVec3, r0: f64, r1: f64) -> f64 {
 
 fn box_distance(q: DVec3, half: DVec3) -> f64 {
     let d = q.abs() - half;
-    d.max(DVec3::ZERO).length() + d.max_element().min(0.0)
+    d.max(DVec3::ZERO).norm() + d.max_element().min(0.0)
 }
 
 /// Capped solid of revolution about Y from y = −1 to 1 with radius r0 + k·(y + 1).
@@ -109,7 +110,7 @@ fn cases() -> Vec<Case> {
                 center: DVec3::ZERO,
                 radius: 1.0,
             },
-            distance: |q| q.length() - 1.0,
+            distance: |q| q.norm() - 1.0,
             closed: true,
             convex: true,
             extent: DVec3::ONE,
@@ -184,7 +185,7 @@ fn cases() -> Vec<Case> {
             },
             distance: |q| {
                 let (f, g) = blob_field(q);
-                (BLOB_THRESHOLD - f) / g.length().max(1e-300)
+                (BLOB_THRESHOLD - f) / g.norm().max(1e-300)
             },
             closed: true,
             convex: false,
@@ -331,7 +332,7 @@ fn check_hit(
     }
     // On the surface within the bound.
     let observed = (case.distance)(pl.to_object(h.surface_point)).abs() * pl.scale;
-    let bound = h.error.length();
+    let bound = h.error.norm();
     let slack = pl.slack(h.surface_point);
     if observed > bound + slack {
         t.fail(format!(
@@ -347,7 +348,7 @@ fn check_hit(
     }
     // Unit normals; facing the ray on entry.
     for n in [h.normal, h.geometric_normal] {
-        if (n.length() - 1.0).abs() > 1e-12 {
+        if (n.norm() - 1.0).abs() > 1e-12 {
             t.fail(format!("{}: normal {n} not unit", case.name));
         }
     }
@@ -412,11 +413,11 @@ fn check_leaving(
             "{}: a ray leaving outwards met the surface again at t = {:e} (bound {:e}, |p| {:e}, n·d {:.3e}, again n·d {:.3e}, origin off by {:e})",
             case.name,
             again.t,
-            h.error.length(),
+            h.error.norm(),
             h.surface_point.abs().max_element(),
             n.dot(out),
             again.geometric_normal.dot(out),
-            (spawn.ray(out).origin - h.surface_point).length()
+            (spawn.ray(out).origin - h.surface_point).norm()
         ));
     }
     let back = w.intersect(&spawn.ray(inward), 0.0, f64::INFINITY);
@@ -429,9 +430,7 @@ fn check_leaving(
         // A quartic's roots are far less exact than its hit points: from a start this close to
         // the surface, a torus or blob may report the surface just left (4 of 40 000 inward
         // rays, within 10⁻¹² of the size); judged only when the surface met is elsewhere.
-        (true, false, Some(b))
-            if (b.surface_point - h.surface_point).length() <= 1e-9 * pl.scale =>
-        {
+        (true, false, Some(b)) if (b.surface_point - h.surface_point).norm() <= 1e-9 * pl.scale => {
             t.undecided += 1
         }
         (true, _, Some(b)) if b.geometric_normal.dot(inward) < 0.0 => t.fail(format!(
@@ -459,7 +458,7 @@ fn check_tangent(
     t: &mut Tally,
 ) {
     let n = h.geometric_normal;
-    let along = n.cross(rng.dir()).normalize();
+    let along = n.cross(rng.dir()).unit();
     for nudge in [0.0, 1e-9, -1e-9] {
         let through = h.surface_point + nudge * pl.scale * n;
         let ray = Ray::new(through - 3.0 * pl.scale * along, along);
@@ -481,7 +480,7 @@ fn run(case: &Case, seed: u64) -> Tally {
         for _ in 0..RAYS {
             let target = pl.to_world(rng.point_in(-case.extent, case.extent));
             let origin = target + rng.dir() * pl.scale * 10f64.powf(rng.range(0.5, 3.0));
-            let ray = Ray::new(origin, (target - origin).normalize());
+            let ray = Ray::new(origin, (target - origin).unit());
             let from_outside = (case.distance)(pl.to_object(origin)) > 0.0;
             if let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) {
                 check_hit(case, &pl, &ray, &h, from_outside, &mut t);

@@ -14,6 +14,7 @@ use glam::{DAffine3, DVec3};
 use numerics_support::{at, differing, differing_by, render_rtc, share};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{Object, Shape};
+use rtc::num::Norm;
 use rtc::render::integrator::whitted::refract;
 use rtc::render::offset::SpawnPoint;
 
@@ -207,7 +208,7 @@ fn sixty_refractions_through_thirty_plates_follow_snells_law() {
         }
         assert_eq!(interfaces, 60, "scale {s:e}");
         assert!(
-            (ray.dir - dir0).length() < 1e-12,
+            (ray.dir - dir0).norm() < 1e-12,
             "scale {s:e}: leaves along {}",
             ray.dir
         );

@@ -6,6 +6,7 @@
 
 mod cli_support;
 
+use rtc::num::Norm;
 use std::path::Path;
 
 use cli_support::{rtc, scratch};
@@ -117,10 +118,10 @@ fn a_shadowed_pixel_names_the_occluder() {
     let p = v3(&ray["hit"]["point"]);
     let to_light = DVec3::new(-6.0, 10.0, 6.0) - p;
     let to_occ = v3(&occ["point"]) - p;
-    assert!(to_occ.cross(to_light.normalize()).length() < 1e-6);
-    assert!(to_occ.dot(to_light) > 0.0 && to_occ.length() < to_light.length());
+    assert!(to_occ.cross(to_light.unit()).norm() < 1e-6);
+    assert!(to_occ.dot(to_light) > 0.0 && to_occ.norm() < to_light.norm());
     // Only the ambient term is left: the local colour is ka·C·Lc (0.1·0.8).
-    assert!((v3(&ray["local"]) - DVec3::splat(0.08)).length() < 1e-12);
+    assert!((v3(&ray["local"]) - DVec3::splat(0.08)).norm() < 1e-12);
 }
 
 #[test]
@@ -142,10 +143,10 @@ fn a_mirror_pixel_shows_its_reflected_child_with_the_weight() {
     // The mirror direction about the normal.
     let (d0, n) = (v3(&ray["direction"]), v3(&ray["hit"]["normal"]));
     let r = d0 - 2.0 * d0.dot(n) * n;
-    assert!((v3(&child["direction"]) - r).length() < 1e-12);
+    assert!((v3(&child["direction"]) - r).norm() < 1e-12);
     // Whitted: colour = local + reflect · child.
     let expect = v3(&ray["local"]) + 0.8 * v3(&child["color"]);
-    assert!((v3(&ray["color"]) - expect).length() < 1e-12);
+    assert!((v3(&ray["color"]) - expect).norm() < 1e-12);
 }
 
 fn rendered(file: &str, name: &str) -> image::RgbImage {

@@ -22,7 +22,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
     });
     let b = mesh.bounds();
     let centre = 0.5 * (b.min + b.max);
-    let reach = (b.max - b.min).length().max(1.0);
+    let reach = (b.max - b.min).norm().max(1.0);
     let mut hits = Vec::new();
     for dir in directions() {
         let ray = Ray::new(centre - 2.0 * reach * dir, dir);
@@ -61,7 +61,7 @@ fn directions() -> impl Iterator<Item = DVec3> {
         .flat_map(|a| [a, -a]);
     let diagonals = (0..8).map(|i| {
         let s = |bit: i32| if i & bit == 0 { 1.0 } else { -1.0 };
-        DVec3::new(s(1), s(2), s(4)).normalize()
+        DVec3::new(s(1), s(2), s(4)).unit()
     });
     axes.chain(diagonals)
 }

@@ -2,6 +2,7 @@
 //! the file or computed (smooth with a crease angle), texture coordinates, MTL materials. The
 //! result is plain data in file order; geometry builds its BVH from it.
 
+use crate::num::Norm;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -449,7 +450,7 @@ fn smooth_normals(vertices: &[Vec3], triangles: &[[u32; 3]]) -> Vec<[Vec3; 3]> {
         .iter()
         .map(|t| (t[1] - t[0]).cross(t[2] - t[0]))
         .collect();
-    let unit: Vec<Vec3A> = area.iter().map(|a| a.normalize_or_zero()).collect();
+    let unit: Vec<Vec3A> = area.iter().map(|a| a.unit_or(Default::default())).collect();
     let cos = libm::cos(CREASE_ANGLE_DEG.to_radians()) as f32;
     (0..tris.len())
         .map(|f| {
@@ -462,7 +463,7 @@ fn smooth_normals(vertices: &[Vec3], triangles: &[[u32; 3]]) -> Vec<[Vec3; 3]> {
                         sum += area[g as usize];
                     }
                 }
-                out[k] = Vec3::from(sum.normalize_or(unit[f]));
+                out[k] = Vec3::from(sum.unit_or(unit[f]));
             }
             out
         })

@@ -1,6 +1,7 @@
 //! What both course front ends share: number sanity checks, the course camera, course materials,
 //! oriented (textured) spheres, asset lookup, and the final assembly of a [`Scene`].
 
+use crate::num::Norm;
 use std::path::{Path, PathBuf};
 
 use glam::{DAffine3, DQuat, DVec3};
@@ -68,7 +69,7 @@ pub fn course_camera(eye: DVec3, center: DVec3, up: DVec3, size: [u32; 2], span:
         height: size[1],
         projection: Projection::Course,
         aperture: 0.0,
-        focus_distance: (center - eye).length(),
+        focus_distance: (center - eye).norm(),
         shutter: None,
         motion: None,
         span,
@@ -140,7 +141,7 @@ impl CourseMaterial {
 /// sign here to match the reference renders; nothing else depends on it.
 pub fn sphere_orientation(position: DVec3, pole: DVec3, angle_deg: f64) -> DAffine3 {
     let spin = DQuat::from_rotation_y(angle_deg.to_radians());
-    let tilt = DQuat::from_rotation_arc(DVec3::Y, pole.normalize_or(DVec3::Y));
+    let tilt = DQuat::from_rotation_arc(DVec3::Y, pole.unit_or(DVec3::Y));
     DAffine3::from_rotation_translation(tilt * spin, position)
 }
 
@@ -302,8 +303,8 @@ mod tests {
         let pole = DVec3::new(0.0, 1.0, 0.7);
         let t = sphere_orientation(DVec3::new(1.0, 2.0, 3.0), pole, 90.0);
         let north = t.transform_vector3(DVec3::Y);
-        assert!((north - pole.normalize()).length() < 1e-12);
-        assert!((t.transform_point3(DVec3::ZERO) - DVec3::new(1.0, 2.0, 3.0)).length() < 1e-12);
+        assert!((north - pole.unit()).norm() < 1e-12);
+        assert!((t.transform_point3(DVec3::ZERO) - DVec3::new(1.0, 2.0, 3.0)).norm() < 1e-12);
     }
 
     #[test]
@@ -311,7 +312,7 @@ mod tests {
         // With the pole at +Y, a 90° spin takes object +X to world −Z (right-handed about +Y).
         let t = sphere_orientation(DVec3::ZERO, DVec3::Y, 90.0);
         let x = t.transform_vector3(DVec3::X);
-        assert!((x - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-12);
+        assert!((x - DVec3::new(0.0, 0.0, -1.0)).norm() < 1e-12);
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! The Groningen course YAML format (COURSE.md §2): top-level keys, camera, lights and render
 //! settings. Objects and materials are in [`crate::compat::yaml_objects`].
 
+use crate::num::Norm;
 use std::path::Path;
 
 use crate::compat::course::{self, Draft};
@@ -120,7 +121,7 @@ fn camera(node: &YamlNode, span: Span, diags: &mut Diagnostics) -> Option<crate:
     let size = size.and_then(|e| view_size(e.value, diags));
     m.finish("`Camera`", &["eye", "center", "up", "viewSize"], diags);
     let up_span = up_entry.map_or(span, |e| e.value.span);
-    if up.is_some_and(|u| u.length() == 0.0) {
+    if up.is_some_and(|u| u.norm() == 0.0) {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -134,7 +135,7 @@ fn camera(node: &YamlNode, span: Span, diags: &mut Diagnostics) -> Option<crate:
     }
     let (eye, center, up, size) = (eye?, center?, up?, size?);
     let view = center - eye;
-    if view.length() == 0.0 {
+    if view.norm() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -145,7 +146,7 @@ fn camera(node: &YamlNode, span: Span, diags: &mut Diagnostics) -> Option<crate:
         );
         return None;
     }
-    if view.cross(up).length() <= 1e-12 * view.length() * up.length() {
+    if view.cross(up).norm() <= 1e-12 * view.norm() * up.norm() {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",

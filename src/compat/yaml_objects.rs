@@ -2,6 +2,7 @@
 //! form and `angle`), and the student geometry spellings that map onto IR shapes unambiguously
 //! (triangle, plane, box, quad, cylinder, mesh/model).
 
+use crate::num::Norm;
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
@@ -107,7 +108,7 @@ fn direction(
     let example = format!("{}: [0, 1, 0]", names[0]);
     let e = m.require(names, owner, &example, diags)?;
     let v = val::triple(e.value, &format!("`{}`", names[0]), Triple::Point, diags)?;
-    if v.length() == 0.0 {
+    if v.norm() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -118,7 +119,7 @@ fn direction(
         );
         return None;
     }
-    Some(v.normalize())
+    Some(v.unit())
 }
 
 fn sphere(
@@ -190,7 +191,7 @@ fn radius(node: &YamlNode, pole: &mut Option<DVec3>, diags: &mut Diagnostics) ->
 
 fn pole_vector(node: &YamlNode, diags: &mut Diagnostics) -> Option<DVec3> {
     let v = val::triple(node, "the pole", Triple::Point, diags)?;
-    if v.length() == 0.0 {
+    if v.norm() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",
@@ -238,9 +239,9 @@ fn quad(m: &mut MapView<'_>, diags: &mut Diagnostics) -> Option<Shape> {
     let p4 = point(m, &["p4"], "this quad", diags);
     let (p1, p2, p3, p4) = (p1?, p2?, p3?, p4?);
     let (u, v) = (p2 - p1, p4 - p1);
-    let scale = u.length().max(v.length()).max(1.0);
+    let scale = u.norm().max(v.norm()).max(1.0);
     let expected = p1 + u + v;
-    if (expected - p3).length() > 1e-9 * scale || u.cross(v).length() == 0.0 {
+    if (expected - p3).norm() > 1e-9 * scale || u.cross(v).norm() == 0.0 {
         diags.push(
             Diagnostic::error(
                 "rtc::compat::degenerate",

@@ -1,6 +1,7 @@
 //! Motion in the language: `obj.moving(translate:, rotate:, scale:)`, the camera's `shutter:`,
 //! `eye_close:` and `center_close:`, and `obj.look_at(target)` / `look_at(from:, to:, up:)`.
 
+use crate::num::Norm;
 use std::rc::Rc;
 
 use glam::{DAffine3, DMat3, DQuat, DVec3};
@@ -83,7 +84,7 @@ fn rotation(it: &Interp, v: &Value, sp: Span) -> R<DQuat> {
         .to_cols_array()
         .iter()
         .all(|x| x.abs() < 1e-9);
-    if !orthonormal || m.determinant() <= 0.0 || t.translation.length() > 1e-9 {
+    if !orthonormal || m.determinant() <= 0.0 || t.translation.norm() > 1e-9 {
         return Err(error(
             "rtc::motion::not_rotation",
             sp,
@@ -208,8 +209,8 @@ pub fn look_at_about(origin: DVec3, to: DVec3, up: DVec3, span: Span) -> R<DAffi
 
 /// The rotation taking +Z to `dir` and +Y as close to `up` as it can.
 fn aim(dir: DVec3, up: DVec3, span: Span) -> R<DAffine3> {
-    let z = dir.normalize_or_zero();
-    let x = up.cross(z).normalize_or_zero();
+    let z = dir.unit_or(Default::default());
+    let x = up.cross(z).unit_or(Default::default());
     if z == DVec3::ZERO || x == DVec3::ZERO || !x.is_finite() {
         return Err(error(
             "rtc::param::degenerate",

@@ -1,5 +1,6 @@
 //! Object constructors with schema-checked parameters, groups, and the CSG list forms.
 
+use crate::num::Norm;
 use std::rc::Rc;
 
 use glam::{DAffine3, DVec3};
@@ -73,7 +74,7 @@ fn unit_dir(it: &Interp, p: &mut Params, name: &str, default: DVec3) -> R<DVec3>
                 .with_help(format!("give a direction, e.g. `{name}: Y`"))
                 .into());
             }
-            Ok(d.normalize())
+            Ok(d.unit())
         }
     }
 }

@@ -1,6 +1,7 @@
 //! Transforms as values: `translate`, `scale`, `rotate`, `matrix`, `around`, and their method
 //! forms on objects and transforms (applied in reading order).
 
+use crate::num::Norm;
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::builtins::{BuiltinFn, Params};
@@ -86,7 +87,7 @@ fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
         }
         let (an, ans) = p.req("angle")?;
         let angle = types::angle(it, &an, ans)?;
-        return Ok(DAffine3::from_axis_angle(axis.normalize(), angle));
+        return Ok(DAffine3::from_axis_angle(axis.unit(), angle));
     }
     let (x, _) = p.angle_or(it, "x", 0.0)?;
     let (y, _) = p.angle_or(it, "y", 0.0)?;

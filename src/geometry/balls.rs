@@ -153,6 +153,7 @@ impl WorldParts {
 
 #[cfg(test)]
 mod tests {
+    use crate::num::Norm;
     use glam::DAffine3;
 
     use super::*;
@@ -191,7 +192,7 @@ mod tests {
             let world = World::new(parts, u64::MAX);
             for _ in 0..400 {
                 let origin = DVec3::new(rnd(), rnd(), rnd()) * 20.0 - 10.0;
-                let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).normalize();
+                let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).unit();
                 let ray = Ray::new(origin, dir);
                 let mut want: Option<(GeoHit, usize)> = None;
                 let mut far = f64::INFINITY;

@@ -6,6 +6,7 @@
 //! per segment by isolation ([`super::quartic`]), never by marching with a step that could
 //! jump over a thin feature.
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use super::quartic::roots_in;
@@ -71,7 +72,7 @@ impl Blob {
     /// gradient (the first-order distance; doubled for the curvature it ignores) plus the
     /// rounding of evaluating the field, in distance the same way.
     pub fn point_error(&self, p: DVec3) -> DVec3 {
-        let slope = self.gradient(p).length();
+        let slope = self.gradient(p).norm();
         let mut size = self.threshold;
         for c in &self.parts {
             let s = (p - c.center).length_squared() / (c.radius * c.radius);
@@ -111,7 +112,7 @@ impl Blob {
     /// Every sign-changing root along the whole line; `rising` means the field rises through
     /// the threshold there (the ray enters).
     fn roots(&self, ray: &Ray, mut f: impl FnMut(f64, bool)) {
-        let len = ray.dir.length();
+        let len = ray.dir.norm();
         if len == 0.0 || !len.is_finite() {
             return;
         }
@@ -173,8 +174,8 @@ impl Blob {
     fn hit(&self, ray: &Ray, t: f64) -> Hit {
         let p = ray.at(t);
         let normal = (-self.gradient(p))
-            .try_normalize()
-            .unwrap_or_else(|| -ray.dir.normalize_or_zero());
+            .try_unit()
+            .unwrap_or_else(|| -ray.dir.unit_or(Default::default()));
         Hit {
             t,
             normal,
@@ -189,8 +190,8 @@ impl Blob {
     /// the hit point: roots that close to `t_min` are the surface a spawned ray just left
     /// (seen as speckles in the gallery), not hits.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let roots = rounding::gamma(1 << 14) * (self.bounds.max - self.bounds.min).length();
-        let t_min = t_min + roots / ray.dir.length();
+        let roots = rounding::gamma(1 << 14) * (self.bounds.max - self.bounds.min).norm();
+        let t_min = t_min + roots / ray.dir.norm();
         super::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
             .map(|t| self.hit(ray, t))
     }

@@ -1,6 +1,7 @@
 //! Tests of the wide BVH (`bvh.rs`): traversal against brute force, blocks, grouping, threads.
 
 use super::*;
+use crate::num::Norm;
 
 fn random_boxes(n: usize, seed: u64) -> Vec<BAabb> {
     let mut seed = seed;
@@ -62,7 +63,7 @@ fn traversals_match_brute_force() {
         };
         for _ in 0..300 {
             let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
-            let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).normalize();
+            let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).unit();
             let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
             let entry = |i: usize| slab(&boxes[i], o, d);
             let want = (0..n).filter_map(entry).fold(f64::INFINITY, f64::min);
@@ -120,7 +121,7 @@ fn blocks_keep_the_visiting_order() {
         };
         for _ in 0..200 {
             let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
-            let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).normalize();
+            let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).unit();
             let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
             // A hit distance per primitive (its box's entry), so t_max shrinks as in a
             // closest-hit search.

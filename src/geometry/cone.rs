@@ -1,5 +1,6 @@
 //! Cones and frustums between two points, open or capped.
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use super::cylinder::{AxisFrame, convex_crossings};
@@ -73,7 +74,7 @@ impl Cone {
                 let rho = self.r0 + self.k * y;
                 // Gradient of |radial|² − ρ(y)²; zero only at an apex.
                 let normal = (radial - rho * self.k * f.axis)
-                    .try_normalize()
+                    .try_unit()
                     .unwrap_or(if self.r0 == 0.0 { -f.axis } else { f.axis });
                 out[i] = Some(Hit {
                     t,

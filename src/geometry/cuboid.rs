@@ -1,5 +1,6 @@
 //! Axis-aligned boxes (closed solids).
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::{Aabb, Crossing, Hit, Ray, rounding};
@@ -105,7 +106,7 @@ impl Cuboid {
     /// up to the rounding of a few operations on the distances themselves).
     pub fn point_error(&self, p: DVec3) -> DVec3 {
         let q = (self.min - p).max(p - self.max);
-        let outside = q.max(DVec3::ZERO).length();
+        let outside = q.max(DVec3::ZERO).norm();
         let inside = q.max_element().min(0.0);
         let distance = outside + inside;
         rounding::from_residual(distance, 5, q.abs().max_element())

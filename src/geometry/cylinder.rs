@@ -1,5 +1,6 @@
 //! Cylinders between two points, open or capped, and the axis frame cones share.
 
+use crate::num::Norm;
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
@@ -23,8 +24,8 @@ impl AxisFrame {
     /// A frame from `base` to `top`; `None` when they coincide.
     pub fn new(base: DVec3, top: DVec3) -> Option<AxisFrame> {
         let d = top - base;
-        let height = d.length();
-        let axis = d.try_normalize()?;
+        let height = d.norm();
+        let axis = d.try_unit()?;
         let e1 = axis.any_orthonormal_vector();
         Some(AxisFrame {
             base,
@@ -50,7 +51,7 @@ impl AxisFrame {
     pub fn height_and_radius(&self, p: DVec3) -> (f64, f64, f64) {
         let w = p - self.base;
         let y = w.dot(self.axis);
-        let rho = (w - y * self.axis).length();
+        let rho = (w - y * self.axis).norm();
         (y, rho, w.abs().element_sum() + self.height)
     }
 
@@ -131,7 +132,7 @@ impl Cylinder {
                 let y = (p - f.base).dot(f.axis);
                 if (0.0..=f.height).contains(&y) {
                     let radial = (p - f.base) - y * f.axis;
-                    if let Some(normal) = radial.try_normalize() {
+                    if let Some(normal) = radial.try_unit() {
                         out[i] = Some(Hit {
                             t,
                             normal,

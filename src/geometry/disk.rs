@@ -1,5 +1,6 @@
 //! Flat disks.
 
+use crate::num::Norm;
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
@@ -20,7 +21,7 @@ pub struct Disk {
 impl Disk {
     /// A disk; `None` for a zero normal or a non-positive radius.
     pub fn new(center: DVec3, normal: DVec3, radius: f64) -> Option<Disk> {
-        let normal = normal.try_normalize()?;
+        let normal = normal.try_unit()?;
         if !(radius > 0.0 && radius.is_finite()) {
             return None;
         }

@@ -2,6 +2,7 @@
 //! the order of their own BVH, four to a block for the 4-wide test, with per-corner normals and
 //! uvs and per-triangle material slots (in file order, read once per hit).
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use rayon::prelude::*;
@@ -92,8 +93,8 @@ impl Mesh {
         // Rays are traversed in f32 from near the mesh; pad every box by a few ulps of the
         // mesh's coordinates so rounding in the slab test cannot cull a triangle the exact
         // ray touches (a ray through a vertex at the corner of every adjacent box).
-        let reach = bounds.min.abs().max(bounds.max.abs()).max_element()
-            + (bounds.max - bounds.min).length();
+        let reach =
+            bounds.min.abs().max(bounds.max.abs()).max_element() + (bounds.max - bounds.min).norm();
         let pad = Vec3A::splat((4.0 * f32::EPSILON as f64 * reach) as f32);
         let boxes: Vec<_> = parts
             .triangles
@@ -140,7 +141,7 @@ impl Mesh {
             material_of: parts.material_of.to_vec(),
             bvh,
             bounds,
-            margin: 1e-3 * (bounds.max - bounds.min).length(),
+            margin: 1e-3 * (bounds.max - bounds.min).norm(),
             self_hit: 16.0 * f32::EPSILON as f64 * reach,
         }
     }
@@ -182,11 +183,11 @@ impl Mesh {
         let geometric = (tri[1] - tri[0])
             .cross(tri[2] - tri[0])
             .as_dvec3()
-            .normalize_or(DVec3::Y);
+            .unit_or(DVec3::Y);
         let shading = match self.normals.get(file) {
             Some(n) => (n[0] * b[0] + n[1] * b[1] + n[2] * b[2])
                 .as_dvec3()
-                .try_normalize()
+                .try_unit()
                 .unwrap_or(geometric),
             None => geometric,
         };
@@ -212,7 +213,7 @@ impl Mesh {
     /// triangle's plane, evaluated in f64 from the stored corners.
     fn point_error(&self, slot: usize, p: DVec3) -> DVec3 {
         let [a, b, c] = self.corners(slot).map(|v| v.as_dvec3());
-        let n = (b - a).cross(c - a).normalize_or(DVec3::Y);
+        let n = (b - a).cross(c - a).unit_or(DVec3::Y);
         super::plane::point_error(a, n, p)
     }
 

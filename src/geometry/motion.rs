@@ -1,6 +1,7 @@
 //! Bounds of moving nodes: a box that holds a node wherever it is while the shutter is open, so
 //! a BVH built over such boxes never misses it.
 
+use crate::num::Norm;
 use glam::{DAffine3, DVec3};
 
 use super::Aabb;
@@ -28,7 +29,7 @@ pub fn swept_bounds(local: Aabb, transform: DAffine3, motion: &Motion) -> Aabb {
     let to_motion = motion.frame.inverse() * transform;
     let r_max = corners(&local)
         .iter()
-        .map(|c| to_motion.transform_point3(*c).length())
+        .map(|c| to_motion.transform_point3(*c).norm())
         .fold(0.0, f64::max);
     let q = if motion.rotate.w < 0.0 {
         -motion.rotate
@@ -38,7 +39,7 @@ pub fn swept_bounds(local: Aabb, transform: DAffine3, motion: &Motion) -> Aabb {
     let theta = 2.0 * libm::acos(q.w.clamp(-1.0, 1.0));
     let s_max = motion.scale.abs().max_element().max(1.0);
     let ds = (motion.scale - DVec3::ONE).abs().max_element();
-    let speed = motion.translate.length() + (theta * s_max + ds) * r_max;
+    let speed = motion.translate.norm() + (theta * s_max + ds) * r_max;
     let m = motion.frame.matrix3;
     let frame_norm =
         (m.x_axis.length_squared() + m.y_axis.length_squared() + m.z_axis.length_squared()).sqrt();

@@ -1,5 +1,6 @@
 //! Planar polygons, convex or concave (even-odd rule), closed implicitly.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::{Aabb, Hit, Ray};
@@ -44,7 +45,7 @@ impl Polygon {
                 (p.x - q.x) * (p.y + q.y),
             );
         }
-        let normal = n.try_normalize().ok_or(PolygonError::Degenerate)?;
+        let normal = n.try_unit().ok_or(PolygonError::Degenerate)?;
         let origin = points[0];
         let bounds = points
             .iter()
@@ -60,7 +61,7 @@ impl Polygon {
         }
         let e1 = (points[1] - origin)
             .reject_from(normal)
-            .try_normalize()
+            .try_unit()
             .unwrap_or_else(|| normal.any_orthonormal_vector());
         let e2 = normal.cross(e1);
         let pts: Vec<DVec2> = points

@@ -1,6 +1,7 @@
 //! A prepared object: its geometry in object space, its transform, its material, its bounds.
 //! Nodes nest for CSG; every level moves rays in and hits out through its own transform.
 
+use crate::num::Norm;
 use std::borrow::Cow;
 use std::sync::Arc;
 
@@ -212,9 +213,8 @@ impl Primitive {
     fn out(place: Option<&Placement>, mut h: GeoHit) -> GeoHit {
         if let Some(p) = place {
             (h.point, h.error) = rounding::transform_point(&p.to_parent, h.point, h.error);
-            h.normal = (p.normal_matrix * h.normal).normalize_or(h.normal);
-            h.geometric_normal =
-                (p.normal_matrix * h.geometric_normal).normalize_or(h.geometric_normal);
+            h.normal = (p.normal_matrix * h.normal).unit_or(h.normal);
+            h.geometric_normal = (p.normal_matrix * h.geometric_normal).unit_or(h.geometric_normal);
         }
         h
     }
@@ -427,7 +427,7 @@ pub(super) fn plain_sphere_hit_at(
     material: MaterialId,
 ) -> GeoHit {
     let local_point = r.at(t);
-    let normal = (local_point - center).normalize();
+    let normal = (local_point - center).unit();
     GeoHit {
         t,
         normal,

@@ -1,5 +1,6 @@
 //! Parallelograms `corner + s·u + t·v`.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::{Aabb, Hit, Ray};
@@ -19,7 +20,7 @@ impl Quad {
     /// A quad from a corner and two edges; `None` when the edges are parallel.
     pub fn new(corner: DVec3, u: DVec3, v: DVec3) -> Option<Quad> {
         let n = u.cross(v);
-        let normal = n.try_normalize()?;
+        let normal = n.try_unit()?;
         Some(Quad {
             corner,
             u,

@@ -1,5 +1,6 @@
 //! Rays, object-space hit records and the frame texture mappings read hits in.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::sphere;
@@ -78,10 +79,8 @@ impl MappingFrame {
     /// north pole): a sphere's own uv, else the direction from the origin.
     pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
         match *self {
-            MappingFrame::Sphere { center, radius } => {
-                sphere::uv(((p - center) / radius).normalize())
-            }
-            MappingFrame::Object => sphere::uv(p.try_normalize().unwrap_or(DVec3::Y)),
+            MappingFrame::Sphere { center, radius } => sphere::uv(((p - center) / radius).unit()),
+            MappingFrame::Object => sphere::uv(p.try_unit().unwrap_or(DVec3::Y)),
         }
     }
 }

@@ -11,6 +11,7 @@
 //! `rtc::param::not_planar` (a polygon off its plane), `rtc::csg::operands` (a CSG node with
 //! fewer than two operands).
 
+use crate::num::Norm;
 use std::path::Path;
 
 use glam::DVec3;
@@ -362,7 +363,7 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
         }
         Shape::Plane { point, normal } => {
             finite("point", &[*point])?;
-            match normal.try_normalize() {
+            match normal.try_unit() {
                 Some(normal) => Leaf::Plane {
                     point: *point,
                     normal,

@@ -1,5 +1,6 @@
 //! Spheres.
 
+use crate::num::Norm;
 use std::f64::consts::PI;
 
 use glam::{DVec2, DVec3};
@@ -45,14 +46,14 @@ pub fn nearer_root(t0: f64, t1: f64, t_min: f64, t_max: f64) -> Option<f64> {
 /// Error bound of a computed point `p` on the sphere: its residual `| |p − c| − r |` plus the
 /// rounding of evaluating it (see [`super::rounding`]).
 pub fn point_error(center: DVec3, radius: f64, p: DVec3) -> DVec3 {
-    let len = (p - center).length();
+    let len = (p - center).norm();
     rounding::from_residual(len - radius, 6, len + radius)
 }
 
 /// Nearest intersection of `ray` with the sphere in (t_min, t_max).
 pub fn intersect(center: DVec3, radius: f64, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
     let t = hit_t(center, radius, ray, t_min, t_max)?;
-    let normal = (ray.at(t) - center).normalize();
+    let normal = (ray.at(t) - center).unit();
     Some(Hit {
         t,
         normal,
@@ -87,7 +88,7 @@ pub fn crossings(center: DVec3, radius: f64, ray: &Ray, out: &mut Vec<Crossing>)
         return;
     };
     for (t, entering) in [(t0, true), (t1, false)] {
-        let normal = (ray.at(t) - center).normalize();
+        let normal = (ray.at(t) - center).unit();
         out.push(Crossing {
             hit: Hit {
                 t,

@@ -16,6 +16,7 @@
 //! [`MARGIN`] = 10⁻⁵ of that magnitude, 100 times more; the capsule's own rounding (a few ε)
 //! is inside that margin too.
 
+use crate::num::Norm;
 use std::cmp::Ordering;
 
 use glam::DVec3;
@@ -68,7 +69,7 @@ impl Reach {
         let center = (lo + hi) * 0.5;
         let radius = spheres
             .iter()
-            .map(|&(c, r)| (c - center).length() + r)
+            .map(|&(c, r)| (c - center).norm() + r)
             .fold(0.0, f64::max);
         Reach {
             center,
@@ -165,7 +166,7 @@ pub(super) fn among(spheres: &[(DVec3, f64)], reach: Reach, bundle: &Bundle) -> 
         }
         // No hit of any sphere lies farther along a unit ray than the reach's far side, so
         // an infinite segment may stop there: its end lies in origins + far·directions.
-        let far = ((m0 - reach.center).length() + rho0 + reach.radius) * (1.0 + MARGIN);
+        let far = ((m0 - reach.center).norm() + rho0 + reach.radius) * (1.0 + MARGIN);
         let (o, d) = (bundle.origins, bundle.dirs);
         grow(&mut ends, o.0 + far * d.0);
         grow(&mut ends, o.1 + far * d.1);
@@ -201,7 +202,7 @@ pub(super) fn among(spheres: &[(DVec3, f64)], reach: Reach, bundle: &Bundle) -> 
 
 /// The centre of the box `lo..hi` and the distance from it to the box's corners.
 fn center_and_radius((lo, hi): (DVec3, DVec3)) -> (DVec3, f64) {
-    ((lo + hi) * 0.5, (hi - lo).length() * 0.5)
+    ((lo + hi) * 0.5, (hi - lo).norm() * 0.5)
 }
 
 /// `|x| + |y| + |z|`, at least the Euclidean length.
@@ -242,19 +243,19 @@ mod tests {
             let reach = Reach::of(&spheres);
             let spread = [1e-3, 0.05, 3.0][round % 3];
             let base = DVec3::new(rnd(), rnd(), rnd()) * 60.0 - 30.0;
-            let aim = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).normalize();
+            let aim = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).unit();
             let light = DVec3::new(rnd(), rnd(), rnd()) * 60.0 - 30.0;
             let rays: Vec<(Ray, f64)> = (0..16)
                 .map(|_| {
                     let jitter = (DVec3::new(rnd(), rnd(), rnd()) - 0.5) * spread;
                     if round % 2 == 0 {
                         // A camera pixel: one eye, nearby directions, no end.
-                        (Ray::new(base, (aim + jitter).normalize()), f64::INFINITY)
+                        (Ray::new(base, (aim + jitter).unit()), f64::INFINITY)
                     } else {
                         // Shadow rays from nearby points to one light.
                         let o = base + jitter;
                         let d = light - o;
-                        let dist = d.length();
+                        let dist = d.norm();
                         (Ray::new(o, d / dist), dist)
                     }
                 })

@@ -33,7 +33,7 @@ pub struct SphereLanes {
     rr: Vec<Lane>,
     len: usize,
     /// The spheres one by one, for bundles that test only a few of them ([`Among`]).
-    each: Vec<(DVec3, f64)>,
+    pub(super) each: Vec<(DVec3, f64)>,
     /// Where every sphere lies (how far infinite rays of a bundle reach).
     reach: Reach,
 }
@@ -219,6 +219,7 @@ impl SphereLanes {
 mod tests {
     use super::*;
     use crate::geometry::sphere;
+    use crate::num::Norm;
 
     /// Every lane agrees bit for bit with the scalar test, on random rays and on the cases the
     /// scalar code singles out (tangents at the origin, rays from inside, degenerate rays).
@@ -244,7 +245,7 @@ mod tests {
             ];
             for _ in 0..2000 {
                 let origin = DVec3::new(rnd(), rnd(), rnd()) * 16.0 - 8.0;
-                let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).normalize();
+                let dir = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).unit();
                 rays.push(Ray::new(origin, dir));
             }
             for ray in &rays {

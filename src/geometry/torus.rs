@@ -1,6 +1,7 @@
 //! Tori about the +Y axis: a quartic in the ray parameter, solved in f64 by root isolation
 //! ([`super::quartic`]) so grazing rays neither miss nor speckle.
 
+use crate::num::Norm;
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
@@ -38,8 +39,8 @@ impl Torus {
     /// Signed distance to the surface (exact for a torus), negative inside.
     pub fn distance(&self, p: DVec3) -> f64 {
         let p = p - self.center;
-        let ring = DVec2::new(p.x, p.z).length() - self.major;
-        DVec2::new(ring, p.y).length() - self.minor
+        let ring = DVec2::new(p.x, p.z).norm() - self.major;
+        DVec2::new(ring, p.y).norm() - self.minor
     }
 
     /// Error bound of a computed point `p` on the torus: its exact signed distance as evaluated,
@@ -58,7 +59,7 @@ impl Torus {
     /// Every sign-changing root along the whole line, in increasing `t`; `rising` means the
     /// ray leaves the solid there.
     fn roots(&self, ray: &Ray, mut f: impl FnMut(f64, bool)) {
-        let len = ray.dir.length();
+        let len = ray.dir.norm();
         if len == 0.0 || !len.is_finite() {
             return;
         }
@@ -93,11 +94,11 @@ impl Torus {
     fn hit(&self, ray: &Ray, t: f64) -> Hit {
         let p = ray.at(t) - self.center;
         let ring = DVec2::new(p.x, p.z);
-        let rl = ring.length();
+        let rl = ring.norm();
         // Normal: from the nearest point of the tube's centre circle (exact, no cancellation).
         let normal = if rl > 0.0 {
             let c = DVec3::new(p.x, 0.0, p.z) * (self.major / rl);
-            (p - c).try_normalize().unwrap_or(DVec3::Y)
+            (p - c).try_unit().unwrap_or(DVec3::Y)
         } else {
             DVec3::Y * p.y.signum()
         };

@@ -5,6 +5,7 @@
 //! operands swapped, so it is the exact negation in the neighbour: a ray through a shared edge
 //! or vertex is inside at least one of the triangles (zero counts as inside). No cracks.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3, Mat3A, Vec3, Vec3A, Vec4};
 
 use super::{Aabb, Hit, Ray};
@@ -22,7 +23,7 @@ impl Triangle {
     /// A triangle from its corners; `None` when it has no area.
     pub fn new(v: [DVec3; 3]) -> Option<Triangle> {
         let n = (v[1] - v[0]).cross(v[2] - v[0]);
-        let normal = n.try_normalize()?;
+        let normal = n.try_unit()?;
         Some(Triangle { v, normal })
     }
 

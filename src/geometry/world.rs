@@ -1,6 +1,8 @@
 //! The world the renderer queries: every object prepared for intersection in world space,
 //! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
+mod packet;
+
 use std::time::Duration;
 
 use glam::{DVec2, DVec3};

@@ -106,6 +106,7 @@ pub struct CameraMotion {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::Norm;
 
     #[test]
     fn the_motion_interpolates_translation_and_scale_linearly_and_rotation_by_slerp() {
@@ -129,7 +130,7 @@ mod tests {
         let p = DAffine3::from_translation(DVec3::new(5.0, 0.0, 0.0));
         let moved = m.transformed(p);
         let origin = moved.at(p, 1.0).transform_point3(DVec3::ZERO);
-        assert!((origin - DVec3::new(7.0, 0.0, 0.0)).length() < 1e-12);
+        assert!((origin - DVec3::new(7.0, 0.0, 0.0)).norm() < 1e-12);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 //! smoothing, shared by every object placing it), MTL material ids, and diagnostics for
 //! everything that cannot be drawn.
 
+use crate::num::Norm;
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -141,9 +142,9 @@ impl Builder {
         let scale = t
             .matrix3
             .x_axis
-            .length()
-            .max(t.matrix3.y_axis.length())
-            .max(t.matrix3.z_axis.length());
+            .norm()
+            .max(t.matrix3.y_axis.norm())
+            .max(t.matrix3.z_axis.norm());
         if !(det.is_finite() && t.translation.is_finite())
             || det.abs() <= 1e-12 * scale * scale * scale
         {

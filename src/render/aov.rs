@@ -8,6 +8,7 @@
 
 use crate::geometry::Ray;
 use crate::ir::Color;
+use crate::num::Norm;
 use crate::opt::Prepared;
 
 use super::View;
@@ -87,7 +88,7 @@ impl PixelAovs {
             hit.normal
         };
         self.hits += 1;
-        self.distance += hit.t * ray.dir.length();
+        self.distance += hit.t * ray.dir.norm();
         self.normal += whitted.bumped(&hit, facing, mat);
         self.albedo += whitted.base_color(&hit, mat);
         self.vote(scene.world().object(&hit) + 1);

@@ -4,6 +4,7 @@
 //! longitude u on a sphere) and B = T × N (increasing v, i.e. southwards), so on spheres the
 //! gradient follows the texture exactly; on other shapes it is an approximation.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::texture;
@@ -23,7 +24,7 @@ pub fn perturb(
     } else {
         DVec3::Y
     };
-    let t = up.cross(n).normalize();
+    let t = up.cross(n).unit();
     let b = t.cross(n);
     let (dh_du, dh_dv) = match tex {
         TextureMap::Image(pic, mapping) => {
@@ -53,7 +54,7 @@ pub fn perturb(
         return n;
     }
     let tilted = n - scale * (dh_du * t + dh_dv * b);
-    tilted.try_normalize().unwrap_or(n)
+    tilted.try_unit().unwrap_or(n)
 }
 
 #[cfg(test)]
@@ -85,7 +86,7 @@ mod tests {
 
     #[test]
     fn flat_height_keeps_the_normal_and_a_ramp_tilts_it() {
-        let n = DVec3::new(1.0, 0.2, -0.3).normalize();
+        let n = DVec3::new(1.0, 0.2, -0.3).unit();
         let flat = Picture::new(4, 4, vec![DVec3::splat(0.5); 16]).unwrap();
         let flat = TextureMap::Image(flat.into(), Mapping::Spherical);
         assert_eq!(perturb(&flat, 1.0, &hit_at(n), SPHERE, n), n);
@@ -98,8 +99,8 @@ mod tests {
             Mapping::Spherical,
         );
         let tilted = perturb(&ramp, 0.01, &hit_at(n), SPHERE, n);
-        let t = DVec3::Y.cross(n).normalize();
-        assert!((tilted.length() - 1.0).abs() < 1e-12);
+        let t = DVec3::Y.cross(n).unit();
+        assert!((tilted.norm() - 1.0).abs() < 1e-12);
         assert!(tilted.dot(t) < 0.0);
     }
 }

@@ -1,6 +1,7 @@
 //! Primary rays: the course camera (COURSE.md §2.4) and a perspective camera with a field of view,
 //! both optionally with a thin lens.
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::Ray;
@@ -34,18 +35,18 @@ impl Camera {
         let view = c.center - c.eye;
         let right_dir = view.cross(c.up);
         let (w, h) = (f64::from(c.width), f64::from(c.height));
-        let forward = view.normalize();
-        let r_unit = right_dir.normalize();
-        let u_unit = r_unit.cross(view).normalize();
+        let forward = view.unit();
+        let r_unit = right_dir.unit();
+        let u_unit = r_unit.cross(view).unit();
         let (center, right, up) = match c.projection {
             Projection::Course => {
                 // |up| is the size of one pixel on the plane through `center` (COURSE.md §2.4).
-                let size = c.up.length();
+                let size = c.up.norm();
                 (c.center, r_unit * size, u_unit * size)
             }
             Projection::Perspective { fov_y } => {
                 // The plane through `center`, sized so the image height spans `fov_y`.
-                let pixel = 2.0 * view.length() * libm::tan(0.5 * fov_y) / h;
+                let pixel = 2.0 * view.norm() * libm::tan(0.5 * fov_y) / h;
                 (c.center, r_unit * pixel, u_unit * pixel)
             }
         };
@@ -53,7 +54,7 @@ impl Camera {
         let focus_distance = if c.focus_distance > 0.0 {
             c.focus_distance
         } else {
-            view.length()
+            view.norm()
         };
         Camera {
             eye: c.eye,
@@ -115,7 +116,7 @@ impl Camera {
         let px = f64::from(x) + sx;
         let py = f64::from(self.height - 1 - y) + sy;
         let target = self.origin + px * self.right + py * self.up;
-        let dir = (target - self.eye).normalize();
+        let dir = (target - self.eye).unit();
         if self.aperture <= 0.0 {
             return Ray::new(self.eye, dir);
         }
@@ -123,7 +124,7 @@ impl Camera {
         let focus = self.eye + dir * (self.focus_distance / dir.dot(self.forward));
         let (a, b) = concentric_disk(lens.0, lens.1);
         let origin = self.eye + self.aperture * (a * self.lens_u + b * self.lens_v);
-        Ray::new(origin, (focus - origin).normalize())
+        Ray::new(origin, (focus - origin).unit())
     }
 }
 
@@ -233,7 +234,7 @@ mod tests {
             let r = cam.ray(x, y, 0.5, 0.5, (0.5, 0.5));
             let want = DVec3::new(f64::from(x) + 0.5, 399.0 - f64::from(y) + 0.5, 0.0);
             let t = -r.origin.z / r.dir.z;
-            assert!((r.at(t) - want).length() < 1e-9, "{x},{y}: {:?}", r.at(t));
+            assert!((r.at(t) - want).norm() < 1e-9, "{x},{y}: {:?}", r.at(t));
         }
     }
 
@@ -288,6 +289,6 @@ mod tests {
         assert!(a.origin != b.origin);
         let pa = a.at((500.0 - a.origin.z) / a.dir.z);
         let pb = b.at((500.0 - b.origin.z) / b.dir.z);
-        assert!((pa - pb).length() < 1e-9);
+        assert!((pa - pb).norm() < 1e-9);
     }
 }

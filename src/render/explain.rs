@@ -9,12 +9,12 @@
 use glam::DVec3;
 
 use super::View;
-use super::film::{Stats, encode};
+use super::film::encode;
 use super::integrator::Integrator;
 use super::integrator::whitted::Path;
 use super::record::{Branch, LightTerm, Recorder};
-use super::sampler::{PixelSampler, Rng};
-use super::shading::{Ctx, LightShare};
+use super::sampler::PixelSampler;
+use super::shading::Ctx;
 use crate::diag::Diagnostic;
 use crate::geometry::{Ray, SurfaceHit, World};
 use crate::ir::{Color, Encoding, MaterialId};
@@ -221,15 +221,6 @@ impl Recorder for Tree<'_> {
     }
 }
 
-/// A fresh per-pixel context, as the tile driver makes one.
-fn fresh_ctx() -> Ctx {
-    Ctx {
-        rng: Rng::new(0, 0, 0, 0),
-        stats: Stats::default(),
-        lights: LightShare::ALL,
-    }
-}
-
 /// Explains pixel (x, y) of `scene` (the caller checks it is inside the image): the pixel
 /// centre, or sample `sample` of its first grid. `Err` when the sample number is past the
 /// grid or the render cannot start (the depth range pass).
@@ -267,7 +258,7 @@ pub fn explain(
     // 4-neighbour's first-pass value differs by more than the threshold.
     let coarse = |px: u32, py: u32| {
         let mut out = vec![Color::ZERO; n];
-        view.average(&integrator, grid, 0, px, py, &mut fresh_ctx(), &mut out);
+        view.average(&integrator, grid, 0, px, py, &mut Ctx::new(), &mut out);
         out[0]
     };
     let here = coarse(x, y);
@@ -282,7 +273,7 @@ pub fn explain(
         if refined {
             let mut out = vec![Color::ZERO; n];
             let start = super::refine_start(fine);
-            view.average(&integrator, fine, start, x, y, &mut fresh_ctx(), &mut out);
+            view.average(&integrator, fine, start, x, y, &mut Ctx::new(), &mut out);
             pixel = out[0];
         }
     }
@@ -290,7 +281,7 @@ pub fn explain(
         Some(k) => (k, grid.offset(k)),
         None => (0, (0.5, 0.5)),
     };
-    let mut ctx = fresh_ctx();
+    let mut ctx = Ctx::new();
     let ray = view.camera_sample(x, y, k, (k, grid.len()), offset, &mut ctx);
     let mut tree = Tree {
         world: scene.world(),

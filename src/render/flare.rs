@@ -11,6 +11,7 @@
 //! pixel, added to the film's linear colour before quantisation, so the bytes do not depend on the
 //! thread count. The visibility rays are counted as shadow rays.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::camera::Camera;
@@ -59,7 +60,7 @@ pub fn visible_fraction(
         .filter(|&&p| {
             stats.shadow_rays += 1;
             let d = p - eye;
-            let dist = d.length();
+            let dist = d.norm();
             if dist <= 0.0 {
                 return true;
             }
@@ -137,18 +138,18 @@ fn soft_disc(d: f64, r: f64) -> f64 {
 
 /// The flare of `src` at pixel centre `p` on an image of `size` pixels.
 pub fn at_pixel(src: &Source, f: &Flare, p: DVec2, size: DVec2) -> Color {
-    let diag = size.length();
+    let diag = size.norm();
     let mut c = Color::ZERO;
     for i in 1..=f.ghosts {
         let (r, tint) = ghost_look(i);
         let g = ghost_position(src.at, size, f.dispersal, i);
-        let k = soft_disc(p.distance(g), r * diag);
+        let k = soft_disc(p.distance_to(g), r * diag);
         if k > 0.0 {
             c += 0.15 * k * tint * src.color;
         }
     }
     let d = p - src.at;
-    let dist = d.length();
+    let dist = d.norm();
     if f.halo > 0.0 {
         let radius = f.halo * diag;
         let width = (0.08 * radius).max(1.0);
@@ -169,7 +170,7 @@ pub fn at_pixel(src: &Source, f: &Flare, p: DVec2, size: DVec2) -> Color {
         if along <= 0.0 {
             continue;
         }
-        let across = (d - along * dir).length();
+        let across = (d - along * dir).norm();
         let line = (1.0 - across / 1.5).max(0.0);
         if line > 0.0 {
             c += 0.5 * line * libm::exp(-along / (0.06 * diag)) * src.color;

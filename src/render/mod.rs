@@ -56,7 +56,6 @@ use crate::opt::Prepared;
 use camera::{Camera, MovingCamera};
 use film::Film;
 use integrator::Integrator;
-use integrator::whitted::Path;
 use sampler::{Grid, PixelSampler, Rng};
 use shading::{BATCH, Ctx, LightShare};
 use shard::{Rows, Shard};
@@ -361,12 +360,7 @@ impl View<'_> {
                     }
                 }
                 let m = m as usize;
-                w.trace_batch(
-                    &rays[..m],
-                    &[Path::CAMERA; BATCH][..m],
-                    ctx,
-                    &mut colors[..m],
-                );
+                w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
                 for c in &colors[..m] {
                     *out += *c;
                 }

@@ -8,9 +8,11 @@
 //! fraction of the scene's size or a fixed epsilon. A ray towards a point (a light) is aimed from
 //! that start, so its line passes through the target.
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::SurfaceHit;
+use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
 use crate::geometry::rounding::gamma;
 
 /// A surface point rays can leave from: the point, its per-axis error bound and the surface's
@@ -72,7 +74,7 @@ impl SpawnPoint {
     pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
         let origin = self.origin_towards(target - self.point);
         let d = target - origin;
-        let dist = d.length();
+        let dist = d.norm();
         if dist.is_nan() || dist <= 0.0 || dist.is_infinite() {
             return None;
         }
@@ -81,6 +83,86 @@ impl SpawnPoint {
             dist - shadow_margin(origin, target, dist),
         ))
     }
+}
+
+/// The surface points of a packet ([`crate::geometry::lanes`]) rays leave from: a
+/// [`SpawnPoint`] per lane. Its rays are the ones [`SpawnPoint`] casts, bit for bit.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SpawnLanes {
+    /// The points as their objects computed them.
+    pub point: V3,
+    /// Their per-axis error bounds.
+    pub error: V3,
+    /// Their unit geometric normals.
+    pub normal: V3,
+}
+
+impl SpawnLanes {
+    /// Sets lane `i` to `s`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, s: &SpawnPoint) {
+        self.point.set(i, s.point);
+        self.error.set(i, s.error);
+        self.normal.set(i, s.normal);
+    }
+
+    /// [`SpawnPoint::origin_towards`] of every lane, each along its own `dir`.
+    #[inline(always)]
+    pub fn origin_towards(&self, dir: &V3) -> V3 {
+        let facing = dir.dot(&self.normal);
+        let n = V3::select(
+            lanes::mask_of(|i| facing[i] < 0.0),
+            &self.normal.neg(),
+            &self.normal,
+        );
+        let d = n.abs().dot(&self.error);
+        let o = self.point.add(&n.scale(&d));
+        V3 {
+            x: away_lanes(&o.x, &n.x),
+            y: away_lanes(&o.y, &n.y),
+            z: away_lanes(&o.z, &n.z),
+        }
+    }
+
+    /// [`SpawnPoint::ray_to`] of every lane towards one `target`: the rays, where each must
+    /// stop, and the lanes that have a ray (the others' target is their origin).
+    #[inline(always)]
+    pub fn ray_to(&self, target: DVec3) -> (RayLanes, Lanes, Mask) {
+        let origin = self.origin_towards(&self.point.from(target));
+        let d = origin.from(target);
+        let dist = d.norm();
+        let valid =
+            lanes::mask_of(|i| !(dist[i].is_nan() || dist[i] <= 0.0 || dist[i].is_infinite()));
+        let dir = d.div(&dist);
+        // shadow_margin, lane by lane.
+        let far = origin.abs().max_element();
+        let near = target.abs().max_element();
+        let t_max =
+            lanes::map(|i| dist[i] - gamma(SHADOW_ROUNDING_STEPS) * (far[i] + near + dist[i]));
+        (RayLanes { origin, dir }, t_max, valid)
+    }
+}
+
+/// [`away`] of every lane: the same bit steps, the rare cases (zeros, infinities, NaN) one by
+/// one through [`away_rare`].
+#[inline(always)]
+fn away_lanes(x: &Lanes, s: &Lanes) -> Lanes {
+    let mut out = [0.0; lanes::WIDTH];
+    let mut rare: Mask = 0;
+    for i in 0..lanes::WIDTH {
+        let a = x[i].abs();
+        rare |= Mask::from(!(a > 0.0 && a < f64::INFINITY)) << i;
+        let bits = x[i].to_bits() as i64;
+        // +1 towards +∞, −1 towards −∞, 0 to stay; negated for a negative x (whose
+        // neighbour towards +∞ is one bit pattern less): `(dir ^ m) − m` with m = 0 or −1.
+        let dir = i64::from(s[i] > 0.0) - i64::from(s[i] < 0.0);
+        let m = -(((bits as u64) >> 63) as i64);
+        out[i] = f64::from_bits(bits.wrapping_add((dir ^ m) - m) as u64);
+    }
+    for i in lanes::each(rare) {
+        out[i] = away_rare(x[i], s[i]);
+    }
+    out
 }
 
 /// `x.next_up()` when `s > 0`, `x.next_down()` when `s < 0`, else `x`, bit for bit; without a
@@ -185,14 +267,96 @@ mod tests {
         }
     }
 
+    /// Every lane of a packet leaves its surface and aims at its target exactly as the
+    /// point alone does, edge cases (zero and huge coordinates, exact points) included.
+    #[test]
+    fn packets_spawn_the_rays_points_spawn_alone() {
+        let mut rnd = crate::geometry::test_uniform(23);
+        for round in 0..40 {
+            let points: Vec<SpawnPoint> = (0..lanes::WIDTH)
+                .map(|i| {
+                    let p = DVec3::new(rnd() - 0.5, rnd() * 1e3, -rnd()) * [1.0, 1e8, 1e-9][i % 3];
+                    let p = if i == 5 {
+                        DVec3::new(0.0, -0.0, 1.0)
+                    } else {
+                        p
+                    };
+                    let n = (DVec3::new(rnd(), rnd(), rnd()) - 0.5).unit();
+                    let n = if i == 7 { DVec3::Y } else { n };
+                    at(p, [0.0, 1e-12, rnd() * 1e-6][i % 3], n)
+                })
+                .collect();
+            let mut packet = SpawnLanes::default();
+            for (i, s) in points.iter().enumerate() {
+                packet.set(i, s);
+            }
+            let dirs: Vec<DVec3> = (0..lanes::WIDTH)
+                .map(|i| (DVec3::new(rnd(), rnd(), rnd()) - 0.5) * if i == 3 { 0.0 } else { 1.0 })
+                .collect();
+            let dirs = V3::map(|i| dirs[i]);
+            let target = match round % 3 {
+                0 => DVec3::new(rnd(), rnd(), rnd()) * 1e3,
+                1 => points[2].point,
+                _ => DVec3::new(0.0, 1.0, -0.0),
+            };
+            let origins = packet.origin_towards(&dirs);
+            let (rays, t_max, valid) = packet.ray_to(target);
+            for (i, s) in points.iter().enumerate() {
+                let o = s.origin_towards(dirs.get(i));
+                assert_eq!(
+                    origins.get(i).to_array().map(f64::to_bits),
+                    o.to_array().map(f64::to_bits)
+                );
+                let want = s.ray_to(target);
+                assert_eq!(valid & (1 << i) != 0, want.is_some(), "lane {i}");
+                if let Some((ray, t)) = want {
+                    assert_eq!(rays.origin.get(i), ray.origin);
+                    assert_eq!(
+                        rays.dir.get(i).to_array().map(f64::to_bits),
+                        ray.dir.to_array().map(f64::to_bits)
+                    );
+                    assert_eq!(t_max[i].to_bits(), t.to_bits());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn away_in_lanes_steps_as_away() {
+        let xs = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            1e-310,
+            -1e-310,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            123.456,
+            -7.0e200,
+            3.0,
+            -2.5,
+        ];
+        for s in [1.0, -2.0, 0.0, -0.0, f64::NAN, -1e-300] {
+            let got = away_lanes(&xs, &[s; lanes::WIDTH]);
+            for (x, g) in xs.iter().zip(got) {
+                assert_eq!(g.to_bits(), away(*x, s).to_bits(), "{x:e} towards {s}");
+            }
+        }
+    }
+
     #[test]
     fn a_ray_to_a_target_is_aimed_from_its_origin_and_stops_short() {
         let s = at(DVec3::new(0.0, 1.0, 0.0), 1e-12, DVec3::Y);
         let target = DVec3::new(2.0, 0.0, 1.0);
         let (ray, t_max) = s.ray_to(target).unwrap();
         let end = ray.at(t_max);
-        assert!((target - end).length() < 1e-12);
-        assert!(((target - ray.origin).normalize() - ray.dir).length() < 1e-15);
-        assert!(t_max < (target - ray.origin).length());
+        assert!((target - end).norm() < 1e-12);
+        assert!(((target - ray.origin).unit() - ray.dir).norm() < 1e-15);
+        assert!(t_max < (target - ray.origin).norm());
     }
 }

@@ -8,8 +8,7 @@ use super::film::Stats;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::progress::Progress;
-use super::sampler::Rng;
-use super::shading::{Ctx, LightShare};
+use super::shading::Ctx;
 use super::shard::Rows;
 use crate::diag::{Diagnostic, Severity};
 
@@ -63,11 +62,7 @@ where
             .par_chunks_mut(row * BAND)
             .enumerate()
             .map(|(band, chunk)| {
-                let mut ctx = Ctx {
-                    rng: Rng::new(0, 0, 0, 0),
-                    stats: Stats::default(),
-                    lights: LightShare::ALL,
-                };
+                let mut ctx = Ctx::new();
                 if stop.load(Ordering::Relaxed) || progress.cancelled() {
                     stop.store(true, Ordering::Relaxed);
                     return ctx.stats;

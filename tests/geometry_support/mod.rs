@@ -6,6 +6,7 @@ use rtc::assets::MeshAsset;
 use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
+use rtc::num::Norm;
 use rtc::source::Span;
 
 /// SplitMix64: tiny, deterministic, good enough for test rays.
@@ -121,10 +122,10 @@ pub fn mirrored_transform() -> DAffine3 {
 /// A ray from far outside the box through a random point inside it (unit direction).
 pub fn ray_at_box(rng: &mut Rng, lo: DVec3, hi: DVec3) -> Ray {
     let c = 0.5 * (lo + hi);
-    let r = (hi - lo).length().max(1e-9);
+    let r = (hi - lo).norm().max(1e-9);
     let target = rng.point_in(lo, hi);
     let origin = c + rng.dir() * (2.0 * r);
-    Ray::new(origin, (target - origin).normalize())
+    Ray::new(origin, (target - origin).unit())
 }
 
 /// A direction in the hemisphere around `n`.

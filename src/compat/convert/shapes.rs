@@ -1,6 +1,7 @@
 //! Objects, materials and textures as rtc source: one constructor call per object with its
 //! placement as transform methods, materials as `material { ... }` records.
 
+use crate::num::Norm;
 use std::path::Path;
 
 use glam::{DAffine3, DMat3, DVec3};
@@ -95,7 +96,7 @@ pub fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -
     let m = o.transform.matrix3;
     let note = (m != DMat3::from_diagonal(DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z)))
         .then(|| {
-            let pole = m.y_axis.normalize_or_zero();
+            let pole = m.y_axis.unit_or(Default::default());
             format!(
                 "// Rotated so that its +Y (a course texture's north pole) points along [{}, {}, {}].\n",
                 crate::diag::number(pole.x),

@@ -2,6 +2,7 @@
 //! equivalent `fov`, lights, named materials, objects and the course's render settings written
 //! out (they differ from the language's defaults).
 
+use crate::num::Norm;
 use std::fmt::Write as _;
 
 use super::comments::{Comment, is_rule};
@@ -177,7 +178,7 @@ fn camera(c: &Camera) -> String {
     let view = match c.projection {
         Projection::Perspective { fov_y } => format!("fov: {}rad", number(fov_y)),
         Projection::Course => {
-            let size = c.up.length();
+            let size = c.up.norm();
             let width = if size == 1.0 {
                 "one unit".to_string()
             } else {
@@ -229,8 +230,8 @@ fn camera(c: &Camera) -> String {
 /// when the renderer's pixel for it (`render::camera`: 2·d·tan(fov/2)/h, with `libm` as here)
 /// is |up| to the bit.
 fn course_fov(c: &Camera) -> Option<String> {
-    let size = c.up.length();
-    let d = (c.center - c.eye).length();
+    let size = c.up.norm();
+    let d = (c.center - c.eye).norm();
     let h = f64::from(c.height);
     let a = h * size / 2.0;
     let fov = 2.0 * libm::atan(a / d);

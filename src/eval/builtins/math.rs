@@ -1,5 +1,6 @@
 //! Math built-ins: trig on `Angle`, scalar functions, vector helpers, conversions, `print`, `assert`.
 
+use crate::num::Norm;
 use std::rc::Rc;
 
 use glam::DVec3;
@@ -254,11 +255,11 @@ fn cross(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 fn distance(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, y) = two_vecs(it, s, a)?;
-    Ok(Value::Float(x.distance(y)))
+    Ok(Value::Float(x.distance_to(y)))
 }
 fn length(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["v"], a)?;
-    Ok(Value::Float(p.vec3(it, "v")?.0.length()))
+    Ok(Value::Float(p.vec3(it, "v")?.0.norm()))
 }
 fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["v"], a)?;
@@ -271,7 +272,7 @@ fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
                 .into(),
         );
     }
-    Ok(Value::Vec3(v.normalize()))
+    Ok(Value::Vec3(v.unit()))
 }
 fn float(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(one(it, s, a)?.0))

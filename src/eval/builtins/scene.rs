@@ -1,5 +1,6 @@
 //! Camera, lights, render settings and the small enumerations they use.
 
+use crate::num::Norm;
 use std::rc::Rc;
 
 use glam::DVec3;
@@ -154,7 +155,7 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         .with_help("use an `up` that is not along `center - eye`, e.g. `up: Y` or `up: Z`")
         .into());
     }
-    let (focus, fcs) = p.num_or(it, "focus", view.length())?;
+    let (focus, fcs) = p.num_or(it, "focus", view.norm())?;
     positive("focus", focus, fcs)?;
     let shutter = crate::eval::motion::shutter(&mut p)?;
     let motion = crate::eval::motion::camera_motion(it, &mut p, eye, center, up)?;

@@ -8,6 +8,7 @@
 //! weight: the lobe's rays average to the same total weight as the one ray they replace, and
 //! energy never grows.
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use super::whitted::Outgoing;
@@ -22,10 +23,10 @@ pub fn lobe_direction(axis: DVec3, side: DVec3, gloss: f64, (a, b): (f64, f64)) 
     let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
     let phi = 2.0 * std::f64::consts::PI * b;
     let (t, bt) = axis.any_orthonormal_pair();
-    let d = (cos_t * axis + sin_t * (libm::cos(phi) * t + libm::sin(phi) * bt)).normalize();
+    let d = (cos_t * axis + sin_t * (libm::cos(phi) * t + libm::sin(phi) * bt)).unit();
     let below = d.dot(side);
     if below < 0.0 {
-        (d - 2.0 * below * side).normalize()
+        (d - 2.0 * below * side).unit()
     } else {
         d
     }
@@ -50,7 +51,7 @@ mod tests {
 
     #[test]
     fn lobe_stays_in_its_cone_and_on_its_side() {
-        let axis = DVec3::new(0.3, 0.9, 0.1).normalize();
+        let axis = DVec3::new(0.3, 0.9, 0.1).unit();
         let n = DVec3::Y;
         for gloss in [0.0, 0.1, 0.5, 1.0] {
             let cos_max = libm::cos(gloss * std::f64::consts::FRAC_PI_2);
@@ -58,7 +59,7 @@ mod tests {
                 for j in 0..16 {
                     let p = ((f64::from(i) + 0.5) / 16.0, (f64::from(j) + 0.5) / 16.0);
                     let d = lobe_direction(axis, n, gloss, p);
-                    assert!((d.length() - 1.0).abs() < 1e-12);
+                    assert!((d.norm() - 1.0).abs() < 1e-12);
                     assert!(d.dot(n) >= 0.0);
                     if d.dot(axis) < cos_max - 1e-9 {
                         // Only a mirrored ray may leave the cone, and only when it was tipped
@@ -72,8 +73,8 @@ mod tests {
 
     #[test]
     fn zero_gloss_is_the_axis() {
-        let axis = DVec3::new(1.0, 2.0, -0.5).normalize();
+        let axis = DVec3::new(1.0, 2.0, -0.5).unit();
         let d = lobe_direction(axis, DVec3::Y, 0.0, (0.7, 0.2));
-        assert!((d - axis).length() < 1e-12);
+        assert!((d - axis).norm() < 1e-12);
     }
 }

@@ -10,6 +10,9 @@
 
 mod batch;
 
+use crate::num::Norm;
+pub use batch::PacketScratch;
+
 use glam::DVec3;
 
 use super::gloss;
@@ -88,7 +91,7 @@ pub fn refract(d: DVec3, n: DVec3, n1: f64, n2: f64) -> Option<DVec3> {
     if k < 0.0 {
         return None;
     }
-    Some((r * d + (r * cos_i - k.sqrt()) * n).normalize())
+    Some((r * d + (r * cos_i - k.sqrt()) * n).unit())
 }
 
 /// The mirror direction of unit `d` about unit `n`.
@@ -437,7 +440,7 @@ mod tests {
     fn head_on_refraction_is_undeviated() {
         let d = DVec3::new(0.0, 0.0, -1.0);
         let t = refract(d, DVec3::Z, 1.0, 1.5).unwrap();
-        assert!((t - d).length() < 1e-15);
+        assert!((t - d).norm() < 1e-15);
     }
 
     #[test]

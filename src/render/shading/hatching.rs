@@ -20,6 +20,7 @@
 //! Paper shows the material colour, ink is black. The two footprint rays per shaded point are
 //! counted as secondary rays.
 
+use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use super::{Ctx, Surface, light_sample, occluder, transmission};
@@ -96,7 +97,7 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
                 .iter()
                 .zip(families.iter().zip(coords))
                 .enumerate()
-                .map(|(i, (&c, (&grad, x)))| 1.0 - stroke_coverage(i as u64, x, grad.length(), c))
+                .map(|(i, (&c, (&grad, x)))| 1.0 - stroke_coverage(i as u64, x, grad.norm(), c))
                 .product::<f64>()
         }
         // No footprint (a silhouette pixel): the flat tone.
@@ -183,11 +184,11 @@ fn midline_present(family: u64, j: f64, density: f64) -> bool {
 fn screen_gradient(scene: &Prepared, s: &Surface<'_>) -> Option<glam::DMat2> {
     let cam = scene.camera();
     let view = cam.center - cam.eye;
-    let forward = view.normalize();
-    let right = view.cross(cam.up).normalize();
-    let up = right.cross(view).normalize();
+    let forward = view.unit();
+    let right = view.cross(cam.up).unit();
+    let up = right.cross(view).unit();
     let pixel_angle = match cam.projection {
-        Projection::Course => cam.up.length() / view.length(),
+        Projection::Course => cam.up.norm() / view.norm(),
         Projection::Perspective { fov_y } => {
             2.0 * libm::tan(0.5 * fov_y) / f64::from(cam.height.max(1))
         }
@@ -213,12 +214,11 @@ fn screen_gradient(scene: &Prepared, s: &Surface<'_>) -> Option<glam::DMat2> {
 /// (the same material, facing the same way, near its tangent plane).
 fn uv_at(scene: &Prepared, s: &Surface<'_>, eye: DVec3, target: DVec3) -> Option<DVec2> {
     let d = target - eye;
-    let ray = Ray::new(eye, d.normalize());
+    let ray = Ray::new(eye, d.unit());
     let hit = scene.world().intersect(&ray, 0.0, f64::INFINITY)?;
     let same = std::ptr::eq(scene.material(hit.material), s.mat)
         && hit.normal.dot(s.n).abs() > 0.5
-        && (hit.point - s.p).dot(s.n).abs()
-            < 4.0 * (target - s.p).length() + s.spawn.error.length();
+        && (hit.point - s.p).dot(s.n).abs() < 4.0 * (target - s.p).norm() + s.spawn.error.norm();
     same.then_some(hit.uv)
 }
 

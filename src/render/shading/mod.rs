@@ -5,7 +5,9 @@ pub mod glass_shadow;
 pub mod gooch;
 pub mod hatching;
 pub mod phong;
+pub mod phong_packet;
 
+use crate::num::Norm;
 use glam::DVec3;
 
 use super::film::Stats;
@@ -16,8 +18,8 @@ use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
 
 /// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
-/// (`phong::shade_batch`, `integrator::whitted`'s batches).
-pub const BATCH: usize = 16;
+/// (`phong_packet`, `integrator::whitted`'s packets).
+pub const BATCH: usize = crate::geometry::lanes::WIDTH;
 
 /// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
 pub struct Ctx {
@@ -27,6 +29,26 @@ pub struct Ctx {
     pub stats: Stats,
     /// Which cells of each area light the current camera sample takes.
     pub lights: LightShare,
+    /// Reused buffers of the packets the Whitted integrator traces.
+    pub packets: crate::render::integrator::whitted::PacketScratch,
+}
+
+impl Ctx {
+    /// The state a tile starts with: no counts, every light cell, empty buffers.
+    pub fn new() -> Ctx {
+        Ctx {
+            rng: Rng::new(0, 0, 0, 0),
+            stats: Stats::default(),
+            lights: LightShare::ALL,
+            packets: Default::default(),
+        }
+    }
+}
+
+impl Default for Ctx {
+    fn default() -> Ctx {
+        Ctx::new()
+    }
 }
 
 /// Which cells of an area light one camera sample takes: all of them, or (with
@@ -122,7 +144,7 @@ pub fn light_sample(
         }
     };
     let d = pos - s.p;
-    let dist = d.length();
+    let dist = d.norm();
     LightSample {
         l: if dist > 0.0 { d / dist } else { s.n },
         dist,

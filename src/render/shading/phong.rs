@@ -3,11 +3,7 @@
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
 //! is `ka·C` once, without light colour.
 
-use super::{
-    BATCH, Ctx, LightSample, Surface, highlight, light_sample, occluder, shadow_ray, transmission,
-};
-use crate::geometry::Ray;
-use crate::geometry::sphere_cull::Bundle;
+use super::{Ctx, LightSample, Surface, highlight, light_sample, occluder, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
 use crate::render::record::{LightTerm, Recorder};
@@ -77,71 +73,4 @@ fn lit(s: &Surface<'_>, ls: &LightSample, n_dot_l: f64, pass: Color) -> (Color, 
         (s.mat.kd * n_dot_l) * s.color * lc,
         highlight(s, ls.l, n_dot_l) * lc,
     )
-}
-
-/// [`shade`] of up to [`BATCH`] surface points side by side, into `out` (entries without a
-/// surface are left alone), without glass shadows or a recorder: every point gets the same
-/// operations in the same order as from `shade`, but each stage (light samples and shadow rays,
-/// then the occlusion tests, then the sums) runs over all points before the next, so the CPU
-/// overlaps the points' independent chains of square roots and divisions.
-pub fn shade_batch(scene: &Prepared, ss: &[Option<Surface<'_>>], ctx: &mut Ctx, out: &mut [Color]) {
-    let ambient = scene.settings().ambient;
-    for (c, s) in out.iter_mut().zip(ss) {
-        if let Some(s) = s {
-            *c = Color::ZERO;
-            if ambient == AmbientConvention::Once {
-                *c += s.mat.ka * s.color;
-            }
-        }
-    }
-    let world = scene.world();
-    for (i, light) in scene.lights().iter().enumerate() {
-        if ambient == AmbientConvention::PerLight {
-            for (c, s) in out.iter_mut().zip(ss) {
-                if let Some(s) = s {
-                    *c += s.mat.ka * s.color * light.color;
-                }
-            }
-        }
-        let (first, count) = ctx.lights.cells(light.samples);
-        for j in 0..count {
-            let k = (first + j) % light.samples;
-            let mut lights: [Option<(LightSample, f64)>; BATCH] = [None; BATCH];
-            let mut rays: [Option<(Ray, f64)>; BATCH] = [None; BATCH];
-            // The shadow rays' segments (from nearby points to one light sample), to skip the
-            // spheres none of them can meet.
-            let mut bundle = Bundle::new();
-            for (s, l) in ss.iter().zip(&mut lights) {
-                let Some(s) = s else { continue };
-                let ls = light_sample(light, i, k, count, s, &ctx.rng);
-                let n_dot_l = s.n.dot(ls.l);
-                // Facing away: neither light nor shadow ray (as in `shade`).
-                if n_dot_l > 0.0 {
-                    *l = Some((ls, n_dot_l));
-                }
-            }
-            // The shadow rays in a loop of their own: shorter loops overlap more points' chains.
-            for ((s, l), r) in ss.iter().zip(&lights).zip(&mut rays) {
-                if let (Some(s), Some((ls, _))) = (s, l) {
-                    *r = shadow_ray(scene, s, ls, &mut ctx.stats);
-                    if let Some((ray, t_max)) = r {
-                        bundle.push(ray, *t_max);
-                    }
-                }
-            }
-            let among = world.among(&bundle);
-            let mut open = [true; BATCH];
-            for (o, r) in open.iter_mut().zip(&rays) {
-                if let Some((ray, t_max)) = r {
-                    *o = !world.occluded_among(ray, 0.0, *t_max, among);
-                }
-            }
-            for (((c, s), l), o) in out.iter_mut().zip(ss).zip(&lights).zip(open) {
-                if let (Some(s), Some((ls, n_dot_l)), true) = (s, l, o) {
-                    let (diffuse, specular) = lit(s, ls, *n_dot_l, Color::ONE);
-                    *c += diffuse + specular;
-                }
-            }
-        }
-    }
 }

@@ -1,111 +1,395 @@
-//! The camera samples of a pixel traced side by side: each stage of the Whitted recursion (the
-//! nearest hits and their surfaces, the shading with its shadow rays, the reflected rays) runs
-//! over up to [`BATCH`] rays before the next stage starts.
+//! The camera samples of a pixel traced as a packet ([`crate::geometry::lanes`]): each stage
+//! of the Whitted recursion (the nearest hits and their surfaces, the shading with its shadow
+//! rays, the reflected rays) runs over up to [`BATCH`] rays at once before the next starts.
+//! A reflected ray stays in the lane of the ray it continues, so nothing is shuffled between
+//! bounces.
 //!
 //! Why: every ray is a chain of dependent square roots and divisions (camera direction, root,
-//! normal, error bound, light direction, re-aimed shadow ray, its root), so a ray traced alone
-//! keeps the CPU waiting on one `sqrtsd`/`divsd` after another (scene A, issue 12). Rays of one
-//! stage are independent, and the CPU overlaps their chains. Each ray gets exactly the
-//! operations, in the same order, that [`Whitted::trace`] gives it, so its colour is the same
-//! to the bit; only the order of the (integer) counters' increments changes.
+//! normal, error bound, light direction, re-aimed shadow ray, its root), and scalar `DVec3`
+//! code spends most of its instructions moving single numbers. Rays of one stage are
+//! independent: in lanes the compiler pairs their arithmetic and the CPU overlaps their
+//! chains (scene A, issue 12). Each ray gets exactly the operations, in the same order, that
+//! [`Whitted::trace`] gives it, so its colour is the same to the bit; only the order of the
+//! (integer) counters' increments changes.
 
 use glam::DVec3;
 
-use super::{Path, Whitted, reflect};
+use super::{Media, Path, Whitted};
 use crate::geometry::Ray;
+use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
+use crate::geometry::rounding::gamma;
 use crate::geometry::sphere_cull::Bundle;
+use crate::geometry::sphere_packet::{NO_SPHERE, PacketHits};
 use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
+use crate::render::offset::SpawnLanes;
 use crate::render::record::NoRecord;
-use crate::render::shading::{BATCH, Ctx, Surface, phong};
+use crate::render::shading::phong_packet::{self, SurfaceLanes};
+use crate::render::shading::{BATCH, Ctx, Surface};
+
+/// Where the rays of a packet are: they have bounced equally often in the same media (camera
+/// rays, then the mirror rays of those), and each weighs its own share of its pixel.
+#[derive(Clone, Copy)]
+struct PacketPath {
+    depth: u32,
+    media: Media,
+    weight: Lanes,
+}
+
+impl PacketPath {
+    /// Camera rays.
+    const CAMERA: PacketPath = PacketPath {
+        depth: 0,
+        media: Media::OUTSIDE,
+        weight: [1.0; BATCH],
+    };
+
+    /// The path of lane `i` alone.
+    fn lane(&self, i: usize) -> Path {
+        Path {
+            depth: self.depth,
+            media: self.media,
+            weight: self.weight[i],
+        }
+    }
+}
+
+/// Reused buffers for the surfaces of packets being shaded, one per recursion depth in use
+/// (part of a tile's [`Ctx`]).
+#[derive(Default)]
+pub struct PacketScratch {
+    // Boxed so that taking and giving back moves a pointer, not the 3.8 kB buffer.
+    #[allow(clippy::vec_box)]
+    free: Vec<Box<Shading>>,
+}
+
+impl PacketScratch {
+    /// A buffer (its lanes hold whatever the last packet left).
+    fn take(&mut self) -> Box<Shading> {
+        self.free.pop().unwrap_or_else(|| {
+            Box::new(Shading {
+                s: SurfaceLanes::default(),
+                facing: V3::ZERO,
+                kr: [0.0; BATCH],
+            })
+        })
+    }
+
+    /// Returns a buffer for the next packet.
+    fn give(&mut self, b: Box<Shading>) {
+        self.free.push(b);
+    }
+}
+
+/// A packet's surfaces being shaded, with what its reflected rays need.
+struct Shading {
+    /// The points, as Phong reads them.
+    s: SurfaceLanes,
+    /// The normals facing the incoming rays before any bump map (mirrors reflect about them).
+    facing: V3,
+    /// The mirror weights.
+    kr: Lanes,
+}
 
 impl Whitted<'_> {
     /// Whether [`Whitted::trace_batch`] can trace this scene's camera samples: nothing draws
     /// random numbers per sample (no lens, area light, open shutter or glossy lobe), every
-    /// sample takes every light cell, and shadows are not tinted by glass.
+    /// sample takes every light cell, shadows are not tinted by glass, and every light is a
+    /// point light.
     pub fn batches(&self) -> bool {
         !self.scene.random()
             && !self.effects.glass_shadows
             && self.scene.settings().light_samples != LightSampling::Spread
+            && phong_packet::applies(self.scene)
     }
 
-    /// Whether a hit on `mat` is shaded in the batch (Phong, no refracted ray); others take
+    /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray); others take
     /// [`Whitted::trace`]'s own path from their hit on.
     fn batched(&self, mat: &Material) -> bool {
         mat.shading.unwrap_or(self.shading) == ShadingModel::Phong
             && !(self.effects.refraction && mat.refract > 0.0)
     }
 
-    /// The colours of up to [`BATCH`] rays with their paths into `out`, each bit for bit what
+    /// Whether a surface of `mat` needs its whole hit record (a texture or a bump map to
+    /// read), which the packet's own sphere hits do not carry.
+    fn needs_hit(&self, mat: &Material) -> bool {
+        (self.effects.textures && mat.texture.is_some())
+            || (self.effects.bump && mat.bump.is_some())
+    }
+
+    /// The colours of up to [`BATCH`] camera rays into `out`, each bit for bit what
     /// [`Whitted::trace`] gives it. Only for scenes where [`Whitted::batches`] holds.
-    pub fn trace_batch(&self, rays: &[Ray], paths: &[Path], ctx: &mut Ctx, out: &mut [Color]) {
-        let scene = self.scene;
-        let world = scene.world();
-        // The hits are read where `intersect` returned them: stored in an array they were
-        // copied there (a `memcpy` per ray, 8% of scene A's profile).
-        let mut live: [Option<Surface<'_>>; BATCH] = [None; BATCH];
-        let mut facing = [DVec3::ZERO; BATCH];
-        // The spheres the batch's rays can meet at all: a pixel's camera rays, the few in the
-        // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
-        let mut bundle = Bundle::new();
-        for r in rays {
-            bundle.push(r, f64::INFINITY);
-        }
-        let among = world.among(&bundle);
-        // The spheres' `t`s first, then the hits: two short loops overlap more rays' chains.
-        let mut first = [SphereHit::default(); BATCH];
-        for (f, r) in first.iter_mut().zip(rays) {
-            *f = world.nearest_sphere(r, 0.0, f64::INFINITY, among);
-        }
-        for i in 0..rays.len() {
-            // By value, and lent out only as a copy: a hit whose address is taken lives in
-            // memory, and reading it back in wider pieces than it was stored in stalled on
-            // store forwarding.
-            let Some(hit) = world.intersect_after(&rays[i], 0.0, f64::INFINITY, first[i]) else {
-                out[i] = self.background;
-                continue;
-            };
-            let mat = scene.material(hit.material);
-            if !self.batched(mat) {
-                let lent = hit;
-                out[i] = self.shade_at(&rays[i], &lent, paths[i], ctx, &mut NoRecord);
-                continue;
-            }
-            let (s, _, f) = self.surface(&rays[i], &hit, paths[i], mat);
-            (live[i], facing[i]) = (Some(s), f);
-        }
-        let n = rays.len();
-        phong::shade_batch(scene, &live[..n], ctx, &mut out[..n]);
-        // The reflected rays of the batch, as `shade_at` casts them (no refraction here, and
-        // no gloss: `batches` excludes it).
-        let mut next = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
-        let mut next_paths = [Path::CAMERA; BATCH];
-        let mut back = [(0usize, 0.0f64); BATCH];
-        let mut m = 0;
-        for i in 0..n {
-            let (Some(s), path) = (&live[i], paths[i]) else {
-                continue;
-            };
-            if path.depth >= self.max_depth {
-                continue;
-            }
-            let kr = self.reflectance(s.mat);
-            if kr > 0.0 && self.significant(path.bounce(path.media, kr), ctx) {
-                let dir = reflect(rays[i].dir, facing[i]);
-                ctx.stats.secondary_rays += 1;
-                next[m] = Ray::new(s.spawn.origin_towards(dir), dir).at_time(rays[i].time);
-                next_paths[m] = path.bounce(path.media, kr);
-                back[m] = (i, kr);
-                m += 1;
-            }
-        }
-        if m == 0 {
-            return;
-        }
-        let mut light = [Color::ZERO; BATCH];
-        self.trace_batch(&next[..m], &next_paths[..m], ctx, &mut light[..m]);
-        for (&(i, kr), l) in back[..m].iter().zip(&light) {
-            out[i] += kr * *l;
+    pub fn trace_batch(&self, rays: &[Ray], ctx: &mut Ctx, out: &mut [Color]) {
+        let n = rays.len().min(BATCH);
+        let packet = RayLanes::of(&rays[..n]);
+        let time = lanes::map(|i| if i < n { rays[i].time } else { 0.0 });
+        let c = self.trace_packet(&packet, &time, lanes::first(n), &PacketPath::CAMERA, ctx);
+        for (i, o) in out.iter_mut().enumerate().take(n) {
+            *o = c.get(i);
         }
     }
+
+    /// The colours of the rays of `live` (other lanes hold anything).
+    fn trace_packet(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        live: Mask,
+        path: &PacketPath,
+        ctx: &mut Ctx,
+    ) -> V3 {
+        let world = self.scene.world();
+        // The spheres the packet's rays can meet at all: a pixel's camera rays, the few in the
+        // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
+        let first = if world.has_loose_spheres() {
+            let mut bundle = Bundle::new();
+            for i in lanes::each(live) {
+                bundle.push(&lane_ray(rays, time, i), f64::INFINITY);
+            }
+            let among = world.among(&bundle);
+            world.nearest_packet(rays, live, 0.0, f64::INFINITY, among)
+        } else {
+            PacketHits::none(f64::INFINITY)
+        };
+        // The surfaces go into a reused buffer: built afresh they were a 3.8 kB `memset`
+        // (Rust initialises them), and moved out of a call a `memcpy`.
+        let mut sh = ctx.packets.take();
+        let mut out = V3::splat(self.background);
+        if world.balls_only() {
+            let hit = live & lanes::mask_of(|i| first.sphere[i] != NO_SPHERE);
+            if hit == 0 {
+                ctx.packets.give(sh);
+                return out;
+            }
+            self.ball_surfaces(rays, time, &first, hit, &mut sh);
+            self.ball_exceptions(rays, time, &first, path, ctx, &mut sh, &mut out);
+        } else {
+            self.surfaces(rays, time, &first, live, path, ctx, &mut sh, &mut out);
+        }
+        let out = self.finish(rays, time, path, &sh, out, ctx);
+        ctx.packets.give(sh);
+        out
+    }
+
+    /// The colours of a packet from its surfaces on: `out` (the lanes already done) with the
+    /// shaded lanes' Phong colours and their mirror rays' light.
+    #[inline(always)]
+    fn finish(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        path: &PacketPath,
+        sh: &Shading,
+        out: V3,
+        ctx: &mut Ctx,
+    ) -> V3 {
+        let c = phong_packet::shade(self.scene, &sh.s, ctx);
+        let mut out = V3::select(sh.s.live, &c, &out);
+        self.reflect_packet(rays, time, path, sh, ctx, &mut out);
+        out
+    }
+
+    /// The surfaces of the hits `hit` of a packet in a world of loose spheres only, built in
+    /// lanes from the spheres' `t`s: `plain_sphere_hit_at`, `World::surface_hit` and
+    /// [`Whitted::surface`] lane by lane (lanes whose material needs more are redone by
+    /// [`Whitted::ball_exceptions`]).
+    #[inline(always)]
+    fn ball_surfaces(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        first: &PacketHits,
+        hit: Mask,
+        sh: &mut Shading,
+    ) {
+        let scene = self.scene;
+        let world = scene.world();
+        let ball = |i: usize| {
+            // Lanes without a hit read any ball: their values are never used.
+            let k = if hit & (1 << i) != 0 {
+                first.sphere[i]
+            } else {
+                0
+            };
+            world.loose_ball(k)
+        };
+        let center = V3::map(|i| ball(i).center);
+        let radius = lanes::map(|i| ball(i).radius);
+        let mats: [&Material; BATCH] = std::array::from_fn(|i| scene.material(ball(i).material));
+        // plain_sphere_hit_at: the point, its normal and its error bound.
+        let point = rays.at(&first.t);
+        let w = point.sub(&center);
+        let len = w.norm();
+        let normal = w.scale(&lanes::map(|i| 1.0 / len[i]));
+        let e = lanes::map(|i| (len[i] - radius[i]).abs() + gamma(6) * (len[i] + radius[i]));
+        // Whitted::surface: the normal facing the ray, the viewer, the material.
+        let cos = normal.dot(&rays.dir);
+        let facing = V3::select(lanes::mask_of(|i| cos[i] > 0.0), &normal.neg(), &normal);
+        let s = &mut sh.s;
+        s.live = hit;
+        s.p = point;
+        s.spawn = SpawnLanes {
+            point,
+            error: V3 { x: e, y: e, z: e },
+            normal,
+        };
+        s.n = facing;
+        s.v = rays.dir.neg();
+        s.color = V3::map(|i| mats[i].color);
+        s.ka = lanes::map(|i| mats[i].ka);
+        s.kd = lanes::map(|i| mats[i].kd);
+        s.ks = lanes::map(|i| mats[i].ks);
+        s.shininess = lanes::map(|i| mats[i].n);
+        s.time = *time;
+        sh.facing = facing;
+        sh.kr = lanes::map(|i| self.reflectance(mats[i]));
+    }
+
+    /// The lanes of [`Whitted::ball_surfaces`] whose material needs more than the packet's
+    /// sphere hits carry (textures, bump maps, another shading model): redone by the one-ray
+    /// path, into the packet or straight into `out`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn ball_exceptions(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        first: &PacketHits,
+        path: &PacketPath,
+        ctx: &mut Ctx,
+        sh: &mut Shading,
+        out: &mut V3,
+    ) {
+        let world = self.scene.world();
+        for i in lanes::each(sh.s.live) {
+            let mat = self
+                .scene
+                .material(world.loose_ball(first.sphere[i]).material);
+            if !self.batched(mat) || self.needs_hit(mat) {
+                sh.s.live &= !(1 << i);
+                let one = SphereHit::of_lane(first, i);
+                let ray = lane_ray(rays, time, i);
+                if let Some((s, f, kr)) =
+                    self.surface_or_color(&ray, one, path.lane(i), ctx, i, out)
+                {
+                    sh.s.set(i, &s);
+                    sh.facing.set(i, f);
+                    sh.kr[i] = kr;
+                }
+            }
+        }
+    }
+
+    /// The surfaces of a packet's hits in any world, ray by ray from each ray's nearest loose
+    /// sphere on ([`Whitted::surface_or_color`]); lanes shaded one by one go into `out`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn surfaces(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        first: &PacketHits,
+        live: Mask,
+        path: &PacketPath,
+        ctx: &mut Ctx,
+        sh: &mut Shading,
+        out: &mut V3,
+    ) {
+        sh.s.live = 0;
+        for i in lanes::each(live) {
+            let one = SphereHit::of_lane(first, i);
+            let ray = lane_ray(rays, time, i);
+            if let Some((s, f, kr)) = self.surface_or_color(&ray, one, path.lane(i), ctx, i, out) {
+                sh.s.set(i, &s);
+                sh.facing.set(i, f);
+                sh.kr[i] = kr;
+            }
+        }
+    }
+
+    /// The one-ray path of lane `i` from the nearest loose sphere `first` on: its hit, then
+    /// its surface (with the normal facing the ray and the mirror weight) when the packet
+    /// shades it, else `None` and its colour straight into `out`.
+    #[inline(always)]
+    fn surface_or_color(
+        &self,
+        ray: &Ray,
+        first: SphereHit,
+        path: Path,
+        ctx: &mut Ctx,
+        i: usize,
+        out: &mut V3,
+    ) -> Option<(Surface<'_>, DVec3, f64)> {
+        let scene = self.scene;
+        // By value, and lent out only as a copy: a hit whose address is taken lives in
+        // memory, and reading it back in wider pieces than it was stored in stalled on store
+        // forwarding.
+        let Some(hit) = scene
+            .world()
+            .intersect_after(ray, 0.0, f64::INFINITY, first)
+        else {
+            out.set(i, self.background);
+            return None;
+        };
+        let mat = scene.material(hit.material);
+        if !self.batched(mat) {
+            let lent = hit;
+            out.set(i, self.shade_at(ray, &lent, path, ctx, &mut NoRecord));
+            return None;
+        }
+        let (s, _, f) = self.surface(ray, &hit, path, mat);
+        Some((s, f, self.reflectance(mat)))
+    }
+
+    /// The mirror rays of a shaded packet, as `shade_at` casts them (no refraction here, and
+    /// no gloss: `batches` excludes it), traced as a packet of their own in the same lanes and
+    /// added to `out`.
+    #[inline(always)]
+    fn reflect_packet(
+        &self,
+        rays: &RayLanes,
+        time: &Lanes,
+        path: &PacketPath,
+        sh: &Shading,
+        ctx: &mut Ctx,
+        out: &mut V3,
+    ) {
+        if path.depth >= self.max_depth {
+            return;
+        }
+        let mut bounce: Mask = 0;
+        for i in lanes::each(sh.s.live) {
+            if sh.kr[i] > 0.0 && self.significant(path.lane(i).bounce(path.media, sh.kr[i]), ctx) {
+                bounce |= 1 << i;
+            }
+        }
+        if bounce == 0 {
+            return;
+        }
+        ctx.stats.secondary_rays += u64::from(bounce.count_ones());
+        // `reflect(d, n) = d − (2·(d·n))·n`, leaving from the spawn point along it.
+        let d_n = rays.dir.dot(&sh.facing);
+        let dir = rays
+            .dir
+            .sub(&sh.facing.scale(&lanes::map(|i| 2.0 * d_n[i])));
+        let next = RayLanes {
+            origin: sh.s.spawn.origin_towards(&dir),
+            dir,
+        };
+        let next_path = PacketPath {
+            depth: path.depth + 1,
+            media: path.media,
+            weight: lanes::map(|i| path.weight[i] * sh.kr[i]),
+        };
+        let light = self.trace_packet(&next, time, bounce, &next_path, ctx);
+        for i in lanes::each(bounce) {
+            out.set(i, out.get(i) + sh.kr[i] * light.get(i));
+        }
+    }
+}
+
+/// Lane `i` of a packet as a ray.
+#[inline(always)]
+fn lane_ray(rays: &RayLanes, time: &Lanes, i: usize) -> Ray {
+    Ray::new(rays.origin.get(i), rays.dir.get(i)).at_time(time[i])
 }
