@@ -98,7 +98,7 @@ pub fn to_f32_box(b: &Aabb) -> Option<BAabb> {
 }
 
 /// A ray prepared for traversal in f32: origin, safe reciprocal direction and a `t` range.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct BvhRay {
     /// Origin, one axis splatted per vector.
     pub(super) origin: [Vec4; 3],

@@ -234,3 +234,100 @@ fn axis_parallel_and_backward_rays() {
         }
     }
 }
+
+/// Packets offer each ray exactly the leaves it meets alone, and find the same nearest
+/// distance and the same any-hit answers: coherent packets (one origin, close directions,
+/// some straddling an axis so their signs differ), packets of nearby origins, and packets of
+/// unrelated rays, with per-ray limits.
+#[test]
+fn packets_match_single_rays() {
+    use crate::geometry::bvh_packet::PACKET;
+    use std::collections::BTreeSet;
+    let boxes = random_boxes(3000, 21);
+    let params = BvhBuildParams {
+        max_prims_per_leaf: 4,
+        ..BvhBuildParams::medium_build()
+    };
+    let bvh = Bvh::build(&boxes, (0..3000).collect(), params).into_blocks();
+    let mut rnd = crate::geometry::test_uniform(5);
+    // The leaf's nearest box entry, as a hit distance for the closest-hit search.
+    let hit = |first: usize, count: usize, o: DVec3, d: DVec3| {
+        (first * BLOCK..first * BLOCK + count)
+            .filter_map(|s| slab(&boxes[bvh.order[s] as usize], o, d))
+            .fold(f32::INFINITY, |m, t| m.min(t as f32))
+    };
+    for k in 0..300 {
+        let eye = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
+        let centre = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5);
+        let spread = [0.001, 0.05, 1.0][k % 3];
+        let rays: Vec<(DVec3, DVec3, f64)> = (0..PACKET)
+            .map(|_| {
+                let o = match k % 4 {
+                    0 | 1 => eye,
+                    2 => eye + DVec3::new(rnd(), rnd(), rnd()) * 0.1,
+                    _ => DVec3::new(rnd(), rnd(), rnd()) * 10.0,
+                };
+                let mut d = centre + DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5) * spread;
+                if k % 4 == 3 {
+                    d = DVec3::new(rnd() - 0.5, rnd() - 0.5, rnd() - 0.5);
+                }
+                // Straddling the y axis: some rays go up, some down.
+                if k % 5 == 0 {
+                    d.y = (rnd() - 0.5) * 1e-3;
+                }
+                let t_max = if rnd() < 0.3 {
+                    rnd() * 12.0
+                } else {
+                    f64::INFINITY
+                };
+                (o, d.normalize(), t_max)
+            })
+            .collect();
+        let bvh_rays: Vec<BvhRay> = rays
+            .iter()
+            .map(|&(o, d, t)| BvhRay::new(o, d, 0.0, t).unwrap())
+            .collect();
+        let active = ((1u32 << PACKET) - 1) & !(1 << (k % PACKET));
+        // Every leaf offered, per ray.
+        let mut offered = vec![BTreeSet::new(); PACKET];
+        let none = bvh.any_leaves_packet(&bvh_rays, active, |r, first, count| {
+            assert!(offered[r].insert((first, count)), "a leaf offered twice");
+            false
+        });
+        assert_eq!(none, 0);
+        let mut far = [0.0; PACKET];
+        for (f, r) in far.iter_mut().zip(&bvh_rays) {
+            *f = r.t_max;
+        }
+        bvh.closest_leaves_packet(&bvh_rays, active, &mut far, |r, first, count, t_max| {
+            t_max.min(hit(first, count, rays[r].0, rays[r].1))
+        });
+        // Rays that stop at the first leaf holding an even primitive.
+        let even = |first: usize, count: usize| {
+            (first * BLOCK..first * BLOCK + count).any(|s| bvh.order[s].is_multiple_of(2))
+        };
+        let stopped =
+            bvh.any_leaves_packet(&bvh_rays, active, |_, first, count| even(first, count));
+        for (r, br) in bvh_rays.iter().enumerate() {
+            let (o, d, _) = rays[r];
+            if active >> r & 1 == 0 {
+                assert!(offered[r].is_empty());
+                assert_eq!(stopped >> r & 1, 0);
+                continue;
+            }
+            let mut alone = BTreeSet::new();
+            bvh.any_leaves(br, |first, count| {
+                alone.insert((first, count));
+                false
+            });
+            assert_eq!(offered[r], alone, "packet {k} ray {r}");
+            let mut want = br.t_max;
+            bvh.closest_leaves(br, |first, count, t_max| {
+                want = t_max.min(hit(first, count, o, d));
+                want
+            });
+            assert_eq!(far[r].to_bits(), want.to_bits(), "packet {k} ray {r}");
+            assert_eq!(stopped >> r & 1 == 1, bvh.any_leaves(br, even));
+        }
+    }
+}

@@ -8,6 +8,7 @@ use obvhs::BvhBuildParams;
 use rayon::prelude::*;
 
 use super::bvh::{BLOCK, Bvh, BvhRay};
+use super::bvh_packet::PACKET;
 use super::triangle::{ShearedRay, TriBlock};
 use super::{Aabb, Ray};
 use crate::ir::limits::MAX_TRIANGLES;
@@ -268,10 +269,128 @@ impl Mesh {
             t_far
         });
         let (slot, t, b) = best?;
+        self.finish(ray, t_min, t_max, s, slot, t, b)
+    }
+
+    /// The hit of the ray restarted at `s` on the triangle in `slot` at `t` (relative to `s`)
+    /// with barycentrics `b`, if it lies in (t_min, t_max).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn finish(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        s: f64,
+        slot: usize,
+        t: f32,
+        b: [f32; 3],
+    ) -> Option<MeshHit> {
         let mut h = self.hit(slot, t, b);
         h.t += s;
         h.error = self.point_error(slot, ray.at(h.t));
         (h.t > t_min && h.t < t_max).then_some(h)
+    }
+
+    /// [`Mesh::intersect`] of up to [`PACKET`] rays at once: `hit(i, h)` for each ray `i` that
+    /// has a hit, `h` bit for bit `intersect(&rays[i], t_min[i], t_max[i])`.
+    ///
+    /// The rays' set-ups run one after the other (their divisions and square roots overlap)
+    /// and the rays then walk the tree as a packet. Each finds the nearest `t` it would find
+    /// alone; only which of two triangles at exactly that `t` wins depends on the visiting
+    /// order, so a ray that met such a tie is traced again alone.
+    pub fn intersect_packet(
+        &self,
+        rays: &[Ray],
+        t_min: &[f64],
+        t_max: &[f64],
+        mut hit: impl FnMut(usize, MeshHit),
+    ) {
+        assert!(rays.len() <= PACKET, "a packet holds at most {PACKET} rays");
+        let n = rays.len();
+        let mut shift = [0.0; PACKET];
+        let mut sheared = [ShearedRay::default(); PACKET];
+        let mut bvh_rays = [BvhRay::default(); PACKET];
+        let mut lo = [0.0; PACKET];
+        let mut far = [0.0; PACKET];
+        let mut active = 0u32;
+        for i in 0..n {
+            if let Some((s, sr, r, l)) = self.near(&rays[i], t_min[i], t_max[i]) {
+                (shift[i], sheared[i], lo[i], far[i]) = (s, sr, l, r.t_max);
+                bvh_rays[i] = r;
+                active |= 1 << i;
+            }
+        }
+        let mut best: [Option<(usize, f32, [f32; 3])>; PACKET] = [None; PACKET];
+        // The last `t` at which a ray met a second triangle as near as its nearest so far.
+        let mut tie = [f32::NAN; PACKET];
+        self.bvh.closest_leaves_packet(
+            &bvh_rays[..n],
+            active,
+            &mut far,
+            |r, first, count, mut t_far| {
+                for (slot, e) in self.leaf(&sheared[r], first, count) {
+                    let mut mask = e.mask;
+                    while mask != 0 {
+                        let lane = mask.trailing_zeros() as usize;
+                        mask &= mask - 1;
+                        let (t, b) = e.hit(lane);
+                        if t > lo[r] && t < t_far {
+                            best[r] = Some((slot + lane, t, b));
+                            t_far = t;
+                        } else if t == t_far && best[r].is_some() {
+                            tie[r] = t;
+                        }
+                    }
+                }
+                t_far
+            },
+        );
+        for i in 0..n {
+            let h = match best[i] {
+                Some((_, t, _)) if tie[i] == t => self.intersect(&rays[i], t_min[i], t_max[i]),
+                Some((slot, t, b)) => {
+                    self.finish(&rays[i], t_min[i], t_max[i], shift[i], slot, t, b)
+                }
+                None => None,
+            };
+            if let Some(h) = h {
+                hit(i, h);
+            }
+        }
+    }
+
+    /// [`Mesh::occluded`] of the rays of `active` (bits, up to [`PACKET`] rays) at once: the
+    /// rays it holds for, as a mask.
+    pub fn occluded_packet(&self, rays: &[Ray], t_min: &[f64], t_max: &[f64], active: u32) -> u32 {
+        assert!(rays.len() <= PACKET, "a packet holds at most {PACKET} rays");
+        let n = rays.len();
+        let mut sheared = [ShearedRay::default(); PACKET];
+        let mut bvh_rays = [BvhRay::default(); PACKET];
+        let (mut lo, mut hi) = ([0.0; PACKET], [0.0; PACKET]);
+        let mut traced = 0u32;
+        for i in (0..n).filter(|i| active >> i & 1 == 1) {
+            if let Some((s, sr, r, l)) = self.near(&rays[i], t_min[i], t_max[i]) {
+                (sheared[i], bvh_rays[i], lo[i]) = (sr, r, l);
+                hi[i] = (t_max[i] - s) as f32;
+                traced |= 1 << i;
+            }
+        }
+        self.bvh
+            .any_leaves_packet(&bvh_rays[..n], traced, |r, first, count| {
+                self.leaf(&sheared[r], first, count).any(|(_, e)| {
+                    let mut mask = e.mask;
+                    while mask != 0 {
+                        let lane = mask.trailing_zeros() as usize;
+                        mask &= mask - 1;
+                        let (t, _) = e.hit(lane);
+                        if t > lo[r] && t < hi[r] {
+                            return true;
+                        }
+                    }
+                    false
+                })
+            })
     }
 
     /// True when some triangle lies in (t_min, t_max) (stops at the first).
@@ -333,3 +452,7 @@ impl Mesh {
         out[start..].sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     }
 }
+
+#[cfg(test)]
+#[path = "mesh_tests.rs"]
+mod tests;

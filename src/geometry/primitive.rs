@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec2, DVec3};
 
+use super::bvh_packet::PACKET;
 use super::shape::Leaf;
 use super::{Aabb, Hit, Ray, csg, mesh::Mesh, rounding, sphere};
 use crate::ir::{CsgOp, MaterialId, Motion};
@@ -302,6 +303,74 @@ impl Primitive {
             }
             _ => self.intersect(ray, t_min, t_max).is_some(),
         }
+    }
+
+    /// Whether [`Primitive::intersect_packet`] and [`Primitive::occluded_packet`] trace rays
+    /// together here (a mesh fixed in place) rather than one by one.
+    pub fn packets(&self) -> bool {
+        matches!(self.geom, Geom::Mesh(_)) && self.moving.is_none()
+    }
+
+    /// [`Primitive::intersect`] of up to [`PACKET`] rays with their own `t_max`: `hit(i, h)`
+    /// for each ray `i` that has a hit, `h` bit for bit `intersect(&rays[i], t_min, t_max[i])`.
+    /// A mesh traces them as a packet.
+    pub fn intersect_packet(
+        &self,
+        rays: &[Ray],
+        t_min: f64,
+        t_max: &[f64],
+        mut hit: impl FnMut(usize, GeoHit),
+    ) {
+        let n = rays.len();
+        let (Geom::Mesh(m), true) = (&self.geom, self.packets()) else {
+            for i in 0..n {
+                if let Some(h) = self.intersect(&rays[i], t_min, t_max[i]) {
+                    hit(i, h);
+                }
+            }
+            return;
+        };
+        if self.bounds.is_empty() {
+            return;
+        }
+        let place = self.placement.as_deref();
+        let mut local = [Ray::new(DVec3::ZERO, DVec3::ZERO); PACKET];
+        let mut lo = [0.0; PACKET];
+        for i in 0..n {
+            (local[i], lo[i]) = Self::local_after(place, &rays[i], t_min);
+        }
+        m.data
+            .intersect_packet(&local[..n], &lo[..n], &t_max[..n], |i, h| {
+                hit(i, Self::out(place, self.mesh_hit(&local[i], m, h)))
+            });
+    }
+
+    /// [`Primitive::occluded`] of the rays of `active` (bits) with their own `t_max`: the
+    /// rays it holds for. A mesh traces them as a packet.
+    pub fn occluded_packet(&self, rays: &[Ray], t_min: f64, t_max: &[f64], active: u32) -> u32 {
+        let n = rays.len();
+        let each = |i: usize| active >> i & 1 == 1;
+        let (Geom::Mesh(m), true) = (&self.geom, self.packets()) else {
+            return (0..n)
+                .filter(|&i| each(i) && self.occluded(&rays[i], t_min, t_max[i]))
+                .fold(0, |m, i| m | 1 << i);
+        };
+        let place = self.placement.as_deref();
+        let mut local = [Ray::new(DVec3::ZERO, DVec3::ZERO); PACKET];
+        let mut lo = [0.0; PACKET];
+        let mut inside = 0u32;
+        for i in (0..n).filter(|&i| each(i)) {
+            if self
+                .bounds
+                .hit_interval(&rays[i], t_min, t_max[i])
+                .is_some()
+            {
+                (local[i], lo[i]) = Self::local_after(place, &rays[i], t_min);
+                inside |= 1 << i;
+            }
+        }
+        m.data
+            .occluded_packet(&local[..n], &lo[..n], &t_max[..n], inside)
     }
 
     fn mesh_hit(&self, r: &Ray, m: &MeshRef, h: super::mesh::MeshHit) -> GeoHit {

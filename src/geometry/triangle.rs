@@ -106,7 +106,7 @@ fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f6
 /// The shear and axis permutation are folded into one matrix, so each vertex's sheared
 /// coordinates are `shear * (v − origin)`: no per-triangle axis indexing, and every triangle
 /// sharing a vertex computes bit-identical coordinates for it (what watertightness needs).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub struct ShearedRay {
     origin: Vec3A,
     shear: Mat3A,

@@ -16,6 +16,9 @@ use super::sphere_lanes::SphereLanes;
 use super::{Aabb, MappingFrame, Ray};
 use crate::ir::MaterialId;
 
+#[path = "world_batch.rs"]
+mod batch;
+
 /// A world-space hit with everything shading needs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceHit {
@@ -361,6 +364,20 @@ impl World {
                 best = Some((h, i));
             }
         }
+        self.nearest_in_bvh(ray, t_min, far, &mut best);
+        self.nearest_hit(ray, best, best_sphere)
+    }
+
+    /// The nearest hit on the objects under the top-level BVH nearer than `far` (and than
+    /// `best`, which it replaces).
+    #[inline(always)]
+    fn nearest_in_bvh(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        mut far: f64,
+        best: &mut Option<(GeoHit, u32)>,
+    ) {
         if let Some(bvh) = &self.bvh {
             match BvhRay::new(ray.origin, ray.dir, t_min, far) {
                 Some(r) => bvh.closest(&r, |slot, _| {
@@ -368,7 +385,7 @@ impl World {
                     match self.hit(i, ray, t_min, far) {
                         Some(h) => {
                             far = h.t;
-                            best = Some((h, i));
+                            *best = Some((h, i));
                             (h.t as f32).next_up()
                         }
                         None => f32::INFINITY,
@@ -378,12 +395,23 @@ impl World {
                     for &i in &bvh.order {
                         if let Some(h) = self.hit(i, ray, t_min, far) {
                             far = h.t;
-                            best = Some((h, i));
+                            *best = Some((h, i));
                         }
                     }
                 }
             }
         }
+    }
+
+    /// The world-space hit of the nearest object hit `best`, or else of the nearest
+    /// fast-path sphere `best_sphere` (its id and `t`).
+    #[inline(always)]
+    fn nearest_hit(
+        &self,
+        ray: &Ray,
+        best: Option<(GeoHit, u32)>,
+        best_sphere: Option<(u32, f64)>,
+    ) -> Option<SurfaceHit> {
         match best {
             Some((h, i)) => Some(self.surface_hit(ray, h, i)),
             // The nearest hit is a fast-path sphere: now compute its normal and the rest at the
@@ -450,6 +478,12 @@ impl World {
         {
             return true;
         }
+        self.occluded_in_bvh(ray, t_min, t_max)
+    }
+
+    /// Whether anything under the top-level BVH lies in (t_min, t_max) along the ray.
+    #[inline(always)]
+    fn occluded_in_bvh(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         let Some(bvh) = &self.bvh else {
             return false;
         };
