@@ -103,14 +103,32 @@ impl World {
     ) {
         let n = rays.len();
         let all = if n == 0 { 0 } else { u32::MAX >> (32 - n) };
-        let mut done = 0u32;
+        let mut spheres = 0u32;
         for i in 0..n {
             if self.spheres.any_among(&rays[i], t_min, t_max[i], among) {
-                done |= 1 << i;
+                spheres |= 1 << i;
             }
         }
+        let blocked = spheres | self.occluded_past_packet(rays, t_min, t_max, all & !spheres);
+        for (i, o) in out.iter_mut().enumerate().take(n) {
+            *o = blocked >> i & 1 == 1;
+        }
+    }
+
+    /// The rays of `live` (bit `i` for `rays[i]`) that something other than the loose
+    /// spheres blocks in (t_min, t_max[i]): [`World::occluded_among`]'s second half, the
+    /// packet-tracing objects tested once for all of them.
+    pub(super) fn occluded_past_packet(
+        &self,
+        rays: &[Ray],
+        t_min: f64,
+        t_max: &[f64],
+        live: u32,
+    ) -> u32 {
+        let n = rays.len();
+        let mut done = 0u32;
         for &id in &self.loose {
-            if done == all {
+            if done == live {
                 break;
             }
             if self.packets(id) {
@@ -118,18 +136,21 @@ impl World {
                     &rays[..n],
                     t_min,
                     &t_max[..n],
-                    all & !done,
+                    live & !done,
                 );
             } else {
                 for i in 0..n {
-                    if done >> i & 1 == 0 && self.blocks(id, &rays[i], t_min, t_max[i]) {
+                    if (live & !done) >> i & 1 == 1 && self.blocks(id, &rays[i], t_min, t_max[i]) {
                         done |= 1 << i;
                     }
                 }
             }
         }
         for i in 0..n {
-            out[i] = done >> i & 1 == 1 || self.occluded_in_bvh(&rays[i], t_min, t_max[i]);
+            if (live & !done) >> i & 1 == 1 && self.occluded_in_bvh(&rays[i], t_min, t_max[i]) {
+                done |= 1 << i;
+            }
         }
+        done & live
     }
 }

@@ -63,13 +63,14 @@ impl World {
         } else {
             self.spheres.any_packet(rays, live, t_min, t_max, among)
         };
-        if !self.balls_only() {
-            for i in lanes::each(live & !blocked) {
-                let ray = Ray::new(rays.origin.get(i), rays.dir.get(i)).at_time(time[i]);
-                if self.occluded_past(&ray, t_min, t_max[i]) {
-                    blocked |= 1 << i;
-                }
-            }
+        let rest = live & !blocked;
+        if !self.balls_only() && rest != 0 {
+            // Everything else through the packet queries (a mesh's BVH tested once per node
+            // for all the rays).
+            let one: [Ray; lanes::WIDTH] = std::array::from_fn(|i| {
+                Ray::new(rays.origin.get(i), rays.dir.get(i)).at_time(time[i])
+            });
+            blocked |= self.occluded_past_packet(&one, t_min, t_max, rest);
         }
         blocked
     }

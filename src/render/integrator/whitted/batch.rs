@@ -269,8 +269,9 @@ impl Whitted<'_> {
                 sh.s.live &= !(1 << i);
                 let one = SphereHit::of_lane(first, i);
                 let ray = lane_ray(rays, time, i);
+                let hit = world.intersect_after(&ray, 0.0, f64::INFINITY, one);
                 if let Some((s, f, kr)) =
-                    self.surface_or_color(&ray, one, path.lane(i), ctx, i, out)
+                    self.surface_or_color(&ray, hit, path.lane(i), ctx, i, out)
                 {
                     sh.s.set(i, &s);
                     sh.facing.set(i, f);
@@ -296,10 +297,25 @@ impl Whitted<'_> {
         out: &mut V3,
     ) {
         sh.s.live = 0;
+        // The live rays side by side for the world's packet query (a mesh's BVH tested once
+        // per node for all of them), each hit what `intersect_after` finds for it alone.
+        let mut lane = [0usize; BATCH];
+        let mut one = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
+        let mut firsts = [SphereHit::default(); BATCH];
+        let mut m = 0;
         for i in lanes::each(live) {
-            let one = SphereHit::of_lane(first, i);
-            let ray = lane_ray(rays, time, i);
-            if let Some((s, f, kr)) = self.surface_or_color(&ray, one, path.lane(i), ctx, i, out) {
+            (lane[m], one[m], firsts[m]) =
+                (i, lane_ray(rays, time, i), SphereHit::of_lane(first, i));
+            m += 1;
+        }
+        let mut hits = [None; BATCH];
+        let world = self.scene.world();
+        world.intersect_batch_after(&one[..m], 0.0, f64::INFINITY, &firsts[..m], &mut hits[..m]);
+        for j in 0..m {
+            let i = lane[j];
+            if let Some((s, f, kr)) =
+                self.surface_or_color(&one[j], hits[j], path.lane(i), ctx, i, out)
+            {
                 sh.s.set(i, &s);
                 sh.facing.set(i, f);
                 sh.kr[i] = kr;
@@ -307,14 +323,14 @@ impl Whitted<'_> {
         }
     }
 
-    /// The one-ray path of lane `i` from the nearest loose sphere `first` on: its hit, then
-    /// its surface (with the normal facing the ray and the mirror weight) when the packet
-    /// shades it, else `None` and its colour straight into `out`.
+    /// The one-ray path of lane `i` from its nearest hit `hit` on: its surface (with the
+    /// normal facing the ray and the mirror weight) when the packet shades it, else `None`
+    /// and its colour straight into `out`.
     #[inline(always)]
     fn surface_or_color(
         &self,
         ray: &Ray,
-        first: SphereHit,
+        hit: Option<crate::geometry::SurfaceHit>,
         path: Path,
         ctx: &mut Ctx,
         i: usize,
@@ -324,10 +340,7 @@ impl Whitted<'_> {
         // By value, and lent out only as a copy: a hit whose address is taken lives in
         // memory, and reading it back in wider pieces than it was stored in stalled on store
         // forwarding.
-        let Some(hit) = scene
-            .world()
-            .intersect_after(ray, 0.0, f64::INFINITY, first)
-        else {
+        let Some(hit) = hit else {
             out.set(i, self.background);
             return None;
         };
