@@ -6,6 +6,7 @@
 
 mod geometry_support;
 
+use rtc::num::Norm;
 use std::path::PathBuf;
 
 use geometry_support::{Rng, mirrored_transform, object, world};
@@ -83,7 +84,7 @@ fn batches_match_single_rays_bit_for_bit() {
             let rays: Vec<Ray> = (0..n)
                 .map(|_| {
                     let target = aim + DVec3::new(rng.f() - 0.5, rng.f() - 0.5, 0.0) * spread;
-                    Ray::new(eye, (target - eye).normalize())
+                    Ray::new(eye, (target - eye).unit())
                 })
                 .collect();
             let mut bundle = Bundle::new();
@@ -106,8 +107,8 @@ fn batches_match_single_rays_bit_for_bit() {
                 if let Some(h) = want {
                     hits_seen += 1;
                     let p = h.surface_point + h.geometric_normal * 1e-4;
-                    shadow.push(Ray::new(p, (light - p).normalize()));
-                    limit.push((light - p).length() * if rng.f() < 0.2 { rng.f() } else { 1.0 });
+                    shadow.push(Ray::new(p, (light - p).unit()));
+                    limit.push((light - p).norm() * if rng.f() < 0.2 { rng.f() } else { 1.0 });
                 }
             }
             let mut bundle = Bundle::new();
@@ -134,7 +135,7 @@ fn long_batches_are_split_into_packets() {
     let rays: Vec<Ray> = (0..40)
         .map(|k| {
             let target = DVec3::new(k as f64 * 0.02 - 0.4, 0.5, 0.0);
-            Ray::new(eye, (target - eye).normalize())
+            Ray::new(eye, (target - eye).unit())
         })
         .collect();
     let first = vec![SphereHit::default(); rays.len()];

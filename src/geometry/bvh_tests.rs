@@ -280,7 +280,7 @@ fn packets_match_single_rays() {
                 } else {
                     f64::INFINITY
                 };
-                (o, d.normalize(), t_max)
+                (o, d.unit(), t_max)
             })
             .collect();
         let bvh_rays: Vec<BvhRay> = rays

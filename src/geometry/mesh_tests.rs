@@ -66,7 +66,7 @@ fn packets_match_single_rays_bit_for_bit() {
     let (vertices, triangles) = test_mesh(n, &mut rnd);
     let normals: Vec<[Vec3; 3]> = triangles
         .iter()
-        .map(|t| t.map(|i| (vertices[i as usize] + Vec3::Y).normalize()))
+        .map(|t| t.map(|i| (vertices[i as usize] + Vec3::Y).unit()))
         .collect();
     let mesh = Mesh::build(MeshParts {
         vertices: &vertices,
@@ -89,7 +89,7 @@ fn packets_match_single_rays_bit_for_bit() {
                 1 => (v + vertices[j * (n + 1) + (i + 1).min(n)].as_dvec3()) * 0.5,
                 _ => v + DVec3::new(rnd() - 0.5, 0.0, rnd() - 0.5) * 0.01,
             };
-            rays.push(Ray::new(eye, (target - eye).normalize()));
+            rays.push(Ray::new(eye, (target - eye).unit()));
         }
         packets.push(rays);
         let spread = 0.05 + rnd();
@@ -98,7 +98,7 @@ fn packets_match_single_rays_bit_for_bit() {
             (0..PACKET)
                 .map(|_| {
                     let d = centre + DVec3::new(rnd() - 0.5, 0.0, rnd() - 0.5) * spread;
-                    Ray::new(eye, d.normalize())
+                    Ray::new(eye, d.unit())
                 })
                 .collect(),
         );
@@ -124,8 +124,8 @@ fn packets_match_single_rays_bit_for_bit() {
                 let Some(h) = h else { continue };
                 let p = r.at(h.t) + h.geometric * 1e-4;
                 let to = light - p;
-                shadow.push(Ray::new(p, to.normalize()));
-                limit.push(to.length() * if rnd() < 0.3 { rnd() } else { 1.0 });
+                shadow.push(Ray::new(p, to.unit()));
+                limit.push(to.norm() * if rnd() < 0.3 { rnd() } else { 1.0 });
             }
             let from: Vec<f64> = shadow.iter().map(|_| 0.0).collect();
             let active = (1u32 << shadow.len()) - 1;
@@ -174,7 +174,7 @@ fn ties_and_limits_match_single_rays() {
         let rays: Vec<Ray> = (0..PACKET)
             .map(|_| {
                 let target = DVec3::new(rnd(), 0.0, rnd());
-                Ray::new(eye, (target - eye).normalize())
+                Ray::new(eye, (target - eye).unit())
             })
             .collect();
         let t_min: Vec<f64> = (0..PACKET).map(|k| (k % 3) as f64 * 0.3).collect();

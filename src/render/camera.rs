@@ -137,25 +137,38 @@ impl Camera {
     /// square roots and divisions in plain arrays the compiler pairs (`sqrtpd`, `divpd`: the
     /// same correctly rounded results), where one by one they queued on the divider.
     pub fn pinhole_rays(&self, x: u32, y: u32, offsets: &[(f64, f64)], out: &mut [Ray]) {
-        debug_assert!(self.aperture <= 0.0 && offsets.len() <= PINHOLE_BATCH);
+        let row = f64::from(self.height - 1 - y);
+        self.pinhole_through(|j| (f64::from(x) + offsets[j].0, row + offsets[j].1), out);
+    }
+
+    /// [`Camera::ray`] at sub-pixel `(sx, sy)` of the pixels from (x0, y) rightwards, one a
+    /// ray of `out` (at most [`PINHOLE_BATCH`]), for a camera without a lens, bit for bit.
+    pub fn pinhole_span(&self, x0: u32, y: u32, (sx, sy): (f64, f64), out: &mut [Ray]) {
+        let row = f64::from(self.height - 1 - y) + sy;
+        self.pinhole_through(|j| (f64::from(x0 + j as u32) + sx, row), out);
+    }
+
+    /// The pinhole rays through the image-plane points `at(j)` (pixel units) into `out`.
+    #[inline(always)]
+    fn pinhole_through(&self, at: impl Fn(usize) -> (f64, f64), out: &mut [Ray]) {
+        debug_assert!(self.aperture <= 0.0 && out.len() <= PINHOLE_BATCH);
+        let n = out.len().min(PINHOLE_BATCH);
         let (mut vx, mut vy, mut vz) = (
             [0.0; PINHOLE_BATCH],
             [0.0; PINHOLE_BATCH],
             [0.0; PINHOLE_BATCH],
         );
-        for (j, &(sx, sy)) in offsets.iter().enumerate().take(PINHOLE_BATCH) {
-            let px = f64::from(x) + sx;
-            let py = f64::from(self.height - 1 - y) + sy;
+        for j in 0..n {
+            let (px, py) = at(j);
             let v = (self.origin + px * self.right + py * self.up) - self.eye;
             (vx[j], vy[j], vz[j]) = (v.x, v.y, v.z);
         }
-        // `DVec3::normalize`: v · (1 / √(v·v)); `f64::sqrt` is the correctly rounded square root
-        // libm's is (unused lanes divide by zero, harmlessly).
+        // `Norm::unit`: v · (1 / √(v·v)) (unused lanes divide by zero, harmlessly).
         let mut inv = [0.0; PINHOLE_BATCH];
         for j in 0..PINHOLE_BATCH {
             inv[j] = 1.0 / (vx[j] * vx[j] + vy[j] * vy[j] + vz[j] * vz[j]).sqrt();
         }
-        for (j, r) in out.iter_mut().enumerate().take(offsets.len()) {
+        for (j, r) in out.iter_mut().enumerate().take(n) {
             *r = Ray::new(
                 self.eye,
                 DVec3::new(vx[j] * inv[j], vy[j] * inv[j], vz[j] * inv[j]),

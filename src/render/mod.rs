@@ -158,10 +158,16 @@ pub fn render_region(
     progress.start(first_rows.count(h) + refine_rows + aov_rows);
     let first = sampler.first;
     let n = channels.len();
-    let (mut values, mut stats) =
-        tiles::run(&pool, w, h, n, first_rows, progress, |x, y, ctx, out| {
-            view.average(&integrator, first, 0, r.x + x, r.y + y, ctx, out);
-        })?;
+    let span = view.span(&integrator, first, n);
+    let (mut values, mut stats) = tiles::run_spans(
+        &pool,
+        (w, h),
+        n,
+        span,
+        first_rows,
+        progress,
+        |x, y, ctx, out| view.average_span(&integrator, (first, n), r.x + x, r.y + y, ctx, out),
+    )?;
     if let Some((fine, threshold)) = sampler.refine {
         // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
         // (contrast to a 4-neighbour, or a predicted change of 8-bit level). Both passes are
@@ -308,6 +314,60 @@ impl View<'_> {
         ray
     }
 
+    /// How many pixels of a row [`View::average_span`] takes at once for `grid` and `channels`:
+    /// a packet's worth when each pixel takes one sample of a scene the Whitted packets trace
+    /// (a pixel of one sample has no other ray to share a packet with), else one.
+    pub fn span(&self, integrator: &Integrator<'_>, grid: Grid, channels: usize) -> usize {
+        if grid.len() == 1 && channels == 1 && integrator.batch().is_some() && self.pinhole() {
+            BATCH
+        } else {
+            1
+        }
+    }
+
+    /// Whether camera rays are plain pinhole rays, nothing set up per sample.
+    fn pinhole(&self) -> bool {
+        !self.random
+            && !self.spread_lights
+            && !self.motion_blur
+            && !self.camera.has_lens()
+            && BATCH <= camera::PINHOLE_BATCH
+    }
+
+    /// [`View::average`] of the pixels from (x0, y) rightwards, `channels` values each in
+    /// `out`: when [`View::span`] is more than one, their single samples traced as one packet
+    /// (each pixel's value bit for bit the one `average` gives it), else pixel by pixel.
+    pub fn average_span(
+        &self,
+        integrator: &Integrator<'_>,
+        (grid, channels): (Grid, usize),
+        x0: u32,
+        y: u32,
+        ctx: &mut Ctx,
+        out: &mut [Color],
+    ) {
+        let w = integrator
+            .batch()
+            .filter(|_| self.span(integrator, grid, channels) > 1);
+        let Some(w) = w else {
+            for (k, px) in out.chunks_exact_mut(channels).enumerate() {
+                self.average(integrator, grid, 0, x0 + k as u32, y, ctx, px);
+            }
+            return;
+        };
+        let m = out.len().min(BATCH);
+        let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
+        self.camera
+            .pinhole_span(x0, y, grid.offset(0), &mut rays[..m]);
+        ctx.stats.camera_rays += m as u64;
+        let mut colors = [Color::ZERO; BATCH];
+        w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
+        // `average`'s sum of one sample and its division by one.
+        for (o, c) in out.iter_mut().zip(&colors[..m]) {
+            *o = (Color::ZERO + *c) / f64::from(grid.len());
+        }
+    }
+
     /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
     /// into `out`; sample numbers start at `first_index`.
     #[allow(clippy::too_many_arguments)]
@@ -329,11 +389,7 @@ impl View<'_> {
             let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
             let mut colors = [Color::ZERO; BATCH];
             // What `camera_sample` does then is only the ray (and its count).
-            let pinhole = !self.random
-                && !self.spread_lights
-                && !self.motion_blur
-                && !self.camera.has_lens()
-                && BATCH <= camera::PINHOLE_BATCH;
+            let pinhole = self.pinhole();
             let mut k = 0;
             while k < grid.len() {
                 let m = (grid.len() - k).min(BATCH as u32);

@@ -53,6 +53,25 @@ where
     T: Copy + Default + Send,
     F: Fn(u32, u32, &mut Ctx, &mut [T]) + Sync,
 {
+    run_spans(pool, (width, height), channels, 1, rows, progress, f)
+}
+
+/// [`run`] for runs of up to `span` pixels of a row at once: `f(x0, y, ctx, out)` computes
+/// the pixels from column `x0` on, `out.len() / channels` of them (fewer than `span` at the
+/// row's end), so neighbouring pixels can be traced as one packet.
+pub fn run_spans<T, F>(
+    pool: &rayon::ThreadPool,
+    (width, height): (u32, u32),
+    channels: usize,
+    span: usize,
+    rows: Rows,
+    progress: &dyn Progress,
+    f: F,
+) -> Result<(Vec<T>, Stats), Diagnostic>
+where
+    T: Copy + Default + Send,
+    F: Fn(u32, u32, &mut Ctx, &mut [T]) + Sync,
+{
     let w = width as usize;
     let row = w * channels;
     let mut values = vec![T::default(); row * height as usize];
@@ -73,8 +92,8 @@ where
                     if !rows.contains(y) {
                         continue;
                     }
-                    for (x, px) in line.chunks_exact_mut(channels).enumerate() {
-                        f(x as u32, y, &mut ctx, px);
+                    for (k, px) in line.chunks_mut(channels * span).enumerate() {
+                        f((k * span) as u32, y, &mut ctx, px);
                     }
                     done += 1;
                 }
