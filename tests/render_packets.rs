@@ -1,5 +1,6 @@
 //! A pixel's samples traced as a packet (`Whitted::trace_batch`) give every sample the colour
-//! it gets traced alone (`Whitted::trace`), bit for bit, with the same counts of shadow and
+//! it gets traced alone (`Whitted::trace`), bit for bit (a pixel's samples, or a row's pixel
+//! centres), with the same counts of shadow and
 //! mirror rays: random scenes of spheres (the packet's own sphere lanes), with a mesh, a plane
 //! and a transformed sphere (the world's other objects), mirrors, several lights, shadows on
 //! and off, both ambient conventions, and materials the packet hands to the one-ray path
@@ -114,11 +115,18 @@ fn a_packet_traces_each_sample_as_it_is_traced_alone() {
         let camera = Camera::new(prepared.camera());
         for y in 0..18 {
             for x in 0..24 {
-                // A pixel's samples at random sub-pixel positions, 1 to 16 of them.
+                // A pixel's samples at random sub-pixel positions, 1 to 16 of them, or (as
+                // single-sample images trace them) the centres of up to 16 pixels of a row.
                 let n = 1 + (rnd() * 16.0) as usize;
-                let rays: Vec<_> = (0..n)
-                    .map(|_| camera.ray(x, y, rnd(), rnd(), (0.5, 0.5)))
-                    .collect();
+                let rays: Vec<_> = if (x + y) % 2 == 0 {
+                    (0..n)
+                        .map(|_| camera.ray(x, y, rnd(), rnd(), (0.5, 0.5)))
+                        .collect()
+                } else {
+                    (0..n as u32)
+                        .map(|k| camera.ray((x + k) % 24, y, 0.5, 0.5, (0.5, 0.5)))
+                        .collect()
+                };
                 let mut packet_ctx = Ctx::new();
                 let mut got = vec![glam::DVec3::ZERO; n];
                 w.trace_batch(&rays, &mut packet_ctx, &mut got);
