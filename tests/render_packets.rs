@@ -150,3 +150,58 @@ fn a_packet_traces_each_sample_as_it_is_traced_alone() {
     assert_eq!(packets, 16 * 24 * 18);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A whole render with supersampling: each pixel is the mean of its grid's samples traced
+/// alone, summed in row-major sample order and divided by their number (the rule of
+/// `sampler::Grid`: sample (i, j) of an f×f grid at ((i + ½)/f, (j + ½)/f)), bit for bit,
+/// although the renderer traces the samples of a row's pixels together, packets straddling
+/// pixels (9 samples of a 3×3 grid do not fill 16 lanes) and a row's end (24 = 16 + 8).
+#[test]
+fn a_supersampled_render_gives_each_pixel_the_mean_of_its_samples_traced_alone() {
+    let models = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/course/models");
+    let dir = scratch("grids");
+    for (round, f) in [(2u64, 2u32), (3, 3), (4, 5), (5, 3), (7, 1)] {
+        let src = scene(round, &models).replace("supersampling: 4", &format!("supersampling: {f}"));
+        let path = dir.join(format!("grid{round}.rtc"));
+        std::fs::write(&path, src).unwrap();
+        let prepared = prepare(&path);
+        let film = rtc::render::render(
+            &prepared,
+            &rtc::render::RenderOptions {
+                threads: 2,
+                ..Default::default()
+            },
+            &rtc::render::progress::Silent,
+        )
+        .expect("renders");
+        let w = Whitted::new(&prepared);
+        let camera = Camera::new(prepared.camera());
+        let mut ctx = Ctx::new();
+        for y in 0..18 {
+            for x in 0..24 {
+                let mut sum = glam::DVec3::ZERO;
+                for j in 0..f {
+                    for i in 0..f {
+                        let (sx, sy) = (
+                            (f64::from(i) + 0.5) / f64::from(f),
+                            (f64::from(j) + 0.5) / f64::from(f),
+                        );
+                        sum += w.trace(
+                            &camera.ray(x, y, sx, sy, (0.5, 0.5)),
+                            RayPath::CAMERA,
+                            &mut ctx,
+                        );
+                    }
+                }
+                let want = sum / f64::from(f * f);
+                let got = film.get(x, y);
+                assert_eq!(
+                    got.to_array().map(f64::to_bits),
+                    want.to_array().map(f64::to_bits),
+                    "round {round}, {f}×{f}, pixel ({x}, {y}): {got} against {want}"
+                );
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

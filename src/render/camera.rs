@@ -141,11 +141,23 @@ impl Camera {
         self.pinhole_through(|j| (f64::from(x) + offsets[j].0, row + offsets[j].1), out);
     }
 
-    /// [`Camera::ray`] at sub-pixel `(sx, sy)` of the pixels from (x0, y) rightwards, one a
-    /// ray of `out` (at most [`PINHOLE_BATCH`]), for a camera without a lens, bit for bit.
-    pub fn pinhole_span(&self, x0: u32, y: u32, (sx, sy): (f64, f64), out: &mut [Ray]) {
-        let row = f64::from(self.height - 1 - y) + sy;
-        self.pinhole_through(|j| (f64::from(x0 + j as u32) + sx, row), out);
+    /// [`Camera::ray`] of up to [`PINHOLE_BATCH`] samples of row `y`, sample `j` in column
+    /// `at(j).0` at sub-pixel offset `at(j).1`, into `out`, for a camera without a lens: bit for
+    /// bit the rays of [`Camera::pinhole_rays`] (samples of several pixels in one call).
+    pub fn pinhole_samples(
+        &self,
+        y: u32,
+        at: impl Fn(usize) -> (u32, (f64, f64)),
+        out: &mut [Ray],
+    ) {
+        let row = f64::from(self.height - 1 - y);
+        self.pinhole_through(
+            |j| {
+                let (x, (sx, sy)) = at(j);
+                (f64::from(x) + sx, row + sy)
+            },
+            out,
+        );
     }
 
     /// The pinhole rays through the image-plane points `at(j)` (pixel units) into `out`.

@@ -158,7 +158,7 @@ pub fn render_region(
     progress.start(first_rows.count(h) + refine_rows + aov_rows);
     let first = sampler.first;
     let n = channels.len();
-    let span = view.span(&integrator, first, n);
+    let span = view.span(&integrator, n);
     let (mut values, mut stats) = tiles::run_spans(
         &pool,
         (w, h),
@@ -315,10 +315,11 @@ impl View<'_> {
     }
 
     /// How many pixels of a row [`View::average_span`] takes at once for `grid` and `channels`:
-    /// a packet's worth when each pixel takes one sample of a scene the Whitted packets trace
-    /// (a pixel of one sample has no other ray to share a packet with), else one.
-    pub fn span(&self, integrator: &Integrator<'_>, grid: Grid, channels: usize) -> usize {
-        if grid.len() == 1 && channels == 1 && integrator.batch().is_some() && self.pinhole() {
+    /// a packet's worth when a scene the Whitted packets trace has plain pinhole camera rays
+    /// (their samples then fill whole packets across pixels: a 3×3 grid's nine samples alone
+    /// would leave seven of sixteen lanes idle), else one.
+    pub fn span(&self, integrator: &Integrator<'_>, channels: usize) -> usize {
+        if channels == 1 && integrator.batch().is_some() && self.pinhole() {
             BATCH
         } else {
             1
@@ -335,8 +336,9 @@ impl View<'_> {
     }
 
     /// [`View::average`] of the pixels from (x0, y) rightwards, `channels` values each in
-    /// `out`: when [`View::span`] is more than one, their single samples traced as one packet
-    /// (each pixel's value bit for bit the one `average` gives it), else pixel by pixel.
+    /// `out`: when [`View::span`] is more than one, the samples of all of them, pixel after
+    /// pixel, traced in packets of [`BATCH`] (each pixel's value bit for bit the one `average`
+    /// gives it: its samples summed in the same order), else pixel by pixel.
     pub fn average_span(
         &self,
         integrator: &Integrator<'_>,
@@ -348,23 +350,40 @@ impl View<'_> {
     ) {
         let w = integrator
             .batch()
-            .filter(|_| self.span(integrator, grid, channels) > 1);
+            .filter(|_| self.span(integrator, channels) > 1 && out.len() <= BATCH);
         let Some(w) = w else {
             for (k, px) in out.chunks_exact_mut(channels).enumerate() {
                 self.average(integrator, grid, 0, x0 + k as u32, y, ctx, px);
             }
             return;
         };
-        let m = out.len().min(BATCH);
+        let per_pixel = grid.len();
+        let mut sums = [Color::ZERO; BATCH];
         let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
-        self.camera
-            .pinhole_span(x0, y, grid.offset(0), &mut rays[..m]);
-        ctx.stats.camera_rays += m as u64;
         let mut colors = [Color::ZERO; BATCH];
-        w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
-        // `average`'s sum of one sample and its division by one.
-        for (o, c) in out.iter_mut().zip(&colors[..m]) {
-            *o = (Color::ZERO + *c) / f64::from(grid.len());
+        // Each packet's samples: (pixel of the span, sample number), pixel after pixel.
+        let mut samples = [(0usize, 0u32); BATCH];
+        let (mut pixel, mut sample) = (0, 0);
+        while pixel < out.len() {
+            let mut m = 0;
+            while m < BATCH && pixel < out.len() {
+                samples[m] = (pixel, sample);
+                m += 1;
+                sample += 1;
+                if sample == per_pixel {
+                    (pixel, sample) = (pixel + 1, 0);
+                }
+            }
+            let at = |j: usize| (x0 + samples[j].0 as u32, grid.offset(samples[j].1));
+            self.camera.pinhole_samples(y, at, &mut rays[..m]);
+            ctx.stats.camera_rays += m as u64;
+            w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
+            for (&(p, _), c) in samples[..m].iter().zip(&colors[..m]) {
+                sums[p] += *c;
+            }
+        }
+        for (o, s) in out.iter_mut().zip(&sums) {
+            *o = *s / f64::from(grid.len());
         }
     }
 
