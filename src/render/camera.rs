@@ -137,8 +137,7 @@ impl Camera {
     /// square roots and divisions in plain arrays the compiler pairs (`sqrtpd`, `divpd`: the
     /// same correctly rounded results), where one by one they queued on the divider.
     pub fn pinhole_rays(&self, x: u32, y: u32, offsets: &[(f64, f64)], out: &mut [Ray]) {
-        let row = f64::from(self.height - 1 - y);
-        self.pinhole_through(|j| (f64::from(x) + offsets[j].0, row + offsets[j].1), out);
+        self.pinhole_samples(y, |j| (x, offsets[j]), out);
     }
 
     /// [`Camera::ray`] of up to [`PINHOLE_BATCH`] samples of row `y`, sample `j` in column

@@ -314,7 +314,7 @@ impl View<'_> {
         ray
     }
 
-    /// How many pixels of a row [`View::average_span`] takes at once for `grid` and `channels`:
+    /// How many pixels of a row [`View::average_span`] takes at once for `channels` per pixel:
     /// a packet's worth when a scene the Whitted packets trace has plain pinhole camera rays
     /// (their samples then fill whole packets across pixels: a 3×3 grid's nine samples alone
     /// would leave seven of sixteen lanes idle), else one.
@@ -383,7 +383,7 @@ impl View<'_> {
             }
         }
         for (o, s) in out.iter_mut().zip(&sums) {
-            *o = *s / f64::from(grid.len());
+            *o = *s / f64::from(per_pixel);
         }
     }
 
