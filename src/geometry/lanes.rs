@@ -69,7 +69,7 @@ pub fn mask_of(f: impl Fn(usize) -> bool) -> Mask {
 /// `a` where `m` has the lane, else `b`.
 #[inline(always)]
 pub fn select(m: Mask, a: &Lanes, b: &Lanes) -> Lanes {
-    map(|i| if m & (1 << i) != 0 { a[i] } else { b[i] })
+    super::quads::select(m, a, b)
 }
 
 /// A vector per ray of a packet.

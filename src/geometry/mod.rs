@@ -23,6 +23,7 @@ pub mod plane;
 pub mod polygon;
 pub mod primitive;
 pub mod quad;
+pub mod quads;
 pub mod quartic;
 pub mod ray;
 pub mod rounding;

@@ -22,6 +22,8 @@ use std::cmp::Ordering;
 use glam::DVec3;
 
 use super::Ray;
+use super::lanes::{self, Lanes, Mask, RayLanes, V3, WIDTH};
+use super::quads;
 
 /// How far outside the capsule (relative to the magnitude of the coordinates involved) a
 /// sphere must lie to be skipped; see the module documentation.
@@ -139,6 +141,64 @@ impl Bundle {
         }
         self.count += 1;
     }
+
+    /// The segments of the rays of `live` in a packet, ray `i` from `t = 0` to `t_max[i]`:
+    /// the bundle [`Bundle::push`] builds ray by ray, but with each bound reduced across the
+    /// lanes at once (ray by ray, every comparison waited on the one before).
+    #[inline(never)]
+    pub fn of_packet(rays: &RayLanes, t_max: &Lanes, live: Mask) -> Bundle {
+        if live == 0 {
+            return Bundle::new();
+        }
+        // The other lanes become copies of a live one, which leave every bound as it is, so
+        // the reductions need no masks.
+        let f = live.trailing_zeros() as usize;
+        let fill = |v: &Lanes| quads::select(live, v, &[v[f]; WIDTH]);
+        let fill3 = |v: &V3| V3 {
+            x: fill(&v.x),
+            y: fill(&v.y),
+            z: fill(&v.z),
+        };
+        let (o, d, t) = (fill3(&rays.origin), fill3(&rays.dir), fill(t_max));
+        let ended = quads::lt(&t, f64::INFINITY);
+        if ended != 0 && ended != lanes::first(WIDTH) {
+            // Finite and infinite segments mixed (no packet the renderer casts): ray by ray.
+            let mut b = Bundle::new();
+            for i in lanes::each(live) {
+                b.push(&Ray::new(rays.origin.get(i), rays.dir.get(i)), t_max[i]);
+            }
+            return b;
+        }
+        let sum = |v: &V3| lanes::map(|i| v.x[i] + v.y[i] + v.z[i]);
+        let (so, sd) = (sum(&o), sum(&d));
+        let mut b = Bundle {
+            origins: bounds(&o),
+            count: live.count_ones(),
+            ..Bundle::new()
+        };
+        // Only the finiteness of `probe` matters, so the order of its sum is free.
+        if ended != 0 {
+            let e = o.add(&d.scale(&t));
+            let se = sum(&e);
+            b.ends = bounds(&e);
+            b.probe = quads::sum(&lanes::map(|i| (so[i] + sd[i]) + se[i]));
+        } else {
+            b.dirs = bounds(&d);
+            b.unit = quads::min(&d.dot(&d));
+            b.probe = quads::sum(&lanes::map(|i| so[i] + sd[i]));
+            b.infinite = true;
+        }
+        b
+    }
+}
+
+/// The box of the points of `v`.
+#[inline(always)]
+fn bounds(v: &V3) -> (DVec3, DVec3) {
+    (
+        DVec3::new(quads::min(&v.x), quads::min(&v.y), quads::min(&v.z)),
+        DVec3::new(quads::max(&v.x), quads::max(&v.y), quads::max(&v.z)),
+    )
 }
 
 /// `b` grown to hold `p` (plain comparisons: NaN is caught by [`Bundle::probe`]).
@@ -277,6 +337,54 @@ mod tests {
             }
         }
         assert!(skipped > 300, "{skipped}");
+    }
+
+    /// A packet's bundle is the one its live rays pushed one by one give: camera-like,
+    /// shadow-like and mixed packets, partial masks; a NaN or an infinite coordinate makes
+    /// both non-finite.
+    #[test]
+    fn a_packets_bundle_is_its_rays_pushed_one_by_one() {
+        let mut rnd = crate::geometry::test_uniform(23);
+        for round in 0..400 {
+            let rays: Vec<Ray> = (0..WIDTH)
+                .map(|_| {
+                    let o = DVec3::new(rnd(), rnd(), rnd()) * 50.0 - 25.0;
+                    Ray::new(o, (DVec3::new(rnd(), rnd(), rnd()) - 0.5).unit())
+                })
+                .collect();
+            let mut packet = RayLanes::of(&rays);
+            let t_max: Lanes = std::array::from_fn(|i| match round % 3 {
+                0 => f64::INFINITY,
+                1 => 1.0 + i as f64,
+                _ => [f64::INFINITY, 3.0][i % 2],
+            });
+            let live = (rnd() * 65536.0) as Mask | (u32::from(round % 5 == 0) * 0xffff);
+            if round % 7 == 3 {
+                packet.origin.y[round % WIDTH] = [f64::NAN, f64::INFINITY][round % 2];
+            }
+            let got = Bundle::of_packet(&packet, &t_max, live);
+            let mut want = Bundle::new();
+            for i in lanes::each(live) {
+                want.push(&Ray::new(packet.origin.get(i), packet.dir.get(i)), t_max[i]);
+            }
+            let key = |b: &Bundle| {
+                (
+                    b.origins,
+                    b.ends,
+                    b.dirs,
+                    b.unit,
+                    b.count,
+                    b.infinite,
+                    b.probe.is_finite(),
+                )
+            };
+            if want.probe.is_finite() {
+                assert_eq!(key(&got), key(&want), "round {round}, live {live:#x}");
+            } else {
+                // `among` keeps every sphere then, whatever the boxes hold.
+                assert!(!got.probe.is_finite(), "round {round}, live {live:#x}");
+            }
+        }
     }
 
     /// Grazing rays: a sphere touched by one ray of the bundle, or missed by less than the

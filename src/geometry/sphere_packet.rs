@@ -8,6 +8,7 @@
 //! instruction, where ray by ray each waited on the last.
 
 use super::lanes::{self, Lanes, Mask, RayLanes, WIDTH};
+use super::quads;
 use super::sphere_cull::Among;
 use super::sphere_lanes::SphereLanes;
 
@@ -63,7 +64,7 @@ impl SphereLanes {
         let cc = closest.dot(&closest);
         let gap = lanes::map(|i| rr - cc[i]);
         // `gap ≥ 0` is false for NaN, as `roots`' `gap < 0 || gap.is_nan()` miss test.
-        let meets = lanes::mask_of(|i| gap[i] >= 0.0);
+        let meets = quads::ge(&gap, 0.0);
         // roots_past_gap: q = −half_b − √(a·gap)·sign(half_b); t0 = q·inv, t1 = (|p|² − r²)/q.
         let root = lanes::map(|i| (a[i] * gap[i]).sqrt());
         let q = lanes::map(|i| -half_b[i] - root[i].copysign(half_b[i]));

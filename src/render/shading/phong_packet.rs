@@ -10,8 +10,8 @@
 use glam::DVec3;
 
 use super::{Ctx, Surface};
-use crate::geometry::Ray;
 use crate::geometry::lanes::{self, Lanes, Mask, V3, WIDTH};
+use crate::geometry::quads;
 use crate::geometry::sphere_cull::{Among, Bundle};
 use crate::ir::{AmbientConvention, LightKind};
 use crate::opt::Prepared;
@@ -100,10 +100,10 @@ pub fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
         for _ in 0..count {
             let d = s.p.from(position);
             let dist = d.norm();
-            let l = V3::select(lanes::mask_of(|i| dist[i] > 0.0), &d.div(&dist), &s.n);
+            let l = V3::select(quads::gt(&dist, 0.0), &d.div(&dist), &s.n);
             let n_dot_l = s.n.dot(&l);
             // Facing away: neither light nor shadow ray.
-            let lit = s.live & lanes::mask_of(|i| n_dot_l[i] > 0.0);
+            let lit = s.live & quads::gt(&n_dot_l, 0.0);
             let open = if shadows && lit != 0 {
                 ctx.stats.shadow_rays += u64::from(lit.count_ones());
                 lit & !blocked(scene, s, position, lit)
@@ -138,11 +138,7 @@ fn blocked(scene: &Prepared, s: &SurfaceLanes, position: DVec3, lit: Mask) -> Ma
     }
     let world = scene.world();
     let among = if world.has_loose_spheres() {
-        let mut bundle = Bundle::new();
-        for i in lanes::each(cast) {
-            bundle.push(&Ray::new(rays.origin.get(i), rays.dir.get(i)), t_max[i]);
-        }
-        world.among(&bundle)
+        world.among(&Bundle::of_packet(&rays, &t_max, cast))
     } else {
         Among::ALL
     };

@@ -17,6 +17,7 @@ use glam::DVec3;
 use super::{Media, Path, Whitted};
 use crate::geometry::Ray;
 use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
+use crate::geometry::quads;
 use crate::geometry::rounding::gamma;
 use crate::geometry::sphere_cull::Bundle;
 use crate::geometry::sphere_packet::{NO_SPHERE, PacketHits};
@@ -142,10 +143,7 @@ impl Whitted<'_> {
         // The spheres the packet's rays can meet at all: a pixel's camera rays, the few in the
         // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
         let first = if world.has_loose_spheres() {
-            let mut bundle = Bundle::new();
-            for i in lanes::each(live) {
-                bundle.push(&lane_ray(rays, time, i), f64::INFINITY);
-            }
+            let bundle = Bundle::of_packet(rays, &[f64::INFINITY; BATCH], live);
             let among = world.among(&bundle);
             world.nearest_packet(rays, live, 0.0, f64::INFINITY, among)
         } else {
@@ -224,7 +222,7 @@ impl Whitted<'_> {
         let e = lanes::map(|i| (len[i] - radius[i]).abs() + gamma(6) * (len[i] + radius[i]));
         // Whitted::surface: the normal facing the ray, the viewer, the material.
         let cos = normal.dot(&rays.dir);
-        let facing = V3::select(lanes::mask_of(|i| cos[i] > 0.0), &normal.neg(), &normal);
+        let facing = V3::select(quads::gt(&cos, 0.0), &normal.neg(), &normal);
         let s = &mut sh.s;
         s.live = hit;
         s.p = point;
