@@ -5,6 +5,7 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::Ray;
+use crate::geometry::lanes::{self, Lanes, RayLanes, V3, WIDTH};
 use crate::ir::{self, Projection};
 
 /// A camera ready to generate rays for continuous image coordinates.
@@ -159,34 +160,63 @@ impl Camera {
         );
     }
 
+    /// [`Camera::pinhole_samples`] as a packet: lane `j < n` holds sample `j`'s ray, bit for
+    /// bit (the lanes past `n` hold rays through the image plane's corner).
+    #[inline(always)]
+    pub fn pinhole_packet(
+        &self,
+        y: u32,
+        at: impl Fn(usize) -> (u32, (f64, f64)),
+        n: usize,
+    ) -> RayLanes {
+        let row = f64::from(self.height - 1 - y);
+        let (mut px, mut py) = ([0.0; WIDTH], [0.0; WIDTH]);
+        for j in 0..n.min(WIDTH) {
+            let (x, (sx, sy)) = at(j);
+            (px[j], py[j]) = (f64::from(x) + sx, row + sy);
+        }
+        self.pinhole_lanes(&px, &py)
+    }
+
     /// The pinhole rays through the image-plane points `at(j)` (pixel units) into `out`.
     #[inline(always)]
     fn pinhole_through(&self, at: impl Fn(usize) -> (f64, f64), out: &mut [Ray]) {
         debug_assert!(self.aperture <= 0.0 && out.len() <= PINHOLE_BATCH);
         let n = out.len().min(PINHOLE_BATCH);
-        let (mut vx, mut vy, mut vz) = (
-            [0.0; PINHOLE_BATCH],
-            [0.0; PINHOLE_BATCH],
-            [0.0; PINHOLE_BATCH],
-        );
+        let (mut px, mut py) = ([0.0; WIDTH], [0.0; WIDTH]);
         for j in 0..n {
-            let (px, py) = at(j);
-            let v = (self.origin + px * self.right + py * self.up) - self.eye;
-            (vx[j], vy[j], vz[j]) = (v.x, v.y, v.z);
+            (px[j], py[j]) = at(j);
         }
-        // `Norm::unit`: v · (1 / √(v·v)) (unused lanes divide by zero, harmlessly).
-        let mut inv = [0.0; PINHOLE_BATCH];
-        for j in 0..PINHOLE_BATCH {
-            inv[j] = 1.0 / (vx[j] * vx[j] + vy[j] * vy[j] + vz[j] * vz[j]).sqrt();
-        }
+        let p = self.pinhole_lanes(&px, &py);
         for (j, r) in out.iter_mut().enumerate().take(n) {
-            *r = Ray::new(
-                self.eye,
-                DVec3::new(vx[j] * inv[j], vy[j] * inv[j], vz[j] * inv[j]),
-            );
+            *r = Ray::new(self.eye, p.dir.get(j));
+        }
+    }
+
+    /// The pinhole rays through the image-plane points `(px, py)` (pixel units): [`Camera::ray`]'s
+    /// `(origin + px·right + py·up) − eye` and `Norm::unit`'s `v · (1 / √(v·v))`, lane by lane.
+    #[inline(always)]
+    fn pinhole_lanes(&self, px: &Lanes, py: &Lanes) -> RayLanes {
+        debug_assert!(self.aperture <= 0.0);
+        let along =
+            |o: f64, r: f64, u: f64, e: f64| lanes::map(|j| ((o + px[j] * r) + py[j] * u) - e);
+        let (o, r, u, e) = (self.origin, self.right, self.up, self.eye);
+        let v = V3 {
+            x: along(o.x, r.x, u.x, e.x),
+            y: along(o.y, r.y, u.y, e.y),
+            z: along(o.z, r.z, u.z, e.z),
+        };
+        let vv = v.dot(&v);
+        let inv = lanes::map(|j| 1.0 / vv[j].sqrt());
+        RayLanes {
+            origin: V3::splat(self.eye),
+            dir: v.scale(&inv),
         }
     }
 }
+
+// A pinhole batch is one packet.
+const _: () = assert!(PINHOLE_BATCH == WIDTH);
 
 /// A camera that moves while the shutter is open: its eye and the point it looks at move
 /// linearly from their positions at shutter open to those at close.
@@ -259,6 +289,38 @@ mod tests {
             let want = DVec3::new(f64::from(x) + 0.5, 399.0 - f64::from(y) + 0.5, 0.0);
             let t = -r.origin.z / r.dir.z;
             assert!((r.at(t) - want).norm() < 1e-9, "{x},{y}: {:?}", r.at(t));
+        }
+    }
+
+    /// The pinhole packets and batches give [`Camera::ray`]'s rays bit for bit, for samples of
+    /// several pixels of a row and for partial packets.
+    #[test]
+    fn pinhole_packets_are_the_rays_one_by_one() {
+        let mut rnd = crate::geometry::test_uniform(41);
+        for round in 0..40 {
+            let eye = DVec3::new(rnd(), rnd(), rnd()) * 50.0 - 25.0;
+            let c = ir::Camera {
+                center: DVec3::new(rnd(), rnd(), rnd()) * 10.0,
+                projection: Projection::Perspective {
+                    fov_y: 0.2 + 2.0 * rnd(),
+                },
+                ..course(eye, DVec3::new(rnd() - 0.5, 1.0, rnd() - 0.5), 37, 23)
+            };
+            let cam = Camera::new(&c);
+            let y = round % 23;
+            let at = |j: usize| ((j as u32 * 5) % 37, ((j as f64 + 0.5) / 16.0, 0.25));
+            let n = [WIDTH, 7, 1][round as usize % 3];
+            let packet = cam.pinhole_packet(y, at, n);
+            let mut batch = [Ray::new(DVec3::ZERO, DVec3::ZERO); PINHOLE_BATCH];
+            cam.pinhole_samples(y, at, &mut batch[..n]);
+            for (j, b) in batch.iter().enumerate().take(n) {
+                let (x, (sx, sy)) = at(j);
+                let want = cam.ray(x, y, sx, sy, (0.5, 0.5));
+                let bits = |d: DVec3| d.to_array().map(f64::to_bits);
+                assert_eq!(bits(packet.dir.get(j)), bits(want.dir), "lane {j}");
+                assert_eq!(bits(packet.origin.get(j)), bits(want.origin));
+                assert_eq!(bits(b.dir), bits(want.dir));
+            }
         }
     }
 

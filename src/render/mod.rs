@@ -244,6 +244,10 @@ pub struct View<'a> {
 /// The random stream of a camera sample's time (apart from the lens's 0 and the lights').
 const TIME_STREAM: u32 = 0xffff_fffe;
 
+/// The grid offsets [`View::average_span`] keeps at hand (a 16×16 grid's); finer grids
+/// compute the rest sample by sample.
+const OFFSETS: usize = 256;
+
 impl View<'_> {
     /// The view of a prepared scene.
     pub fn new(scene: &Prepared) -> View<'_> {
@@ -359,8 +363,16 @@ impl View<'_> {
         };
         let per_pixel = grid.len();
         let mut sums = [Color::ZERO; BATCH];
-        let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
         let mut colors = [Color::ZERO; BATCH];
+        // The grid's offsets once per span, not two divisions of each kind per sample.
+        let mut offsets = [(0.0, 0.0); OFFSETS];
+        for (k, o) in offsets.iter_mut().enumerate().take(per_pixel as usize) {
+            *o = grid.offset(k as u32);
+        }
+        let offset = |k: u32| match offsets.get(k as usize) {
+            Some(&o) if k < per_pixel => o,
+            _ => grid.offset(k),
+        };
         // Each packet's samples: (pixel of the span, sample number), pixel after pixel.
         let mut samples = [(0usize, 0u32); BATCH];
         let (mut pixel, mut sample) = (0, 0);
@@ -374,10 +386,10 @@ impl View<'_> {
                     (pixel, sample) = (pixel + 1, 0);
                 }
             }
-            let at = |j: usize| (x0 + samples[j].0 as u32, grid.offset(samples[j].1));
-            self.camera.pinhole_samples(y, at, &mut rays[..m]);
+            let at = |j: usize| (x0 + samples[j].0 as u32, offset(samples[j].1));
+            let rays = self.camera.pinhole_packet(y, at, m);
             ctx.stats.camera_rays += m as u64;
-            w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
+            w.trace_lanes(&rays, m, ctx, &mut colors[..m]);
             for (&(p, _), c) in samples[..m].iter().zip(&colors[..m]) {
                 sums[p] += *c;
             }

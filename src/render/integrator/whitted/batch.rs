@@ -130,6 +130,22 @@ impl Whitted<'_> {
         }
     }
 
+    /// [`Whitted::trace_batch`] of the first `n` rays of a packet of camera rays at shutter
+    /// time 0 (a pinhole camera's).
+    pub fn trace_lanes(&self, packet: &RayLanes, n: usize, ctx: &mut Ctx, out: &mut [Color]) {
+        let n = n.min(BATCH);
+        let c = self.trace_packet(
+            packet,
+            &[0.0; BATCH],
+            lanes::first(n),
+            &PacketPath::CAMERA,
+            ctx,
+        );
+        for (i, o) in out.iter_mut().enumerate().take(n) {
+            *o = c.get(i);
+        }
+    }
+
     /// The colours of the rays of `live` (other lanes hold anything).
     fn trace_packet(
         &self,
