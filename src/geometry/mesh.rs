@@ -9,6 +9,7 @@ use rayon::prelude::*;
 
 use super::bvh::{BLOCK, Bvh, BvhRay};
 use super::bvh_packet::PACKET;
+use super::lanes::{self, RayLanes, V3};
 use super::triangle::{ShearedRay, TriBlock};
 use super::{Aabb, Ray};
 use crate::ir::limits::MAX_TRIANGLES;
@@ -222,8 +223,19 @@ impl Mesh {
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
     #[inline(always)]
     fn near(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, ShearedRay, BvhRay, f32)> {
+        self.near_with(ray, ray.dir.recip(), t_min, t_max)
+    }
+
+    /// [`Mesh::near`] given `inv = ray.dir.recip()`.
+    #[inline(always)]
+    fn near_with(
+        &self,
+        ray: &Ray,
+        inv: DVec3,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<(f64, ShearedRay, BvhRay, f32)> {
         // Slab test against the mesh bounds, keeping the reciprocal for the f32 ray.
-        let inv = ray.dir.recip();
         let t0 = (self.bounds.min - ray.origin) * inv;
         let t1 = (self.bounds.max - ray.origin) * inv;
         let entry = t0.min(t1).max_element().max(t_min);
@@ -314,8 +326,9 @@ impl Mesh {
         let mut lo = [0.0; PACKET];
         let mut far = [0.0; PACKET];
         let mut active = 0u32;
+        let inv = recips(rays);
         for i in 0..n {
-            if let Some((s, sr, r, l)) = self.near(&rays[i], t_min[i], t_max[i]) {
+            if let Some((s, sr, r, l)) = self.near_with(&rays[i], inv[i], t_min[i], t_max[i]) {
                 (shift[i], sheared[i], lo[i], far[i]) = (s, sr, l, r.t_max);
                 bvh_rays[i] = r;
                 active |= 1 << i;
@@ -369,8 +382,9 @@ impl Mesh {
         let mut bvh_rays = [BvhRay::default(); PACKET];
         let (mut lo, mut hi) = ([0.0; PACKET], [0.0; PACKET]);
         let mut traced = 0u32;
+        let inv = recips(rays);
         for i in (0..n).filter(|i| active >> i & 1 == 1) {
-            if let Some((s, sr, r, l)) = self.near(&rays[i], t_min[i], t_max[i]) {
+            if let Some((s, sr, r, l)) = self.near_with(&rays[i], inv[i], t_min[i], t_max[i]) {
                 (sheared[i], bvh_rays[i], lo[i]) = (sr, r, l);
                 hi[i] = (t_max[i] - s) as f32;
                 traced |= 1 << i;
@@ -452,6 +466,23 @@ impl Mesh {
         out[start..].sort_by(|a, b| a.0.t.total_cmp(&b.0.t));
     }
 }
+
+/// `dir.recip()` of each ray of a packet, the divisions side by side in lanes (one by one,
+/// each ray's set-up waited on its three).
+#[inline(always)]
+fn recips(rays: &[Ray]) -> [DVec3; PACKET] {
+    let packet = RayLanes::of(rays);
+    let d = &packet.dir;
+    let inv = V3 {
+        x: lanes::map(|i| 1.0 / d.x[i]),
+        y: lanes::map(|i| 1.0 / d.y[i]),
+        z: lanes::map(|i| 1.0 / d.z[i]),
+    };
+    std::array::from_fn(|i| inv.get(i))
+}
+
+// A mesh packet fits the lanes.
+const _: () = assert!(PACKET == lanes::WIDTH);
 
 #[cfg(test)]
 #[path = "mesh_tests.rs"]
