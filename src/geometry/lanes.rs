@@ -10,7 +10,8 @@
 //!
 //! Why: one ray at a time is a chain of dependent square roots and divisions, and scalar
 //! `DVec3` code spends most of its instructions moving single numbers around; in packets the
-//! same work takes about half the instructions (scene A, issue 12).
+//! same work takes about half the instructions (scene A, issue 12). What crosses lanes (selects
+//! by a [`Mask`], comparisons into one, folds) goes through [`super::quads`].
 
 use glam::DVec3;
 
