@@ -150,14 +150,11 @@ impl Camera {
         at: impl Fn(usize) -> (u32, (f64, f64)),
         out: &mut [Ray],
     ) {
-        let row = f64::from(self.height - 1 - y);
-        self.pinhole_through(
-            |j| {
-                let (x, (sx, sy)) = at(j);
-                (f64::from(x) + sx, row + sy)
-            },
-            out,
-        );
+        debug_assert!(out.len() <= PINHOLE_BATCH);
+        let p = self.pinhole_packet(y, at, out.len());
+        for (j, r) in out.iter_mut().enumerate().take(PINHOLE_BATCH) {
+            *r = Ray::new(self.eye, p.dir.get(j));
+        }
     }
 
     /// [`Camera::pinhole_samples`] as a packet: lane `j < n` holds sample `j`'s ray, bit for
@@ -176,21 +173,6 @@ impl Camera {
             (px[j], py[j]) = (f64::from(x) + sx, row + sy);
         }
         self.pinhole_lanes(&px, &py)
-    }
-
-    /// The pinhole rays through the image-plane points `at(j)` (pixel units) into `out`.
-    #[inline(always)]
-    fn pinhole_through(&self, at: impl Fn(usize) -> (f64, f64), out: &mut [Ray]) {
-        debug_assert!(self.aperture <= 0.0 && out.len() <= PINHOLE_BATCH);
-        let n = out.len().min(PINHOLE_BATCH);
-        let (mut px, mut py) = ([0.0; WIDTH], [0.0; WIDTH]);
-        for j in 0..n {
-            (px[j], py[j]) = at(j);
-        }
-        let p = self.pinhole_lanes(&px, &py);
-        for (j, r) in out.iter_mut().enumerate().take(n) {
-            *r = Ray::new(self.eye, p.dir.get(j));
-        }
     }
 
     /// The pinhole rays through the image-plane points `(px, py)` (pixel units): [`Camera::ray`]'s

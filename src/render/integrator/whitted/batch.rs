@@ -122,25 +122,29 @@ impl Whitted<'_> {
     /// [`Whitted::trace`] gives it. Only for scenes where [`Whitted::batches`] holds.
     pub fn trace_batch(&self, rays: &[Ray], ctx: &mut Ctx, out: &mut [Color]) {
         let n = rays.len().min(BATCH);
-        let packet = RayLanes::of(&rays[..n]);
         let time = lanes::map(|i| if i < n { rays[i].time } else { 0.0 });
-        let c = self.trace_packet(&packet, &time, lanes::first(n), &PacketPath::CAMERA, ctx);
-        for (i, o) in out.iter_mut().enumerate().take(n) {
-            *o = c.get(i);
-        }
+        self.trace_camera_packet(&RayLanes::of(&rays[..n]), &time, n, ctx, out);
     }
 
     /// [`Whitted::trace_batch`] of the first `n` rays of a packet of camera rays at shutter
     /// time 0 (a pinhole camera's).
     pub fn trace_lanes(&self, packet: &RayLanes, n: usize, ctx: &mut Ctx, out: &mut [Color]) {
+        self.trace_camera_packet(packet, &[0.0; BATCH], n, ctx, out);
+    }
+
+    /// The colours of the first `n` camera rays of a packet, at shutter times `time`, into
+    /// `out`.
+    #[inline(always)]
+    fn trace_camera_packet(
+        &self,
+        packet: &RayLanes,
+        time: &Lanes,
+        n: usize,
+        ctx: &mut Ctx,
+        out: &mut [Color],
+    ) {
         let n = n.min(BATCH);
-        let c = self.trace_packet(
-            packet,
-            &[0.0; BATCH],
-            lanes::first(n),
-            &PacketPath::CAMERA,
-            ctx,
-        );
+        let c = self.trace_packet(packet, time, lanes::first(n), &PacketPath::CAMERA, ctx);
         for (i, o) in out.iter_mut().enumerate().take(n) {
             *o = c.get(i);
         }
