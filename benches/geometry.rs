@@ -12,7 +12,7 @@ use rtc::num::Norm;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 use rayon::prelude::*;
 use rtc::geometry::{Ray, World};
 use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
@@ -62,7 +62,7 @@ fn scene_of(path: &Path, smooth: bool) -> Scene {
                 smooth,
                 use_mtl: true,
             },
-            transform: DAffine3::IDENTITY,
+            transform: rtc::ir::Transform::IDENTITY,
             material: None,
             span: Span::default(),
         }],

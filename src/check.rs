@@ -4,7 +4,7 @@
 //! render will start. Nothing here changes the scene.
 
 use crate::num::Norm;
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
@@ -150,16 +150,17 @@ fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
     if transparent {
         return None;
     }
-    if o.transform == DAffine3::IDENTITY {
+    if o.transform.is_identity() {
         // What the general case gives for it (up to the sign of a zero coordinate, which no
         // distance sees), without three square roots.
         return Some((center, radius));
     }
-    let m = o.transform.matrix3;
+    let t = o.transform.affine();
+    let m = t.matrix3;
     let scales = [m.x_axis.norm(), m.y_axis.norm(), m.z_axis.norm()];
     let uniform = (scales[0] - scales[1]).abs() < 1e-9 * scales[0]
         && (scales[0] - scales[2]).abs() < 1e-9 * scales[0];
-    uniform.then(|| (o.transform.transform_point3(center), radius * scales[0]))
+    uniform.then(|| (t.transform_point3(center), radius * scales[0]))
 }
 
 /// A point light or the camera inside the opaque sphere `o` (if it is one).

@@ -6,7 +6,7 @@
 
 use std::path::PathBuf;
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 
 use crate::source::Span;
 
@@ -14,12 +14,14 @@ mod flare;
 pub mod limits;
 mod loaded;
 mod motion;
+mod placement;
 pub mod provenance;
 mod settings;
 
 pub use flare::Flare;
 pub use loaded::Loaded;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
+pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{
     AmbientConvention, DepthRange, Encoding, GoochParams, LANGUAGE_CUTOFF, LightSampling,
@@ -290,7 +292,7 @@ pub struct Object {
     /// Geometry in object space.
     pub shape: Shape,
     /// Object-to-world transform (applied after the shape's own parameters).
-    pub transform: DAffine3,
+    pub transform: Transform,
     /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
     pub material: Option<MaterialId>,
     /// How it moves while the shutter is open (`None`: it stands still; `transform` is its

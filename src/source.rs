@@ -142,6 +142,13 @@ impl SourceMap {
             .unwrap_or("")
     }
 
+    /// A copy of the map as it was when it held its first `count` files (the texts are shared).
+    pub fn prefix(&self, count: usize) -> SourceMap {
+        SourceMap {
+            files: self.files[..count.min(self.files.len())].to_vec(),
+        }
+    }
+
     /// Every file, in the order it was added.
     pub fn files(&self) -> &[SourceFile] {
         &self.files

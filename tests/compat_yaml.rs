@@ -156,10 +156,10 @@ fn textured_spheres_are_oriented_by_pole_and_angle() {
         }
     );
     let pole = DVec3::new(0.0, 0.917_407_699_357_488_3, -0.397_948_631_307_610_4);
-    let north = earth.transform.transform_vector3(DVec3::Y);
+    let north = earth.transform.affine().transform_vector3(DVec3::Y);
     assert!((north - pole.unit()).norm() < 1e-9, "{north}");
     assert_eq!(
-        earth.transform.translation,
+        earth.transform.affine().translation,
         DVec3::new(0.0, 0.0, 149_597_890.0)
     );
     let m = s.material(earth.material.expect("material"));

@@ -3,7 +3,7 @@
 use rtc::num::Norm;
 use std::path::Path;
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 use rtc::diag::Severity;
 use rtc::eval::{EvalOptions, load_source};
 use rtc::ir::{CsgOp, Projection, Sampling, Scene, ShadingModel, Shape};
@@ -57,7 +57,7 @@ fn close(a: DVec3, b: DVec3) -> bool {
 #[test]
 fn method_chains_apply_in_reading_order() {
     let s = scene("sphere().scale(2).translate([1, 0, 0])");
-    let t = s.objects[0].transform;
+    let t = s.objects[0].transform.affine();
     // scale first, then translate: (1,0,0) → (2,0,0) → (3,0,0)
     assert!(close(
         t.transform_point3(DVec3::X),
@@ -65,7 +65,7 @@ fn method_chains_apply_in_reading_order() {
     ));
     let s = scene("sphere().translate([1, 0, 0]).scale(2)");
     assert!(close(
-        s.objects[0].transform.transform_point3(DVec3::X),
+        s.objects[0].transform.affine().transform_point3(DVec3::X),
         DVec3::new(4.0, 0.0, 0.0)
     ));
 }
@@ -75,13 +75,13 @@ fn then_operator_and_rotate_order() {
     let s = scene("let spin = rotate(z: 90deg) >> translate([0, 1, 0])\nsphere().transform(spin)");
     // X rotated 90° about z is Y, then moved up by 1.
     assert!(close(
-        s.objects[0].transform.transform_point3(DVec3::X),
+        s.objects[0].transform.affine().transform_point3(DVec3::X),
         DVec3::new(0.0, 2.0, 0.0)
     ));
     // rotate(x:, y:) applies x first: Z →(x 90°)→ -Y →(y 90°)→ -Y
     let s = scene("sphere().rotate(x: 90deg, y: 90deg)");
     assert!(close(
-        s.objects[0].transform.transform_point3(DVec3::Z),
+        s.objects[0].transform.affine().transform_point3(DVec3::Z),
         DVec3::new(0.0, -1.0, 0.0)
     ));
 }
@@ -98,7 +98,7 @@ fn groups_flatten_and_fill_missing_materials() {
     assert_eq!(m0, DVec3::new(1.0, 0.0, 0.0));
     assert_eq!(m1, DVec3::new(0.0, 0.0, 1.0));
     assert!(close(
-        s.objects[1].transform.translation,
+        s.objects[1].transform.affine().translation,
         DVec3::new(0.0, 5.0, 0.0)
     ));
 }
@@ -380,7 +380,7 @@ fn shapes_have_object_space_parameters() {
             ..
         }
     ));
-    assert_eq!(s.objects[2].transform, DAffine3::IDENTITY);
+    assert!(s.objects[2].transform.is_identity());
 }
 
 #[test]

@@ -169,7 +169,7 @@ fn plates(s: f64, thickness: f64, gap: f64) -> Vec<Object> {
                     min: DVec3::new(-50.0, -50.0, z0 - thickness),
                     max: DVec3::new(50.0, 50.0, z0),
                 },
-                transform: DAffine3::from_scale(DVec3::splat(s)),
+                transform: DAffine3::from_scale(DVec3::splat(s)).into(),
                 material: None,
                 motion: None,
                 span: rtc::source::Span::default(),

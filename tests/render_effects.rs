@@ -3,7 +3,7 @@
 mod common;
 
 use common::{empty, light, mat, scene01_shadows, sphere};
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 use proptest::prelude::*;
 use rtc::ir::limits::MAX_DEPTH;
 use rtc::ir::{LightKind, Material, Object, Sampling, Scene, Shape, Texture};
@@ -257,7 +257,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
             center: DVec3::ZERO,
             radius: 1.0,
         },
-        transform: DAffine3::IDENTITY,
+        transform: rtc::ir::Transform::IDENTITY,
         material: Some(rtc::ir::MaterialId(9)),
         span: Span::default(),
     });
@@ -377,7 +377,7 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
             center: DVec3::new(260.0, 230.0, 100.0),
             radius: 120.0,
         },
-        transform: DAffine3::IDENTITY,
+        transform: rtc::ir::Transform::IDENTITY,
         material: Some(m),
         span: Span::default(),
     };
@@ -399,13 +399,13 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
                     Object {
                         motion: None,
                         shape: other.clone(),
-                        transform: DAffine3::IDENTITY,
+                        transform: rtc::ir::Transform::IDENTITY,
                         material: None,
                         span: Span::default(),
                     },
                 ],
             },
-            transform: DAffine3::IDENTITY,
+            transform: rtc::ir::Transform::IDENTITY,
             material: None,
             span: Span::default(),
         }

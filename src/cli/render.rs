@@ -105,6 +105,11 @@ fn render(
         ..
     } = *job;
     let subject = file.display().to_string();
+    // `--threads` bounds the evaluation's loop parts too.
+    let opts = &EvalOptions {
+        loop_parts: rtc::eval::LoopParts::Auto { threads },
+        ..opts.clone()
+    };
     let mut sources = SourceMap::new();
     let load_start = std::time::Instant::now();
     let deadline = job

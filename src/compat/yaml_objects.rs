@@ -60,7 +60,7 @@ pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut
         parts.objects.push(Object {
             motion: None,
             shape,
-            transform: DAffine3::IDENTITY,
+            transform: crate::ir::Transform::IDENTITY,
             material: Some(material),
             span: node.span,
         });
@@ -334,7 +334,8 @@ fn mesh(
             scale,
             glam::DQuat::IDENTITY,
             position,
-        ),
+        )
+        .into(),
         material,
         span: node.span,
     };

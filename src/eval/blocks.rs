@@ -137,38 +137,17 @@ impl Interp<'_> {
         }
         let g = &gens[level];
         let it = self.eval(&g.iter)?;
-        let step = |me: &mut Self, v: Value, out: &mut Sink| -> R<()> {
-            me.loop_iters += 1;
-            if me.loop_iters > me.opts.max_loop_iterations {
-                return Err(error("rtc::budget::loop", span, "loop budget exhausted")
-                    .with_label(format!(
-                        "the scene's loops ran more than {} iterations in total",
-                        me.opts.max_loop_iterations
-                    ))
-                    .with_help("reduce the ranges of the loops")
-                    .into());
-            }
-            me.locals.push((g.var.sym, v));
-            let r = me.for_level(gens, level + 1, filter, body, span, out);
-            me.locals.pop();
-            r
-        };
+        let n = self.loop_len(&it, g)?;
+        self.for_steps(gens, level, &it, 0..n, filter, body, span, out)
+    }
+
+    /// How many elements a loop's generator value `it` has; an error for a value that is not
+    /// a range, a list or a vector.
+    pub(super) fn loop_len(&self, it: &Value, g: &Generator) -> R<u64> {
         match it {
-            Value::Range(r) => {
-                for i in 0..r.len() {
-                    step(self, r.get(i), out)?;
-                }
-            }
-            Value::List(l) => {
-                for v in l.iter() {
-                    step(self, v.clone(), out)?;
-                }
-            }
-            Value::Vec3(v) => {
-                for x in v.to_array() {
-                    step(self, Value::Float(x), out)?;
-                }
-            }
+            Value::Range(r) => Ok(r.len()),
+            Value::List(l) => Ok(l.len() as u64),
+            Value::Vec3(_) => Ok(3),
             other => {
                 let d = error(
                     "rtc::type::mismatch",
@@ -184,8 +163,47 @@ impl Interp<'_> {
                 } else {
                     d.with_help("loop over a range such as `0..5` or a list")
                 };
-                return Err(d.into());
+                Err(d.into())
             }
+        }
+    }
+
+    /// Runs the iterations `steps` of loop level `level`, whose generator's value is `it`
+    /// (checked by [`Interp::loop_len`]), with the deeper levels for each.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn for_steps(
+        &mut self,
+        gens: &[Generator],
+        level: usize,
+        it: &Value,
+        steps: std::ops::Range<u64>,
+        filter: Option<&Expr>,
+        body: &Block,
+        span: Span,
+        out: &mut Sink,
+    ) -> R<()> {
+        let g = &gens[level];
+        for i in steps {
+            let v = match it {
+                Value::Range(r) => r.get(i),
+                Value::List(l) => l[i as usize].clone(),
+                Value::Vec3(v) => Value::Float(v.to_array()[i as usize]),
+                _ => return Ok(()),
+            };
+            self.loop_iters += 1;
+            if self.loop_iters > self.opts.max_loop_iterations {
+                return Err(error("rtc::budget::loop", span, "loop budget exhausted")
+                    .with_label(format!(
+                        "the scene's loops ran more than {} iterations in total",
+                        self.opts.max_loop_iterations
+                    ))
+                    .with_help("reduce the ranges of the loops")
+                    .into());
+            }
+            self.locals.push((g.var.sym, v));
+            let r = self.for_level(gens, level + 1, filter, body, span, out);
+            self.locals.pop();
+            r?;
         }
         Ok(())
     }
@@ -235,16 +253,37 @@ impl Interp<'_> {
         Ok(())
     }
 
-    /// Evaluates a top-level `for` statement of a scene file, emitting each element as it is
-    /// made instead of building the whole list first (a million objects never coexist as values).
-    pub fn emit_for(&mut self, e: &Expr, lowerer: &mut super::lower::Lowerer) -> R<bool> {
+    /// Evaluates a top-level `for` statement of a scene file (its statement `stmt`, counted
+    /// from 0), emitting each element as it is made instead of building the whole list first
+    /// (a million objects never coexist as values). A long loop may be split over threads
+    /// (`split`).
+    pub fn emit_for(
+        &mut self,
+        e: &Expr,
+        stmt: usize,
+        lowerer: &mut super::lower::Lowerer,
+    ) -> R<bool> {
         let ExprKind::For(gens, filter, body) = &e.kind else {
             return Ok(false);
         };
-        let header = self.header_span(e.span, body.span);
-        lowerer.reserve_for(gens, filter.as_deref(), self.opts.max_objects);
+        let lp = super::split::Loop {
+            gens,
+            filter: filter.as_deref(),
+            body,
+            header: self.header_span(e.span, body.span),
+            span: e.span,
+        };
+        lowerer.reserve_for(gens, lp.filter, self.opts.max_objects);
+        if self.split.helper_stmt() == Some(stmt) {
+            self.emit_part(&lp, lowerer);
+            return Ok(true);
+        }
+        if matches!(self.split, super::split::Role::Main(_)) {
+            self.emit_split_for(&lp, stmt, lowerer)?;
+            return Ok(true);
+        }
         let mut sink = Sink::Emit(lowerer, e.span);
-        self.for_level(gens, 0, filter.as_deref(), body, header, &mut sink)?;
+        self.for_level(gens, 0, lp.filter, body, lp.header, &mut sink)?;
         Ok(true)
     }
 }

@@ -27,7 +27,7 @@ pub struct Interp<'a> {
     pub(super) sources: &'a mut SourceMap,
     /// Findings recorded so far (errors recovered at statement boundaries, warnings, prints).
     pub(super) diags: Vec<Diagnostic>,
-    warned: HashSet<(&'static str, Span)>,
+    pub(super) warned: HashSet<(&'static str, Span)>,
     /// Local bindings of all active frames; the current frame starts at `frame_base`.
     pub(super) locals: Vec<(Sym, Value)>,
     /// First local of the current function frame.
@@ -48,6 +48,10 @@ pub struct Interp<'a> {
     pub(super) params: Vec<Sym>,
     /// Where objects come from, when asked (`EvalOptions::provenance`).
     pub(super) prov: Option<Box<super::provenance::Builder>>,
+    /// Material and texture values made so far ([`Interp::next_made`]).
+    pub(super) made: u64,
+    /// This thread's part in evaluating long loops on several threads.
+    pub(super) split: super::split::Role,
 }
 
 impl Drop for Interp<'_> {
@@ -81,7 +85,16 @@ impl<'a> Interp<'a> {
             overrides: Vec::new(),
             params: Vec::new(),
             prov: opts.provenance.then(Box::default),
+            made: 0,
+            split: super::split::Role::Off,
         }
+    }
+
+    /// Numbers a new material or texture value: values are told apart by these numbers, which
+    /// a replay of the evaluation on another thread gives out alike (`split`).
+    pub fn next_made(&mut self) -> u64 {
+        self.made += 1;
+        self.made
     }
 
     /// The provenance origin of an object made now (0 when provenance is off).
@@ -100,6 +113,7 @@ impl<'a> Interp<'a> {
             return self.diags.push(d);
         };
         if self.warned.insert((d.code, span)) {
+            self.split.note_warning(self.diags.len());
             self.diags.push(d);
         }
     }

@@ -29,13 +29,18 @@ pub struct Lowerer {
     pub origins: Option<Vec<Vec<u32>>>,
     /// The origins of the groups being lowered (outermost first), with provenance.
     placing: Vec<u32>,
-    materials: Vec<ir::Material>,
-    textures: Vec<ir::Texture>,
-    mat_ids: super::fxhash::FxHashMap<*const Mat, ir::MaterialId>,
-    tex_ids: super::fxhash::FxHashMap<*const Tex, ir::TextureId>,
-    /// Keeps every lowered material alive so its address is never reused by another.
-    keep: Vec<Rc<Mat>>,
-    keep_tex: Vec<Rc<Tex>>,
+    /// The IR materials, one per material value lowered, in the order of first use.
+    pub(super) materials: Vec<ir::Material>,
+    /// The [`Mat::made`] of each of `materials`.
+    pub(super) material_keys: Vec<u64>,
+    /// The IR textures, one per texture value lowered.
+    pub(super) textures: Vec<ir::Texture>,
+    /// The [`Tex::made`] of each of `textures`.
+    pub(super) texture_keys: Vec<u64>,
+    /// Material ids by [`Mat::made`].
+    pub(super) mat_ids: super::fxhash::FxHashMap<u64, ir::MaterialId>,
+    /// Texture ids by [`Tex::made`].
+    pub(super) tex_ids: super::fxhash::FxHashMap<u64, ir::TextureId>,
 }
 
 /// Whether a value is something a scene file may emit.
@@ -128,20 +133,32 @@ impl Lowerer {
         }
     }
 
-    fn texture(&mut self, t: &Rc<Tex>) -> ir::TextureId {
-        if let Some(id) = self.tex_ids.get(&Rc::as_ptr(t)) {
+    fn texture(&mut self, t: &Tex) -> ir::TextureId {
+        if let Some(id) = self.tex_ids.get(&t.made) {
             return *id;
         }
-        self.textures.push(t.t.clone());
-        let id = ir::TextureId((self.textures.len() - 1) as u32);
-        self.tex_ids.insert(Rc::as_ptr(t), id);
-        self.keep_tex.push(t.clone());
+        let id = self.add_texture(t.made, t.t.clone());
+        self.tex_ids.insert(t.made, id);
         id
     }
 
+    /// Appends a texture (`made` is its value's [`Tex::made`]).
+    pub(super) fn add_texture(&mut self, made: u64, t: ir::Texture) -> ir::TextureId {
+        self.textures.push(t);
+        self.texture_keys.push(made);
+        ir::TextureId((self.textures.len() - 1) as u32)
+    }
+
+    /// Appends a material (`made` is its value's [`Mat::made`]).
+    pub(super) fn add_material(&mut self, made: u64, m: ir::Material) -> ir::MaterialId {
+        self.materials.push(m);
+        self.material_keys.push(made);
+        ir::MaterialId((self.materials.len() - 1) as u32)
+    }
+
     /// The id of a material, adding it on first use.
-    pub fn material(&mut self, m: &Rc<Mat>) -> ir::MaterialId {
-        if let Some(id) = self.mat_ids.get(&Rc::as_ptr(m)) {
+    pub fn material(&mut self, m: &Mat) -> ir::MaterialId {
+        if let Some(id) = self.mat_ids.get(&m.made) {
             return *id;
         }
         let mut im = m.m.clone();
@@ -150,10 +167,8 @@ impl Lowerer {
             texture: self.texture(t),
             scale: *s,
         });
-        self.materials.push(im);
-        let id = ir::MaterialId((self.materials.len() - 1) as u32);
-        self.mat_ids.insert(Rc::as_ptr(m), id);
-        self.keep.push(m.clone());
+        let id = self.add_material(m.made, im);
+        self.mat_ids.insert(m.made, id);
         id
     }
 
@@ -191,7 +206,7 @@ impl Lowerer {
         match &o.shape {
             ObjShape::Prim(s) => out.push(ir::Object {
                 shape: s.clone(),
-                transform: t,
+                transform: t.into(),
                 material: mat,
                 motion: motion.map(Box::new),
                 span: o.span,
@@ -224,7 +239,7 @@ impl Lowerer {
                                     op: ir::CsgOp::Union,
                                     children: sub,
                                 },
-                                transform: c.transform,
+                                transform: c.transform.into(),
                                 material: cm,
                                 motion: c.motion.map(Box::new),
                                 span: c.span,
@@ -238,13 +253,83 @@ impl Lowerer {
                         op: *op,
                         children: kids,
                     },
-                    transform: t,
+                    transform: t.into(),
                     material: mat,
                     motion: motion.map(Box::new),
                     span: o.span,
                 });
             }
         }
+    }
+
+    /// Appends what another thread's replay emitted in a part of a loop (`split`). The
+    /// part's first `materials` materials and `textures` textures are this lowerer's own (the
+    /// replay lowered the same values before the loop); its new ones are renumbered after
+    /// this lowerer's. A new one whose value was made before the loop (number ≤ `made`) is the
+    /// value this thread knows by that number, shared if this thread lowered it already.
+    pub(super) fn absorb(
+        &mut self,
+        part: super::split::ScenePart,
+        made: u64,
+        materials: usize,
+        textures: usize,
+    ) {
+        let super::split::ScenePart {
+            objects,
+            lights,
+            cameras,
+            materials: new_materials,
+            textures: new_textures,
+        } = part;
+        let tex: Vec<ir::TextureId> = new_textures
+            .into_iter()
+            .map(|(key, t)| self.shared(key, made, |l| l.add_texture(key, t), |l| &mut l.tex_ids))
+            .collect();
+        let retex = |id: ir::TextureId| match (id.0 as usize).checked_sub(textures) {
+            Some(i) => tex[i],
+            None => id,
+        };
+        let mat: Vec<ir::MaterialId> = new_materials
+            .into_iter()
+            .map(|(key, mut m)| {
+                m.texture = m.texture.map(retex);
+                if let Some(b) = &mut m.bump {
+                    b.texture = retex(b.texture);
+                }
+                self.shared(key, made, |l| l.add_material(key, m), |l| &mut l.mat_ids)
+            })
+            .collect();
+        let remat = |id: ir::MaterialId| match (id.0 as usize).checked_sub(materials) {
+            Some(i) => mat[i],
+            None => id,
+        };
+        self.objects.extend(objects.into_iter().map(|mut o| {
+            renumber(&mut o, &remat);
+            o
+        }));
+        self.lights.extend(lights);
+        self.cameras.extend(cameras.into_iter().map(Rc::new));
+    }
+
+    /// The id of value `key` absorbed from another thread: `add` makes it, and `ids` shares it
+    /// when the value was made before the split loop (`key <= made`).
+    fn shared<I: Copy>(
+        &mut self,
+        key: u64,
+        made: u64,
+        add: impl FnOnce(&mut Self) -> I,
+        ids: impl Fn(&mut Self) -> &mut super::fxhash::FxHashMap<u64, I>,
+    ) -> I {
+        if key > made {
+            // Made inside the loop, on the other thread: no value here has its number.
+            return add(self);
+        }
+        if let Some(id) = ids(self).get(&key) {
+            return *id;
+        }
+        let id = add(self);
+        ids(self).insert(key, id);
+        id
     }
 
     /// Builds the scene; `Err` lists what is missing or duplicated.
@@ -305,5 +390,15 @@ impl Lowerer {
             objects: self.objects,
             settings,
         })
+    }
+}
+
+/// Renames the material ids of an object and its CSG operands.
+fn renumber(o: &mut ir::Object, remat: &impl Fn(ir::MaterialId) -> ir::MaterialId) {
+    o.material = o.material.map(remat);
+    if let ir::Shape::Csg { children, .. } = &mut o.shape {
+        for c in children {
+            renumber(c, remat);
+        }
     }
 }

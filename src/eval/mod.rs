@@ -20,6 +20,7 @@ pub(crate) mod program;
 pub(crate) mod provenance;
 pub mod rng;
 pub(crate) mod shapes;
+pub mod split;
 pub(crate) mod transform;
 pub(crate) mod types;
 pub(crate) mod value;
@@ -33,6 +34,7 @@ use crate::diag::{Diagnostic, Severity};
 use crate::ir::Loaded;
 use crate::source::SourceMap;
 
+pub use split::LoopParts;
 pub use value::SHOW_LIMIT;
 
 /// Budgets that keep evaluation finite; each overrun is a clear error.
@@ -56,6 +58,9 @@ pub struct EvalOptions {
     pub overrides: Vec<(String, String)>,
     /// Record where each object came from (`ir::Loaded::provenance`, for `rtc why`).
     pub provenance: bool,
+    /// Whether long top-level loops may be evaluated on several threads (the result is the
+    /// same either way).
+    pub loop_parts: LoopParts,
 }
 
 /// Frames per second unless the command line says otherwise (film's rate).
@@ -73,6 +78,7 @@ impl Default for EvalOptions {
             fps: DEFAULT_FPS,
             overrides: Vec::new(),
             provenance: false,
+            loop_parts: LoopParts::default(),
         }
     }
 }
@@ -174,7 +180,7 @@ pub(crate) fn on_eval_stack<T: Send>(f: impl FnOnce() -> T + Send) -> Option<T> 
 }
 
 /// Stack of the evaluation thread (reserved address space; pages are touched only as needed).
-const EVAL_STACK_BYTES: usize = 256 << 20;
+pub(crate) const EVAL_STACK_BYTES: usize = 256 << 20;
 
 fn load_source_here(
     path: &Path,
@@ -182,31 +188,10 @@ fn load_source_here(
     sources: &mut SourceMap,
     options: &EvalOptions,
 ) -> Loaded {
-    let file = sources.add(path, text);
-    // The map's copy, shared: the AST borrows it while evaluation adds imported files.
-    let text = Arc::clone(&sources.get(file).text);
     let mut loaded = Loaded::default();
-    let (ast, diags) = crate::syntax::parse(file, &text);
-    for d in diags {
-        loaded.diagnostics.push(d);
-    }
-    let Some(ast) = ast else { return loaded };
-    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let scope = Rc::new(modules::Scope::new(file, dir, path.display().to_string()));
-    let (overrides, bad) = params::parse_overrides(options, sources);
-    if !bad.is_empty() {
-        loaded.diagnostics.items.extend(bad);
+    let Some((mut it, lowerer)) = run_root(path, text, sources, options, None, &mut loaded) else {
         return loaded;
-    }
-    let mut it = interp::Interp::new(options, sources, scope);
-    it.overrides = overrides;
-    it.loading
-        .push((path.to_path_buf(), crate::source::Span::default()));
-    let mut lowerer = lower::Lowerer::default();
-    if options.provenance {
-        lowerer.origins = Some(Vec::new());
-    }
-    it.run_module(&ast, Some(&mut lowerer));
+    };
     let unknown = it.unknown_overrides();
     it.diags.extend(unknown);
     let had_errors = it.diags.iter().any(Diagnostic::is_error);
@@ -217,6 +202,7 @@ fn load_source_here(
     if had_errors {
         return loaded;
     }
+    let mut lowerer = lowerer;
     if let (Some(b), Some(origins)) = (it.prov.take(), lowerer.origins.take()) {
         loaded.provenance = Some((*b).finish(origins));
     }
@@ -225,4 +211,59 @@ fn load_source_here(
         Err(errs) => loaded.diagnostics.items.extend(errs),
     }
     loaded
+}
+
+/// Evaluates the scene file `path` (its text `text`) into a lowerer, as the evaluation of
+/// record or, with `helper`, as a replay that evaluates a part of one loop (`split`). `None`
+/// when it does not parse or the `--set` values are bad; the reasons are in `loaded`.
+fn run_root<'a>(
+    path: &Path,
+    text: String,
+    sources: &'a mut SourceMap,
+    options: &'a EvalOptions,
+    helper: Option<split::Helper>,
+    loaded: &mut Loaded,
+) -> Option<(interp::Interp<'a>, lower::Lowerer)> {
+    let file = sources.add(path, text);
+    // The map's copy, shared: the AST borrows it while evaluation adds imported files.
+    let text = Arc::clone(&sources.get(file).text);
+    let (ast, diags) = crate::syntax::parse(file, &text);
+    for d in diags {
+        loaded.diagnostics.push(d);
+    }
+    let ast = ast?;
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let scope = Rc::new(modules::Scope::new(file, dir, path.display().to_string()));
+    let (overrides, bad) = params::parse_overrides(options, sources);
+    if !bad.is_empty() {
+        loaded.diagnostics.items.extend(bad);
+        return None;
+    }
+    let mut it = interp::Interp::new(options, sources, scope);
+    it.split = match helper {
+        Some(h) => split::Role::Helper(Box::new(h)),
+        None => split::Role::main(options, file, path),
+    };
+    it.overrides = overrides;
+    it.loading
+        .push((path.to_path_buf(), crate::source::Span::default()));
+    let mut lowerer = lower::Lowerer::default();
+    if options.provenance {
+        lowerer.origins = Some(Vec::new());
+    }
+    it.run_module(&ast, Some(&mut lowerer));
+    Some((it, lowerer))
+}
+
+/// A helper's replay of the scene file: its part of the split loop, if it got there.
+fn replay(
+    path: &Path,
+    text: String,
+    sources: &mut SourceMap,
+    options: &EvalOptions,
+    helper: split::Helper,
+) -> Option<split::Part> {
+    let mut loaded = Loaded::default();
+    let (mut it, _) = run_root(path, text, sources, options, Some(helper), &mut loaded)?;
+    it.split.take_part()
 }

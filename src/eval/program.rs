@@ -67,7 +67,10 @@ impl Interp<'_> {
         }
         // A generated file's statements are read one at a time here, each dropped after use.
         let mut stmts = file.stmts();
+        let mut index = 0;
         while let Some(st) = stmts.next_ref() {
+            let stmt = index;
+            index += 1;
             match st {
                 Stmt::Fn(_) => {}
                 Stmt::Import(im) => {
@@ -98,8 +101,12 @@ impl Interp<'_> {
                 }
                 Stmt::Expr(e) => {
                     if let (Some(l), ExprKind::For(..)) = (scene.as_deref_mut(), &e.kind) {
-                        if let Err(err) = self.emit_for(e, l) {
+                        if let Err(err) = self.emit_for(e, stmt, l) {
                             self.record_error(err);
+                        }
+                        if self.split.done() {
+                            // A helper's replay ends with its part of the loop.
+                            return;
                         }
                         continue;
                     }
@@ -220,7 +227,7 @@ impl Interp<'_> {
         if let Some(m) = self.modules.get(&key) {
             return Ok(m.clone());
         }
-        let text = match text {
+        let text = match text.or_else(|| self.split.replayed_text(&key)) {
             Some(t) => t,
             None => std::fs::read_to_string(&key).map_err(|e| {
                 error(

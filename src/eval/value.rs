@@ -217,6 +217,9 @@ pub struct Mat {
     pub texture: Option<Rc<Tex>>,
     /// Bump texture and its strength.
     pub bump: Option<(Rc<Tex>, f64)>,
+    /// Which material value this is ([`Interp::next_made`](super::interp::Interp::next_made)):
+    /// the lowering shares one IR material per value by it.
+    pub made: u64,
 }
 
 /// A texture value (lowered to `ir::Texture`).
@@ -224,6 +227,8 @@ pub struct Mat {
 pub struct Tex {
     /// The texture.
     pub t: ir::Texture,
+    /// Which texture value this is (as [`Mat::made`]).
+    pub made: u64,
 }
 
 /// Render settings as a value.

@@ -14,6 +14,7 @@ pub fn with(it: &mut Interp, base: Value, bspan: Span, upd: Vec<(Name, Value, Sp
     match base {
         Value::Material(m) => {
             let mut m2 = (*m).clone();
+            m2.made = it.next_made();
             for (name, v, sp) in &upd {
                 super::builtins::set_mat_field(it, &mut m2, *name, v, *sp)?;
             }

@@ -87,7 +87,7 @@ impl Builder {
             return None;
         }
         let geom = self.geom(o, material)?;
-        let t = &o.transform;
+        let t = &o.transform.affine();
         Some(match o.motion.as_deref() {
             Some(m) => Primitive::moving(geom, *t, *m, material),
             None => Primitive::new(geom, *t, material),
@@ -101,7 +101,7 @@ impl Builder {
         match o.shape {
             Shape::Sphere { center, radius }
                 if o.motion.is_none()
-                    && o.transform == glam::DAffine3::IDENTITY
+                    && o.transform.is_identity()
                     && shape::check(&o.shape).is_ok() =>
             {
                 Some(Ball {
@@ -133,11 +133,11 @@ impl Builder {
 
     /// Whether `o`'s transform can be inverted; if not, the error is recorded.
     fn invertible(&mut self, o: &Object) -> bool {
-        let t = &o.transform;
         // The identity (most objects of large scenes) passes the test below; skip its roots.
-        if *t == glam::DAffine3::IDENTITY {
+        if o.transform.is_identity() {
             return true;
         }
+        let t = &o.transform.affine();
         let det = t.matrix3.determinant();
         let scale = t
             .matrix3

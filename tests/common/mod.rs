@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 use rtc::ir::{
     Camera, Light, LightKind, Material, Object, Projection, RenderSettings, Scene, Shape,
 };
@@ -83,7 +83,7 @@ pub fn sphere(scene: &mut Scene, center: [f64; 3], radius: f64, m: Material) {
             center: DVec3::from(center),
             radius,
         },
-        transform: DAffine3::IDENTITY,
+        transform: rtc::ir::Transform::IDENTITY,
         material: Some(id),
         span: Span::default(),
     });

@@ -60,7 +60,7 @@ pub fn object(shape: Shape, transform: DAffine3) -> Object {
     Object {
         motion: None,
         shape,
-        transform,
+        transform: transform.into(),
         material: None,
         span: Span::default(),
     }

@@ -93,7 +93,7 @@ fn pattern(name: &str, a: DVec3, b: DVec3, size: f64) -> String {
 /// matrix gets a comment saying where it turns the object's +Y (a course texture's north pole).
 pub fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
     let parts = calls(o, names, asset);
-    let m = o.transform.matrix3;
+    let m = o.transform.affine().matrix3;
     let note = (m != DMat3::from_diagonal(DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z)))
         .then(|| {
             let pole = m.y_axis.unit_or(Default::default());
@@ -243,7 +243,7 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
 /// The constructor, then the methods that place the object and give its material.
 fn calls(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Vec<String> {
     let mut parts = vec![shape(o, names, asset)];
-    parts.extend(placement(&o.transform));
+    parts.extend(placement(&o.transform.affine()));
     if let Some(m) = o.material {
         parts.push(format!(".material({})", names(m.0)));
     }

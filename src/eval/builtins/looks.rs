@@ -241,6 +241,7 @@ fn material(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         texture: None,
         bump: None,
+        made: it.next_made(),
     };
     for f in MAT_FIELDS {
         if let Some((v, sp)) = p.get(f) {
@@ -268,6 +269,7 @@ fn checker(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Checker { a, b, size },
+        made: it.next_made(),
     })))
 }
 
@@ -275,6 +277,7 @@ fn stripes(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Stripes { a, b, size },
+        made: it.next_made(),
     })))
 }
 
@@ -294,5 +297,6 @@ fn image(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             mapping,
             span: ps,
         },
+        made: it.next_made(),
     })))
 }
