@@ -242,7 +242,7 @@ fn run_root<'a>(
     let mut it = interp::Interp::new(options, sources, scope);
     it.split = match helper {
         Some(h) => split::Role::Helper(Box::new(h)),
-        None => split::Role::main(options, file, path),
+        None => split::Role::main(options, file),
     };
     it.overrides = overrides;
     it.loading

@@ -81,8 +81,6 @@ pub(crate) enum Role {
 pub(crate) struct Main {
     /// The scene file in the source map (the files before it were there when evaluation began).
     file: FileId,
-    /// The scene file's path.
-    path: PathBuf,
     /// When evaluation began.
     began: Instant,
     /// What a replay spends on loops this thread split, beyond what this thread spent on them.
@@ -108,7 +106,7 @@ pub(crate) struct Helper {
 
 impl Role {
     /// The role of a new evaluation of the scene file `file` at `path`.
-    pub(crate) fn main(options: &EvalOptions, file: FileId, path: &Path) -> Role {
+    pub(crate) fn main(options: &EvalOptions, file: FileId) -> Role {
         let threads = match options.loop_parts {
             LoopParts::Serial => 1,
             LoopParts::Always(n) => n,
@@ -119,7 +117,6 @@ impl Role {
         }
         Role::Main(Box::new(Main {
             file,
-            path: path.to_path_buf(),
             began: Instant::now(),
             debt: Duration::ZERO,
         }))
@@ -352,7 +349,7 @@ impl Interp<'_> {
         let Role::Main(main) = &self.split else {
             return self.loop_steps(lp, &it, 0..n, lowerer);
         };
-        let replay = main.began.elapsed() + main.debt;
+        let (file, replay) = (main.file, main.began.elapsed() + main.debt);
         let began = Instant::now();
         let mut done = 0;
         let cuts = loop {
@@ -368,7 +365,7 @@ impl Interp<'_> {
         let alone = began.elapsed();
 
         let helped: u64 = cuts[1..].iter().map(|c| c.end - c.start).sum();
-        self.split_loop(lp, stmt, &it, &start, &cuts, lowerer)?;
+        self.split_loop(lp, stmt, file, &it, &start, &cuts, lowerer)?;
         // A later loop's helpers replay this one on one thread.
         if let Role::Main(main) = &mut self.split {
             let per = alone.as_secs_f64() / done.max(1) as f64;
@@ -380,19 +377,18 @@ impl Interp<'_> {
     /// Runs `cuts[0]` here and the other cuts on helper threads, then takes the helpers'
     /// parts in order; from the first part that cannot be used on, this thread evaluates the
     /// rest of the loop itself.
+    #[allow(clippy::too_many_arguments)]
     fn split_loop(
         &mut self,
         lp: &Loop,
         stmt: usize,
+        file: FileId,
         it: &super::value::Value,
         start: &Mark,
         cuts: &[Range<u64>],
         lowerer: &mut Lowerer,
     ) -> R<()> {
-        let Role::Main(main) = &self.split else {
-            unreachable!("split_loop runs on the main thread")
-        };
-        let (path, file) = (main.path.clone(), main.file);
+        let path = self.sources.get(file).path.clone();
         let text = self.sources.get(file).text.clone();
         let before = self.sources.prefix(file.0 as usize);
         let texts = self.sources.clone();
