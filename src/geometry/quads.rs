@@ -36,7 +36,7 @@ const NIBBLES: [[f64; 4]; 16] = {
 
 /// Lanes `4q … 4q + 3` of `v`.
 #[inline(always)]
-fn quad(v: &Lanes, q: usize) -> f64x4 {
+pub fn quad(v: &Lanes, q: usize) -> f64x4 {
     f64x4::new([v[4 * q], v[4 * q + 1], v[4 * q + 2], v[4 * q + 3]])
 }
 

@@ -2,6 +2,7 @@
 //! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
 mod packet;
+mod reach;
 
 use std::time::Duration;
 
@@ -98,6 +99,8 @@ pub struct World {
     spheres: SphereLanes,
     /// The object id ([`BALL`] tagged) of each of `spheres`.
     sphere_ids: Vec<u32>,
+    /// The padded box of everything, `None` when something is unbounded (`World::may_meet`).
+    reach: Option<Aabb>,
     stats: WorldStats,
 }
 
@@ -131,6 +134,7 @@ impl World {
             object_of,
             balls,
         } = parts;
+        let reach = reach::reach_of(&nodes, &balls);
         let mut surfaces = Vec::new();
         for (n, &object) in nodes.iter_mut().zip(&object_of) {
             number_surfaces(n, object, &mut surfaces);
@@ -221,6 +225,7 @@ impl World {
             surfaces,
             bvh,
             loose,
+            reach,
             stats,
         }
     }

@@ -160,6 +160,18 @@ impl Whitted<'_> {
         ctx: &mut Ctx,
     ) -> V3 {
         let world = self.scene.world();
+        // Camera rays that meet nothing are background and go no further (mirror rays start
+        // inside the world's box: the test would keep them all). A world of balls finds its
+        // misses as cheaply by itself (the capsule cull below): there the test only cost (4%
+        // more instructions on scene A, whose floor ball fills the view).
+        let live = if path.depth == 0 && !world.balls_only() {
+            world.may_meet(rays, live)
+        } else {
+            live
+        };
+        if live == 0 {
+            return V3::splat(self.background);
+        }
         // The spheres the packet's rays can meet at all: a pixel's camera rays, the few in the
         // pixel; its reflected rays, those in the narrow fan a small patch of surface casts.
         let first = if world.has_loose_spheres() {
@@ -201,6 +213,10 @@ impl Whitted<'_> {
         out: V3,
         ctx: &mut Ctx,
     ) -> V3 {
+        if sh.s.live == 0 {
+            // Nothing to shade and no mirror to follow.
+            return out;
+        }
         let c = phong_packet::shade(self.scene, &sh.s, ctx);
         let mut out = V3::select(sh.s.live, &c, &out);
         self.reflect_packet(rays, time, path, sh, ctx, &mut out);
