@@ -134,7 +134,6 @@ impl World {
             object_of,
             balls,
         } = parts;
-        let reach = reach::reach_of(&nodes, &balls);
         let mut surfaces = Vec::new();
         for (n, &object) in nodes.iter_mut().zip(&object_of) {
             number_surfaces(n, object, &mut surfaces);
@@ -215,7 +214,7 @@ impl World {
             let b = &balls[(id & !BALL) as usize];
             (b.center, b.radius)
         }));
-        World {
+        let mut world = World {
             need_uv: true,
             spheres,
             sphere_ids,
@@ -225,9 +224,14 @@ impl World {
             surfaces,
             bvh,
             loose,
-            reach,
+            reach: None,
             stats,
+        };
+        // Something outside the BVH's f32 boxes (a plane) means every ray may meet something.
+        if world.stats.unbounded == 0 {
+            world.reach = Some(reach::padded(world.bounds()));
         }
+        world
     }
 
     /// Nearest hit of object `id` (a node, or a ball when tagged [`BALL`]) in (t_min, t_max).

@@ -1,4 +1,4 @@
-//! What a packet of rays can meet at all: the world's bounds, padded, tested once for every
+//! What a packet of rays can meet at all: the world's bounds, padded, tested for every camera
 //! ray before any object is, so the camera samples that see only background cost a slab test
 //! (issue 12: on the course duck 42% of the camera packets miss the mesh's box, and each of
 //! them cost as much as a sixth of a packet that hits, in set-up that found nothing).
@@ -9,41 +9,25 @@
 
 use wide::f64x4;
 
-use super::{Ball, World};
+use super::World;
 use crate::geometry::Aabb;
 use crate::geometry::lanes::{Lanes, Mask, RayLanes, WIDTH};
-use crate::geometry::primitive::Primitive;
 use crate::geometry::quads;
 
 /// Relative padding of the world's box and relative slack of the slab test: far above the
 /// test's rounding (a few ulps, ~1e-15) and far below anything a scene can resolve.
 const SLACK: f64 = 1e-9;
 
-/// The padded box around everything a ray can hit, or `None` when something is unbounded
-/// (a plane): then every ray may meet something.
-pub(super) fn reach_of(nodes: &[Primitive], balls: &[Ball]) -> Option<Aabb> {
-    let boxes = nodes
-        .iter()
-        .map(|n| n.bounds)
-        .chain(balls.iter().map(Ball::bounds));
-    let mut reach = Aabb::EMPTY;
-    for b in boxes {
-        if b.is_empty() {
-            // Nothing to hit (the world skips such objects too).
-            continue;
-        }
-        if !b.is_finite() {
-            return None;
-        }
-        reach = reach.union(b);
+/// `bounds` (the world's: every object's box holds its hits) padded by [`SLACK`] of its size;
+/// an empty box stays empty.
+pub(super) fn padded(bounds: Aabb) -> Aabb {
+    if bounds.is_empty() {
+        return bounds;
     }
-    if reach.is_empty() {
-        return Some(reach);
-    }
-    let size =
-        reach.min.abs().max(reach.max.abs()).max_element() + (reach.max - reach.min).max_element();
+    let size = bounds.min.abs().max(bounds.max.abs()).max_element()
+        + (bounds.max - bounds.min).max_element();
     let pad = glam::DVec3::splat(SLACK * size);
-    Some(Aabb::new(reach.min - pad, reach.max + pad))
+    Aabb::new(bounds.min - pad, bounds.max + pad)
 }
 
 impl World {
@@ -110,6 +94,7 @@ mod tests {
     use glam::{DAffine3, DVec3};
 
     use super::*;
+    use crate::geometry::Primitive;
     use crate::geometry::balls::WorldParts;
     use crate::geometry::primitive::Geom;
     use crate::geometry::shape::Leaf;
