@@ -6,7 +6,7 @@
 //! or vertex is inside at least one of the triangles (zero counts as inside). No cracks.
 
 use crate::num::Norm;
-use glam::{DVec2, DVec3, Mat3A, Vec3, Vec3A, Vec4};
+use glam::{DVec2, DVec3, Vec3, Vec3A, Vec4};
 
 use super::{Aabb, Hit, Ray};
 
@@ -52,27 +52,42 @@ impl Triangle {
 }
 
 /// Axis permutation and shear for one ray direction.
-fn shear_axes(d: [f64; 3]) -> (usize, usize, usize) {
-    let a = [d[0].abs(), d[1].abs(), d[2].abs()];
-    let kz = if a[0] > a[1] {
-        if a[0] > a[2] { 0 } else { 2 }
-    } else if a[1] > a[2] {
+///
+/// Components are chosen by comparisons, not indexed arrays: a ray's set-up then stays in
+/// registers (measured: spilling the direction to index it stalled mesh packets' set-up on a
+/// store-to-load forward, ~3% of the duck's render).
+#[inline(always)]
+fn shear_axes(d: DVec3) -> (usize, usize, usize) {
+    let a = d.abs();
+    let kz = if a.x > a.y {
+        if a.x > a.z { 0 } else { 2 }
+    } else if a.y > a.z {
         1
     } else {
         2
     };
     let mut kx = (kz + 1) % 3;
     let mut ky = (kx + 1) % 3;
-    if d[kz] < 0.0 {
+    if pick(d, kz) < 0.0 {
         std::mem::swap(&mut kx, &mut ky);
     }
     (kx, ky, kz)
 }
 
+/// Component `k` (0, 1 or 2) of `v`.
+#[inline(always)]
+fn pick(v: DVec3, k: usize) -> f64 {
+    match k {
+        0 => v.x,
+        1 => v.y,
+        _ => v.z,
+    }
+}
+
 /// Watertight test in f64 over the whole line: `(t, barycentrics)` or `None`.
 pub fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
+    let (kx, ky, kz) = shear_axes(dir);
     let d = dir.to_array();
-    let (kx, ky, kz) = shear_axes(d);
     if d[kz] == 0.0 {
         return None;
     }
@@ -103,13 +118,19 @@ fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f6
 
 /// A ray prepared for many f32 watertight triangle tests (meshes).
 ///
-/// The shear and axis permutation are folded into one matrix, so each vertex's sheared
-/// coordinates are `shear * (v − origin)`: no per-triangle axis indexing, and every triangle
-/// sharing a vertex computes bit-identical coordinates for it (what watertightness needs).
+/// The axis permutation is an index per coordinate and the shear three factors, so a vertex's
+/// sheared coordinates are `x' = p[kx] − sx·p[kz]`, `y' = p[ky] − sy·p[kz]`, `z' = sz·p[kz]`
+/// with `p = v − origin`: every triangle sharing a vertex computes bit-identical coordinates
+/// for it (what watertightness needs), in 8 operations per corner where a general 3×3 shear
+/// matrix took 18 (its ones and zeros change no value, only perhaps the sign of a zero).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ShearedRay {
-    origin: Vec3A,
-    shear: Mat3A,
+    /// The axes (kx, ky, kz): kz the direction's dominant one.
+    axes: [usize; 3],
+    /// The origin's coordinates on those axes.
+    origin: [f32; 3],
+    /// The shear factors (sx, sy, sz).
+    shear: [f32; 3],
 }
 
 impl ShearedRay {
@@ -121,23 +142,31 @@ impl ShearedRay {
     /// Like [`ShearedRay::new`] with `dir.recip()` already known (saves a division).
     #[inline(always)]
     pub fn with_inverse(origin: DVec3, dir: DVec3, recip: DVec3) -> Option<ShearedRay> {
-        let d = dir.to_array();
-        let (kx, ky, kz) = shear_axes(d);
-        if d[kz] == 0.0 {
+        let (kx, ky, kz) = shear_axes(dir);
+        if pick(dir, kz) == 0.0 {
             return None;
         }
-        let inv = recip.to_array()[kz];
-        let (sx, sy, sz) = ((d[kx] * inv) as f32, (d[ky] * inv) as f32, inv as f32);
-        // Columns of the matrix whose rows give x' = a[kx] − sx·a[kz], y' = a[ky] − sy·a[kz],
-        // z' = sz·a[kz].
-        let mut cols = [Vec3A::ZERO; 3];
-        cols[kx] = Vec3A::X;
-        cols[ky] = Vec3A::Y;
-        cols[kz] = Vec3A::new(-sx, -sy, sz);
+        let inv = pick(recip, kz);
+        let o = |k| pick(origin, k) as f32;
         Some(ShearedRay {
-            origin: origin.as_vec3a(),
-            shear: Mat3A::from_cols(cols[0], cols[1], cols[2]),
+            axes: [kx, ky, kz],
+            origin: [o(kx), o(ky), o(kz)],
+            shear: [
+                (pick(dir, kx) * inv) as f32,
+                (pick(dir, ky) * inv) as f32,
+                inv as f32,
+            ],
         })
+    }
+
+    /// The sheared coordinates of the vertex `v`.
+    #[inline(always)]
+    fn shear(&self, v: Vec3A) -> Vec3A {
+        let [kx, ky, kz] = self.axes;
+        let [ox, oy, oz] = self.origin;
+        let [sx, sy, sz] = self.shear;
+        let pz = v[kz] - oz;
+        Vec3A::new((v[kx] - ox) - sx * pz, (v[ky] - oy) - sy * pz, sz * pz)
     }
 
     /// Watertight test against one triangle: `(t, barycentrics)` over the whole line.
@@ -146,9 +175,7 @@ impl ShearedRay {
     /// an edge or vertex) they are recomputed exactly in f64, as the paper prescribes.
     #[inline]
     pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
-        let a = self.shear * (v[0] - self.origin);
-        let b = self.shear * (v[1] - self.origin);
-        let c = self.shear * (v[2] - self.origin);
+        let [a, b, c] = v.map(|v| self.shear(v));
         let (ax, ay, bx, by, cx, cy) = (a.x, a.y, b.x, b.y, c.x, c.y);
         let mut u = cx * by - cy * bx;
         let mut vv = ax * cy - ay * cx;
@@ -178,20 +205,18 @@ impl ShearedRay {
     /// [`ShearedRay::intersect`] on the first `lanes` triangles of a block at once.
     ///
     /// Every lane goes through the same f32 operations in the same order as the one-triangle
-    /// test (the shear as glam's `Mat3A * Vec3A` computes it, ones and zeros included, and the
-    /// same f64 recomputation of a zero edge function), so each lane's edge functions, and
-    /// the `t` and barycentrics of [`Edges4::hit`], are bit-identical to it.
+    /// test (the same shear and the same f64 recomputation of a zero edge function), so each
+    /// lane's edge functions, and the `t` and barycentrics of [`Edges4::hit`], are
+    /// bit-identical to it.
     #[inline(always)]
     pub fn intersect4(&self, block: &TriBlock, lanes: usize) -> Edges4 {
-        let cols = [self.shear.x_axis, self.shear.y_axis, self.shear.z_axis];
-        let origin = self.origin;
+        let [kx, ky, kz] = self.axes;
+        let [ox, oy, oz] = self.origin.map(Vec4::splat);
+        let [sx, sy, sz] = self.shear.map(Vec4::splat);
         let shear = |k: usize| -> [Vec4; 3] {
-            let p = [0, 1, 2].map(|j| block.v[k][j] - Vec4::splat(origin[j]));
-            [0, 1, 2].map(|i| {
-                Vec4::splat(cols[0][i]) * p[0]
-                    + Vec4::splat(cols[1][i]) * p[1]
-                    + Vec4::splat(cols[2][i]) * p[2]
-            })
+            let v = &block.v[k];
+            let pz = v[kz] - oz;
+            [(v[kx] - ox) - sx * pz, (v[ky] - oy) - sy * pz, sz * pz]
         };
         let (a, b, c) = (shear(0), shear(1), shear(2));
         let mut u = c[0] * b[1] - c[1] * b[0];
