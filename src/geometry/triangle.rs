@@ -161,7 +161,7 @@ impl ShearedRay {
 
     /// The sheared coordinates of the vertex `v`.
     #[inline(always)]
-    fn shear(&self, v: Vec3A) -> Vec3A {
+    fn sheared(&self, v: Vec3A) -> Vec3A {
         let [kx, ky, kz] = self.axes;
         let [ox, oy, oz] = self.origin;
         let [sx, sy, sz] = self.shear;
@@ -175,7 +175,7 @@ impl ShearedRay {
     /// an edge or vertex) they are recomputed exactly in f64, as the paper prescribes.
     #[inline]
     pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
-        let [a, b, c] = v.map(|v| self.shear(v));
+        let [a, b, c] = v.map(|v| self.sheared(v));
         let (ax, ay, bx, by, cx, cy) = (a.x, a.y, b.x, b.y, c.x, c.y);
         let mut u = cx * by - cy * bx;
         let mut vv = ax * cy - ay * cx;
