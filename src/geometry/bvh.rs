@@ -214,6 +214,37 @@ impl Bvh {
         self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
     }
 
+    /// A tree built over clusters turned into one over their members: `members(c)` lists the
+    /// primitives of cluster `c` (the id the tree reports for it), and each leaf's clusters
+    /// become one contiguous range of their members, in the same order. The leaves' boxes
+    /// already hold their members, so nothing else changes. A leaf must not grow past
+    /// [`MAX_LEAF`] members (clusters of at most [`BLOCK`], leaves of one cluster).
+    pub(super) fn expand_clusters<'a>(mut self, members: impl Fn(u32) -> &'a [u32]) -> Bvh {
+        let start = Instant::now();
+        // Where each cluster slot's members begin in the new order, and one past the last.
+        let mut first = Vec::with_capacity(self.order.len() + 1);
+        let mut order = Vec::with_capacity(self.order.len() * BLOCK);
+        for &c in &self.order {
+            first.push(order.len() as u32);
+            order.extend_from_slice(members(c));
+        }
+        first.push(order.len() as u32);
+        for node in &mut self.nodes {
+            for child in node
+                .child
+                .iter_mut()
+                .filter(|c| **c != EMPTY && **c & LEAF != 0)
+            {
+                let (s, n) = leaf_parts(*child);
+                let count = (first[s + n] - first[s]).clamp(1, MAX_LEAF);
+                *child = leaf(first[s], count);
+            }
+        }
+        self.order = order;
+        self.build_time += start.elapsed();
+        self
+    }
+
     /// Lays the slots out anew in blocks of [`BLOCK`]: every leaf starts a fresh block, so a
     /// leaf of up to four primitives is one block (one 4-wide test), and a leaf's start field
     /// becomes its first block. Its slots are `BLOCK·start ..` (`count` of them, in the order

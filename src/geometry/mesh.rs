@@ -4,7 +4,6 @@
 
 use crate::num::Norm;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
-use obvhs::BvhBuildParams;
 use rayon::prelude::*;
 
 use super::bvh::{BLOCK, Bvh, BvhRay};
@@ -14,15 +13,7 @@ use super::triangle::{ShearedRay, TriBlock};
 use super::{Aabb, Ray};
 use crate::ir::limits::MAX_TRIANGLES;
 
-/// Above this many triangles a mesh's BVH is built for speed rather than quality (obvhs's
-/// `very_fast_build`: 0.35 s instead of 0.44 s for 1.1M triangles on 2 cores, about the same
-/// tracing speed), because there the build dominates the time to first ray.
-pub const LARGE_MESH: usize = 300_000;
-
 const _: () = assert!(MAX_TRIANGLES <= super::bvh::MAX_PRIMITIVES);
-
-/// Most triangles in one BVH leaf.
-const LEAF_TRIANGLES: u32 = 4;
 
 /// A mesh's data in file order, as loaded (borrowed from the asset that holds it).
 #[derive(Clone, Copy, Debug)]
@@ -85,42 +76,38 @@ pub struct MeshHit {
 impl Mesh {
     /// Builds the BVH over `parts` and stores the triangles in its order.
     pub fn build(parts: MeshParts<'_>) -> Mesh {
+        Self::build_with(parts, super::mesh_bvh::build)
+    }
+
+    /// [`Mesh::build`] with the tree made by `tree(parts, bounds, pad)` (its ids index
+    /// `parts.triangles`; `pad` widens each triangle's box): tests choose the clustered or the
+    /// per-triangle build regardless of the mesh's size.
+    fn build_with(
+        parts: MeshParts<'_>,
+        tree: impl FnOnce(&MeshParts<'_>, Aabb, Vec3A) -> Bvh,
+    ) -> Mesh {
         let corners = |t: &[u32; 3]| t.map(|i| parts.vertices[i as usize]);
-        let bounds = parts.triangles.iter().fold(Aabb::EMPTY, |b, t| {
-            corners(t).iter().fold(b, |b, p| {
-                let p = p.as_dvec3();
-                b.union(Aabb::new(p, p))
-            })
-        });
+        // Minima and maxima are exact, so the parallel fold's grouping cannot change them.
+        let bounds = parts
+            .triangles
+            .par_iter()
+            .fold(
+                || Aabb::EMPTY,
+                |b, t| {
+                    corners(t).iter().fold(b, |b, p| {
+                        let p = p.as_dvec3();
+                        b.union(Aabb::new(p, p))
+                    })
+                },
+            )
+            .reduce(|| Aabb::EMPTY, Aabb::union);
         // Rays are traversed in f32 from near the mesh; pad every box by a few ulps of the
         // mesh's coordinates so rounding in the slab test cannot cull a triangle the exact
         // ray touches (a ray through a vertex at the corner of every adjacent box).
         let reach =
             bounds.min.abs().max(bounds.max.abs()).max_element() + (bounds.max - bounds.min).norm();
         let pad = Vec3A::splat((4.0 * f32::EPSILON as f64 * reach) as f32);
-        let boxes: Vec<_> = parts
-            .triangles
-            .par_iter()
-            .map(|t| {
-                let b = obvhs::aabb::Aabb::from_points(&corners(t).map(Vec3A::from));
-                obvhs::aabb::Aabb::new(b.min - pad, b.max + pad)
-            })
-            .collect();
-        let bvh = Bvh::build(
-            &boxes,
-            (0..boxes.len() as u32).collect(),
-            // Better trees pay off until the build itself dominates (time to first ray).
-            BvhBuildParams {
-                max_prims_per_leaf: LEAF_TRIANGLES,
-                ..if boxes.len() <= LARGE_MESH {
-                    BvhBuildParams::medium_build()
-                } else {
-                    BvhBuildParams::very_fast_build()
-                }
-            },
-        );
-        drop(boxes);
-        let bvh = bvh.into_blocks();
+        let bvh = tree(&parts, bounds, pad).into_blocks();
         // Corners in BVH slot order, so a leaf's triangles sit side by side.
         let blocks = bvh
             .order

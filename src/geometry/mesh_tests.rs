@@ -68,13 +68,87 @@ fn packets_match_single_rays_bit_for_bit() {
         .iter()
         .map(|t| t.map(|i| (vertices[i as usize] + Vec3::Y).unit()))
         .collect();
-    let mesh = Mesh::build(MeshParts {
+    let parts = MeshParts {
         vertices: &vertices,
         triangles: &triangles,
         normals: &normals,
         uvs: &[],
         material_of: &[],
-    });
+    };
+    let packets = test_packets(n, &vertices, &mut rnd);
+    // The tree of a small mesh and the clustered tree of a large one alike.
+    for mesh in [
+        Mesh::build(parts),
+        Mesh::build_with(parts, super::super::mesh_bvh::clustered),
+    ] {
+        check_packets(&mesh, n as f64, &packets, &mut rnd);
+    }
+}
+
+/// The clustered tree (large meshes) finds for every ray the same nearest `t` and the same
+/// any-hit answer as the per-triangle tree: grouping changes only the order of the tests.
+/// The mesh's triangle count is not a multiple of four, so the last cluster is short.
+#[test]
+fn clustered_tree_finds_what_the_per_triangle_tree_finds() {
+    let mut rnd = crate::geometry::test_uniform(5);
+    let n = 12;
+    let (vertices, triangles) = test_mesh(n, &mut rnd);
+    assert_ne!(triangles.len() % 4, 0);
+    let parts = MeshParts {
+        vertices: &vertices,
+        triangles: &triangles,
+        normals: &[],
+        uvs: &[],
+        material_of: &[],
+    };
+    let whole = Mesh::build_with(parts, super::super::mesh_bvh::per_triangle);
+    let clustered = Mesh::build_with(parts, super::super::mesh_bvh::clustered);
+    let (mut hits, mut blocked) = (0, 0);
+    for rays in test_packets(n, &vertices, &mut rnd) {
+        for r in &rays {
+            let (a, b) = (
+                whole.intersect(r, 0.0, f64::INFINITY),
+                clustered.intersect(r, 0.0, f64::INFINITY),
+            );
+            assert_eq!(
+                a.map(|h| h.t.to_bits()),
+                b.map(|h| h.t.to_bits()),
+                "ray {r:?}"
+            );
+            hits += a.is_some() as usize;
+            for limit in [0.5, 5.0, f64::INFINITY] {
+                let shadow = whole.occluded(r, 0.0, limit);
+                assert_eq!(shadow, clustered.occluded(r, 0.0, limit), "ray {r:?}");
+                blocked += shadow as usize;
+            }
+        }
+    }
+    assert!(
+        hits > 1000 && blocked > 1000,
+        "{hits} hits, {blocked} blocked"
+    );
+    // Short meshes: one cluster of one to four triangles, and more.
+    for count in 1..=6 {
+        let small = MeshParts {
+            triangles: &triangles[..count],
+            ..parts
+        };
+        let (whole, clustered) = (
+            Mesh::build_with(small, super::super::mesh_bvh::per_triangle),
+            Mesh::build_with(small, super::super::mesh_bvh::clustered),
+        );
+        for rays in test_packets(n, &vertices, &mut rnd).iter().take(20) {
+            for r in rays {
+                let t = |m: &Mesh| m.intersect(r, 0.0, f64::INFINITY).map(|h| h.t.to_bits());
+                assert_eq!(t(&whole), t(&clustered), "{count} triangles, ray {r:?}");
+            }
+        }
+    }
+}
+
+/// Packets of rays as the renderer makes them over [`test_mesh`]'s grid of `n`: from one eye
+/// through the grid's vertices and edge midpoints, and from one eye in random directions.
+fn test_packets(n: usize, vertices: &[Vec3], rnd: &mut impl FnMut() -> f64) -> Vec<Vec<Ray>> {
     let mut packets: Vec<Vec<Ray>> = Vec::new();
     let size = n as f64;
     for k in 0..60 {
@@ -103,8 +177,14 @@ fn packets_match_single_rays_bit_for_bit() {
                 .collect(),
         );
     }
+    packets
+}
+
+/// Each query of each packet equals the one-ray query of each of its rays, bit for bit, and
+/// shadow rays from the hits towards a light (some limited short of it) likewise.
+fn check_packets(mesh: &Mesh, size: f64, packets: &[Vec<Ray>], rnd: &mut impl FnMut() -> f64) {
     let mut hits_seen = 0;
-    for rays in &packets {
+    for rays in packets {
         for len in [rays.len(), 9, 1] {
             let rays = &rays[..len];
             let t_min: Vec<f64> = rays.iter().map(|_| 0.0).collect();

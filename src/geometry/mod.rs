@@ -18,6 +18,7 @@ pub mod cylinder;
 pub mod disk;
 pub mod lanes;
 pub mod mesh;
+mod mesh_bvh;
 pub mod motion;
 pub mod plane;
 pub mod polygon;
