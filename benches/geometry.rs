@@ -14,7 +14,10 @@ use std::time::{Duration, Instant};
 
 use glam::DVec3;
 use rayon::prelude::*;
-use rtc::geometry::{Ray, World};
+use rtc::geometry::bvh_packet::PACKET;
+use rtc::geometry::sphere_cull::Among;
+use rtc::geometry::world::SphereHit;
+use rtc::geometry::{Ray, SurfaceHit, World};
 use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};
 use rtc::opt::Prepared;
 use rtc::source::Span;
@@ -145,41 +148,110 @@ fn row(w: &World, cam: &Cam, y: u32, width: u32, height: u32, ss: u32, shadows: 
                 let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
                     continue;
                 };
-                c.hits += 1;
-                let to_light = cam.light - h.point;
-                let dist = to_light.norm();
-                let l = to_light / dist;
-                let n = if h.normal.dot(ray.dir) > 0.0 {
-                    -h.normal
-                } else {
-                    h.normal
-                };
-                let ng = if h.geometric_normal.dot(ray.dir) > 0.0 {
-                    -h.geometric_normal
-                } else {
-                    h.geometric_normal
-                };
-                let mut v = 0.2;
-                if shadows {
-                    c.shadow += 1;
-                    let origin = h.point + 1e-4 * cam.scale * ng;
-                    if w.occluded(&Ray::new(origin, l), 0.0, dist) {
-                        c.shade += v;
-                        continue;
-                    }
-                    c.lit += 1;
-                }
-                let ndl = n.dot(l).max(0.0);
-                let r = 2.0 * ndl * n - l;
-                v += 0.7 * ndl + 0.3 * r.dot(-ray.dir).max(0.0).powf(32.0);
-                c.shade += v;
+                let s = ShadowRay::of(cam, &ray, &h);
+                let blocked = shadows && w.occluded(&s.ray, 0.0, s.dist);
+                c.shade_hit(&ray, &h, &s, shadows, blocked);
             }
         }
     }
     c
 }
 
-fn trace(
+/// [`row`] with one sample a pixel, traced as `rtc render` traces it: the camera rays of 16
+/// pixels as one packet (`World::intersect_batch_after`), then their hits' shadow rays as
+/// one (`World::occluded_batch_among`); each ray's answer is the one-ray query's.
+fn row_packets(w: &World, cam: &Cam, y: u32, width: u32, height: u32, shadows: bool) -> Count {
+    let mut c = Count::default();
+    let first = [SphereHit::default(); PACKET];
+    let mut hits = [None; PACKET];
+    for x0 in (0..width).step_by(PACKET) {
+        let n = PACKET.min((width - x0) as usize);
+        let rays: [Ray; PACKET] = std::array::from_fn(|i| {
+            cam.ray(x0 as f64 + i as f64 + 0.5, y as f64 + 0.5, width, height)
+        });
+        c.primary += n as u64;
+        w.intersect_batch_after(&rays[..n], 0.0, f64::INFINITY, &first, &mut hits[..n]);
+        let lit: Vec<(usize, ShadowRay)> = (0..n)
+            .filter_map(|i| hits[i].map(|h| (i, ShadowRay::of(cam, &rays[i], &h))))
+            .collect();
+        let mut blocked = [false; PACKET];
+        if shadows {
+            let (rs, ds): (Vec<Ray>, Vec<f64>) = lit.iter().map(|(_, s)| (s.ray, s.dist)).unzip();
+            w.occluded_batch_among(&rs, 0.0, &ds, Among::ALL, &mut blocked[..rs.len()]);
+        }
+        for (k, (i, s)) in lit.iter().enumerate() {
+            let h = hits[*i].expect("a hit");
+            c.shade_hit(&rays[*i], &h, s, shadows, blocked[k]);
+        }
+    }
+    c
+}
+
+/// A hit's shadow ray towards the light, leaving the surface on the ray's side.
+struct ShadowRay {
+    ray: Ray,
+    dist: f64,
+}
+
+impl ShadowRay {
+    fn of(cam: &Cam, ray: &Ray, h: &SurfaceHit) -> ShadowRay {
+        let to_light = cam.light - h.point;
+        let dist = to_light.norm();
+        let ng = if h.geometric_normal.dot(ray.dir) > 0.0 {
+            -h.geometric_normal
+        } else {
+            h.geometric_normal
+        };
+        let origin = h.point + 1e-4 * cam.scale * ng;
+        ShadowRay {
+            ray: Ray::new(origin, to_light / dist),
+            dist,
+        }
+    }
+}
+
+impl Count {
+    /// Counts a hit and adds its Phong value (ambient only when `blocked`).
+    fn shade_hit(
+        &mut self,
+        ray: &Ray,
+        h: &SurfaceHit,
+        s: &ShadowRay,
+        shadows: bool,
+        blocked: bool,
+    ) {
+        self.hits += 1;
+        let mut v = 0.2;
+        if shadows {
+            self.shadow += 1;
+            if blocked {
+                self.shade += v;
+                return;
+            }
+            self.lit += 1;
+        }
+        let n = if h.normal.dot(ray.dir) > 0.0 {
+            -h.normal
+        } else {
+            h.normal
+        };
+        let l = s.ray.dir;
+        let ndl = n.dot(l).max(0.0);
+        let r = 2.0 * ndl * n - l;
+        v += 0.7 * ndl + 0.3 * r.dot(-ray.dir).max(0.0).powf(32.0);
+        self.shade += v;
+    }
+}
+
+/// Rays traced one by one, or as `rtc render` traces them (packets of 16, one sample a pixel).
+#[derive(Clone, Copy, PartialEq)]
+enum Mode {
+    Single,
+    Packets,
+}
+
+fn trace_as(
+    mode: Mode,
     w: &World,
     cam: &Cam,
     size: u32,
@@ -195,7 +267,10 @@ fn trace(
     let c = pool.install(|| {
         (0..size)
             .into_par_iter()
-            .map(|y| row(w, cam, y, size, size, ss, shadows))
+            .map(|y| match mode {
+                Mode::Single => row(w, cam, y, size, size, ss, shadows),
+                Mode::Packets => row_packets(w, cam, y, size, size, shadows),
+            })
             .reduce(Count::default, |a, b| a + b)
     });
     (start.elapsed(), c)
@@ -253,40 +328,47 @@ fn scene_b(name: &str, file: &str) {
     report_world(name, median(loads), &p);
     let w = p.world();
     let cam = camera(w);
-    for threads in [1, 2] {
-        let mut tp = Vec::new();
-        let mut tb = Vec::new();
-        let mut last = Count::default();
-        let mut cpu_p = Vec::new();
-        for _ in 0..REPS {
-            let c0 = cpu_time();
-            let (t, _) = trace(w, &cam, 800, 1, false, threads);
-            cpu_p.push(Duration::from_secs_f64(cpu_time() - c0));
-            tp.push(t);
-            let (t, c) = trace(w, &cam, 800, 1, true, threads);
-            tb.push(t);
-            last = c;
+    // One by one (Embree's `viewer` and embreex's rtcIntersect1 loop are the peers), then as
+    // the renderer traces them (Embree's stream mode is the peer there).
+    for (mode, how) in [
+        (Mode::Single, "one by one"),
+        (Mode::Packets, "packets of 16 as rtc render traces them"),
+    ] {
+        for threads in [1, 2] {
+            let mut tp = Vec::new();
+            let mut tb = Vec::new();
+            let mut last = Count::default();
+            let mut cpu_p = Vec::new();
+            for _ in 0..REPS {
+                let c0 = cpu_time();
+                let (t, _) = trace_as(mode, w, &cam, 800, 1, false, threads);
+                cpu_p.push(Duration::from_secs_f64(cpu_time() - c0));
+                tp.push(t);
+                let (t, c) = trace_as(mode, w, &cam, 800, 1, true, threads);
+                tb.push(t);
+                last = c;
+            }
+            let cpu_p = median(cpu_p).as_secs_f64().max(0.01);
+            println!(
+                "  {threads} thread(s), {how}: primary rays per CPU-second {:.2} M ({:.2} CPU-s per frame)",
+                last.primary as f64 / cpu_p / 1e6,
+                cpu_p
+            );
+            let (tp, tb) = (median(tp), median(tb));
+            let shadow_time = tb.saturating_sub(tp).as_secs_f64().max(1e-9);
+            println!(
+                "  {threads} thread(s), {how}: primary {:.3} s = {:.2} Mray/s; primary+shadow {:.3} s = {:.2} Mray/s ({} primary, {} hits = {:.3}, {} shadow rays ≈ {:.2} Mray/s)",
+                tp.as_secs_f64(),
+                last.primary as f64 / tp.as_secs_f64() / 1e6,
+                tb.as_secs_f64(),
+                (last.primary + last.shadow) as f64 / tb.as_secs_f64() / 1e6,
+                last.primary,
+                last.hits,
+                last.hits as f64 / last.primary as f64,
+                last.shadow,
+                last.shadow as f64 / shadow_time / 1e6,
+            );
         }
-        let cpu_p = median(cpu_p).as_secs_f64().max(0.01);
-        println!(
-            "  {threads} thread(s): primary rays per CPU-second {:.2} M ({:.2} CPU-s per frame)",
-            last.primary as f64 / cpu_p / 1e6,
-            cpu_p
-        );
-        let (tp, tb) = (median(tp), median(tb));
-        let shadow_time = tb.saturating_sub(tp).as_secs_f64().max(1e-9);
-        println!(
-            "  {threads} thread(s): primary {:.3} s = {:.2} Mray/s; primary+shadow {:.3} s = {:.2} Mray/s ({} primary, {} hits = {:.3}, {} shadow rays ≈ {:.2} Mray/s)",
-            tp.as_secs_f64(),
-            last.primary as f64 / tp.as_secs_f64() / 1e6,
-            tb.as_secs_f64(),
-            (last.primary + last.shadow) as f64 / tb.as_secs_f64() / 1e6,
-            last.primary,
-            last.hits,
-            last.hits as f64 / last.primary as f64,
-            last.shadow,
-            last.shadow as f64 / shadow_time / 1e6,
-        );
     }
 }
 
@@ -302,7 +384,7 @@ fn duck() {
             let start = Instant::now();
             let (load, p) = build(&path, true);
             let cam = camera(p.world());
-            let (_, c) = trace(p.world(), &cam, 400, 3, true, threads);
+            let (_, c) = trace_as(Mode::Single, p.world(), &cam, 400, 3, true, threads);
             totals.push(start.elapsed());
             last = Some((load, c, p));
         }
@@ -347,7 +429,7 @@ fn x16() {
         median(cpus).as_secs_f64()
     );
     let cam = camera(w.world());
-    let (t, c) = trace(w.world(), &cam, 800, 1, true, 2);
+    let (t, c) = trace_as(Mode::Single, w.world(), &cam, 800, 1, true, 2);
     println!(
         "  800×800 primary+shadow, 2 threads: {:.3} s = {:.2} Mray/s",
         t.as_secs_f64(),

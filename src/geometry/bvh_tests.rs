@@ -52,40 +52,59 @@ fn traversals_match_brute_force() {
             ..BvhBuildParams::medium_build()
         };
         let bvh = Bvh::build_grouped(&boxes, ids, params, group);
-        assert_eq!(bvh.order.len(), n);
-        let mut sorted = bvh.order.clone();
-        sorted.sort_unstable();
-        assert!(sorted.iter().enumerate().all(|(i, &x)| i as u32 == x));
-        let mut seed = 99u64;
-        let mut rnd = move || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
-            ((seed >> 33) as f64) / (1u64 << 31) as f64
-        };
-        for _ in 0..300 {
-            let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
-            let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).unit();
-            let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
-            let entry = |i: usize| slab(&boxes[i], o, d);
-            let want = (0..n).filter_map(entry).fold(f64::INFINITY, f64::min);
-            let mut got = f64::INFINITY;
-            bvh.closest(&r, |slot, _| match entry(bvh.order[slot] as usize) {
-                Some(t) => {
-                    got = got.min(t);
-                    t as f32
-                }
-                None => f32::INFINITY,
-            });
-            assert_eq!(got, want, "n={n} leaf={leaf} group={group}");
-            assert_eq!(
-                bvh.any(&r, |slot| entry(bvh.order[slot] as usize).is_some()),
-                want.is_finite()
-            );
-            let mut count = 0;
-            bvh.all(&r, |slot| {
-                count += entry(bvh.order[slot] as usize).is_some() as usize
-            });
-            assert_eq!(count, (0..n).filter(|&i| entry(i).is_some()).count());
-        }
+        check_brute_force(&bvh, &boxes, &format!("n={n} leaf={leaf} group={group}"));
+    }
+}
+
+/// Trees over Morton clusters (large meshes and worlds) agree with brute force likewise,
+/// clusters of one to eight primitives, counts that leave the last cluster short.
+#[test]
+fn clustered_traversals_match_brute_force() {
+    for (n, cluster) in [(1, 4), (3, 4), (5, 1), (500, 4), (501, 3), (3001, 8)] {
+        let boxes = random_boxes(n, 11 + n as u64);
+        let ids: Vec<u32> = (0..n as u32).collect();
+        let bvh =
+            Bvh::build_clustered(n, |i| boxes[i], &ids, cluster, BvhBuildParams::fast_build());
+        check_brute_force(&bvh, &boxes, &format!("n={n} cluster={cluster}"));
+    }
+}
+
+/// Every primitive in exactly one slot; closest, any and all agree with brute force.
+fn check_brute_force(bvh: &Bvh, boxes: &[BAabb], label: &str) {
+    let n = boxes.len();
+    assert_eq!(bvh.order.len(), n);
+    let mut sorted = bvh.order.clone();
+    sorted.sort_unstable();
+    assert!(sorted.iter().enumerate().all(|(i, &x)| i as u32 == x));
+    let mut seed = 99u64;
+    let mut rnd = move || {
+        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1);
+        ((seed >> 33) as f64) / (1u64 << 31) as f64
+    };
+    for _ in 0..300 {
+        let o = DVec3::new(-5.0, rnd() * 10.0, rnd() * 10.0);
+        let d = DVec3::new(1.0, rnd() - 0.5, rnd() - 0.5).unit();
+        let r = BvhRay::new(o, d, 0.0, f64::INFINITY).unwrap();
+        let entry = |i: usize| slab(&boxes[i], o, d);
+        let want = (0..n).filter_map(entry).fold(f64::INFINITY, f64::min);
+        let mut got = f64::INFINITY;
+        bvh.closest(&r, |slot, _| match entry(bvh.order[slot] as usize) {
+            Some(t) => {
+                got = got.min(t);
+                t as f32
+            }
+            None => f32::INFINITY,
+        });
+        assert_eq!(got, want, "{label}");
+        assert_eq!(
+            bvh.any(&r, |slot| entry(bvh.order[slot] as usize).is_some()),
+            want.is_finite()
+        );
+        let mut count = 0;
+        bvh.all(&r, |slot| {
+            count += entry(bvh.order[slot] as usize).is_some() as usize
+        });
+        assert_eq!(count, (0..n).filter(|&i| entry(i).is_some()).count());
     }
 }
 
@@ -160,13 +179,22 @@ fn the_tree_does_not_depend_on_the_thread_count() {
         max_prims_per_leaf: 1,
         ..BvhBuildParams::very_fast_build()
     };
-    for (params, group) in [(BvhBuildParams::fast_build(), 1), (single, 4)] {
+    let ids: Vec<u32> = (0..20_000).collect();
+    // (params, grouping, or 0 for clusters of four)
+    for (params, group) in [
+        (BvhBuildParams::fast_build(), 1),
+        (single, 4),
+        (BvhBuildParams::fast_build(), 0),
+    ] {
         let build = |threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            pool.install(|| Bvh::build_grouped(&boxes, (0..20_000).collect(), params, group))
+            pool.install(|| match group {
+                0 => Bvh::build_clustered(boxes.len(), |i| boxes[i], &ids, 4, params),
+                _ => Bvh::build_grouped(&boxes, ids.clone(), params, group),
+            })
         };
         let (a, b) = (build(1), build(3));
         assert_eq!(a.order, b.order);

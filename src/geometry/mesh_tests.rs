@@ -79,7 +79,7 @@ fn packets_match_single_rays_bit_for_bit() {
     // The tree of a small mesh and the clustered tree of a large one alike.
     for mesh in [
         Mesh::build(parts),
-        Mesh::build_with(parts, super::super::mesh_bvh::clustered),
+        Mesh::build_with(parts, crate::geometry::mesh_bvh::clustered),
     ] {
         check_packets(&mesh, n as f64, &packets, &mut rnd);
     }
@@ -101,8 +101,8 @@ fn clustered_tree_finds_what_the_per_triangle_tree_finds() {
         uvs: &[],
         material_of: &[],
     };
-    let whole = Mesh::build_with(parts, super::super::mesh_bvh::per_triangle);
-    let clustered = Mesh::build_with(parts, super::super::mesh_bvh::clustered);
+    let whole = Mesh::build_with(parts, crate::geometry::mesh_bvh::per_triangle);
+    let clustered = Mesh::build_with(parts, crate::geometry::mesh_bvh::clustered);
     let (mut hits, mut blocked) = (0, 0);
     for rays in test_packets(n, &vertices, &mut rnd) {
         for r in &rays {
@@ -134,8 +134,8 @@ fn clustered_tree_finds_what_the_per_triangle_tree_finds() {
             ..parts
         };
         let (whole, clustered) = (
-            Mesh::build_with(small, super::super::mesh_bvh::per_triangle),
-            Mesh::build_with(small, super::super::mesh_bvh::clustered),
+            Mesh::build_with(small, crate::geometry::mesh_bvh::per_triangle),
+            Mesh::build_with(small, crate::geometry::mesh_bvh::clustered),
         );
         for rays in test_packets(n, &vertices, &mut rnd).iter().take(20) {
             for r in rays {

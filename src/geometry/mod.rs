@@ -8,6 +8,7 @@ pub mod aabb;
 pub mod balls;
 pub mod blob;
 pub mod bvh;
+mod bvh_cluster;
 pub mod bvh_packet;
 mod bvh_traverse;
 pub mod circle;
