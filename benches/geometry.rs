@@ -171,17 +171,27 @@ fn row_packets(w: &World, cam: &Cam, y: u32, width: u32, height: u32, shadows: b
         });
         c.primary += n as u64;
         w.intersect_batch_after(&rays[..n], 0.0, f64::INFINITY, &first, &mut hits[..n]);
-        let lit: Vec<(usize, ShadowRay)> = (0..n)
-            .filter_map(|i| hits[i].map(|h| (i, ShadowRay::of(cam, &rays[i], &h))))
-            .collect();
+        // The hits' shadow rays side by side in fixed arrays (no allocation per packet).
+        let mut lane = [0; PACKET];
+        let mut shadow = [Ray::new(DVec3::ZERO, DVec3::Z); PACKET];
+        let mut dist = [0.0; PACKET];
+        let mut m = 0;
+        for i in (0..n).filter(|&i| hits[i].is_some()) {
+            let s = ShadowRay::of(cam, &rays[i], &hits[i].expect("a hit"));
+            (lane[m], shadow[m], dist[m]) = (i, s.ray, s.dist);
+            m += 1;
+        }
         let mut blocked = [false; PACKET];
         if shadows {
-            let (rs, ds): (Vec<Ray>, Vec<f64>) = lit.iter().map(|(_, s)| (s.ray, s.dist)).unzip();
-            w.occluded_batch_among(&rs, 0.0, &ds, Among::ALL, &mut blocked[..rs.len()]);
+            w.occluded_batch_among(&shadow[..m], 0.0, &dist[..m], Among::ALL, &mut blocked[..m]);
         }
-        for (k, (i, s)) in lit.iter().enumerate() {
-            let h = hits[*i].expect("a hit");
-            c.shade_hit(&rays[*i], &h, s, shadows, blocked[k]);
+        for k in 0..m {
+            let i = lane[k];
+            let s = ShadowRay {
+                ray: shadow[k],
+                dist: dist[k],
+            };
+            c.shade_hit(&rays[i], &hits[i].expect("a hit"), &s, shadows, blocked[k]);
         }
     }
     c

@@ -28,7 +28,7 @@ pub(super) const EMPTY: u32 = u32::MAX;
 /// Bits of a leaf's first primitive slot; the count (minus one) sits above them.
 const LEAF_START_BITS: u32 = 26;
 /// Most primitives a leaf can hold (the count field has five bits).
-const MAX_LEAF: u32 = 32;
+pub(super) const MAX_LEAF: u32 = 32;
 /// Most primitives one BVH can index (the leaf start field's range).
 pub const MAX_PRIMITIVES: usize = 1 << LEAF_START_BITS;
 
@@ -218,7 +218,8 @@ impl Bvh {
     /// primitives of cluster `c` (the id the tree reports for it), and each leaf's clusters
     /// become one contiguous range of their members, in the same order. The leaves' boxes
     /// already hold their members, so nothing else changes. A leaf must not grow past
-    /// [`MAX_LEAF`] members (clusters of at most [`BLOCK`], leaves of one cluster).
+    /// [`MAX_LEAF`] members ([`Bvh::build_clustered`]: one cluster of at most that many a
+    /// leaf).
     pub(super) fn expand_clusters<'a>(mut self, members: impl Fn(u32) -> &'a [u32]) -> Bvh {
         let start = Instant::now();
         // Where each cluster slot's members begin in the new order, and one past the last.

@@ -19,7 +19,7 @@ use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb as BAabb;
 use rayon::prelude::*;
 
-use super::bvh::{Bvh, MAX_PRIMITIVES};
+use super::bvh::{Bvh, MAX_LEAF, MAX_PRIMITIVES};
 
 /// Bits per axis of the Morton code: 4096 cells a side (far finer than needed to keep a few
 /// neighbours together), so that the code and a primitive's index fit one `u64` sort key.
@@ -29,9 +29,6 @@ const MORTON_BITS: u32 = 12;
 const INDEX_BITS: u32 = 64 - 3 * MORTON_BITS;
 
 const _: () = assert!(MAX_PRIMITIVES <= 1 << INDEX_BITS);
-
-/// Most primitives in one cluster (a leaf's limit in [`Bvh`]).
-pub const MAX_CLUSTER: usize = 32;
 
 impl Bvh {
     /// A tree over `count` primitives (`box_of(i)` the box of primitive `i`, `ids[i]` what
@@ -46,7 +43,8 @@ impl Bvh {
         cluster: usize,
         params: BvhBuildParams,
     ) -> Bvh {
-        let cluster = cluster.clamp(1, MAX_CLUSTER);
+        // One cluster a leaf: at most a leaf's worth.
+        let cluster = cluster.clamp(1, MAX_LEAF as usize);
         if count == 0 || count > MAX_PRIMITIVES {
             return Bvh::build(&[], Vec::new(), params);
         }

@@ -79,13 +79,10 @@ impl Mesh {
         Self::build_with(parts, super::mesh_bvh::build)
     }
 
-    /// [`Mesh::build`] with the tree made by `tree(parts, bounds, pad)` (its ids index
+    /// [`Mesh::build`] with the tree made by `tree(parts, pad)` (its ids index
     /// `parts.triangles`; `pad` widens each triangle's box): tests choose the clustered or the
     /// per-triangle build regardless of the mesh's size.
-    fn build_with(
-        parts: MeshParts<'_>,
-        tree: impl FnOnce(&MeshParts<'_>, Aabb, Vec3A) -> Bvh,
-    ) -> Mesh {
+    fn build_with(parts: MeshParts<'_>, tree: impl FnOnce(&MeshParts<'_>, Vec3A) -> Bvh) -> Mesh {
         let corners = |t: &[u32; 3]| t.map(|i| parts.vertices[i as usize]);
         // Minima and maxima are exact, so the parallel fold's grouping cannot change them.
         let bounds = parts
@@ -107,7 +104,7 @@ impl Mesh {
         let reach =
             bounds.min.abs().max(bounds.max.abs()).max_element() + (bounds.max - bounds.min).norm();
         let pad = Vec3A::splat((4.0 * f32::EPSILON as f64 * reach) as f32);
-        let bvh = tree(&parts, bounds, pad).into_blocks();
+        let bvh = tree(&parts, pad).into_blocks();
         // Corners in BVH slot order, so a leaf's triangles sit side by side.
         let blocks = bvh
             .order

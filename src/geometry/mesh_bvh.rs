@@ -11,26 +11,25 @@ use obvhs::BvhBuildParams;
 use obvhs::aabb::Aabb as BAabb;
 use rayon::prelude::*;
 
-use super::Aabb;
 use super::bvh::{BLOCK, Bvh};
 use super::mesh::MeshParts;
 
 /// Above this many triangles a mesh's BVH is built over clusters of [`BLOCK`] triangles
 /// (a quarter of the boxes) instead of one box per triangle, because there the build dominates
 /// the time to first ray and the process's peak memory (bunny-x16, 1.1M triangles: BVH
-/// 0.28 → 0.10 s, peak RSS 325 → 132 MB, tracing ~10% slower).
+/// 0.28 → 0.10 s, peak RSS 325 → 132 MB, tracing 19% slower).
 pub const LARGE_MESH: usize = 300_000;
 
 /// Most triangles in one BVH leaf (one 4-wide test).
 const LEAF_TRIANGLES: u32 = BLOCK as u32;
 
 /// The BVH of a mesh's triangles (ids are indices into `parts.triangles`), each triangle's box
-/// widened by `pad`; `bounds` holds every corner.
-pub(super) fn build(parts: &MeshParts<'_>, bounds: Aabb, pad: Vec3A) -> Bvh {
+/// widened by `pad`.
+pub(super) fn build(parts: &MeshParts<'_>, pad: Vec3A) -> Bvh {
     if parts.triangles.len() <= LARGE_MESH {
-        per_triangle(parts, bounds, pad)
+        per_triangle(parts, pad)
     } else {
-        clustered(parts, bounds, pad)
+        clustered(parts, pad)
     }
 }
 
@@ -42,9 +41,8 @@ fn triangle_box(parts: &MeshParts<'_>, t: &[u32; 3], pad: Vec3A) -> BAabb {
 }
 
 /// One box per triangle, a quality build (PLOC with reinsertion): better trees pay off until
-/// the build itself dominates the time to first ray. (`bounds` is unused: both builds take
-/// the same arguments, so either can be handed to the mesh's build.)
-pub(super) fn per_triangle(parts: &MeshParts<'_>, _bounds: Aabb, pad: Vec3A) -> Bvh {
+/// the build itself dominates the time to first ray.
+pub(super) fn per_triangle(parts: &MeshParts<'_>, pad: Vec3A) -> Bvh {
     let boxes: Vec<_> = parts
         .triangles
         .par_iter()
@@ -64,7 +62,7 @@ pub(super) fn per_triangle(parts: &MeshParts<'_>, _bounds: Aabb, pad: Vec3A) -> 
 /// boxes (the last cluster may be short), each cluster one leaf. The fast build: over a quarter
 /// of the boxes the medium build's reinsertion passes would still cost more than they save
 /// on the rays of one frame.
-pub(super) fn clustered(parts: &MeshParts<'_>, _bounds: Aabb, pad: Vec3A) -> Bvh {
+pub(super) fn clustered(parts: &MeshParts<'_>, pad: Vec3A) -> Bvh {
     let ids: Vec<u32> = (0..parts.triangles.len() as u32).collect();
     Bvh::build_clustered(
         parts.triangles.len(),

@@ -108,10 +108,10 @@ pub struct World {
 // the five-spheres scene: the CwBvh path cost ~25% of the render).
 const MIN_BVH_OBJECTS: usize = 12;
 
-/// Above this many bounded objects the top-level BVH is built for speed rather than quality
-/// (obvhs's `very_fast_build`, as for large meshes): for a million spheres the medium build's
-/// reinsertion passes alone took longer than evaluating the scene, and a render of such a
-/// scene is dominated by its time to first ray.
+/// Above this many bounded objects the top-level BVH is built for speed rather than quality,
+/// over Morton runs of [`LARGE_LEAF`] objects (`Bvh::build_clustered`, as for large meshes):
+/// for a million spheres the medium build's reinsertion passes alone took longer than
+/// evaluating the scene, and a render of such a scene is dominated by its time to first ray.
 pub const LARGE_WORLD: usize = 300_000;
 
 /// Most objects in a leaf of a large world's BVH.
@@ -188,15 +188,7 @@ impl World {
                 // Leaves of LARGE_LEAF neighbours along a Morton curve, fixed before the build:
                 // it then works on a quarter of the boxes (a million spheres: peak memory
                 // 284 -> 213 MiB, BVH 0.19 -> 0.07 s, same image; `bvh_cluster.rs`).
-                let bvh = Bvh::build_clustered(
-                    boxes.len(),
-                    |i| boxes[i],
-                    &ids,
-                    LARGE_LEAF as usize,
-                    speed,
-                );
-                drop(ids);
-                bvh
+                Bvh::build_clustered(boxes.len(), |i| boxes[i], &ids, LARGE_LEAF as usize, speed)
             } else {
                 let (build, group) = match few_rays {
                     false => (BvhBuildParams::medium_build(), 1),
