@@ -15,8 +15,8 @@ use numerics_support::{at, differing, differing_by, render_rtc, share};
 use rtc::geometry::{Ray, World};
 use rtc::ir::{Object, Shape};
 use rtc::num::Norm;
-use rtc::render::integrator::whitted::refract;
 use rtc::render::offset::SpawnPoint;
+use rtc::render::scatter::refract;
 
 const NO_SHADING: &str = "ka: 0, kd: 0, ks: 0";
 

@@ -6,8 +6,8 @@ use std::path::Path;
 
 use rtc::eval::{EvalOptions, load_source};
 use rtc::ir::{LightSampling, Scene};
+use rtc::render::film::CUT_WEIGHT_UNIT;
 use rtc::render::film::Film;
-use rtc::render::integrator::whitted::CUT_WEIGHT_UNIT;
 use rtc::render::progressive::{self, Budget};
 use rtc::render::{RenderOptions, Silent, render_scene};
 use rtc::source::SourceMap;

@@ -10,8 +10,9 @@
 use std::path::{Path, PathBuf};
 
 use rtc::render::camera::Camera;
-use rtc::render::integrator::whitted::{Path as RayPath, Whitted};
-use rtc::render::shading::Ctx;
+use rtc::render::context::Ctx;
+use rtc::render::integrator::whitted::Whitted;
+use rtc::render::path::Path as RayPath;
 
 /// Uniform numbers in [0, 1) from a 64-bit LCG (Knuth's MMIX constants).
 fn uniform(seed: u64) -> impl FnMut() -> f64 {

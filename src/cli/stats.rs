@@ -4,8 +4,8 @@ use std::time::Duration;
 
 use rtc::ir::{LightKind, LightSampling, Sampling};
 use rtc::opt::Prepared;
+use rtc::render::film::CUT_WEIGHT_UNIT;
 use rtc::render::film::Film;
-use rtc::render::integrator::whitted::CUT_WEIGHT_UNIT;
 
 /// A few lines describing the world, the quality knobs and the rays of a finished render:
 /// `load` is the time to read and evaluate the scene, `elapsed` the preparation's and render's

@@ -11,7 +11,6 @@ use crate::ir::Color;
 use crate::num::Norm;
 use crate::opt::Prepared;
 
-use super::View;
 use super::film::{Channel, Stats};
 use super::integrator::whitted::Whitted;
 use super::progress::Progress;
@@ -19,6 +18,7 @@ use super::region::Region;
 use super::sampler::Grid;
 use super::shard::Rows;
 use super::tiles;
+use super::view::View;
 use crate::diag::Diagnostic;
 
 /// Most distinct objects counted in one pixel's vote (a 16×16 grid has 256 samples).

@@ -8,13 +8,13 @@
 
 use glam::DVec3;
 
-use super::View;
+use super::context::Ctx;
 use super::film::encode;
 use super::integrator::Integrator;
-use super::integrator::whitted::Path;
+use super::path::Path;
 use super::record::{Branch, LightTerm, Recorder};
 use super::sampler::PixelSampler;
-use super::shading::Ctx;
+use super::view::View;
 use crate::diag::Diagnostic;
 use crate::geometry::{Ray, SurfaceHit, World};
 use crate::ir::{Color, Encoding, MaterialId};
@@ -233,7 +233,8 @@ pub fn explain(
     let pool = super::tiles::pool(1)?;
     let sampler = PixelSampler::new(scene.settings().sampling);
     let view = View::new(scene);
-    let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
+    let ray_of = |x, y, k| view.sample_ray(x, y, k, sampler.first);
+    let integrator = Integrator::new(scene, &view.first_rays(sampler.first, &ray_of), &pool)?;
     let n = integrator.channels().len();
     let (w, h) = (view.camera.width(), view.camera.height());
     let grid = sampler.first;
@@ -258,7 +259,16 @@ pub fn explain(
     // 4-neighbour's first-pass value differs by more than the threshold.
     let coarse = |px: u32, py: u32| {
         let mut out = vec![Color::ZERO; n];
-        view.average(&integrator, grid, 0, px, py, &mut Ctx::new(), &mut out);
+        super::pixel::average(
+            &view,
+            &integrator,
+            grid,
+            0,
+            px,
+            py,
+            &mut Ctx::new(),
+            &mut out,
+        );
         out[0]
     };
     let here = coarse(x, y);
@@ -273,7 +283,16 @@ pub fn explain(
         if refined {
             let mut out = vec![Color::ZERO; n];
             let start = super::refine_start(fine);
-            view.average(&integrator, fine, start, x, y, &mut Ctx::new(), &mut out);
+            super::pixel::average(
+                &view,
+                &integrator,
+                fine,
+                start,
+                x,
+                y,
+                &mut Ctx::new(),
+                &mut out,
+            );
             pixel = out[0];
         }
     }

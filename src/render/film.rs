@@ -5,7 +5,6 @@
 //! [`Channel`] an integrator fills, not a new code path: the tile driver, the averaging and the
 //! film carry any number of channels.
 
-use super::Image;
 use crate::ir::{Color, Encoding};
 
 /// Most channels one film holds.
@@ -78,11 +77,15 @@ pub struct Stats {
     pub refined_pixels: u64,
     /// Secondary rays not traced because their weight was below the insignificance cut-off.
     pub cut_rays: u64,
-    /// The summed weight of the cut rays, in units of 2⁻³² (`integrator::whitted::CUT_WEIGHT_UNIT`):
+    /// The summed weight of the cut rays, in units of 2⁻³² ([`CUT_WEIGHT_UNIT`]):
     /// divided by the camera rays, a bound on the mean linear radiance dropped per sample when
     /// what the cut rays would have seen is at most 1.
     pub cut_weight: u64,
 }
+
+/// Fixed-point units per unit of weight in [`Stats::cut_weight`] (integers keep the sum the
+/// same for any thread count).
+pub const CUT_WEIGHT_UNIT: f64 = (1u64 << 32) as f64;
 
 impl Stats {
     /// Adds another tile's counters.
@@ -95,6 +98,9 @@ impl Stats {
         self.cut_weight += o.cut_weight;
     }
 }
+
+/// A rendered 8-bit RGB image.
+pub type Image = image::RgbImage;
 
 /// A rendered image before quantisation.
 #[derive(Clone, Debug, PartialEq)]

@@ -28,6 +28,7 @@ pub mod adaptive;
 pub mod aov;
 pub mod bump;
 pub mod camera;
+pub mod context;
 pub mod explain;
 pub mod exr;
 pub mod film;
@@ -37,32 +38,32 @@ pub mod merge;
 pub mod offset;
 pub mod output;
 pub mod part;
+pub mod path;
+pub mod pixel;
 pub mod progress;
 pub mod progressive;
 pub mod record;
 pub mod region;
 pub mod sampler;
+pub mod scatter;
 pub mod shading;
 pub mod shard;
 pub mod texture;
 pub mod tiles;
-
-use glam::DVec3;
+pub mod view;
 
 use crate::diag::{Diagnostic, Diagnostics, Severity};
-use crate::geometry::Ray;
-use crate::ir::{Color, Scene};
+use crate::ir::Scene;
 use crate::opt::Prepared;
-use camera::{Camera, MovingCamera};
 use film::Film;
 use integrator::Integrator;
-use sampler::{Grid, PixelSampler, Rng};
-use shading::{BATCH, Ctx, LightShare};
+use sampler::{Grid, PixelSampler};
 use shard::{Rows, Shard};
 
-pub use film::{Channel, Stats};
+pub use film::{Channel, Image, Stats};
 pub use progress::{CANCELLED, Progress, Silent};
 pub use region::Region;
+pub use view::View;
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]
@@ -74,9 +75,6 @@ pub struct RenderOptions {
     /// AOV layers to add to the film after the colour (`Channel::AOVS`; empty: none).
     pub aovs: Vec<Channel>,
 }
-
-/// A rendered 8-bit RGB image.
-pub type Image = image::RgbImage;
 
 /// Prepares and renders a scene without progress reports: the whole pipeline in one call
 /// (tests, benchmarks). Fails with every problem preparing found, or the render's one error.
@@ -117,7 +115,8 @@ pub fn render_region(
     let pool = tiles::pool(options.threads)?;
     let sampler = PixelSampler::new(scene.settings().sampling);
     let view = View::new(scene);
-    let integrator = Integrator::new(scene, &view, sampler.first, &pool)?;
+    let ray_of = |x, y, k| view.sample_ray(x, y, k, sampler.first);
+    let integrator = Integrator::new(scene, &view.first_rays(sampler.first, &ray_of), &pool)?;
     let channels = integrator.channels();
     let (full_w, full_h) = (view.camera.width(), view.camera.height());
     if let Some(r) = region {
@@ -158,7 +157,7 @@ pub fn render_region(
     progress.start(first_rows.count(h) + refine_rows + aov_rows);
     let first = sampler.first;
     let n = channels.len();
-    let span = view.span(&integrator, n);
+    let span = pixel::span(&view, &integrator, n);
     let (mut values, mut stats) = tiles::run_spans(
         &pool,
         (w, h),
@@ -166,7 +165,9 @@ pub fn render_region(
         span,
         first_rows,
         progress,
-        |x, y, ctx, out| view.average_span(&integrator, (first, n), r.x + x, r.y + y, ctx, out),
+        |x, y, ctx, out| {
+            pixel::average_span(&view, &integrator, (first, n), r.x + x, r.y + y, ctx, out)
+        },
     )?;
     if let Some((fine, threshold)) = sampler.refine {
         // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
@@ -183,7 +184,7 @@ pub fn render_region(
             }
             ctx.stats.refined_pixels += 1;
             let (x, y) = (r.x + x, r.y + y);
-            view.average(&integrator, fine, refine_start(fine), x, y, ctx, out);
+            pixel::average(&view, &integrator, fine, refine_start(fine), x, y, ctx, out);
         })?;
         values = refined;
         stats.add(&more);
@@ -221,261 +222,4 @@ pub fn render_region(
 /// docs/accuracy-study.md measured RMSE 0.0182 against 0.0160 on showcase).
 pub fn refine_start(fine: Grid) -> u32 {
     fine.len().next_power_of_two()
-}
-
-/// What turns a pixel sample into a camera ray.
-pub struct View<'a> {
-    /// The scene.
-    pub scene: &'a Prepared,
-    /// Primary rays.
-    pub camera: Camera,
-    /// Whether anything draws random numbers (a lens or an area light).
-    pub random: bool,
-    /// The scene's seed.
-    pub seed: u64,
-    /// Whether camera samples spread over the open shutter (something moves while it is open).
-    pub motion_blur: bool,
-    /// The camera's motion while the shutter is open, if it moves.
-    pub moving_camera: Option<MovingCamera>,
-    /// Whether area-light cells are dealt out over a pixel's samples.
-    pub spread_lights: bool,
-}
-
-/// The random stream of a camera sample's time (apart from the lens's 0 and the lights').
-const TIME_STREAM: u32 = 0xffff_fffe;
-
-/// The per-axis grid offsets [`View::average_span`] keeps at hand (a 16×16 grid's); finer
-/// grids compute theirs sample by sample.
-const AXIS_OFFSETS: usize = 16;
-
-impl View<'_> {
-    /// The view of a prepared scene.
-    pub fn new(scene: &Prepared) -> View<'_> {
-        View {
-            scene,
-            camera: Camera::new(scene.camera()),
-            random: scene.random(),
-            seed: scene.settings().seed,
-            spread_lights: scene.settings().light_samples == crate::ir::LightSampling::Spread,
-            motion_blur: scene.effects().motion_blur,
-            moving_camera: MovingCamera::of(scene.camera()),
-        }
-    }
-
-    /// The lens sample of camera sample `index` of pixel (x, y), (½, ½) without a lens.
-    pub fn lens(&self, x: u32, y: u32, index: u32) -> (f64, f64) {
-        if self.camera.has_lens() {
-            Rng::new(x, y, index, self.seed).get2(0)
-        } else {
-            (0.5, 0.5)
-        }
-    }
-
-    /// The camera ray of one sample: at shutter open, or with motion blur at a time drawn from
-    /// the sample's own stream (Owen-scrambled Sobol' over the pixel's samples, so the times
-    /// are stratified across the shutter and decorrelated from the sub-pixel positions).
-    pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64, lens: (f64, f64), rng: &Rng) -> Ray {
-        if !self.motion_blur {
-            return self.camera.ray(x, y, sx, sy, lens);
-        }
-        let time = rng.get2(TIME_STREAM).0;
-        let camera = match &self.moving_camera {
-            Some(m) => m.at(time),
-            None => self.camera,
-        };
-        camera.ray(x, y, sx, sy, lens).at_time(time)
-    }
-
-    /// Sets `ctx` up for camera sample number `index` of pixel (x, y), the `slot.0`-th of
-    /// `slot.1` samples of its grid, at sub-pixel `offset`, and returns its ray.
-    #[inline]
-    pub fn camera_sample(
-        &self,
-        x: u32,
-        y: u32,
-        index: u32,
-        slot: (u32, u32),
-        (sx, sy): (f64, f64),
-        ctx: &mut Ctx,
-    ) -> Ray {
-        // Only lenses and area lights draw random numbers; skip keying them otherwise.
-        if self.random {
-            ctx.rng = Rng::new(x, y, index, self.seed);
-        }
-        if self.spread_lights {
-            ctx.lights = LightShare {
-                slot: slot.0,
-                size: slot.1,
-            };
-        }
-        let lens = if self.camera.has_lens() {
-            ctx.rng.get2(0)
-        } else {
-            (0.5, 0.5)
-        };
-        let ray = self.ray(x, y, sx, sy, lens, &ctx.rng);
-        ctx.stats.camera_rays += 1;
-        ray
-    }
-
-    /// How many pixels of a row [`View::average_span`] takes at once for `channels` per pixel:
-    /// a packet's worth when a scene the Whitted packets trace has plain pinhole camera rays
-    /// (their samples then fill whole packets across pixels: a 3×3 grid's nine samples alone
-    /// would leave seven of sixteen lanes idle), else one.
-    pub fn span(&self, integrator: &Integrator<'_>, channels: usize) -> usize {
-        if channels == 1 && integrator.batch().is_some() && self.pinhole() {
-            BATCH
-        } else {
-            1
-        }
-    }
-
-    /// Whether camera rays are plain pinhole rays, nothing set up per sample.
-    fn pinhole(&self) -> bool {
-        !self.random
-            && !self.spread_lights
-            && !self.motion_blur
-            && !self.camera.has_lens()
-            && BATCH <= camera::PINHOLE_BATCH
-    }
-
-    /// [`View::average`] of the pixels from (x0, y) rightwards, `channels` values each in
-    /// `out`: when [`View::span`] is more than one, the samples of all of them, pixel after
-    /// pixel, traced in packets of [`BATCH`] (each pixel's value bit for bit the one `average`
-    /// gives it: its samples summed in the same order), else pixel by pixel.
-    pub fn average_span(
-        &self,
-        integrator: &Integrator<'_>,
-        (grid, channels): (Grid, usize),
-        x0: u32,
-        y: u32,
-        ctx: &mut Ctx,
-        out: &mut [Color],
-    ) {
-        let w = integrator
-            .batch()
-            .filter(|_| self.span(integrator, channels) > 1 && out.len() <= BATCH);
-        let Some(w) = w else {
-            for (k, px) in out.chunks_exact_mut(channels).enumerate() {
-                self.average(integrator, grid, 0, x0 + k as u32, y, ctx, px);
-            }
-            return;
-        };
-        let per_pixel = grid.len();
-        let mut sums = [Color::ZERO; BATCH];
-        let mut colors = [Color::ZERO; BATCH];
-        // The grid's offsets along one axis once per span, `Grid::offset`'s (i + ½)/f, not two
-        // divisions of each kind per sample (a table of every sample's pair was a 4 kB
-        // `memset` per span, 2% of the duck's render).
-        let factor = grid.factor();
-        let mut axis = [0.0; AXIS_OFFSETS];
-        for (i, a) in axis.iter_mut().enumerate().take(factor as usize) {
-            *a = grid.offset(i as u32).0;
-        }
-        let offset = |(column, row): (u32, u32)| match factor as usize <= AXIS_OFFSETS {
-            true => (axis[column as usize], axis[row as usize]),
-            false => grid.offset(row * factor + column),
-        };
-        // Each packet's samples: (pixel of the span, the sample's column and row in the grid),
-        // pixel after pixel.
-        let mut samples = [(0usize, (0u32, 0u32)); BATCH];
-        let (mut pixel, mut cell) = (0, (0, 0));
-        while pixel < out.len() {
-            let mut m = 0;
-            while m < BATCH && pixel < out.len() {
-                samples[m] = (pixel, cell);
-                m += 1;
-                cell.0 += 1;
-                if cell.0 == factor {
-                    cell = (0, cell.1 + 1);
-                    if cell.1 == factor {
-                        (pixel, cell) = (pixel + 1, (0, 0));
-                    }
-                }
-            }
-            let at = |j: usize| (x0 + samples[j].0 as u32, offset(samples[j].1));
-            let rays = self.camera.pinhole_packet(y, at, m);
-            ctx.stats.camera_rays += m as u64;
-            w.trace_lanes(&rays, m, ctx, &mut colors[..m]);
-            for (&(p, _), c) in samples[..m].iter().zip(&colors[..m]) {
-                sums[p] += *c;
-            }
-        }
-        for (o, s) in out.iter_mut().zip(&sums) {
-            *o = *s / f64::from(per_pixel);
-        }
-    }
-
-    /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
-    /// into `out`; sample numbers start at `first_index`.
-    #[allow(clippy::too_many_arguments)]
-    fn average(
-        &self,
-        integrator: &Integrator<'_>,
-        grid: Grid,
-        first_index: u32,
-        x: u32,
-        y: u32,
-        ctx: &mut Ctx,
-        out: &mut [Color],
-    ) {
-        out.fill(Color::ZERO);
-        // One sample a pixel has no other ray to overlap with: the batch would only add its
-        // staging (measured: +15% render time on the 1-sample 100k-sphere scene).
-        if let (Some(w), [out], true) = (integrator.batch(), &mut *out, grid.len() > 1) {
-            // The samples in batches, summed in the same order as one by one below.
-            let mut rays = [Ray::new(DVec3::ZERO, DVec3::ZERO); BATCH];
-            let mut colors = [Color::ZERO; BATCH];
-            // What `camera_sample` does then is only the ray (and its count).
-            let pinhole = self.pinhole();
-            let mut k = 0;
-            while k < grid.len() {
-                let m = (grid.len() - k).min(BATCH as u32);
-                if pinhole {
-                    // Nothing to set up per sample: the rays of the batch at once.
-                    let mut offsets = [(0.0, 0.0); BATCH];
-                    for (j, o) in (k..k + m).zip(&mut offsets) {
-                        *o = grid.offset(j);
-                    }
-                    let m = m as usize;
-                    self.camera
-                        .pinhole_rays(x, y, &offsets[..m], &mut rays[..m]);
-                    ctx.stats.camera_rays += m as u64;
-                } else {
-                    for (j, ray) in (k..k + m).zip(&mut rays) {
-                        *ray = self.camera_sample(
-                            x,
-                            y,
-                            first_index + j,
-                            (j, grid.len()),
-                            grid.offset(j),
-                            ctx,
-                        );
-                    }
-                }
-                let m = m as usize;
-                w.trace_batch(&rays[..m], ctx, &mut colors[..m]);
-                for c in &colors[..m] {
-                    *out += *c;
-                }
-                k += m as u32;
-            }
-            *out /= f64::from(grid.len());
-            return;
-        }
-        let mut sample = [Color::ZERO; film::MAX_CHANNELS];
-        let sample = &mut sample[..out.len()];
-        for k in 0..grid.len() {
-            let ray =
-                self.camera_sample(x, y, first_index + k, (k, grid.len()), grid.offset(k), ctx);
-            integrator.sample(&ray, ctx, sample);
-            for (o, s) in out.iter_mut().zip(sample.iter()) {
-                *o += *s;
-            }
-        }
-        let n = f64::from(grid.len());
-        for o in out.iter_mut() {
-            *o /= n;
-        }
-    }
 }

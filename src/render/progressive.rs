@@ -17,14 +17,14 @@
 //!   in the same order whatever decided them), so the final [`SampleMap`] re-renders the same
 //!   bytes without a clock or an estimate (`--samples-from`).
 
-use super::View;
+use super::context::{Ctx, LightShare};
 use super::film::{Channel, Film, Stats};
 use super::integrator::Integrator;
 use super::progress::Progress;
 use super::sampler::{Grid, Rng};
-use super::shading::{Ctx, LightShare};
 use super::shard::Rows;
 use super::tiles;
+use super::view::View;
 use crate::diag::{Diagnostic, Severity};
 use crate::ir::Color;
 use crate::ir::limits::MAX_PIXEL_SAMPLES_PER_AXIS;
@@ -106,7 +106,8 @@ pub fn render(
 ) -> Result<Outcome, Diagnostic> {
     let pool = tiles::pool(threads)?;
     let view = View::new(scene);
-    let integrator = Integrator::new(scene, &view, Grid::new(2), &pool)?;
+    let ray_of = |x, y, k| view.sample_ray(x, y, k, Grid::new(2));
+    let integrator = Integrator::new(scene, &view.first_rays(Grid::new(2), &ray_of), &pool)?;
     let channels = integrator.channels();
     let (w, h) = (view.camera.width(), view.camera.height());
     if let Budget::Samples(m) = budget

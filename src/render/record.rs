@@ -8,7 +8,8 @@
 use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::Color;
 
-use super::integrator::whitted::Path;
+use super::path::Path;
+use super::scatter::Lobe;
 
 /// How a traced ray came about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -23,6 +24,15 @@ pub enum Branch {
 }
 
 impl Branch {
+    /// The branch of a secondary ray drawn from `lobe`.
+    pub fn of(lobe: &Lobe) -> Branch {
+        if lobe.transmits() {
+            Branch::Refracted
+        } else {
+            Branch::Reflected
+        }
+    }
+
     /// The word for it in explanations.
     pub fn name(self) -> &'static str {
         match self {

@@ -7,8 +7,8 @@ use rayon::prelude::*;
 use super::film::Stats;
 use std::sync::atomic::{AtomicBool, Ordering};
 
+use super::context::Ctx;
 use super::progress::Progress;
-use super::shading::Ctx;
 use super::shard::Rows;
 use crate::diag::{Diagnostic, Severity};
 

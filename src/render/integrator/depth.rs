@@ -10,11 +10,10 @@ use crate::diag::Diagnostic;
 use crate::geometry::Ray;
 use crate::ir::{Color, DepthRange};
 use crate::opt::Prepared;
-use crate::render::View;
 use crate::render::progress::Silent;
-use crate::render::sampler::{Grid, Rng};
 use crate::render::shard::Rows;
 use crate::render::tiles;
+use crate::render::view::FirstRays;
 
 /// The depth-image integrator with its distance range.
 pub struct DepthImage<'a> {
@@ -29,17 +28,16 @@ impl<'a> DepthImage<'a> {
         self.scene
     }
 
-    /// The integrator for `range`; an automatic range is measured over the samples of `grid`.
+    /// The integrator for `range`; an automatic range is measured over the rays of `first`.
     pub fn new(
         scene: &'a Prepared,
         range: DepthRange,
-        view: &View<'_>,
-        grid: Grid,
+        first: &FirstRays<'_>,
         pool: &rayon::ThreadPool,
     ) -> Result<DepthImage<'a>, Diagnostic> {
         let (near, far) = match range {
             DepthRange::Fixed { near, far } => (near, far),
-            DepthRange::Auto => hit_range(scene, view, grid, pool)?,
+            DepthRange::Auto => hit_range(scene, first, pool)?,
         };
         Ok(DepthImage { scene, near, far })
     }
@@ -67,17 +65,14 @@ pub fn grey(t: f64, near: f64, far: f64) -> Color {
 /// when nothing is hit.
 fn hit_range(
     scene: &Prepared,
-    view: &View<'_>,
-    grid: Grid,
+    first: &FirstRays<'_>,
     pool: &rayon::ThreadPool,
 ) -> Result<(f64, f64), Diagnostic> {
-    let (w, h) = (view.camera.width(), view.camera.height());
+    let (w, h) = first.size;
     let (ranges, _) = tiles::run(pool, w, h, 1, Rows::All, &Silent, |x, y, _ctx, out| {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for k in 0..grid.len() {
-            let (sx, sy) = grid.offset(k);
-            let rng = Rng::new(x, y, k, view.seed);
-            let ray = view.ray(x, y, sx, sy, view.lens(x, y, k), &rng);
+        for k in 0..first.samples {
+            let ray = (first.ray)(x, y, k);
             if let Some(hit) = scene.world().intersect(&ray, 0.0, f64::INFINITY) {
                 lo = lo.min(hit.t);
                 hi = hi.max(hit.t);

@@ -3,7 +3,6 @@
 //! in [`Integrator::new`], [`Integrator::channels`] and [`Integrator::sample`].
 
 pub mod depth;
-pub mod gloss;
 pub mod normal;
 pub mod whitted;
 
@@ -12,14 +11,14 @@ use crate::geometry::Ray;
 use crate::ir::{Color, RenderMode};
 use crate::opt::Prepared;
 
-use super::View;
+use super::context::Ctx;
 use super::film::Channel;
+use super::path::Path;
 use super::record::{NoRecord, Recorder};
-use super::sampler::Grid;
-use super::shading::Ctx;
+use super::view::FirstRays;
 use depth::DepthImage;
 use normal::NormalImage;
-use whitted::{Path, Whitted};
+use whitted::Whitted;
 
 /// The integrator of a render (a closed set, dispatched by `match`).
 pub enum Integrator<'a> {
@@ -36,15 +35,14 @@ impl<'a> Integrator<'a> {
     /// depth range of an automatic depth image, over the camera samples of `first`).
     pub fn new(
         scene: &'a Prepared,
-        view: &View<'_>,
-        first: Grid,
+        first: &FirstRays<'_>,
         pool: &rayon::ThreadPool,
     ) -> Result<Integrator<'a>, Diagnostic> {
         Ok(match scene.settings().mode {
             RenderMode::Shaded => Integrator::Whitted(Whitted::new(scene)),
             RenderMode::Normal => Integrator::Normal(NormalImage::new(scene)),
             RenderMode::Depth(range) => {
-                Integrator::Depth(DepthImage::new(scene, range, view, first, pool)?)
+                Integrator::Depth(DepthImage::new(scene, range, first, pool)?)
             }
         })
     }

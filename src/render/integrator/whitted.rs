@@ -10,143 +10,50 @@
 
 mod batch;
 
-use crate::num::Norm;
-pub use batch::PacketScratch;
-
 use glam::DVec3;
 
-use super::gloss;
 use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::limits::MAX_GLOSS_SAMPLES;
 use crate::ir::{Color, Material, ShadingModel};
 use crate::opt::{Effects, Prepared};
+use crate::render::context::Ctx;
+use crate::render::film::CUT_WEIGHT_UNIT;
 use crate::render::offset::SpawnPoint;
+use crate::render::path::Path;
 use crate::render::record::{Branch, NoRecord, Recorder};
-use crate::render::shading::{self, Ctx, Surface};
+use crate::render::sampler::Rng;
+use crate::render::scatter::{Lobe, Scattering, reflect};
+use crate::render::shading::{self, Surface};
 use crate::render::{bump, texture};
 
-/// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
-#[derive(Clone, Copy, Debug)]
-pub struct Media {
-    etas: [f64; 8],
-    len: usize,
-}
-
-impl PartialEq for Media {
-    fn eq(&self, o: &Media) -> bool {
-        self.etas[..self.len] == o.etas[..o.len]
-    }
-}
-
-impl Default for Media {
-    fn default() -> Media {
-        Media::OUTSIDE
-    }
-}
-
-impl Media {
-    /// Not inside anything (index 1).
-    pub const OUTSIDE: Media = Media {
-        etas: [1.0; 8],
-        len: 0,
-    };
-
-    /// The index of the innermost medium.
-    pub fn current(&self) -> f64 {
-        if self.len == 0 {
-            1.0
-        } else {
-            self.etas[self.len - 1]
-        }
-    }
-
-    /// After entering a medium of index `eta` (a full stack forgets its outermost entry).
-    pub fn enter(mut self, eta: f64) -> Media {
-        if self.len == self.etas.len() {
-            self.etas.copy_within(1.., 0);
-            self.len -= 1;
-        }
-        self.etas[self.len] = eta;
-        self.len += 1;
-        self
-    }
-
-    /// After leaving a medium of index `eta`: its innermost entry is removed (unchanged when the
-    /// ray was not known to be inside it, e.g. a camera placed inside glass).
-    pub fn leave(mut self, eta: f64) -> Media {
-        if let Some(i) = self.etas[..self.len].iter().rposition(|e| *e == eta) {
-            self.etas.copy_within(i + 1..self.len, i);
-            self.len -= 1;
-        }
-        self
-    }
-}
-
-/// Snell's law: the refracted direction of unit `d` at a surface with unit normal `n` facing the
-/// incoming ray, going from index `n1` into `n2`; `None` on total internal reflection.
-pub fn refract(d: DVec3, n: DVec3, n1: f64, n2: f64) -> Option<DVec3> {
-    let r = n1 / n2;
-    let cos_i = (-d.dot(n)).min(1.0);
-    let k = 1.0 - r * r * (1.0 - cos_i * cos_i);
-    if k < 0.0 {
-        return None;
-    }
-    Some((r * d + (r * cos_i - k.sqrt()) * n).unit())
-}
-
-/// The mirror direction of unit `d` about unit `n`.
-pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
-    d - 2.0 * d.dot(n) * n
-}
-
-/// Where a path is: how often it has bounced, which media it is inside and how much it still
-/// weighs in its pixel.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Path {
-    /// Bounces so far (0 for a camera ray).
-    pub depth: u32,
-    /// The media the ray travels in.
-    pub media: Media,
-    /// The product of the reflect/refract coefficients along the path (1 for a camera ray):
-    /// what the insignificance cut-off compares.
-    pub weight: f64,
-}
-
-impl Path {
-    /// A camera ray's path: no bounce yet, outside everything, full weight.
-    pub const CAMERA: Path = Path {
-        depth: 0,
-        media: Media::OUTSIDE,
-        weight: 1.0,
-    };
-
-    fn bounce(self, media: Media, k: f64) -> Path {
-        Path {
-            depth: self.depth + 1,
-            media,
-            weight: self.weight * k,
-        }
-    }
-}
-
-/// A secondary ray about to be cast: where from, its ideal (mirror or refraction) direction, the
-/// normal of the side it leaves through, and which of the two it is.
-pub struct Outgoing {
-    /// Origin (already offset off the surface).
-    pub from: DVec3,
-    /// The ideal direction (unit).
-    pub dir: DVec3,
-    /// Unit normal of the side the ray leaves through.
-    pub side: DVec3,
-    /// A refracted (not reflected) ray.
-    pub refracted: bool,
+/// A secondary ray about to be cast: where from, its lobe and the lobe's ideal direction, and
+/// the normal facing the ray it continues.
+struct Outgoing<'l> {
+    /// Origin (already offset off the surface, towards the ideal direction).
+    from: DVec3,
+    /// The lobe's ideal (mirror or refraction) direction (unit).
+    axis: DVec3,
+    /// The unit normal facing the incoming ray.
+    facing: DVec3,
+    /// The lobe the ray is drawn from.
+    lobe: &'l Lobe,
     /// The time of the ray it continues (motion blur).
-    pub time: f64,
+    time: f64,
 }
 
-/// Fixed-point units per unit of weight in [`crate::render::Stats::cut_weight`] (integers keep
-/// the sum the same for any thread count).
-pub const CUT_WEIGHT_UNIT: f64 = (1u64 << 32) as f64;
+/// The random-number stream of a glossy lobe at bounce `depth`; `refracted` tells the two lobes
+/// of a surface apart. Disjoint from the lens (0) and light streams' high bits.
+fn lobe_stream(depth: u32, refracted: bool) -> u32 {
+    0x4000_0000 ^ (depth << 20) ^ u32::from(refracted)
+}
+
+/// The `k`-th direction of the lobe of `out` at bounce `depth`, for a camera sample's `rng`: one
+/// scrambled Sobol' sequence per camera sample and decision ([`Rng::point`]), so the bytes are a
+/// pure function of (pixel, sample, seed).
+fn lobe_direction(rng: &Rng, out: &Outgoing<'_>, depth: u32, k: u32) -> DVec3 {
+    let u = rng.point(lobe_stream(depth, out.lobe.transmits()), k);
+    out.lobe.direction_about(out.axis, out.facing, u)
+}
 
 /// The shaded-image integrator: Whitted recursion over the prepared scene.
 pub struct Whitted<'a> {
@@ -235,30 +142,29 @@ impl<'a> Whitted<'a> {
         if path.depth >= self.max_depth {
             return c;
         }
-        let mut kr = self.reflectance(mat);
-        let kt = if self.effects.refraction {
-            mat.refract
-        } else {
-            0.0
-        };
+        let scattering = Scattering::of(mat, &self.effects);
+        let mut kr = scattering.reflect;
+        let kt = scattering.refract;
         let media = path.media;
         if kt > 0.0 {
-            let (n1, after) = if inside {
-                (mat.eta, media.leave(mat.eta))
-            } else {
-                (media.current(), media.enter(mat.eta))
-            };
-            match refract(ray.dir, facing, n1, after.current()) {
-                Some(dir) if self.significant(path.bounce(after, kt), ctx) => {
+            let (n1, after) = media.cross(scattering.eta, inside);
+            let lobe = scattering.refraction(n1, after.current());
+            match lobe.axis(ray.dir, facing) {
+                Some(axis) if self.significant(path.bounce(after, kt), ctx) => {
                     let out = Outgoing {
-                        from: spawn.origin_towards(dir),
-                        dir,
-                        side: -facing,
-                        refracted: true,
+                        from: spawn.origin_towards(axis),
+                        axis,
+                        facing,
+                        lobe: &lobe,
                         time: ray.time,
                     };
                     if R::ON {
-                        rec.branch(Branch::Refracted, kt, self.lobe_rays(mat, path), false);
+                        rec.branch(
+                            Branch::of(&lobe),
+                            kt,
+                            self.lobe_rays(&lobe, mat, path),
+                            false,
+                        );
                     }
                     c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx, rec);
                 }
@@ -277,16 +183,22 @@ impl<'a> Whitted<'a> {
         }
         if kr > 0.0 {
             if self.significant(path.bounce(media, kr), ctx) {
-                let dir = reflect(ray.dir, facing);
+                let lobe = scattering.mirror(kr);
+                let axis = reflect(ray.dir, facing);
                 let out = Outgoing {
-                    from: spawn.origin_towards(dir),
-                    dir,
-                    side: facing,
-                    refracted: false,
+                    from: spawn.origin_towards(axis),
+                    axis,
+                    facing,
+                    lobe: &lobe,
                     time: ray.time,
                 };
                 if R::ON {
-                    rec.branch(Branch::Reflected, kr, self.lobe_rays(mat, path), false);
+                    rec.branch(
+                        Branch::of(&lobe),
+                        kr,
+                        self.lobe_rays(&lobe, mat, path),
+                        false,
+                    );
                 }
                 c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx, rec);
             } else if R::ON {
@@ -299,11 +211,7 @@ impl<'a> Whitted<'a> {
     /// How much of the light `mat` reflects, when the scene reflects at all.
     #[inline(always)]
     fn reflectance(&self, mat: &Material) -> f64 {
-        if self.effects.reflection {
-            mat.reflect
-        } else {
-            0.0
-        }
+        Scattering::of(mat, &self.effects).reflect
     }
 
     /// The surface point `hit` of `ray` to shade, whether the ray arrives from inside, and the
@@ -333,22 +241,22 @@ impl<'a> Whitted<'a> {
         (s, inside, facing)
     }
 
-    /// The light arriving along a secondary ray `out` for a path now in state `next`: one ray,
-    /// or the mean of a glossy material's lobe around it ([`gloss`]), `gloss_samples` rays at a
+    /// The light arriving along a secondary ray `out` for a path now in state `next`: one ray
+    /// for a delta lobe, or the mean over a glossy lobe's directions, `gloss_samples` rays at a
     /// camera ray's hit and one after that (so rays per pixel grow linearly with depth, not
-    /// exponentially).
+    /// exponentially). The lobe's constant weight is applied by the caller, outside the mean.
     fn bounce<R: Recorder>(
         &self,
-        out: &Outgoing,
+        out: &Outgoing<'_>,
         mat: &Material,
         next: Path,
         ctx: &mut Ctx,
         rec: &mut R,
     ) -> Color {
-        if !self.effects.glossy || mat.gloss <= 0.0 {
+        if out.lobe.is_delta() {
             ctx.stats.secondary_rays += 1;
             return self.trace_with(
-                &Ray::new(out.from, out.dir).at_time(out.time),
+                &Ray::new(out.from, out.axis).at_time(out.time),
                 next,
                 ctx,
                 rec,
@@ -362,17 +270,17 @@ impl<'a> Whitted<'a> {
         };
         let mut sum = Color::ZERO;
         for k in 0..n {
-            let d = gloss::sample(&ctx.rng, out, mat.gloss, depth, k);
+            let d = lobe_direction(&ctx.rng, out, depth, k);
             ctx.stats.secondary_rays += 1;
             sum += self.trace_with(&Ray::new(out.from, d).at_time(out.time), next, ctx, rec);
         }
         sum / f64::from(n)
     }
 
-    /// How many rays [`Whitted::bounce`] traces for a secondary ray leaving a hit of `path`
-    /// (for the recorder; `bounce` decides the same way).
-    fn lobe_rays(&self, mat: &Material, path: Path) -> u32 {
-        if !self.effects.glossy || mat.gloss <= 0.0 {
+    /// How many rays [`Whitted::bounce`] traces for `lobe` leaving a hit of `path` (for the
+    /// recorder; `bounce` decides the same way).
+    fn lobe_rays(&self, lobe: &Lobe, mat: &Material, path: Path) -> u32 {
+        if lobe.is_delta() {
             1
         } else if path.depth == 0 {
             mat.gloss_samples.clamp(1, MAX_GLOSS_SAMPLES)
@@ -429,50 +337,5 @@ impl<'a> Whitted<'a> {
             self.scene.world().frame(&hit),
             facing,
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn head_on_refraction_is_undeviated() {
-        let d = DVec3::new(0.0, 0.0, -1.0);
-        let t = refract(d, DVec3::Z, 1.0, 1.5).unwrap();
-        assert!((t - d).norm() < 1e-15);
-    }
-
-    #[test]
-    fn snell_holds_and_total_internal_reflection_past_the_critical_angle() {
-        let n = DVec3::Y;
-        for deg in [10.0f64, 30.0, 41.0, 42.0, 60.0, 89.0] {
-            let a = deg.to_radians();
-            let d = DVec3::new(a.sin(), -a.cos(), 0.0);
-            // Into glass: always refracts, sin θt = sin θi / 1.5.
-            let t = refract(d, n, 1.0, 1.5).unwrap();
-            assert!((t.x - a.sin() / 1.5).abs() < 1e-12);
-            // Out of glass: the critical angle is asin(1/1.5) ≈ 41.81°.
-            let out = refract(d, n, 1.5, 1.0);
-            assert_eq!(out.is_none(), deg > 41.82, "{deg}");
-            if let Some(t) = out {
-                assert!((t.x - a.sin() * 1.5).abs() < 1e-12);
-            }
-        }
-    }
-
-    #[test]
-    fn media_stack_tracks_nesting() {
-        let m = Media::OUTSIDE.enter(1.5).enter(1.33);
-        assert_eq!(m.current(), 1.33);
-        assert_eq!(m.leave(1.33).current(), 1.5);
-        assert_eq!(m.leave(1.5).current(), 1.33);
-        assert_eq!(m.leave(1.5).leave(1.33), Media::OUTSIDE);
-        assert_eq!(Media::OUTSIDE.leave(2.0), Media::OUTSIDE);
-        let mut deep = Media::OUTSIDE;
-        for i in 0..20 {
-            deep = deep.enter(f64::from(i));
-        }
-        assert_eq!(deep.current(), 19.0);
     }
 }

@@ -7,11 +7,12 @@
 //! Fresnel reflection is not counted: the shadow is the glass's tinted, lighter silhouette, not a
 //! caustic.
 
-use super::{LightSample, Surface};
+use super::surface::{LightSample, Surface};
 use crate::ir::Color;
 use crate::opt::Prepared;
 use crate::render::film::Stats;
 use crate::render::offset::SpawnPoint;
+use crate::render::scatter::straight_through;
 
 /// Most surfaces one shadow ray passes through before it counts as blocked (a stack of glass
 /// panes deeper than this passes next to nothing anyway).
@@ -35,11 +36,8 @@ pub fn transmission(
         let Some(hit) = scene.world().intersect(&ray, 0.0, left) else {
             return Some(pass);
         };
-        let m = scene.material(hit.material);
-        if m.refract <= 0.0 {
-            return None;
-        }
-        pass *= m.refract * m.color;
+        // The glass passes what its scattering lets through along a straight line.
+        pass *= straight_through(scene.material(hit.material))?;
         if pass.max_element() <= 0.0 {
             return None;
         }

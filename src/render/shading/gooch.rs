@@ -6,9 +6,10 @@
 
 use glam::DVec3;
 
-use super::{Ctx, Surface, highlight, light_sample, occluder, transmission};
+use super::{Surface, highlight, light_sample, occluder, transmission};
 use crate::ir::{Color, GoochParams};
 use crate::opt::Prepared;
+use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// The Gooch colour of a surface point; `rec` hears each light's tone and highlight.

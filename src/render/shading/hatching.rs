@@ -23,10 +23,11 @@
 use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
-use super::{Ctx, Surface, light_sample, occluder, transmission};
+use super::{Surface, light_sample, occluder, transmission};
 use crate::geometry::Ray;
 use crate::ir::{Color, Projection};
 use crate::opt::Prepared;
+use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// Distance between neighbouring strokes of one family on screen, in pixels.

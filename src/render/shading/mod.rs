@@ -1,186 +1,21 @@
-//! Shading models: what a surface point looks like under the lights, before reflection and
-//! refraction are added by the Whitted integrator.
+//! Shading models: what a surface point looks like under the lights, before the scattering
+//! layer's reflection and refraction are added by the Whitted integrator.
 
 pub mod glass_shadow;
 pub mod gooch;
 pub mod hatching;
 pub mod phong;
 pub mod phong_packet;
+mod surface;
 
-use crate::num::Norm;
-use glam::DVec3;
+pub use surface::{LightSample, Surface, highlight, light_sample, shadow_ray, visible};
 
-use super::film::Stats;
-use super::offset::SpawnPoint;
-use super::sampler::Rng;
-use crate::geometry::{Ray, SurfaceHit};
-use crate::ir::{Color, LightKind, Material};
-use crate::opt::{Prepared, PreparedLight};
-
-/// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
-/// (`phong_packet`, `integrator::whitted`'s packets).
-pub const BATCH: usize = crate::geometry::lanes::WIDTH;
-
-/// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
-pub struct Ctx {
-    /// Random numbers of the current camera sample.
-    pub rng: Rng,
-    /// Counters of the current tile.
-    pub stats: Stats,
-    /// Which cells of each area light the current camera sample takes.
-    pub lights: LightShare,
-    /// Reused buffers of the packets the Whitted integrator traces.
-    pub packets: crate::render::integrator::whitted::PacketScratch,
-}
-
-impl Ctx {
-    /// The state a tile starts with: no counts, every light cell, empty buffers.
-    pub fn new() -> Ctx {
-        Ctx {
-            rng: Rng::new(0, 0, 0, 0),
-            stats: Stats::default(),
-            lights: LightShare::ALL,
-            packets: Default::default(),
-        }
-    }
-}
-
-impl Default for Ctx {
-    fn default() -> Ctx {
-        Ctx::new()
-    }
-}
-
-/// Which cells of an area light one camera sample takes: all of them, or (with
-/// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
-/// of its pixel (or of its refinement block), this sample being number `slot` among them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LightShare {
-    /// The sample's position among the samples sharing the cells.
-    pub slot: u32,
-    /// How many samples share the cells; 0: every sample takes every cell.
-    pub size: u32,
-}
-
-impl LightShare {
-    /// Every sample takes every cell (the course's rule).
-    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
-
-    /// The first cell and the number of cells of a light with `cells` cells this sample takes:
-    /// cells `(first + j) mod cells` for `j < count`, each weighing `1/count`. Dealing
-    /// ⌈cells/size⌉ consecutive cells to each sample covers every cell once per `size` samples
-    /// when `size` divides `cells` (4×4 cells over 2×2 or 4×4 pixel samples).
-    pub fn cells(self, cells: u32) -> (u32, u32) {
-        if self.size == 0 || cells <= 1 {
-            return (0, cells);
-        }
-        let count = cells.div_ceil(self.size);
-        ((self.slot % self.size) * count % cells, count)
-    }
-}
-
-/// A surface point to shade.
-#[derive(Clone, Copy)]
-pub struct Surface<'m> {
-    /// The hit point.
-    pub p: DVec3,
-    /// Where shadow rays leave the surface (the point with its error bound).
-    pub spawn: SpawnPoint,
-    /// Unit normal facing the incoming ray (flipped for hits from inside).
-    pub n: DVec3,
-    /// Unit vector towards the viewer (−ray direction).
-    pub v: DVec3,
-    /// Base colour (material or texture).
-    pub color: Color,
-    /// Surface coefficients.
-    pub mat: &'m Material,
-    /// Surface coordinates (for hatching).
-    pub uv: glam::DVec2,
-    /// Recursion depth of the ray that hit it (decorrelates light samples between bounces).
-    pub depth: u32,
-    /// The shutter fraction of the ray that hit it (shadow rays see moving objects then).
-    pub time: f64,
-}
-
-/// One sample of one light as seen from a surface point.
-#[derive(Clone, Copy)]
-pub struct LightSample {
-    /// Unit vector from the surface to the sample.
-    pub l: DVec3,
-    /// Distance to the sample.
-    pub dist: f64,
-    /// The sample's position (shadow rays aim at it).
-    pub position: DVec3,
-    /// The light's colour times the sample's share (1/samples).
-    pub color: Color,
-}
-
-/// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
-/// lights), weighing `1/count` of the light.
-pub fn light_sample(
-    light: &PreparedLight,
-    index: usize,
-    k: u32,
-    count: u32,
-    s: &Surface<'_>,
-    rng: &Rng,
-) -> LightSample {
-    let pos = match light.kind {
-        LightKind::Point { position } => position,
-        LightKind::Area {
-            corner,
-            u,
-            v,
-            samples,
-        } => {
-            let (nu, nv) = (samples[0].max(1), samples[1].max(1));
-            let stream = (s.depth.wrapping_mul(0x1000_0000))
-                ^ ((index as u32).wrapping_mul(0x0010_0000))
-                ^ k;
-            let (ju, jv) = rng.get2(stream.wrapping_add(1));
-            let a = (f64::from(k % nu) + ju) / f64::from(nu);
-            let b = (f64::from(k / nu) + jv) / f64::from(nv);
-            corner + a * u + b * v
-        }
-    };
-    let d = pos - s.p;
-    let dist = d.norm();
-    LightSample {
-        l: if dist > 0.0 { d / dist } else { s.n },
-        dist,
-        position: pos,
-        color: light.color / f64::from(count),
-    }
-}
-
-/// True when nothing blocks the way from the surface to the light sample (always true without
-/// shadows). The shadow ray leaves the surface's error box towards the light and is aimed at the
-/// sample from there ([`SpawnPoint::ray_to`]), so a light lying on a surface is not shadowed by it.
-pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
-    match shadow_ray(scene, s, ls, stats) {
-        Some((ray, t_max)) => !scene.world().occluded(&ray, 0.0, t_max),
-        None => true,
-    }
-}
-
-/// The shadow ray [`visible`] casts and where it stops, counted; `None` when it casts none
-/// (no shadows, or the sample is the ray's origin itself), which leaves the light visible.
-/// Always inlined: called out of line, its result went through memory, where the batch's
-/// wider reloads of the scalar stores stalled on store forwarding (~15% of `shade_batch`).
-#[inline(always)]
-pub fn shadow_ray(
-    scene: &Prepared,
-    s: &Surface<'_>,
-    ls: &LightSample,
-    stats: &mut Stats,
-) -> Option<(Ray, f64)> {
-    if !scene.effects().shadows {
-        return None;
-    }
-    stats.shadow_rays += 1;
-    let (ray, t_max) = s.spawn.ray_to(ls.position)?;
-    Some((ray.at_time(s.time), t_max))
-}
+use crate::geometry::SurfaceHit;
+use crate::ir::Color;
+use crate::opt::Prepared;
+use crate::render::film::Stats;
+use crate::render::offset::SpawnPoint;
+use crate::render::scatter::straight_through;
 
 /// The first opaque surface between `s` and light sample `ls` (for explanations: the shadow
 /// test itself only asks whether there is one). With glass shadows, glass on the way is
@@ -189,7 +24,9 @@ pub fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<S
     let (mut ray, mut left) = s.spawn.ray_to(ls.position)?;
     for _ in 0..glass_shadow::MAX_CROSSINGS {
         let hit = scene.world().intersect(&ray.at_time(s.time), 0.0, left)?;
-        if !scene.effects().glass_shadows || scene.material(hit.material).refract <= 0.0 {
+        if !scene.effects().glass_shadows
+            || straight_through(scene.material(hit.material)).is_none()
+        {
             return Some(hit);
         }
         (ray, left) = SpawnPoint::of(&hit).ray_to(ls.position)?;
@@ -210,19 +47,5 @@ pub fn transmission(
         glass_shadow::transmission(scene, s, ls, stats)
     } else {
         visible(scene, s, ls, stats).then_some(Color::ONE)
-    }
-}
-
-/// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.
-pub fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
-    if s.mat.ks == 0.0 {
-        return 0.0;
-    }
-    let r = 2.0 * n_dot_l * s.n - l;
-    let rv = r.dot(s.v);
-    if rv > 0.0 {
-        s.mat.ks * libm::pow(rv, s.mat.n)
-    } else {
-        0.0
     }
 }

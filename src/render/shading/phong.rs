@@ -3,9 +3,10 @@
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
 //! is `ka·C` once, without light colour.
 
-use super::{Ctx, LightSample, Surface, highlight, light_sample, occluder, transmission};
+use super::{LightSample, Surface, highlight, light_sample, occluder, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
+use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// The Phong colour of a surface point; `rec` hears each light's terms.

@@ -9,12 +9,13 @@
 
 use glam::DVec3;
 
-use super::{Ctx, Surface};
+use super::Surface;
 use crate::geometry::lanes::{self, Lanes, Mask, V3, WIDTH};
 use crate::geometry::quads;
 use crate::geometry::sphere_cull::{Among, Bundle};
 use crate::ir::{AmbientConvention, LightKind};
 use crate::opt::Prepared;
+use crate::render::context::Ctx;
 use crate::render::offset::SpawnLanes;
 
 /// The surface points of a packet: [`Surface`] lane by lane, with the Phong coefficients of

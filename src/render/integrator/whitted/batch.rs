@@ -14,7 +14,7 @@
 
 use glam::DVec3;
 
-use super::{Media, Path, Whitted};
+use super::Whitted;
 use crate::geometry::Ray;
 use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
 use crate::geometry::quads;
@@ -23,10 +23,13 @@ use crate::geometry::sphere_cull::Bundle;
 use crate::geometry::sphere_packet::{NO_SPHERE, PacketHits};
 use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
+use crate::render::context::{BATCH, Ctx};
 use crate::render::offset::SpawnLanes;
+use crate::render::path::{Media, Path};
 use crate::render::record::NoRecord;
+use crate::render::scatter::{Scattering, reflect_lanes};
+use crate::render::shading::Surface;
 use crate::render::shading::phong_packet::{self, SurfaceLanes};
-use crate::render::shading::{BATCH, Ctx, Surface};
 
 /// Where the rays of a packet are: they have bounced equally often in the same media (camera
 /// rays, then the mirror rays of those), and each weighs its own share of its pixel.
@@ -55,34 +58,10 @@ impl PacketPath {
     }
 }
 
-/// Reused buffers for the surfaces of packets being shaded, one per recursion depth in use
-/// (part of a tile's [`Ctx`]).
-#[derive(Default)]
-pub struct PacketScratch {
-    // Boxed so that taking and giving back moves a pointer, not the 3.8 kB buffer.
-    #[allow(clippy::vec_box)]
-    free: Vec<Box<Shading>>,
-}
-
-impl PacketScratch {
-    /// A buffer (its lanes hold whatever the last packet left).
-    fn take(&mut self) -> Box<Shading> {
-        self.free.pop().unwrap_or_else(|| {
-            Box::new(Shading {
-                s: SurfaceLanes::default(),
-                facing: V3::ZERO,
-                kr: [0.0; BATCH],
-            })
-        })
-    }
-
-    /// Returns a buffer for the next packet.
-    fn give(&mut self, b: Box<Shading>) {
-        self.free.push(b);
-    }
-}
-
-/// A packet's surfaces being shaded, with what its reflected rays need.
+/// A packet's surfaces being shaded, with what its reflected rays need. Reused from packet to
+/// packet through the tile's [`crate::render::context::Scratch`], one per recursion depth in
+/// use: built afresh it was a 3.8 kB `memset` (Rust initialises it), and moved out of a call a
+/// `memcpy`.
 struct Shading {
     /// The points, as Phong reads them.
     s: SurfaceLanes,
@@ -90,6 +69,16 @@ struct Shading {
     facing: V3,
     /// The mirror weights.
     kr: Lanes,
+}
+
+impl Default for Shading {
+    fn default() -> Shading {
+        Shading {
+            s: SurfaceLanes::default(),
+            facing: V3::ZERO,
+            kr: [0.0; BATCH],
+        }
+    }
 }
 
 impl Whitted<'_> {
@@ -108,7 +97,7 @@ impl Whitted<'_> {
     /// [`Whitted::trace`]'s own path from their hit on.
     fn batched(&self, mat: &Material) -> bool {
         mat.shading.unwrap_or(self.shading) == ShadingModel::Phong
-            && !(self.effects.refraction && mat.refract > 0.0)
+            && !Scattering::of(mat, &self.effects).transmits()
     }
 
     /// Whether a surface of `mat` needs its whole hit record (a texture or a bump map to
@@ -181,14 +170,13 @@ impl Whitted<'_> {
         } else {
             PacketHits::none(f64::INFINITY)
         };
-        // The surfaces go into a reused buffer: built afresh they were a 3.8 kB `memset`
-        // (Rust initialises them), and moved out of a call a `memcpy`.
-        let mut sh = ctx.packets.take();
+        // The surfaces go into a reused buffer (see [`Shading`]).
+        let mut sh: Box<Shading> = ctx.scratch.take();
         let mut out = V3::splat(self.background);
         if world.balls_only() {
             let hit = live & lanes::mask_of(|i| first.sphere[i] != NO_SPHERE);
             if hit == 0 {
-                ctx.packets.give(sh);
+                ctx.scratch.give(sh);
                 return out;
             }
             self.ball_surfaces(rays, time, &first, hit, &mut sh);
@@ -197,7 +185,7 @@ impl Whitted<'_> {
             self.surfaces(rays, time, &first, live, path, ctx, &mut sh, &mut out);
         }
         let out = self.finish(rays, time, path, &sh, out, ctx);
-        ctx.packets.give(sh);
+        ctx.scratch.give(sh);
         out
     }
 
@@ -414,11 +402,8 @@ impl Whitted<'_> {
             return;
         }
         ctx.stats.secondary_rays += u64::from(bounce.count_ones());
-        // `reflect(d, n) = d − (2·(d·n))·n`, leaving from the spawn point along it.
-        let d_n = rays.dir.dot(&sh.facing);
-        let dir = rays
-            .dir
-            .sub(&sh.facing.scale(&lanes::map(|i| 2.0 * d_n[i])));
+        // The mirror lobe's ideal direction, leaving from the spawn point along it.
+        let dir = reflect_lanes(&rays.dir, &sh.facing);
         let next = RayLanes {
             origin: sh.s.spawn.origin_towards(&dir),
             dir,

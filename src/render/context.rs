@@ -1,0 +1,119 @@
+//! The per-tile state threaded through a render: the current camera sample's random numbers,
+//! the tile's counters, the light cells the sample takes, and buffers an integrator reuses from
+//! packet to packet. At the bottom of the render room: shading and the integrators read it,
+//! it reads neither.
+
+use std::any::Any;
+
+use super::film::Stats;
+use super::sampler::Rng;
+
+/// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
+/// (the shading models' and the Whitted integrator's packets).
+pub const BATCH: usize = crate::geometry::lanes::WIDTH;
+
+/// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
+pub struct Ctx {
+    /// Random numbers of the current camera sample.
+    pub rng: Rng,
+    /// Counters of the current tile.
+    pub stats: Stats,
+    /// Which cells of each area light the current camera sample takes.
+    pub lights: LightShare,
+    /// Reused buffers of the packets an integrator traces.
+    pub scratch: Scratch,
+}
+
+impl Ctx {
+    /// The state a tile starts with: no counts, every light cell, empty buffers.
+    pub fn new() -> Ctx {
+        Ctx {
+            rng: Rng::new(0, 0, 0, 0),
+            stats: Stats::default(),
+            lights: LightShare::ALL,
+            scratch: Scratch::default(),
+        }
+    }
+}
+
+impl Default for Ctx {
+    fn default() -> Ctx {
+        Ctx::new()
+    }
+}
+
+/// Buffers reused from packet to packet (one per recursion depth in use), typed by the
+/// integrator that fills them: the context does not know the integrators' types, so a tile's
+/// buffers are kept as `Any` and a buffer of another type is never handed out.
+#[derive(Default)]
+pub struct Scratch {
+    // Boxed so that taking and giving back moves a pointer, not a kilobytes-large buffer.
+    free: Vec<Box<dyn Any + Send>>,
+}
+
+impl Scratch {
+    /// A buffer of type `T` (holding whatever the last packet left), or a new one.
+    pub fn take<T: Default + Send + 'static>(&mut self) -> Box<T> {
+        match self.free.pop().map(|b| b.downcast::<T>()) {
+            Some(Ok(b)) => b,
+            Some(Err(other)) => {
+                self.free.push(other);
+                Box::default()
+            }
+            None => Box::default(),
+        }
+    }
+
+    /// Gives a buffer back for the next packet.
+    pub fn give<T: Send + 'static>(&mut self, b: Box<T>) {
+        self.free.push(b);
+    }
+}
+
+/// Which cells of an area light one camera sample takes: all of them, or (with
+/// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
+/// of its pixel (or of its refinement block), this sample being number `slot` among them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LightShare {
+    /// The sample's position among the samples sharing the cells.
+    pub slot: u32,
+    /// How many samples share the cells; 0: every sample takes every cell.
+    pub size: u32,
+}
+
+impl LightShare {
+    /// Every sample takes every cell (the course's rule).
+    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
+
+    /// The first cell and the number of cells of a light with `cells` cells this sample takes:
+    /// cells `(first + j) mod cells` for `j < count`, each weighing `1/count`. Dealing
+    /// ⌈cells/size⌉ consecutive cells to each sample covers every cell once per `size` samples
+    /// when `size` divides `cells` (4×4 cells over 2×2 or 4×4 pixel samples).
+    pub fn cells(self, cells: u32) -> (u32, u32) {
+        if self.size == 0 || cells <= 1 {
+            return (0, cells);
+        }
+        let count = cells.div_ceil(self.size);
+        ((self.slot % self.size) * count % cells, count)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scratch_hands_back_buffers_of_the_asked_type_only() {
+        let mut s = Scratch::default();
+        let mut a: Box<[u8; 4]> = s.take();
+        a[0] = 7;
+        s.give(a);
+        let b: Box<[u8; 4]> = s.take();
+        assert_eq!(b[0], 7, "the buffer given back is reused");
+        s.give(b);
+        let c: Box<u64> = s.take();
+        assert_eq!(*c, 0, "a buffer of another type is never handed out");
+        let d: Box<[u8; 4]> = s.take();
+        assert_eq!(d[0], 7, "and the other buffer is kept");
+    }
+}
