@@ -14,8 +14,8 @@ use std::time::{Duration, Instant};
 
 use glam::DVec3;
 use rayon::prelude::*;
-use rtc::geometry::bvh_packet::PACKET;
-use rtc::geometry::sphere_cull::Among;
+use rtc::geometry::bvh::packet::PACKET;
+use rtc::geometry::lanes::cull::Among;
 use rtc::geometry::world::SphereHit;
 use rtc::geometry::{Ray, SurfaceHit, World};
 use rtc::ir::{Camera, Material, Object, Projection, RenderSettings, Scene, Shape};

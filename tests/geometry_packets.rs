@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 use geometry_support::{Rng, mirrored_transform, object, world};
 use glam::{DAffine3, DVec3};
-use rtc::geometry::sphere_cull::Bundle;
+use rtc::geometry::lanes::cull::Bundle;
 use rtc::geometry::world::SphereHit;
 use rtc::geometry::{Ray, SurfaceHit, World};
 use rtc::ir::Shape;

@@ -136,7 +136,7 @@ impl CourseMaterial {
 }
 
 /// Object-to-world transform of a textured course sphere centred at the origin: first spin by
-/// `angle_deg` about +Y (the texture's north pole in object space, see `geometry::sphere::uv`),
+/// `angle_deg` about +Y (the texture's north pole in object space, see `geometry::ray::equirectangular_uv`),
 /// then rotate +Y onto `pole`, then move to `position`. The renderer helper may flip the spin's
 /// sign here to match the reference renders; nothing else depends on it.
 pub fn sphere_orientation(position: DVec3, pole: DVec3, angle_deg: f64) -> DAffine3 {

@@ -9,7 +9,7 @@
 
 use glam::{DAffine3, DVec3};
 
-use crate::geometry::{Aabb, csg, shape};
+use crate::geometry::{Aabb, shapes, shapes::csg};
 use crate::ir::{CsgOp, Shape};
 use crate::source::Span;
 
@@ -43,7 +43,7 @@ fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Aabb> {
             return Ok(mesh_bounds(path, *smooth, span)?.transformed(&t));
         }
         ObjShape::Prim(s) => {
-            let local = shape::bounds(s).filter(Aabb::is_finite);
+            let local = shapes::bounds(s).filter(Aabb::is_finite);
             return local
                 .map(|b| b.transformed(&t))
                 .ok_or_else(|| unbounded(span));

@@ -38,7 +38,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
 /// makes it a value; a flaw is reported on the span of the parameter it blames (from `spans`),
 /// else on the call.
 fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
-    if let Err(flaw) = crate::geometry::shape::check(&shape) {
+    if let Err(flaw) = crate::geometry::shapes::check(&shape) {
         let span = spans
             .iter()
             .find(|(name, _)| *name == flaw.param)
@@ -379,7 +379,7 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
-    if let Err(flaw) = crate::geometry::shape::csg_operands(children.len()) {
+    if let Err(flaw) = crate::geometry::shapes::csg_operands(children.len()) {
         return Err(flaw.diagnostic(sp).into());
     }
     for c in &children {
@@ -430,7 +430,7 @@ pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {
         // A mesh file's closedness is checked when the preparation stage loads it.
-        ObjShape::Prim(s) => !crate::geometry::shape::encloses_volume(s, &|_, _| true),
+        ObjShape::Prim(s) => !crate::geometry::shapes::encloses_volume(s, &|_, _| true),
         ObjShape::Group(ch) => {
             for c in ch.iter() {
                 require_closed(it, c, span)?;

@@ -2,7 +2,7 @@
 
 use glam::{DAffine3, DVec3};
 
-use super::Ray;
+use crate::geometry::ray::Ray;
 
 /// An axis-aligned box; `EMPTY` has min > max.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -4,7 +4,7 @@
 use crate::num::Norm;
 use glam::{DAffine3, DVec3};
 
-use super::Aabb;
+use crate::geometry::aabb::Aabb;
 use crate::ir::Motion;
 
 /// Times sampled across the shutter; the padding below covers the path between them.

@@ -3,7 +3,7 @@
 use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
-use super::sphere;
+use std::f64::consts::PI;
 
 /// A ray `origin + t·dir` at one instant. `dir` is unit length in world space; in object space
 /// it may not be.
@@ -79,8 +79,10 @@ impl MappingFrame {
     /// north pole): a sphere's own uv, else the direction from the origin.
     pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
         match *self {
-            MappingFrame::Sphere { center, radius } => sphere::uv(((p - center) / radius).unit()),
-            MappingFrame::Object => sphere::uv(p.try_unit().unwrap_or(DVec3::Y)),
+            MappingFrame::Sphere { center, radius } => {
+                equirectangular_uv(((p - center) / radius).unit())
+            }
+            MappingFrame::Object => equirectangular_uv(p.try_unit().unwrap_or(DVec3::Y)),
         }
     }
 }
@@ -107,4 +109,15 @@ pub(crate) fn nearest(
         }
     }
     best
+}
+
+/// Equirectangular coordinates of a unit direction from the centre: +Y is the north pole (v = 0),
+/// u = φ/2π with φ measured from +X towards −Z (counter-clockwise seen from above).
+pub fn equirectangular_uv(n: DVec3) -> DVec2 {
+    let theta = libm::acos(n.y.clamp(-1.0, 1.0));
+    let mut phi = libm::atan2(-n.z, n.x);
+    if phi < 0.0 {
+        phi += 2.0 * PI;
+    }
+    DVec2::new(phi / (2.0 * PI), theta / PI)
 }

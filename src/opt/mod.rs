@@ -18,7 +18,7 @@ pub mod validate;
 use std::time::Instant;
 
 use crate::diag::Diagnostics;
-use crate::geometry::balls::WorldParts;
+use crate::geometry::world::balls::WorldParts;
 use crate::geometry::{World, world::instanced_triangles};
 use crate::ir::{LightKind, Material, MaterialId, Object, Scene};
 

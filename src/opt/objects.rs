@@ -12,10 +12,10 @@ use std::time::Duration;
 
 use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::geometry::balls::Ball;
 use crate::geometry::mesh::{Mesh, MeshParts};
-use crate::geometry::primitive::{Geom, MeshRef, Primitive};
-use crate::geometry::shape;
+use crate::geometry::shapes;
+use crate::geometry::world::balls::Ball;
+use crate::geometry::world::primitive::{Geom, MeshRef, Primitive};
 use crate::ir::{Material, MaterialId, Object, Shape};
 
 /// What the meshes placed so far took.
@@ -102,7 +102,7 @@ impl Builder {
             Shape::Sphere { center, radius }
                 if o.motion.is_none()
                     && o.transform.is_identity()
-                    && shape::check(&o.shape).is_ok() =>
+                    && shapes::check(&o.shape).is_ok() =>
             {
                 Some(Ball {
                     center,
@@ -126,7 +126,7 @@ impl Builder {
         if !self.invertible(o) {
             return;
         }
-        if let Err(flaw) = shape::check(&o.shape) {
+        if let Err(flaw) = shapes::check(&o.shape) {
             self.diagnostics.push(flaw.diagnostic(o.span));
         }
     }
@@ -179,7 +179,7 @@ impl Builder {
                 let mut ok = true;
                 for c in children {
                     match self.object(c, material) {
-                        Some(_) if !shape::encloses_volume(&c.shape, &closed_mesh) => {
+                        Some(_) if !shapes::encloses_volume(&c.shape, &closed_mesh) => {
                             ok = false;
                             let what = match &c.shape {
                                 Shape::Mesh { path, .. } => {
@@ -211,7 +211,7 @@ impl Builder {
                         None => ok = false,
                     }
                 }
-                if let Err(flaw) = shape::check(&o.shape) {
+                if let Err(flaw) = shapes::check(&o.shape) {
                     self.diagnostics.push(flaw.diagnostic(o.span));
                     return None;
                 }
@@ -223,7 +223,7 @@ impl Builder {
                     children: nodes,
                 }
             }
-            leaf_shape => match shape::leaf(leaf_shape) {
+            leaf_shape => match shapes::leaf(leaf_shape) {
                 Ok(l) => Geom::Leaf(l),
                 Err(flaw) => {
                     self.diagnostics.push(flaw.diagnostic(o.span));

@@ -75,7 +75,7 @@ mod tests {
             point: n,
             normal: n,
             geometric_normal: n,
-            uv: crate::geometry::sphere::uv(n),
+            uv: crate::geometry::ray::equirectangular_uv(n),
             local_point: n,
             surface_point: n,
             error: DVec3::ZERO,

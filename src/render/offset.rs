@@ -12,8 +12,8 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::SurfaceHit;
+use crate::geometry::lanes::simd;
 use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
-use crate::geometry::quads;
 use crate::geometry::rounding::gamma;
 
 /// A surface point rays can leave from: the point, its per-axis error bound and the surface's
@@ -111,7 +111,7 @@ impl SpawnLanes {
     #[inline(always)]
     pub fn origin_towards(&self, dir: &V3) -> V3 {
         let facing = dir.dot(&self.normal);
-        let n = V3::select(quads::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
+        let n = V3::select(simd::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
         let d = n.abs().dot(&self.error);
         let o = self.point.add(&n.scale(&d));
         V3 {
@@ -128,7 +128,7 @@ impl SpawnLanes {
         let origin = self.origin_towards(&self.point.from(target));
         let d = origin.from(target);
         let dist = d.norm();
-        let valid = quads::gt(&dist, 0.0) & quads::lt(&dist, f64::INFINITY);
+        let valid = simd::gt(&dist, 0.0) & simd::lt(&dist, f64::INFINITY);
         let dir = d.div(&dist);
         // shadow_margin, lane by lane.
         let far = origin.abs().max_element();

@@ -1,13 +1,13 @@
 //! The world's queries for a packet of rays ([`crate::geometry::lanes`]): the loose spheres
-//! are tested on all rays at once ([`crate::geometry::sphere_packet`]); everything else ray by
+//! are tested on all rays at once ([`crate::geometry::lanes::sphere_packet`]); everything else ray by
 //! ray, as [`World::intersect_among`] and [`World::occluded_among`] test it. Each ray gets
 //! exactly the answer it gets alone.
 
 use super::{BALL, Ball, SphereHit, World};
-use crate::geometry::Ray;
+use crate::geometry::lanes::cull::Among;
+use crate::geometry::lanes::sphere_packet::{NO_SPHERE, PacketHits};
 use crate::geometry::lanes::{self, Lanes, Mask, RayLanes};
-use crate::geometry::sphere_cull::Among;
-use crate::geometry::sphere_packet::{NO_SPHERE, PacketHits};
+use crate::geometry::ray::Ray;
 
 impl SphereHit {
     /// The nearest loose sphere of a ray from a packet query ([`World::nearest_packet`]):

@@ -10,9 +10,9 @@
 use wide::f64x4;
 
 use super::World;
-use crate::geometry::Aabb;
+use crate::geometry::aabb::Aabb;
+use crate::geometry::lanes::simd;
 use crate::geometry::lanes::{Lanes, Mask, RayLanes, WIDTH};
-use crate::geometry::quads;
 
 /// Relative padding of the world's box and relative slack of the slab test: far above the
 /// test's rounding (a few ulps, ~1e-15) and far below anything a scene can resolve.
@@ -20,7 +20,7 @@ const SLACK: f64 = 1e-9;
 
 /// `bounds` (the world's: every object's box holds its hits) padded by [`SLACK`] of its size;
 /// an empty box stays empty.
-pub(super) fn padded(bounds: Aabb) -> Aabb {
+pub(crate) fn padded(bounds: Aabb) -> Aabb {
     if bounds.is_empty() {
         return bounds;
     }
@@ -52,7 +52,7 @@ fn meet_box(reach: Aabb, rays: &RayLanes, live: Mask) -> Mask {
     let (o, d) = (&rays.origin, &rays.dir);
     let mut open = 0;
     for q in 0..WIDTH / 4 {
-        let at = |v: &Lanes| quads::quad(v, q);
+        let at = |v: &Lanes| simd::quad(v, q);
         let (ox, oy, oz) = (at(&o.x), at(&o.y), at(&o.z));
         let (dx, dy, dz) = (at(&d.x), at(&d.y), at(&d.z));
         let (nx, fx) = slab(reach.min.x, reach.max.x, ox, dx);
@@ -94,11 +94,11 @@ mod tests {
     use glam::{DAffine3, DVec3};
 
     use super::*;
-    use crate::geometry::Primitive;
-    use crate::geometry::balls::WorldParts;
-    use crate::geometry::primitive::Geom;
-    use crate::geometry::shape::Leaf;
-    use crate::geometry::{Ray, lanes};
+    use crate::geometry::shapes::Leaf;
+    use crate::geometry::world::balls::WorldParts;
+    use crate::geometry::world::primitive::Geom;
+    use crate::geometry::world::primitive::Primitive;
+    use crate::geometry::{lanes, ray::Ray};
     use crate::ir::MaterialId;
     use crate::num::Norm;
 
@@ -126,7 +126,7 @@ mod tests {
     /// without a BVH; and the test does drop rays (it is not a test that cannot fail).
     #[test]
     fn a_dropped_ray_meets_nothing() {
-        let mut rnd = crate::geometry::test_uniform(29);
+        let mut rnd = crate::geometry::testing::test_uniform(29);
         for count in [3, 40] {
             let prims = (0..count)
                 .map(|i| {

@@ -10,9 +10,9 @@
 use glam::DVec3;
 
 use super::Surface;
+use crate::geometry::lanes::cull::{Among, Bundle};
+use crate::geometry::lanes::simd;
 use crate::geometry::lanes::{self, Lanes, Mask, V3, WIDTH};
-use crate::geometry::quads;
-use crate::geometry::sphere_cull::{Among, Bundle};
 use crate::ir::{AmbientConvention, LightKind};
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
@@ -101,10 +101,10 @@ pub fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
         for _ in 0..count {
             let d = s.p.from(position);
             let dist = d.norm();
-            let l = V3::select(quads::gt(&dist, 0.0), &d.div(&dist), &s.n);
+            let l = V3::select(simd::gt(&dist, 0.0), &d.div(&dist), &s.n);
             let n_dot_l = s.n.dot(&l);
             // Facing away: neither light nor shadow ray.
-            let lit = s.live & quads::gt(&n_dot_l, 0.0);
+            let lit = s.live & simd::gt(&n_dot_l, 0.0);
             let open = if shadows && lit != 0 {
                 ctx.stats.shadow_rays += u64::from(lit.count_ones());
                 lit & !blocked(scene, s, position, lit)

@@ -16,11 +16,11 @@ use glam::DVec3;
 
 use super::Whitted;
 use crate::geometry::Ray;
+use crate::geometry::lanes::cull::Bundle;
+use crate::geometry::lanes::simd;
+use crate::geometry::lanes::sphere_packet::{NO_SPHERE, PacketHits};
 use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
-use crate::geometry::quads;
 use crate::geometry::rounding::gamma;
-use crate::geometry::sphere_cull::Bundle;
-use crate::geometry::sphere_packet::{NO_SPHERE, PacketHits};
 use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
 use crate::render::context::{BATCH, Ctx};
@@ -246,7 +246,7 @@ impl Whitted<'_> {
         let e = lanes::map(|i| (len[i] - radius[i]).abs() + gamma(6) * (len[i] + radius[i]));
         // Whitted::surface: the normal facing the ray, the viewer, the material.
         let cos = normal.dot(&rays.dir);
-        let facing = V3::select(quads::gt(&cos, 0.0), &normal.neg(), &normal);
+        let facing = V3::select(simd::gt(&cos, 0.0), &normal.neg(), &normal);
         let s = &mut sh.s;
         s.live = hit;
         s.p = point;

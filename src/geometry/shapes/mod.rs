@@ -1,0 +1,603 @@
+//! Every single shape in one place: whether an IR shape can be drawn, its intersectable form
+//! ([`Leaf`]) and what that answers (bounds, hits, crossings, membership). This is the one home
+//! of a shape's validity and bounds: the scene language checks each shape here as it is made,
+//! the course front ends as they read it, and the preparation stage builds its [`Leaf`] through
+//! [`leaf`]; `.bounds` in the language and the world's BVH boxes both come from
+//! [`Leaf::bounds`] (and [`crate::geometry::shapes::csg::bounds`] for CSG). Adding a shape: its file here
+//! and its `pub mod` line above, a `Leaf` variant with its arms below, its rule in [`leaf`].
+//!
+//! Diagnostic codes (one set for every front end): `rtc::param::out_of_range` (a number outside
+//! its range, value shown), `rtc::param::degenerate` (a shape with no surface),
+//! `rtc::param::not_planar` (a polygon off its plane), `rtc::csg::operands` (a CSG node with
+//! fewer than two operands).
+
+pub mod blob;
+pub mod circle_quadratic;
+pub mod cone;
+pub mod csg;
+pub mod cuboid;
+pub mod cylinder;
+pub mod disk;
+pub mod parallelogram;
+pub mod plane;
+pub mod polygon;
+pub mod quartic;
+pub mod sphere;
+pub mod torus;
+pub mod triangle;
+
+use crate::num::Norm;
+use std::path::Path;
+
+use glam::DVec3;
+
+use crate::diag::{Diagnostic, number};
+use crate::geometry::shapes::blob::Blob;
+use crate::geometry::shapes::cone::Cone;
+use crate::geometry::shapes::cuboid::Cuboid;
+use crate::geometry::shapes::cylinder::Cylinder;
+use crate::geometry::shapes::disk::Disk;
+use crate::geometry::shapes::parallelogram::Quad;
+use crate::geometry::shapes::polygon::{Polygon, PolygonError};
+use crate::geometry::shapes::torus::Torus;
+use crate::geometry::shapes::triangle::Triangle;
+use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::MappingFrame, ray::Ray};
+use crate::ir::Shape;
+use crate::source::Span;
+
+/// Code of a shape number outside its range.
+pub const OUT_OF_RANGE: &str = "rtc::param::out_of_range";
+/// Code of a shape with no surface.
+pub const DEGENERATE: &str = "rtc::param::degenerate";
+/// Code of a polygon whose points are not in one plane.
+pub const NOT_PLANAR: &str = "rtc::param::not_planar";
+/// Code of a CSG node with fewer than two operands.
+pub const CSG_OPERANDS: &str = "rtc::csg::operands";
+
+/// Why a shape cannot be drawn, and which of its parameters to blame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShapeFlaw {
+    /// The parameter at fault, by its name in the language (`radius`, `max`, `points`...).
+    pub param: &'static str,
+    /// What is wrong with it.
+    pub kind: FlawKind,
+}
+
+/// The two kinds of flaw: a number outside its range, or anything else.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FlawKind {
+    /// `param` must be `rule` (such as `> 0`) but is `value` (code [`OUT_OF_RANGE`]).
+    Range {
+        /// The rule, written after "must be".
+        rule: String,
+        /// The offending value.
+        value: f64,
+    },
+    /// A flaw described in words.
+    Other {
+        /// The diagnostic code.
+        code: &'static str,
+        /// The title.
+        message: String,
+        /// The label on the parameter.
+        label: String,
+        /// One concrete fix.
+        help: String,
+    },
+}
+
+impl ShapeFlaw {
+    fn range(param: &'static str, rule: impl Into<String>, value: f64) -> ShapeFlaw {
+        ShapeFlaw {
+            param,
+            kind: FlawKind::Range {
+                rule: rule.into(),
+                value,
+            },
+        }
+    }
+
+    fn other(
+        param: &'static str,
+        code: &'static str,
+        message: impl Into<String>,
+        label: impl Into<String>,
+        help: impl Into<String>,
+    ) -> ShapeFlaw {
+        ShapeFlaw {
+            param,
+            kind: FlawKind::Other {
+                code,
+                message: message.into(),
+                label: label.into(),
+                help: help.into(),
+            },
+        }
+    }
+
+    fn degenerate(param: &'static str, message: &str, label: &str, help: &str) -> ShapeFlaw {
+        ShapeFlaw::other(param, DEGENERATE, message, label, help)
+    }
+
+    /// The diagnostic code.
+    pub fn code(&self) -> &'static str {
+        match &self.kind {
+            FlawKind::Range { .. } => OUT_OF_RANGE,
+            FlawKind::Other { code, .. } => code,
+        }
+    }
+
+    /// The diagnostic, with its primary span on `span` (the parameter's, where known).
+    pub fn diagnostic(&self, span: Span) -> Diagnostic {
+        match &self.kind {
+            FlawKind::Range { rule, value } => {
+                let shown = number(*value);
+                Diagnostic::error(
+                    OUT_OF_RANGE,
+                    span,
+                    format!("`{}` must be {rule}, but it is {shown}", self.param),
+                )
+                .with_label(format!("evaluates to {shown}"))
+                .with_help(format!("use a value that is {rule}"))
+            }
+            FlawKind::Other {
+                code,
+                message,
+                label,
+                help,
+            } => Diagnostic::error(code, span, message.clone())
+                .with_label(label.clone())
+                .with_help(help.clone()),
+        }
+    }
+}
+
+fn vec3(v: DVec3) -> String {
+    format!("[{}, {}, {}]", number(v.x), number(v.y), number(v.z))
+}
+
+/// `Ok` when `v` satisfies `ok` and is finite, else the range flaw.
+fn in_range(ok: bool, param: &'static str, rule: &str, v: f64) -> Result<(), ShapeFlaw> {
+    if ok && v.is_finite() {
+        Ok(())
+    } else {
+        Err(ShapeFlaw::range(param, rule, v))
+    }
+}
+
+fn positive(param: &'static str, v: f64) -> Result<(), ShapeFlaw> {
+    in_range(v > 0.0, param, "> 0", v)
+}
+
+fn finite(param: &'static str, points: &[DVec3]) -> Result<(), ShapeFlaw> {
+    if points.iter().all(|p| p.is_finite()) {
+        Ok(())
+    } else {
+        Err(ShapeFlaw::other(
+            param,
+            OUT_OF_RANGE,
+            format!("`{param}` is not a finite point"),
+            "a coordinate is infinite or not a number",
+            "use finite coordinates",
+        ))
+    }
+}
+
+/// Whether `shape` can be drawn: `Ok` for every valid shape, a mesh (its file is checked when
+/// it is loaded) and a CSG node with at least two operands (its operands are checked as shapes
+/// of their own).
+pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
+    match shape {
+        Shape::Mesh { .. } => Ok(()),
+        Shape::Csg { children, .. } => csg_operands(children.len()),
+        // A valid sphere, the commonest shape of large scenes (checked when it is made and again
+        // when it is prepared), without building its `Leaf`: `leaf` accepts exactly these.
+        Shape::Sphere { center, radius }
+            if *radius > 0.0 && radius.is_finite() && center.is_finite() =>
+        {
+            Ok(())
+        }
+        leaf_shape => leaf(leaf_shape).map(|_| ()),
+    }
+}
+
+/// A single shape's geometry in object space: every shape but meshes and CSG nodes. Shapes
+/// larger than a box are boxed, so a million spheres do not each take a polygon's room.
+#[derive(Clone, Debug)]
+pub enum Leaf {
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius.
+        radius: f64,
+    },
+    /// A half-space bounded by a plane.
+    Plane {
+        /// A point on it.
+        point: DVec3,
+        /// Unit outward normal.
+        normal: DVec3,
+    },
+    /// A box.
+    Box(Cuboid),
+    /// A triangle.
+    Triangle(Box<Triangle>),
+    /// A parallelogram.
+    Quad(Box<Quad>),
+    /// A planar polygon.
+    Polygon(Box<Polygon>),
+    /// A disk.
+    Disk(Disk),
+    /// A cylinder.
+    Cylinder(Box<Cylinder>),
+    /// A cone or frustum.
+    Cone(Box<Cone>),
+    /// A torus.
+    Torus(Torus),
+    /// Metaballs.
+    Blob(Box<Blob>),
+}
+
+impl Leaf {
+    /// Object-space bounds (infinite for a plane).
+    pub fn bounds(&self) -> Aabb {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::bounds(*center, *radius),
+            Leaf::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
+            Leaf::Box(b) => b.bounds(),
+            Leaf::Triangle(x) => x.bounds(),
+            Leaf::Quad(x) => x.bounds(),
+            Leaf::Polygon(x) => x.bounds(),
+            Leaf::Disk(x) => x.bounds(),
+            Leaf::Cylinder(x) => x.bounds(),
+            Leaf::Cone(x) => x.bounds(),
+            Leaf::Torus(x) => x.bounds(),
+            Leaf::Blob(x) => x.bounds(),
+        }
+    }
+
+    /// Nearest hit in (t_min, t_max), in object space.
+    #[inline]
+    pub fn intersect(&self, r: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::intersect(*center, *radius, r, t_min, t_max),
+            Leaf::Plane { point, normal } => plane::intersect(*point, *normal, r, t_min, t_max),
+            Leaf::Box(b) => b.intersect(r, t_min, t_max),
+            Leaf::Triangle(x) => x.intersect(r, t_min, t_max),
+            Leaf::Quad(x) => x.intersect(r, t_min, t_max),
+            Leaf::Polygon(x) => x.intersect(r, t_min, t_max),
+            Leaf::Disk(x) => x.intersect(r, t_min, t_max),
+            Leaf::Cylinder(x) => x.intersect(r, t_min, t_max),
+            Leaf::Cone(x) => x.intersect(r, t_min, t_max),
+            Leaf::Torus(x) => x.intersect(r, t_min, t_max),
+            Leaf::Blob(x) => x.intersect(r, t_min, t_max),
+        }
+    }
+
+    /// A per-axis bound on how far the computed object-space point `p` of a hit may lie from
+    /// the surface (see [`crate::geometry::rounding`]).
+    pub fn point_error(&self, p: DVec3) -> DVec3 {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::point_error(*center, *radius, p),
+            Leaf::Plane { point, normal } => plane::point_error(*point, *normal, p),
+            Leaf::Box(b) => b.point_error(p),
+            Leaf::Triangle(x) => x.point_error(p),
+            Leaf::Quad(x) => x.point_error(p),
+            Leaf::Polygon(x) => x.point_error(p),
+            Leaf::Disk(x) => x.point_error(p),
+            Leaf::Cylinder(x) => x.point_error(p),
+            Leaf::Cone(x) => x.point_error(p),
+            Leaf::Torus(x) => x.point_error(p),
+            Leaf::Blob(x) => x.point_error(p),
+        }
+    }
+
+    /// Every boundary crossing along the whole line of `r` (solids; surfaces have none).
+    pub fn crossings(&self, r: &Ray, out: &mut Vec<Crossing>) {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::crossings(*center, *radius, r, out),
+            Leaf::Plane { point, normal } => {
+                if let Some(h) =
+                    plane::intersect(*point, *normal, r, f64::NEG_INFINITY, f64::INFINITY)
+                {
+                    out.push(Crossing {
+                        hit: h,
+                        entering: normal.dot(r.dir) < 0.0,
+                    });
+                }
+            }
+            Leaf::Box(b) => b.crossings(r, out),
+            Leaf::Cylinder(x) => x.crossings(r, out),
+            Leaf::Cone(x) => x.crossings(r, out),
+            Leaf::Torus(x) => x.crossings(r, out),
+            Leaf::Blob(x) => x.crossings(r, out),
+            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => {}
+        }
+    }
+
+    /// Point membership in object space (closed solids; surfaces contain nothing).
+    pub fn contains(&self, q: DVec3) -> bool {
+        match self {
+            Leaf::Sphere { center, radius } => sphere::contains(*center, *radius, q),
+            Leaf::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
+            Leaf::Box(b) => b.contains(q),
+            Leaf::Cylinder(c) => c.is_closed() && c.contains(q),
+            Leaf::Cone(c) => c.is_closed() && c.contains(q),
+            Leaf::Torus(t) => t.contains(q),
+            Leaf::Blob(b) => b.contains(q),
+            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => false,
+        }
+    }
+
+    /// Whether the line of `r` starts (at t → −∞) inside (only a half-space can).
+    pub fn inside_at_start(&self, r: &Ray) -> bool {
+        match self {
+            Leaf::Plane { point, normal } => {
+                let dn = normal.dot(r.dir);
+                dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
+            }
+            _ => false,
+        }
+    }
+
+    /// The frame texture mappings read this shape's hits in.
+    pub fn frame(&self) -> MappingFrame {
+        match *self {
+            Leaf::Sphere { center, radius } => MappingFrame::Sphere { center, radius },
+            _ => MappingFrame::Object,
+        }
+    }
+}
+
+/// Whether a CSG node with `count` operands can be built (it needs two or more).
+pub fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
+    if count >= 2 {
+        return Ok(());
+    }
+    Err(ShapeFlaw::other(
+        "objects",
+        CSG_OPERANDS,
+        format!("a CSG operation needs at least two objects, found {count}"),
+        "too few operands",
+        "pass a list of two or more objects",
+    ))
+}
+
+/// The intersectable form of a shape other than a mesh or a CSG node (which the preparation
+/// stage assembles from loaded files and prepared operands), or its flaw.
+pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
+    Ok(match shape {
+        Shape::Sphere { center, radius } => {
+            positive("radius", *radius)?;
+            finite("center", &[*center])?;
+            Leaf::Sphere {
+                center: *center,
+                radius: *radius,
+            }
+        }
+        Shape::Plane { point, normal } => {
+            finite("point", &[*point])?;
+            match normal.try_unit() {
+                Some(normal) => Leaf::Plane {
+                    point: *point,
+                    normal,
+                },
+                None => {
+                    return Err(ShapeFlaw::degenerate(
+                        "normal",
+                        "the plane's normal is the zero vector",
+                        "a direction needs a non-zero length",
+                        "give a direction, e.g. `normal: Y`",
+                    ));
+                }
+            }
+        }
+        Shape::Box { min, max } => {
+            finite("min", &[*min, *max])?;
+            if !max.cmpgt(*min).all() {
+                return Err(ShapeFlaw::other(
+                    "max",
+                    OUT_OF_RANGE,
+                    "`max` must be greater than `min` on every axis",
+                    format!("max = {} but min = {}", vec3(*max), vec3(*min)),
+                    "swap the corners or fix the smaller coordinate",
+                ));
+            }
+            Leaf::Box(Cuboid::new(*min, *max))
+        }
+        Shape::Triangle { vertices } => {
+            finite("c", vertices)?;
+            Leaf::Triangle(Box::new(Triangle::new(*vertices).ok_or_else(|| {
+                ShapeFlaw::degenerate(
+                    "c",
+                    "the triangle has zero area",
+                    "its corners lie on one line",
+                    "move one corner off the line through the other two",
+                )
+            })?))
+        }
+        Shape::Quad { corner, u, v } => {
+            finite("v", &[*corner, *u, *v])?;
+            Leaf::Quad(Box::new(Quad::new(*corner, *u, *v).ok_or_else(|| {
+                ShapeFlaw::degenerate(
+                    "v",
+                    "the quad has zero area",
+                    "`u` and `v` are parallel or zero",
+                    "use two edges that span a parallelogram",
+                )
+            })?))
+        }
+        Shape::Polygon { points } => {
+            finite("points", points)?;
+            Leaf::Polygon(Box::new(Polygon::new(points).map_err(|e| match e {
+                PolygonError::TooFew => ShapeFlaw::other(
+                    "points",
+                    OUT_OF_RANGE,
+                    format!("a polygon needs at least 3 points, found {}", points.len()),
+                    "too few points",
+                    "list three or more corners",
+                ),
+                PolygonError::Degenerate => ShapeFlaw::degenerate(
+                    "points",
+                    "the polygon encloses no area",
+                    "its points lie on one line",
+                    "spread the corners out in a plane",
+                ),
+                PolygonError::NotPlanar => ShapeFlaw::other(
+                    "points",
+                    NOT_PLANAR,
+                    "the points of this polygon do not lie in one plane",
+                    "non-planar polygon",
+                    "split it into triangles, or move the points onto one plane",
+                ),
+            })?))
+        }
+        Shape::Disk {
+            center,
+            normal,
+            radius,
+        } => {
+            positive("radius", *radius)?;
+            finite("center", &[*center, *normal])?;
+            Leaf::Disk(Disk::new(*center, *normal, *radius).ok_or_else(|| {
+                ShapeFlaw::degenerate(
+                    "normal",
+                    "the disk's normal is the zero vector",
+                    "a direction needs a non-zero length",
+                    "give a direction, e.g. `normal: Y`",
+                )
+            })?)
+        }
+        Shape::Cylinder {
+            base,
+            top,
+            radius,
+            capped,
+        } => {
+            positive("radius", *radius)?;
+            finite("top", &[*base, *top])?;
+            Leaf::Cylinder(Box::new(
+                Cylinder::new(*base, *top, *radius, *capped).ok_or_else(ends_coincide)?,
+            ))
+        }
+        Shape::Cone {
+            base,
+            top,
+            base_radius,
+            top_radius,
+            capped,
+        } => {
+            in_range(*base_radius >= 0.0, "base_radius", ">= 0", *base_radius)?;
+            in_range(*top_radius >= 0.0, "top_radius", ">= 0", *top_radius)?;
+            if *base_radius == 0.0 && *top_radius == 0.0 {
+                return Err(ShapeFlaw::degenerate(
+                    "base_radius",
+                    "a cone needs a non-zero radius at one end",
+                    "both radii are 0",
+                    "set `base_radius` greater than 0",
+                ));
+            }
+            finite("top", &[*base, *top])?;
+            Leaf::Cone(Box::new(
+                Cone::new(*base, *top, *base_radius, *top_radius, *capped)
+                    .ok_or_else(ends_coincide)?,
+            ))
+        }
+        Shape::Torus {
+            center,
+            major_radius,
+            minor_radius,
+        } => {
+            positive("major_radius", *major_radius)?;
+            positive("minor_radius", *minor_radius)?;
+            in_range(
+                minor_radius < major_radius,
+                "minor_radius",
+                &format!("< major_radius ({})", number(*major_radius)),
+                *minor_radius,
+            )?;
+            finite("center", &[*center])?;
+            Leaf::Torus(
+                Torus::new(*center, *major_radius, *minor_radius)
+                    .ok_or_else(|| ShapeFlaw::range("major_radius", "> 0", *major_radius))?,
+            )
+        }
+        Shape::Blob {
+            components,
+            threshold,
+        } => {
+            if components.is_empty() {
+                return Err(ShapeFlaw::other(
+                    "components",
+                    OUT_OF_RANGE,
+                    "a blob needs at least one component",
+                    "empty list",
+                    "add `{ center: [0, 0, 0], radius: 1, strength: 1 }`",
+                ));
+            }
+            for c in components {
+                positive("radius", c.radius)?;
+                in_range(true, "strength", "finite", c.strength)?;
+                finite("components", &[c.center])?;
+            }
+            positive("threshold", *threshold)?;
+            Leaf::Blob(Box::new(Blob::new(components, *threshold).ok_or_else(
+                || {
+                    ShapeFlaw::degenerate(
+                        "components",
+                        "the blob has no surface",
+                        "no component has a positive strength",
+                        "give at least one component a positive `strength`",
+                    )
+                },
+            )?))
+        }
+        Shape::Mesh { .. } | Shape::Csg { .. } => {
+            return Err(ShapeFlaw::other(
+                "shape",
+                DEGENERATE,
+                format!("a {} is not a single shape", shape.kind_name()),
+                "assembled from its parts",
+                "build it through the preparation stage",
+            ));
+        }
+    })
+}
+
+fn ends_coincide() -> ShapeFlaw {
+    ShapeFlaw::degenerate(
+        "top",
+        "`top` equals `base`",
+        "zero height",
+        "move `top` away from `base`",
+    )
+}
+
+/// Object-space bounds of a valid shape other than a mesh or CSG node (infinite for a plane);
+/// `None` for those and for an invalid shape.
+pub fn bounds(shape: &Shape) -> Option<Aabb> {
+    leaf(shape).ok().map(|g| g.bounds())
+}
+
+/// Whether a shape encloses a volume CSG can classify against: surfaces (triangle, quad,
+/// polygon, disk) and open cylinders and cones do not; a mesh does when `closed_mesh` says its
+/// file is closed; a CSG node when all its operands do.
+pub fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
+    match shape {
+        Shape::Triangle { .. }
+        | Shape::Quad { .. }
+        | Shape::Polygon { .. }
+        | Shape::Disk { .. } => false,
+        Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
+        Shape::Mesh { path, smooth, .. } => closed_mesh(path, *smooth),
+        Shape::Csg { children, .. } => children
+            .iter()
+            .all(|c| encloses_volume(&c.shape, closed_mesh)),
+        Shape::Sphere { .. }
+        | Shape::Plane { .. }
+        | Shape::Box { .. }
+        | Shape::Torus { .. }
+        | Shape::Blob { .. } => true,
+    }
+}
