@@ -78,8 +78,17 @@ impl MeshAsset {
         if let Ok(meta) = std::fs::metadata(path) {
             within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
         }
-        let text =
-            std::fs::read(path).map_err(|_| locate(path, tobj::LoadError::OpenFileFailed))?;
+        let text = crate::source::read_regular(path, MAX_MESH_FILE_BYTES).map_err(|e| {
+            if e.kind() == std::io::ErrorKind::NotFound {
+                locate(path, tobj::LoadError::OpenFileFailed)
+            } else {
+                // A device, a FIFO or a folder: say so rather than "cannot be read".
+                MeshError {
+                    message: format!("the file cannot be read: {e}"),
+                    ..locate(path, tobj::LoadError::OpenFileFailed)
+                }
+            }
+        })?;
         let faces = match fast.then(|| read_fast(path, &text, smooth)).flatten() {
             Some(faces) => faces?,
             None => read_tobj(path, &text, smooth)?,
