@@ -82,6 +82,7 @@ pub fn content_hash(
     }
     s.settings.seed = 0;
     s.settings.output = None;
+    s.settings.output_span = None;
     let text = format!(
         "rtc {} reference {:?} seeds {:?} scene {:?}{}",
         env!("CARGO_PKG_VERSION"),
