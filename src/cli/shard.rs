@@ -109,7 +109,8 @@ pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
     }
     let mut parts = Vec::new();
     for p in paths {
-        let bytes = match std::fs::read(p) {
+        // Only a regular file (a FIFO would block); its header is checked against its length.
+        let bytes = match rtc::source::read_regular(p, u64::MAX) {
             Ok(b) => b,
             Err(e) => {
                 return fail(
