@@ -227,7 +227,7 @@ fn render(
         }
         match (pixel_shard, fingerprint) {
             (Some(s), Some(fingerprint)) => {
-                cli::shard::write_part(&film, fingerprint, s, &path, sidecar)
+                cli::shard::write_part(&film, file, fingerprint, s, &path, sidecar)
             }
             _ => {
                 rtc::render::output::save_film(&film, &path)?;
