@@ -188,6 +188,7 @@ pub fn study(
             noise_rmse: reference.noise.map(|_| reference.noise_rmse()),
             noise_flip: reference.noise.map(|n| n.flip_between_runs),
             hash,
+            cache_notes: reference.notes.clone(),
         },
         metric: options.metric,
         points: measured
