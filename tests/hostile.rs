@@ -446,3 +446,116 @@ fn chains_at_the_budget_are_handled_and_longer_ones_are_refused() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+// ---- 17. the settings fingerprint of shards ---------------------------------------------------
+
+/// Shards rendered with the same options in another order, and `--set a=1` against
+/// `--set a=1.0` for a `Float` parameter, merge; a different value of the parameter does not.
+#[test]
+fn shards_merge_whatever_the_order_of_their_options() {
+    let dir = scratch("shard-order");
+    write(
+        &dir.join("s.rtc"),
+        &format!("{SCENE}param a = 0.5\nsphere(radius: a).translate([2, 0, 0])\n"),
+    );
+    let shard = |k: &str, args: &[&str]| {
+        let mut all = args.to_vec();
+        all.extend(["--shard", k, "-o"]);
+        all.push(if k == "0/2" {
+            "p0.rtcpart"
+        } else {
+            "p1.rtcpart"
+        });
+        let run = rtc_in(&dir, &all);
+        assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
+    };
+    shard("0/2", &["render", "--frame", "0", "--set", "a=1", "s.rtc"]);
+    shard(
+        "1/2",
+        &["render", "s.rtc", "--set", "a=1.0", "--frame", "0"],
+    );
+    let run = rtc_in(&dir, &["merge", "p0.rtcpart", "p1.rtcpart", "-o", "m.png"]);
+    assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
+    shard("1/2", &["render", "s.rtc", "--set", "a=0.75"]);
+    fails(
+        &rtc_in(&dir, &["merge", "p0.rtcpart", "p1.rtcpart", "-o", "m.png"]),
+        1,
+        "rtc::merge::mismatch",
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+// ---- 10. the accuracy cache -------------------------------------------------------------------
+
+/// A cached reference whose bytes were changed fails its checksum and is rendered again (with
+/// a note), giving the same reference as before; a cache that cannot be written is a note, not
+/// a failure, and leaves no partial file.
+#[test]
+fn a_damaged_or_unwritable_accuracy_cache_is_a_miss_with_a_note() {
+    use rtc::accuracy::reference::{Source, rendered};
+    let dir = scratch("accuracy-cache");
+    let mut sources = SourceMap::new();
+    let loaded = load_source(
+        &dir.join("s.rtc"),
+        SCENE,
+        &mut sources,
+        &EvalOptions::default(),
+    );
+    let mut scene = rtc::opt::prepare(&loaded.scene.expect("the scene loads")).unwrap();
+    let options = rtc::accuracy::MeasureOptions {
+        repeat: 1,
+        seeds: [0, 1],
+        threads: 1,
+        region: None,
+    };
+    let cache = dir.join("cache");
+    let mut run = |cache: &Path| {
+        rendered(
+            &mut scene,
+            &options,
+            Some((cache, "h")),
+            &rtc::render::Silent,
+        )
+        .unwrap()
+    };
+    let first = run(&cache);
+    assert_eq!(first.source, Source::Rendered);
+    assert!(first.notes.is_empty(), "{:?}", first.notes);
+    assert!(matches!(run(&cache).source, Source::Cached(_)));
+
+    // One flipped byte in the middle of the cached EXR.
+    let entry = cache.join("h-seed0.exr");
+    let mut bytes = std::fs::read(&entry).unwrap();
+    let mid = bytes.len() / 2;
+    bytes[mid] ^= 0x40;
+    std::fs::write(&entry, &bytes).unwrap();
+    let again = run(&cache);
+    assert_eq!(again.source, Source::Rendered);
+    assert!(
+        again.notes.iter().any(|n| n.contains("checksum")),
+        "{:?}",
+        again.notes
+    );
+    assert_eq!(again.data, first.data);
+    assert!(
+        matches!(run(&cache).source, Source::Cached(_)),
+        "the entry was written anew"
+    );
+
+    // A file where the cache folder should be: the reference is rendered, the run goes on.
+    let blocked = write(&dir.join("blocked"), "not a folder");
+    let r = run(&blocked.join("sub"));
+    assert_eq!(r.data, first.data);
+    assert!(
+        r.notes.iter().any(|n| n.contains("could not be cached")),
+        "{:?}",
+        r.notes
+    );
+    let leftovers: Vec<_> = std::fs::read_dir(&cache)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.ends_with(".exr") && !n.ends_with(".sha256"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
