@@ -78,7 +78,8 @@ impl MeshAsset {
         if let Ok(meta) = std::fs::metadata(path) {
             within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
         }
-        let text = crate::source::read_regular(path, MAX_MESH_FILE_BYTES).map_err(|e| {
+        let read = super::obj_count::read_counted(path, MAX_MESH_FILE_BYTES, MAX_TRIANGLES as u64);
+        let text = read.map_err(|e| {
             if e.kind() == std::io::ErrorKind::NotFound {
                 locate(path, tobj::LoadError::OpenFileFailed)
             } else {
@@ -89,6 +90,10 @@ impl MeshAsset {
                 }
             }
         })?;
+        let text = match text {
+            super::obj_count::Counted::Text(text) => text,
+            super::obj_count::Counted::TooMany(e) => return Err(e),
+        };
         let faces = match fast.then(|| read_fast(path, &text, smooth)).flatten() {
             Some(faces) => faces?,
             None => read_tobj(path, &text, smooth)?,
