@@ -82,7 +82,10 @@ pub fn study(
     options: &StudyOptions,
     progress: &dyn SweepProgress,
 ) -> Result<Report, Diagnostics> {
-    let one = |d: Diagnostic| Diagnostics { items: vec![d] };
+    let one = |d: Diagnostic| Diagnostics {
+        items: vec![d],
+        ..Diagnostics::default()
+    };
     let mut scene = scene.clone();
     if let Some(r) = options.region {
         r.check(scene.camera.width, scene.camera.height)
