@@ -559,3 +559,82 @@ fn a_damaged_or_unwritable_accuracy_cache_is_a_miss_with_a_note() {
     assert!(leftovers.is_empty(), "{leftovers:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+// ---- 8. a cap on diagnostics -------------------------------------------------------------------
+
+/// Lines of keyword-shaped garbage in a course `.in` file: the report shows the first 100
+/// errors and counts the rest (the front end keeps only the first 100 too).
+#[test]
+fn garbage_in_a_course_file_shows_the_first_errors_and_counts_the_rest() {
+    let dir = scratch("diag-cap-in");
+    let garbage: String = (0..3000)
+        .map(|i| {
+            [
+                "Sphere x 1 -\n",
+                "Light zz\n",
+                "Eye 1\n",
+                "Material - - -\n",
+            ][i % 4]
+        })
+        .collect();
+    write(&dir.join("g.in"), &garbage);
+    for format in ["human", "short"] {
+        let text = fails(
+            &rtc_in(&dir, &["check", "--format", format, "g.in"]),
+            1,
+            "rtc::diag::omitted",
+        );
+        let shown = text.matches("error[").count() + text.matches("× ").count();
+        assert!(shown <= 100 + 1, "{format}: {shown} errors shown");
+        let last = text.trim_end().lines().last().unwrap_or("");
+        let total: usize = last.split(' ').next().unwrap().parse().unwrap_or(0);
+        assert!(total > 1000, "{format}: {last}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A scene file of bad lines: syntax errors stop being read after 100, with a note saying
+/// where.
+#[test]
+fn a_file_of_bad_lines_stops_after_the_first_syntax_errors() {
+    let dir = scratch("diag-cap-rtc");
+    write(
+        &dir.join("bad.rtc"),
+        &format!("rtc 1\n{}", "let = \n".repeat(5000)),
+    );
+    let text = fails(
+        &rtc_in(&dir, &["check", "--format", "short", "bad.rtc"]),
+        1,
+        "rtc::diag::omitted",
+    );
+    assert_eq!(text.matches("error[").count(), 100, "{text}");
+    assert!(text.contains("not read past line 101"), "{text}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+// ---- 13. the OBJ triangle budget is counted while reading ----------------------------------------
+
+#[test]
+fn an_obj_over_the_triangle_budget_is_refused_while_reading() {
+    use rtc::assets::obj_count::{Counted, read_counted};
+    let dir = scratch("obj-count");
+    let obj = write(
+        &dir.join("m.obj"),
+        &format!(
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n{}",
+            "f 1 2 3 4\n".repeat(500)
+        ),
+    );
+    assert!(matches!(
+        read_counted(&obj, u64::MAX, 1000).unwrap(),
+        Counted::Text(_)
+    ));
+    match read_counted(&obj, u64::MAX, 999).unwrap() {
+        Counted::TooMany(e) => {
+            assert!(e.too_large, "{e:?}");
+            assert!(e.message.contains("more than 999 triangles"), "{e:?}");
+        }
+        Counted::Text(_) => panic!("1000 triangles passed a budget of 999"),
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
