@@ -638,3 +638,63 @@ fn an_obj_over_the_triangle_budget_is_refused_while_reading() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+// ---- 7. `rtc watch` and DNS rebinding -------------------------------------------------------------
+
+/// Sends one request with the given `Host` header to `addr`; the status line of the answer.
+fn status_for_host(addr: &str, host: Option<&str>) -> String {
+    use std::io::{BufRead, Write};
+    let mut s = std::net::TcpStream::connect(addr).unwrap();
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    let host = host.map_or(String::new(), |h| format!("Host: {h}\r\n"));
+    write!(s, "GET / HTTP/1.1\r\n{host}Connection: close\r\n\r\n").unwrap();
+    let mut line = String::new();
+    std::io::BufReader::new(s).read_line(&mut line).unwrap();
+    line
+}
+
+/// A page on another site whose name was rebound to 127.0.0.1 sends its own `Host`: refused
+/// (403); the loopback names with the right port are answered.
+#[test]
+fn rtc_watch_answers_only_its_loopback_host() {
+    use std::io::{BufRead, BufReader};
+    let dir = scratch("watch-host");
+    let scene = write(&dir.join("s.rtc"), SCENE);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(["watch", scene.to_str().unwrap(), "--port", "0"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
+    let first = lines.next().and_then(Result::ok).unwrap_or_default();
+    std::thread::spawn(move || lines.for_each(drop));
+    let addr = first
+        .split("http://")
+        .nth(1)
+        .and_then(|r| r.split('/').next())
+        .unwrap_or("")
+        .to_string();
+    let port = addr.rsplit(':').next().unwrap().to_string();
+    for good in [
+        addr.clone(),
+        format!("localhost:{port}"),
+        format!("LOCALHOST:{port}"),
+    ] {
+        assert!(
+            status_for_host(&addr, Some(&good)).contains("200"),
+            "{good}"
+        );
+    }
+    for bad in [
+        Some(format!("evil.example:{port}")),
+        Some("127.0.0.1:1".into()),
+        Some("127.0.0.1".into()),
+        None,
+    ] {
+        let line = status_for_host(&addr, bad.as_deref());
+        assert!(line.contains("403"), "{bad:?}: {line}");
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
