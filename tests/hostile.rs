@@ -3,12 +3,10 @@
 //! read) instead of a hang or a crash. Inputs are scaled down under lowered budgets; the
 //! full-size cases run from `benches/hostile.sh`. What rtc writes is in `hostile_output.rs`.
 
-mod cli_support;
 mod hostile_support;
 
 use std::path::Path;
 
-use cli_support::scratch;
 use hostile_support::*;
 
 use rtc::eval::{EvalOptions, load_source};
@@ -40,7 +38,7 @@ fn a_module_reached_through_symlinked_folders_is_one_module() {
             "{SCENE}import \"./l1/lib.rtc\" as x\nimport \"./l2/l1/lib.rtc\" as y\nassert(x.v + y.v == 4)\n"
         ),
     );
-    let run = cli_support::rtc(&["check", dir.join("d.rtc").to_str().unwrap()]);
+    let run = rtc_in(&dir, &["check", "d.rtc"]);
     assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
     std::fs::remove_dir_all(&dir).unwrap();
 }

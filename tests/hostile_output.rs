@@ -3,14 +3,12 @@
 //! may write where it should not or trust what it reads back. What rtc reads is in
 //! `hostile.rs`.
 
-mod cli_support;
 mod hostile_support;
 
 use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::Duration;
 
-use cli_support::scratch;
 use hostile_support::*;
 
 use rtc::eval::{EvalOptions, load_source};

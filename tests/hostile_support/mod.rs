@@ -7,6 +7,13 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
+/// A fresh directory for this test process and `name`.
+pub fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("rtc-hostile-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 /// A small scene that renders in a moment; tests append to it.
 pub const SCENE: &str = "rtc 1\ncamera { eye: [0, 0, 5], center: [0, 0, 0], up: Y, resolution: [8, 6] }\n\
                      point_light { position: [5, 5, 5] }\nsphere()\n";
