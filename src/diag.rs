@@ -132,16 +132,42 @@ impl Diagnostic {
     }
 }
 
+/// Errors one file's report shows (the rest are counted), and errors a front end keeps before
+/// it only counts them (the syntax driver stops reading there): docs/language.md §24.
+pub const MAX_ERRORS: usize = 100;
+
 /// A list of diagnostics collected by one stage, which keeps going after the first.
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
     /// The findings in the order they were made.
     pub items: Vec<Diagnostic>,
+    /// Errors [`Diagnostics::push`] counted but did not keep, past [`MAX_ERRORS`] (a file of
+    /// garbage makes millions: each costs memory and nobody reads them).
+    pub omitted_errors: usize,
 }
 
 impl Diagnostics {
-    /// Records one finding.
+    /// Records one finding; an error past the first [`MAX_ERRORS`] is only counted.
     pub fn push(&mut self, d: Diagnostic) {
+        if d.is_error()
+            && (self.omitted_errors > 0
+                || (self.items.len() >= MAX_ERRORS
+                    && self.items.iter().filter(|d| d.is_error()).count() >= MAX_ERRORS))
+        {
+            if self.omitted_errors == 0 {
+                self.items.push(
+                    Diagnostic::new(
+                        Severity::Note,
+                        "rtc::diag::omitted",
+                        None,
+                        format!("more than {MAX_ERRORS} errors: the rest are counted, not kept"),
+                    )
+                    .with_help("fix the first ones and run again"),
+                );
+            }
+            self.omitted_errors += 1;
+            return;
+        }
         self.items.push(d);
     }
 
@@ -150,9 +176,9 @@ impl Diagnostics {
         self.items.iter().any(Diagnostic::is_error)
     }
 
-    /// Number of errors.
+    /// Number of errors (those only counted included).
     pub fn error_count(&self) -> usize {
-        self.items.iter().filter(|d| d.is_error()).count()
+        self.items.iter().filter(|d| d.is_error()).count() + self.omitted_errors
     }
 
     /// Number of warnings.
@@ -166,6 +192,7 @@ impl Diagnostics {
     /// Moves all of `other`'s findings into `self`.
     pub fn extend(&mut self, other: Diagnostics) {
         self.items.extend(other.items);
+        self.omitted_errors += other.omitted_errors;
     }
 }
 

@@ -158,7 +158,81 @@ impl SourceMap {
 /// Files from this size on are read in two halves at once.
 const PARALLEL_READ_BYTES: u64 = 1 << 20;
 
-/// Reads a whole file, like `std::fs::read`. A large one (a generated scene of megabytes) is
+/// Bytes of one source file (a scene, an imported module, a course `.in` or `.yaml` file),
+/// checked before reading (docs/language.md §24). The literal million-sphere scene is 85 MB.
+pub const MAX_SOURCE_BYTES: u64 = 1 << 30;
+
+/// Opens `path` for reading if it is a regular file of at most `max` bytes. A device
+/// (`/dev/zero`), a FIFO (which would block until a writer came), a socket or a folder is
+/// refused from its metadata before it is opened, and a file above `max` from its size; the
+/// errors say which (`ErrorKind::InvalidInput`, `ErrorKind::FileTooLarge`).
+pub fn open_regular(path: &Path, max: u64) -> std::io::Result<(std::fs::File, u64)> {
+    let kind = |meta: &std::fs::Metadata| -> std::io::Result<u64> {
+        if !meta.is_file() {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                format!("{} is not a regular file", file_kind(meta)),
+            ));
+        }
+        if meta.len() > max {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::FileTooLarge,
+                format!(
+                    "the file has {} bytes, more than the {max} a file may have",
+                    meta.len()
+                ),
+            ));
+        }
+        Ok(meta.len())
+    };
+    kind(&std::fs::metadata(path)?)?;
+    let file = std::fs::File::open(path)?;
+    // What was opened, in case the name was replaced between the two looks.
+    let len = kind(&file.metadata()?)?;
+    Ok((file, len))
+}
+
+/// What a file that is not a regular one is, for messages.
+fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let t = meta.file_type();
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if meta.is_dir() {
+        "a folder"
+    } else {
+        "a special file"
+    }
+}
+
+/// Reads a whole regular file of at most `max` bytes ([`open_regular`]); a file that grows while
+/// it is read stops at `max + 1` bytes and is refused.
+pub fn read_regular(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let (file, len) = open_regular(path, max)?;
+    let mut buf = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
+    file.take(max.saturating_add(1)).read_to_end(&mut buf)?;
+    if buf.len() as u64 > max {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::FileTooLarge,
+            format!("the file grew above the {max} bytes a file may have"),
+        ));
+    }
+    Ok(buf)
+}
+
+/// Reads a whole source file, like `std::fs::read`, if it is a regular file of at most
+/// [`MAX_SOURCE_BYTES`] ([`open_regular`]). A large one (a generated scene of megabytes) is
 /// read in two halves at once, so the kernel's copy into the new buffer, and the page faults it
 /// takes, run on two cores.
 pub fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
@@ -166,8 +240,7 @@ pub fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
     {
         use std::io::{Read, Seek, SeekFrom};
         use std::os::unix::fs::FileExt;
-        let mut file = std::fs::File::open(path)?;
-        let len = file.metadata()?.len();
+        let (mut file, len) = open_regular(path, MAX_SOURCE_BYTES)?;
         if len >= PARALLEL_READ_BYTES
             && let Ok(size) = usize::try_from(len)
         {
@@ -182,12 +255,15 @@ pub fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
             // tail read too, as `std::fs::read` would have read it.
             if a.is_ok() && b.is_ok() {
                 file.seek(SeekFrom::Start(len))?;
-                file.read_to_end(&mut buf)?;
-                return Ok(buf);
+                file.take(MAX_SOURCE_BYTES - len + 1)
+                    .read_to_end(&mut buf)?;
+                if buf.len() as u64 <= MAX_SOURCE_BYTES {
+                    return Ok(buf);
+                }
             }
         }
     }
-    std::fs::read(path)
+    read_regular(path, MAX_SOURCE_BYTES)
 }
 
 #[cfg(test)]
@@ -217,6 +293,26 @@ mod tests {
             assert_eq!(super::read_file(&path).unwrap(), bytes, "{len} bytes");
         }
         assert!(super::read_file(&dir.join("absent")).is_err());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn only_regular_files_within_the_budget_are_read() {
+        let dir = std::env::temp_dir().join(format!("rtc-regular-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("ten");
+        std::fs::write(&file, b"0123456789").unwrap();
+        assert_eq!(super::read_regular(&file, 10).unwrap(), b"0123456789");
+        let big = super::read_regular(&file, 9).unwrap_err();
+        assert_eq!(big.kind(), std::io::ErrorKind::FileTooLarge, "{big}");
+        let folder = super::read_regular(&dir, 1 << 20).unwrap_err();
+        assert!(folder.to_string().contains("a folder"), "{folder}");
+        #[cfg(unix)]
+        {
+            let device = super::read_file(Path::new("/dev/zero")).unwrap_err();
+            assert_eq!(device.kind(), std::io::ErrorKind::InvalidInput, "{device}");
+            assert!(device.to_string().contains("a device"), "{device}");
+        }
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -82,7 +82,10 @@ pub fn study(
     options: &StudyOptions,
     progress: &dyn SweepProgress,
 ) -> Result<Report, Diagnostics> {
-    let one = |d: Diagnostic| Diagnostics { items: vec![d] };
+    let one = |d: Diagnostic| Diagnostics {
+        items: vec![d],
+        ..Diagnostics::default()
+    };
     let mut scene = scene.clone();
     if let Some(r) = options.region {
         r.check(scene.camera.width, scene.camera.height)
@@ -188,6 +191,7 @@ pub fn study(
             noise_rmse: reference.noise.map(|_| reference.noise_rmse()),
             noise_flip: reference.noise.map(|n| n.flip_between_runs),
             hash,
+            cache_notes: reference.notes.clone(),
         },
         metric: options.metric,
         points: measured

@@ -47,6 +47,10 @@ pub struct Reference {
     /// The noise of one seed's render (`None` for a given file or a scene without randomness;
     /// the mean of two seeds has this RMSE divided by √2).
     pub noise: Option<NoiseEstimate>,
+    /// What went wrong with the cache, which never fails the run: an entry that failed its
+    /// checksum or held non-finite values (a miss: rendered again), one that could not be
+    /// written.
+    pub notes: Vec<String>,
 }
 
 impl Reference {
@@ -82,6 +86,7 @@ pub fn content_hash(
     }
     s.settings.seed = 0;
     s.settings.output = None;
+    s.settings.output_span = None;
     let text = format!(
         "rtc {} reference {:?} seeds {:?} scene {:?}{}",
         env!("CARGO_PKG_VERSION"),
@@ -120,11 +125,24 @@ pub fn rendered(
             .map(|s| dir.join(format!("{hash}-seed{s}.exr")))
             .collect()
     });
+    let mut notes = Vec::new();
     let cached = files.as_ref().and_then(|files| {
-        files
-            .iter()
-            .map(|f| read_exr(f, width, height).ok())
-            .collect::<Option<Vec<Vec<f32>>>>()
+        let mut runs = Vec::new();
+        for f in files {
+            match read_cached(f, width, height) {
+                Ok(run) => runs.push(run),
+                Err(why) => {
+                    notes.extend(why.map(|why| {
+                        format!(
+                            "the cached reference {} {why}: it is rendered again",
+                            f.display()
+                        )
+                    }));
+                    return None;
+                }
+            }
+        }
+        Some(runs)
     });
     let (runs, source) = match cached {
         Some(runs) => (runs, Source::Cached(files.clone().unwrap_or_default())),
@@ -135,7 +153,12 @@ pub fn rendered(
             }
             if let Some(files) = &files {
                 for (f, run) in files.iter().zip(&runs) {
-                    write_exr(f, width, height, run)?;
+                    if let Err(why) = write_cached(f, width, height, run) {
+                        notes.push(format!(
+                            "the reference could not be cached as {}: {why}",
+                            f.display()
+                        ));
+                    }
                 }
             }
             (runs, Source::Rendered)
@@ -159,6 +182,7 @@ pub fn rendered(
         data,
         source,
         noise,
+        notes,
     })
 }
 
@@ -182,6 +206,7 @@ pub fn from_file(path: &Path, width: u32, height: u32) -> Result<Reference, Diag
         data,
         source: Source::File(path.to_path_buf()),
         noise: None,
+        notes: Vec::new(),
     })
 }
 
@@ -192,17 +217,55 @@ fn read_exr(path: &Path, width: u32, height: u32) -> Result<Vec<f32>, Diagnostic
     Ok(rgb.into_raw())
 }
 
-fn write_exr(path: &Path, width: u32, height: u32, data: &[f32]) -> Result<(), Diagnostic> {
+/// The checksum file of a cached reference: `X.exr` → `X.exr.sha256`.
+fn checksum_path(path: &Path) -> PathBuf {
+    path.with_extension("exr.sha256")
+}
+
+/// Reads a cached reference: `Err(None)` when there is none (a plain miss), `Err(Some(why))`
+/// when there is one that cannot be trusted: its bytes do not match the checksum written with
+/// it, it does not decode to the swept size, or it holds a value that is not finite.
+fn read_cached(path: &Path, width: u32, height: u32) -> Result<Vec<f32>, Option<String>> {
+    if !path.exists() {
+        return Err(None);
+    }
+    let bytes = crate::source::read_regular(path, u64::MAX).map_err(|e| Some(e.to_string()))?;
+    let sum = std::fs::read_to_string(checksum_path(path))
+        .map_err(|_| Some("has no checksum file".to_string()))?;
+    if sum.trim() != crate::opt::fingerprint::bytes(&bytes) {
+        return Err(Some("does not match its checksum".into()));
+    }
+    let img = image::load_from_memory_with_format(&bytes, image::ImageFormat::OpenExr)
+        .map_err(|e| Some(format!("cannot be decoded ({e})")))?;
+    let rgb = img.to_rgb32f();
+    if (rgb.width(), rgb.height()) != (width, height) {
+        return Err(Some(format!("is {}×{} pixels", rgb.width(), rgb.height())));
+    }
+    let data = rgb.into_raw();
+    if data.iter().any(|v| !v.is_finite()) {
+        return Err(Some("holds a value that is not a finite number".into()));
+    }
+    Ok(data)
+}
+
+/// Writes a reference to the cache: the EXR and its checksum file, each through a temporary
+/// file of a random name and a rename (removed on a failure such as a full disk, so no
+/// partial file stays). The error says why, for a note.
+fn write_cached(path: &Path, width: u32, height: u32, data: &[f32]) -> Result<(), String> {
     if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir).map_err(|e| io_error(dir, &e.to_string()))?;
+        std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
     }
     let img: ImageBuffer<Rgb<f32>, Vec<f32>> = ImageBuffer::from_raw(width, height, data.to_vec())
-        .ok_or_else(|| io_error(path, "the image buffer has the wrong size"))?;
-    // Written beside and renamed, so an interrupted run never leaves half a reference.
-    let partial = path.with_extension("exr.partial");
-    img.save_with_format(&partial, image::ImageFormat::OpenExr)
-        .map_err(|e| io_error(&partial, &e.to_string()))?;
-    std::fs::rename(&partial, path).map_err(|e| io_error(path, &e.to_string()))
+        .ok_or("the image buffer has the wrong size")?;
+    let mut bytes = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut bytes, image::ImageFormat::OpenExr)
+        .map_err(|e| e.to_string())?;
+    let bytes = bytes.into_inner();
+    let write = crate::render::output::write_atomically;
+    // The EXR first: a checksum file never describes bytes that are not there yet.
+    write(path, &bytes).map_err(|d| d.message)?;
+    let sum = crate::opt::fingerprint::bytes(&bytes) + "\n";
+    write(&checksum_path(path), sum.as_bytes()).map_err(|d| d.message)
 }
 
 fn check_size(path: &Path, w: u32, h: u32, want_w: u32, want_h: u32) -> Result<(), Diagnostic> {

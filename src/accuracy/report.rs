@@ -69,6 +69,8 @@ pub struct ReferenceInfo {
     pub noise_flip: Option<f64>,
     /// The content hash naming the cached files (`None` for a file).
     pub hash: Option<String>,
+    /// Problems with the cache, none fatal ([`super::reference::Reference::notes`]).
+    pub cache_notes: Vec<String>,
 }
 
 /// One measured setting in the report.

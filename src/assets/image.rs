@@ -6,7 +6,7 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 
 use crate::diag::Diagnostic;
-use crate::ir::limits::MAX_TEXTURE_PIXELS;
+use crate::ir::limits::{MAX_TEXTURE_FILE_BYTES, MAX_TEXTURE_PIXELS};
 use crate::source::Span;
 
 /// A decoded image with channels in [0, 1].
@@ -62,6 +62,14 @@ impl Picture {
 
     /// Decodes an image file (PNG, JPEG, HDR or EXR, by extension).
     pub fn load(path: &Path) -> Result<Picture, ImageError> {
+        // Only a regular file within the byte budget: a device or a FIFO would be read for ever.
+        if let Err(e) = crate::source::open_regular(path, MAX_TEXTURE_FILE_BYTES) {
+            return Err(ImageError {
+                too_large: e.kind() == std::io::ErrorKind::FileTooLarge,
+                missing: e.kind() != std::io::ErrorKind::FileTooLarge,
+                message: e.to_string(),
+            });
+        }
         let open = || {
             image::ImageReader::open(path).map_err(|e| ImageError {
                 message: e.to_string(),

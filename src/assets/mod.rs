@@ -11,6 +11,7 @@ pub mod cache;
 pub mod image;
 pub mod mtl;
 pub mod obj;
+pub mod obj_count;
 pub mod obj_error;
 pub mod obj_fast;
 pub mod obj_file;

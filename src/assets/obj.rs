@@ -78,8 +78,22 @@ impl MeshAsset {
         if let Ok(meta) = std::fs::metadata(path) {
             within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
         }
-        let text =
-            std::fs::read(path).map_err(|_| locate(path, tobj::LoadError::OpenFileFailed))?;
+        let read = super::obj_count::read_counted(path, MAX_MESH_FILE_BYTES, MAX_TRIANGLES as u64);
+        let text = read.map_err(|e| {
+            if e.kind() == std::io::ErrorKind::NotFound {
+                locate(path, tobj::LoadError::OpenFileFailed)
+            } else {
+                // A device, a FIFO or a folder: say so rather than "cannot be read".
+                MeshError {
+                    message: format!("the file cannot be read: {e}"),
+                    ..locate(path, tobj::LoadError::OpenFileFailed)
+                }
+            }
+        })?;
+        let text = match text {
+            super::obj_count::Counted::Text(text) => text,
+            super::obj_count::Counted::TooMany(e) => return Err(e),
+        };
         let faces = match fast.then(|| read_fast(path, &text, smooth)).flatten() {
             Some(faces) => faces?,
             None => read_tobj(path, &text, smooth)?,

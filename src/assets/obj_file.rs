@@ -11,12 +11,16 @@ use std::path::Path;
 
 use tobj::{LoadError, LoadOptions, Model};
 
+/// Bytes of one MTL material library, checked before reading (docs/language.md §24).
+pub const MAX_MTL_BYTES: u64 = 64 << 20;
+
 /// The materials of an OBJ file, or why its material library could not be used.
 pub type Materials = Result<Vec<tobj::Material>, String>;
 
 /// The models in the OBJ file at `path` and its materials (`mtllib` paths are relative to it).
 pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), LoadError> {
-    let text = std::fs::read(path).map_err(|_| LoadError::OpenFileFailed)?;
+    let text = crate::source::read_regular(path, crate::ir::limits::MAX_MESH_FILE_BYTES)
+        .map_err(|_| LoadError::OpenFileFailed)?;
     read_text(path, &text, opts)
 }
 
@@ -64,7 +68,9 @@ impl<'a> Libraries<'a> {
             .obj
             .parent()
             .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib));
-        let text = std::fs::read(&full).map_err(|_| LoadError::OpenFileFailed)?;
+        // Only a regular file within the budget of §24: `mtllib /dev/zero` would read for ever.
+        let text = crate::source::read_regular(&full, MAX_MTL_BYTES)
+            .map_err(|_| LoadError::OpenFileFailed)?;
         if let Some(what) = short_colour_line(&text) {
             self.problem
                 .borrow_mut()

@@ -391,6 +391,16 @@ pub(crate) fn run(args: &AccuracyArgs) -> Outcome {
             return outcome_of(&diags, false);
         }
     };
+    let cache_notes: Vec<Diagnostic> = study
+        .reference
+        .cache_notes
+        .iter()
+        .map(|n| {
+            Diagnostic::new(Severity::Note, "rtc::accuracy::cache", None, n.clone())
+                .with_help("the cache only saves time: delete the entry, or pass `--no-cache`")
+        })
+        .collect();
+    print(&cache_notes, &sources);
     if study.reference_too_noisy() {
         print(&[noisy_reference(&study)], &sources);
     }

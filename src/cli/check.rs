@@ -121,7 +121,7 @@ fn run_dir(dir: &Path, format: Format, deny_warnings: bool, options: &EvalOption
 fn check_file(file: &Path, deny_warnings: bool, options: &EvalOptions) -> FileCheck {
     let mut sources = SourceMap::new();
     if SceneFormat::of(file) == Some(SceneFormat::Rtc)
-        && let Ok(text) = std::fs::read_to_string(file)
+        && let Ok(Ok(text)) = rtc::source::read_file(file).map(String::from_utf8)
         && let Some(lib) = rtc::eval::library::load_library(file, &text, &mut sources, options)
     {
         let outcome = crate::cli::outcome_of(&lib.diagnostics, deny_warnings);

@@ -129,14 +129,16 @@ pub fn eta(history: &[(f64, f64)], target: f64) -> Option<f64> {
 
 /// Reads a sample map; a malformed one is `rtc::render::samples` at its line and column.
 fn read_map(file: &Path) -> Result<SampleMap, Diagnostic> {
-    let text = std::fs::read_to_string(file).map_err(|e| {
-        Diagnostic::new(
-            Severity::Error,
-            IO_ERROR,
-            None,
-            format!("cannot read {}: {e}", file.display()),
-        )
-    })?;
+    let text = rtc::source::read_regular(file, rtc::source::MAX_SOURCE_BYTES)
+        .and_then(|b| String::from_utf8(b).map_err(std::io::Error::other))
+        .map_err(|e| {
+            Diagnostic::new(
+                Severity::Error,
+                IO_ERROR,
+                None,
+                format!("cannot read {}: {e}", file.display()),
+            )
+        })?;
     SampleMap::parse(&text).map_err(|(line, col, what)| {
         Diagnostic::new(
             Severity::Error,

@@ -12,6 +12,9 @@ use rtc::source::SourceMap;
 use super::report::{self, Format};
 use crate::cli::Outcome;
 
+/// Stack of the formatting thread (reserved address space; pages are touched only as needed).
+const FMT_STACK_BYTES: usize = 256 << 20;
+
 /// What formatting one file did.
 enum Done {
     Unchanged,
@@ -83,7 +86,19 @@ pub fn run(paths: &[PathBuf], check: bool, format: Format) -> Outcome {
 fn formatted(path: &Path, text: String, format: Format) -> Result<String, ()> {
     let mut sources = SourceMap::new();
     let id = sources.add(path, text);
-    match rtc::syntax::format::format(id, &sources.get(id).text) {
+    let text = &sources.get(id).text;
+    // The layout recurses once per level of the tree, as deep as the longest chain the
+    // budgets allow (§24): on a thread with the evaluation's stack, not the main thread's.
+    let run = || rtc::syntax::format::format(id, text);
+    let result = std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .name("rtc-fmt".into())
+            .stack_size(FMT_STACK_BYTES)
+            .spawn_scoped(s, run)
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+    })
+    .unwrap_or_else(|_| run());
+    match result {
         Ok(out) => Ok(out),
         Err(diags) => {
             show(&diags, &sources, path, format);
@@ -100,7 +115,15 @@ fn show(diags: &[Diagnostic], sources: &SourceMap, path: &Path, format: Format) 
 }
 
 fn file(path: &Path, check: bool, format: Format) -> Done {
-    let text = match std::fs::read_to_string(path) {
+    let read = rtc::source::read_regular(path, rtc::source::MAX_SOURCE_BYTES).and_then(|b| {
+        String::from_utf8(b).map_err(|_| {
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                "the file is not UTF-8 text",
+            )
+        })
+    });
+    let text = match read {
         Ok(t) => t,
         Err(e) => {
             eprintln!(
@@ -123,7 +146,11 @@ fn file(path: &Path, check: bool, format: Format) -> Done {
         );
         return Done::Changed;
     }
-    match rtc::render::output::write_atomically(path, out.as_bytes()) {
+    // In place means the file the path names: through a symlink to its target (the link stays
+    // a link), with the file's permissions (a 0600 file stays 0600).
+    let target = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf());
+    let permissions = std::fs::metadata(&target).ok().map(|m| m.permissions());
+    match rtc::render::output::write_atomically_with(&target, out.as_bytes(), permissions) {
         Ok(()) => {
             println!("{}", path.display());
             Done::Changed

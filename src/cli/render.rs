@@ -131,6 +131,12 @@ fn render(
         return outcome;
     };
     let animated = written.is_some();
+    if job.output.is_none()
+        && let Some(d) = outside_scene_folder(file, &scene)
+    {
+        print(std::slice::from_ref(&d), &sources);
+        return Outcome::SceneErrors;
+    }
     let path = cli::frames::numbered(
         &output_path(file, job.output.clone(), &scene, animated),
         opts.frame,
@@ -162,6 +168,16 @@ fn render(
         Some(s) => cli::shard::part_path(job.output.clone(), &path, s),
         None => path,
     };
+    // Found now, not after the whole render: a format rtc cannot write, a missing or
+    // read-only folder.
+    let destination = match pixel_shard {
+        Some(_) => rtc::render::output::check_folder(&path),
+        None => rtc::render::output::check_destination(&path),
+    };
+    if let Err(d) = destination {
+        print(std::slice::from_ref(&d), &sources);
+        return Outcome::IoOrUsage;
+    }
     let start = std::time::Instant::now();
     // A part records the scene's fingerprint; taken here, as the preparation consumes the scene.
     let fingerprint = pixel_shard.map(|_| rtc::opt::fingerprint::scene(&scene));
@@ -211,7 +227,7 @@ fn render(
         }
         match (pixel_shard, fingerprint) {
             (Some(s), Some(fingerprint)) => {
-                cli::shard::write_part(&film, fingerprint, s, &path, sidecar)
+                cli::shard::write_part(&film, file, fingerprint, s, &path, sidecar)
             }
             _ => {
                 rtc::render::output::save_film(&film, &path)?;
@@ -267,4 +283,74 @@ fn output_path(file: &Path, output: Option<PathBuf>, scene: &Scene, animated: bo
                 file.with_extension("png")
             }
         })
+}
+
+/// The error for a scene whose `render { output: ... }` names a file outside the scene's folder
+/// (an absolute path, `..` above it, or a symlinked folder leading out): a scene someone sent
+/// must not choose which image of the user's it overwrites. `-o` is the user's own choice.
+fn outside_scene_folder(file: &Path, scene: &Scene) -> Option<Diagnostic> {
+    let out = scene.settings.output.as_ref()?;
+    let dir = file.parent().unwrap_or(Path::new(""));
+    if inside(dir, out) {
+        return None;
+    }
+    let d = Diagnostic::new(
+        rtc::diag::Severity::Error,
+        "rtc::render::output",
+        scene.settings.output_span,
+        format!(
+            "the scene's `output` `{}` is outside the scene's folder",
+            out.display()
+        ),
+    )
+    .with_label("a scene may only name an image in its own folder or below it")
+    .with_help(format!(
+        "choose the file yourself with `rtc render {} -o {}`, or name a path inside the scene's folder such as `out/{}`",
+        file.display(),
+        out.file_name().map_or("image.png".into(), |n| n.to_string_lossy()),
+        out.file_name().map_or("image.png".into(), |n| n.to_string_lossy()),
+    ));
+    Some(d)
+}
+
+/// Whether `path` (already joined to `dir`, `..` collapsed) lies in `dir` or below it: it
+/// does not climb above `dir` by name, and its deepest existing folder, canonicalised
+/// (symlinks followed), is `dir`'s canonical folder or below it.
+fn inside(dir: &Path, path: &Path) -> bool {
+    use std::path::Component;
+    let Ok(rel) = path.strip_prefix(dir) else {
+        return false;
+    };
+    let mut depth = 0i64;
+    for c in rel.components() {
+        match c {
+            Component::Normal(_) => depth += 1,
+            Component::CurDir => {}
+            Component::ParentDir => depth -= 1,
+            Component::RootDir | Component::Prefix(_) => return false,
+        }
+        if depth < 0 {
+            return false;
+        }
+    }
+    let here = |p: &Path| {
+        let p = if p.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            p
+        };
+        std::fs::canonicalize(p)
+    };
+    let Ok(root) = here(dir) else {
+        return false;
+    };
+    // The file itself may be a link: the rename replaces the link, so only folders count.
+    let mut folder = path.parent();
+    while let Some(f) = folder {
+        if let Ok(real) = here(f) {
+            return real.starts_with(&root);
+        }
+        folder = f.parent();
+    }
+    false
 }

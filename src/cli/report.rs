@@ -27,12 +27,63 @@ pub fn render(
     format: Format,
     color: bool,
 ) -> String {
+    let shown = capped(diags);
+    let diags = &shown[..];
     match format {
         Format::Human => human(diags, sources, color),
         Format::Short => short(diags, sources, subject),
         Format::Json => json(diags, sources).to_string(),
     }
 }
+
+/// The diagnostics shown: at most [`MAX_SHOWN`] errors and as many warnings (notes all), in
+/// their order, then a note that counts the rest. Printing a million errors helps nobody and
+/// took minutes and hundreds of megabytes.
+fn capped(diags: &[Diagnostic]) -> std::borrow::Cow<'_, [Diagnostic]> {
+    let (mut errors, mut warnings) = (0usize, 0usize);
+    let mut shown = Vec::new();
+    let (mut more_errors, mut more_warnings) = (0usize, 0usize);
+    for d in diags {
+        let (count, more) = match d.severity {
+            Severity::Error => (&mut errors, &mut more_errors),
+            Severity::Warning => (&mut warnings, &mut more_warnings),
+            Severity::Note => {
+                shown.push(d);
+                continue;
+            }
+        };
+        if *count < MAX_SHOWN {
+            *count += 1;
+            shown.push(d);
+        } else {
+            *more += 1;
+        }
+    }
+    if more_errors + more_warnings == 0 {
+        return std::borrow::Cow::Borrowed(diags);
+    }
+    let mut out: Vec<Diagnostic> = shown.into_iter().cloned().collect();
+    out.push(
+        Diagnostic::new(
+            Severity::Note,
+            OMITTED,
+            None,
+            format!(
+                "{more_errors} more error{} and {more_warnings} more warning{} not shown (at most {MAX_SHOWN} of each are)",
+                if more_errors == 1 { "" } else { "s" },
+                if more_warnings == 1 { "" } else { "s" },
+            ),
+        )
+        .with_help("fix the first ones and run again; `--format short` lists one per line"),
+    );
+    std::borrow::Cow::Owned(out)
+}
+
+/// Errors, and warnings, a report shows at most (docs/language.md §24).
+pub(crate) const MAX_SHOWN: usize = rtc::diag::MAX_ERRORS;
+
+/// The code of the note that counts the diagnostics a report leaves out.
+const OMITTED: &str = "rtc::diag::omitted";
 
 fn position(sources: &SourceMap, span: Span) -> (String, usize, usize) {
     let file = sources.get(span.file);
@@ -137,7 +188,7 @@ struct Report {
     severity: Severity,
     code: Option<String>,
     message: String,
-    source: Option<NamedSource<String>>,
+    source: Option<NamedSource<std::sync::Arc<String>>>,
     labels: Vec<LabeledSpan>,
     help: Option<String>,
     related: Vec<Report>,
@@ -207,9 +258,13 @@ impl Report {
     }
 }
 
-fn named_source(sources: &SourceMap, file: rtc::source::FileId) -> NamedSource<String> {
+fn named_source(
+    sources: &SourceMap,
+    file: rtc::source::FileId,
+) -> NamedSource<std::sync::Arc<String>> {
     let f = sources.get(file);
-    NamedSource::new(f.path.display().to_string(), String::clone(&f.text))
+    // Shared, not copied: a report per diagnostic must not copy a file of megabytes.
+    NamedSource::new(f.path.display().to_string(), std::sync::Arc::clone(&f.text))
 }
 
 fn miette_span(s: Span) -> SourceSpan {

@@ -53,42 +53,65 @@ pub fn part_path(output: Option<PathBuf>, image: &Path, s: Shard) -> PathBuf {
         .unwrap_or_else(|| image.with_extension(format!("part-{}-of-{}.rtcpart", s.index, s.count)))
 }
 
-/// The fingerprint of this process's pixel-changing options: the arguments after `render`
-/// without the scene path (its content is in the scene fingerprint) and the neutral options.
-pub fn settings_fingerprint() -> String {
+/// Options whose whole effect is on the evaluated scene, which the scene fingerprint holds
+/// (`opt::fingerprint::scene` hashes the IR): `--set a=1` and `--set a=1.0` give the same scene
+/// when `a` is a `Float`, and a frame or rate the scene does not read changes nothing.
+const IN_THE_SCENE: &[&str] = &["--set", "--frame", "--fps"];
+
+/// The fingerprint of this process's pixel-changing options ([`settings_of`] of its
+/// arguments after `render`).
+pub fn settings_fingerprint(scene_file: &Path) -> String {
     let args: Vec<String> = std::env::args().skip(2).collect();
-    let mut kept = Vec::new();
-    let mut i = 0;
+    settings_of(&args, scene_file)
+}
+
+/// The fingerprint of the pixel-changing options among `args` (the arguments after `render`):
+/// each option with the values that follow it is one item, items are sorted, so their order
+/// on the command line does not matter; the scene path (its content is in the scene
+/// fingerprint), the neutral options and those whose effect is in the scene are left out.
+pub fn settings_of(args: &[String], scene_file: &Path) -> String {
+    let mut items: Vec<String> = Vec::new();
+    let mut skipping = false;
     let mut seen_file = false;
-    while i < args.len() {
-        let a = args[i].as_str();
-        let name = a.split('=').next().unwrap_or(a);
-        if NEUTRAL_WITH_VALUE.contains(&name) {
-            i += if a.contains('=') { 1 } else { 2 };
+    for a in args {
+        if !seen_file && Path::new(a) == scene_file {
+            seen_file = true;
             continue;
         }
-        if NEUTRAL_FLAGS.contains(&a) {
-        } else if !a.starts_with('-') && !seen_file {
-            seen_file = true;
+        if a.starts_with('-') && a.len() > 1 {
+            let name = a.split('=').next().unwrap_or(a);
+            let neutral = NEUTRAL_WITH_VALUE.contains(&name)
+                || NEUTRAL_FLAGS.contains(&name)
+                || IN_THE_SCENE.contains(&name);
+            // An option's values follow it unless it is written `--name=value`.
+            skipping = neutral && !a.contains('=');
+            if !neutral {
+                items.push(a.clone());
+            }
+        } else if skipping {
+            // A value of a left-out option.
+        } else if let Some(last) = items.last_mut() {
+            last.push(' ');
+            last.push_str(a);
         } else {
-            kept.push(a.to_string());
+            items.push(a.clone());
         }
-        i += 1;
     }
-    kept.sort();
-    fingerprint::bytes(kept.join("\n").as_bytes())
+    items.sort();
+    fingerprint::bytes(items.join("\n").as_bytes())
 }
 
 /// Writes shard `s` of a rendered film to `path` atomically; `scene` is the scene's
 /// fingerprint (`opt::fingerprint::scene`).
 pub fn write_part(
     film: &rtc::render::film::Film,
+    scene_file: &Path,
     scene: String,
     s: Shard,
     path: &Path,
     sidecar: Option<serde_json::Value>,
 ) -> Result<(), Diagnostic> {
-    let mut part = Part::of_film(film, s, scene, settings_fingerprint());
+    let mut part = Part::of_film(film, s, scene, settings_fingerprint(scene_file));
     part.sidecar = sidecar;
     rtc::render::output::write_atomically(path, &part.to_bytes())
 }
@@ -109,7 +132,8 @@ pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
     }
     let mut parts = Vec::new();
     for p in paths {
-        let bytes = match std::fs::read(p) {
+        // Only a regular file (a FIFO would block); its header is checked against its length.
+        let bytes = match rtc::source::read_regular(p, u64::MAX) {
             Ok(b) => b,
             Err(e) => {
                 return fail(
@@ -148,4 +172,41 @@ pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
         }
     }
     Outcome::Ok
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn of(args: &[&str]) -> String {
+        let args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
+        settings_of(&args, Path::new("s.rtc"))
+    }
+
+    #[test]
+    fn the_settings_do_not_depend_on_the_order_of_the_arguments() {
+        assert_eq!(
+            of(&["--frame", "0", "s.rtc"]),
+            of(&["s.rtc", "--frame", "0"])
+        );
+        assert_eq!(
+            of(&["--aov", "depth", "s.rtc", "--shard", "1/2"]),
+            of(&["s.rtc", "--shard=0/2", "--aov", "depth"])
+        );
+        // What is in the evaluated scene is left to the scene fingerprint.
+        assert_eq!(
+            of(&["s.rtc", "--set", "a=1"]),
+            of(&["--set", "a=1.0", "s.rtc"])
+        );
+        // A pixel-changing option with its value is one item: values do not swap between
+        // options, and a changed value counts.
+        assert_ne!(
+            of(&["s.rtc", "--aov", "depth"]),
+            of(&["s.rtc", "--aov", "normal"])
+        );
+        assert_ne!(
+            of(&["s.rtc", "--target-error", "0.1", "--aov", "depth"]),
+            of(&["s.rtc", "--target-error", "depth", "--aov", "0.1"])
+        );
+    }
 }

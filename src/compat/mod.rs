@@ -102,23 +102,24 @@ fn start_of(file: FileId) -> Span {
 /// non-UTF-8 byte in the decoded text. Old course files come from systems where Latin-1 was the
 /// default; every byte is then one character.
 fn read(path: &Path) -> Result<(String, Option<usize>), Loaded> {
-    let bytes = std::fs::read(path).map_err(|e| {
-        let mut diagnostics = Diagnostics::default();
-        diagnostics.push(
-            Diagnostic::new(
-                Severity::Error,
-                crate::diag::IO_ERROR,
-                None,
-                format!("cannot read `{}`: {e}", path.display()),
-            )
-            .with_help("check the path and that the file is readable"),
-        );
-        Loaded {
-            scene: None,
-            diagnostics,
-            provenance: None,
-        }
-    })?;
+    let bytes =
+        crate::source::read_regular(path, crate::source::MAX_SOURCE_BYTES).map_err(|e| {
+            let mut diagnostics = Diagnostics::default();
+            diagnostics.push(
+                Diagnostic::new(
+                    Severity::Error,
+                    crate::diag::IO_ERROR,
+                    None,
+                    format!("cannot read `{}`: {e}", path.display()),
+                )
+                .with_help("check the path and that the file is readable"),
+            );
+            Loaded {
+                scene: None,
+                diagnostics,
+                provenance: None,
+            }
+        })?;
     Ok(match String::from_utf8(bytes) {
         Ok(text) => (text, None),
         Err(e) => {

@@ -50,6 +50,10 @@ pub struct EvalOptions {
     pub max_list_len: u64,
     /// Bytes in any one string.
     pub max_string_len: u64,
+    /// Distinct files imported by one evaluation, all nesting levels together.
+    pub max_imports: u32,
+    /// Imports nested inside imports (a file that imports a file that imports ...).
+    pub max_import_depth: u32,
     /// The frame evaluated: the built-in `frame` (`rtc render --frame N`).
     pub frame: i64,
     /// Frames per second: the built-in `time` is `frame / fps` (`rtc render --fps`).
@@ -74,6 +78,8 @@ impl Default for EvalOptions {
             max_objects: 10_000_000,
             max_list_len: 10_000_000,
             max_string_len: 10_000_000,
+            max_imports: 10_000,
+            max_import_depth: 64,
             frame: 0,
             fps: DEFAULT_FPS,
             overrides: Vec::new(),
@@ -245,8 +251,10 @@ fn run_root<'a>(
         None => split::Role::main(options, file),
     };
     it.overrides = overrides;
+    // Modules are told apart by their canonical file (symlinked folders name one file by many
+    // paths), so the scene itself is its canonical path too.
     it.loading
-        .push((path.to_path_buf(), crate::source::Span::default()));
+        .push((modules::identity(path), crate::source::Span::default()));
     let mut lowerer = lower::Lowerer::default();
     if options.provenance {
         lowerer.origins = Some(Vec::new());

@@ -125,3 +125,10 @@ pub fn std_modules_exporting(name: &str) -> Vec<&'static str> {
 pub fn resolve(dir: &Path, rel: &str) -> PathBuf {
     crate::assets::search::join(dir, rel)
 }
+
+/// The identity of a module file: its canonical path (symlinks and `..` resolved), so one file
+/// reached through several symlinked folders is one module, and a cycle through a link is seen;
+/// the path as given when it cannot be canonicalised (it does not exist: reading it fails).
+pub fn identity(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}

@@ -11,7 +11,7 @@ use crate::syntax::ast::{ExprKind, File, Import, ImportSource, Name, Stmt};
 use super::error::{EvalError, R, error, suggest};
 use super::interp::Interp;
 use super::lower::{Lowerer, emittable};
-use super::modules::{Binding, Module, STDLIB, Scope, resolve, stdlib};
+use super::modules::{Binding, Module, STDLIB, Scope, identity, resolve, stdlib};
 use super::value::{Closure, Value};
 
 impl Interp<'_> {
@@ -177,7 +177,7 @@ impl Interp<'_> {
 
     fn load_module(&mut self, im: &Import) -> R<Rc<Module>> {
         let span = im.source_span;
-        let (key, display, text) = match &im.source {
+        let (key, path, display, text) = match &im.source {
             ImportSource::Std(path) => {
                 let Some(name) = path.strip_prefix("std.") else {
                     return Err(error("rtc::module::unknown", span, format!("unknown module `{path}`"))
@@ -199,15 +199,14 @@ impl Interp<'_> {
                     .with_help(help)
                     .into());
                 };
-                (
-                    PathBuf::from(format!("<std>/{name}")),
-                    path.clone(),
-                    Some(text.to_owned()),
-                )
+                let key = PathBuf::from(format!("<std>/{name}"));
+                (key.clone(), key, path.clone(), Some(text.to_owned()))
             }
             ImportSource::File(rel) => {
+                // `path` as the user would write it (messages, relative imports); `key` the
+                // canonical file, which tells modules apart.
                 let p = resolve(&self.scope.dir, rel);
-                (p.clone(), p.display().to_string(), None)
+                (identity(&p), p.clone(), p.display().to_string(), None)
             }
         };
         if let Some(pos) = self.loading.iter().position(|(k, _)| *k == key) {
@@ -227,9 +226,10 @@ impl Interp<'_> {
         if let Some(m) = self.modules.get(&key) {
             return Ok(m.clone());
         }
-        let text = match text.or_else(|| self.split.replayed_text(&key)) {
+        self.import_budget(span)?;
+        let text = match text.or_else(|| self.split.replayed_text(&path)) {
             Some(t) => t,
-            None => std::fs::read_to_string(&key).map_err(|e| {
+            None => read_module(&path).map_err(|e| {
                 error(
                     "rtc::module::not_found",
                     span,
@@ -250,7 +250,7 @@ impl Interp<'_> {
             if key.starts_with("<std>") {
                 PathBuf::from(format!("std/{}.rtc", &display[4..]))
             } else {
-                key.clone()
+                path.clone()
             },
             text,
         );
@@ -261,7 +261,7 @@ impl Interp<'_> {
         let Some(ast) = ast.filter(|_| !had_errors) else {
             return Err(EvalError::Poisoned);
         };
-        let dir = key.parent().map(PathBuf::from).unwrap_or_default();
+        let dir = path.parent().map(PathBuf::from).unwrap_or_default();
         let scope = Rc::new(Scope::new(file, dir, display.clone()));
         self.loading.push((key.clone(), span));
         let saved_scope = std::mem::replace(&mut self.scope, scope.clone());
@@ -278,6 +278,50 @@ impl Interp<'_> {
         });
         self.modules.insert(key, m.clone());
         Ok(m)
+    }
+}
+
+/// The text of an imported file: a regular file within the source budget, in UTF-8.
+fn read_module(path: &std::path::Path) -> std::io::Result<String> {
+    let bytes = crate::source::read_regular(path, crate::source::MAX_SOURCE_BYTES)?;
+    String::from_utf8(bytes).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "the file is not UTF-8 text",
+        )
+    })
+}
+
+impl Interp<'_> {
+    /// Refuses a new import beyond the budgets of §24: distinct files imported, and imports
+    /// nested in imports (each level holds a part of the evaluation's stack).
+    fn import_budget(&self, span: crate::source::Span) -> R<()> {
+        let depth = self.loading.len().saturating_sub(1);
+        if depth >= self.opts.max_import_depth as usize {
+            return Err(error(
+                "rtc::budget::imports",
+                span,
+                format!("imports nested deeper than {}", self.opts.max_import_depth),
+            )
+            .with_label("this import exceeds the nesting budget")
+            .with_help(
+                "import the modules this chain needs from the scene file, not through each other",
+            )
+            .into());
+        }
+        // Every module read so far (standard ones too) and those being read but the scene.
+        let files = self.modules.len() + depth;
+        if files >= self.opts.max_imports as usize {
+            return Err(error(
+                "rtc::budget::imports",
+                span,
+                format!("more than {} modules imported", self.opts.max_imports),
+            )
+            .with_label("this import exceeds the budget of imported files")
+            .with_help("merge small modules into fewer files")
+            .into());
+        }
+        Ok(())
     }
 }
 

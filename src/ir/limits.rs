@@ -52,6 +52,10 @@ pub const MAX_MESH_FILE_BYTES: u64 = 4 << 30;
 /// Most pixels of one texture image (checked from the file's header, before decoding): each
 /// decoded texel takes 24 bytes, so 2²⁶ pixels (8192×8192) are 1.5 GiB.
 pub const MAX_TEXTURE_PIXELS: u64 = 1 << 26;
+
+/// Largest texture image file rtc opens, in bytes (checked before reading): an uncompressed
+/// 8192×8192 float EXR of three channels is 805 MB.
+pub const MAX_TEXTURE_FILE_BYTES: u64 = 1 << 30;
 /// Most rays per glossy lobe (`gloss_samples`): the lobe's samples are one Sobol' sequence of
 /// at most this many points per camera sample.
 pub const MAX_GLOSS_SAMPLES: u32 = 1024;

@@ -30,6 +30,8 @@ pub struct RenderSettings {
     pub seed: u64,
     /// Output file requested by the scene, resolved relative to it.
     pub output: Option<PathBuf>,
+    /// Where the scene asked for `output` (the CLI's confinement error points there).
+    pub output_span: Option<crate::source::Span>,
     /// How film colours become 8-bit values.
     pub encoding: Encoding,
     /// Shadow rays pass through refractive surfaces, attenuated by their `refract` and colour
@@ -111,6 +113,7 @@ impl Default for RenderSettings {
             default_material: None,
             seed: 0,
             output: None,
+            output_span: None,
             encoding: Encoding::Linear,
             glass_shadows: false,
             flare: None,

@@ -17,7 +17,8 @@ pub fn scene(scene: &Scene) -> String {
     h.update(format!("{scene:?}").as_bytes());
     for path in files_read(scene) {
         h.update(path.to_string_lossy().as_bytes());
-        match std::fs::read(&path) {
+        // Only regular files (a FIFO would block): the render itself reports the others.
+        match crate::source::read_regular(&path, crate::ir::limits::MAX_MESH_FILE_BYTES) {
             Ok(bytes) => {
                 h.update((bytes.len() as u64).to_le_bytes());
                 h.update(&bytes);
@@ -67,7 +68,7 @@ fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
 
 /// The `mtllib` files an OBJ names, resolved beside it as the OBJ loader does.
 fn material_libraries(obj: &Path) -> Vec<PathBuf> {
-    let Ok(text) = std::fs::read(obj) else {
+    let Ok(text) = crate::source::read_regular(obj, crate::ir::limits::MAX_MESH_FILE_BYTES) else {
         return Vec::new();
     };
     let dir = obj.parent().unwrap_or(Path::new("."));

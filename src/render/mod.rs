@@ -80,7 +80,10 @@ pub struct RenderOptions {
 /// (tests, benchmarks). Fails with every problem preparing found, or the render's one error.
 pub fn render_scene(scene: &Scene, options: &RenderOptions) -> Result<Film, Diagnostics> {
     let prepared = crate::opt::prepare(scene)?;
-    render(&prepared, options, &Silent).map_err(|d| Diagnostics { items: vec![d] })
+    render(&prepared, options, &Silent).map_err(|d| Diagnostics {
+        items: vec![d],
+        ..Diagnostics::default()
+    })
 }
 
 /// [`render_scene`], quantised to 8-bit RGB.

@@ -5,7 +5,7 @@
 use std::io::Write;
 
 use image::ImageEncoder;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use crate::diag::{Diagnostic, IO_ERROR, Severity};
 
@@ -98,23 +98,102 @@ pub fn save(image: &Image, path: &Path) -> Result<(), Diagnostic> {
     write_atomically(path, &encode(image, path)?)
 }
 
+/// Checks, before a render, that its image can be written to `path`: a format rtc writes
+/// (by extension), and [`check_folder`].
+pub fn check_destination(path: &Path) -> Result<(), Diagnostic> {
+    if ImageFormat::of(path).is_none() {
+        return Err(io_error(
+            format!("cannot write `{}`: unknown image format", path.display()),
+            "name the output `*.png`, `*.ppm` or `*.exr`",
+        ));
+    }
+    check_folder(path)
+}
+
+/// Checks that a file can be created at `path`: its folder exists and a file can be created
+/// in it (one is, with a random name, and removed), and `path` is not a folder.
+pub fn check_folder(path: &Path) -> Result<(), Diagnostic> {
+    let dir = folder_of(path);
+    let fail = |why: String, help: &str| {
+        Err(io_error(
+            format!("cannot write `{}`: {why}", path.display()),
+            help,
+        ))
+    };
+    if path.is_dir() {
+        return fail(
+            "it is a folder".into(),
+            "give a file name, e.g. `-o out/image.png`",
+        );
+    }
+    if !dir.is_dir() {
+        return fail(
+            format!("the folder `{}` does not exist", dir.display()),
+            "create the folder first, or choose another path with `-o`",
+        );
+    }
+    match tempfile::Builder::new()
+        .prefix(".rtc-probe.")
+        .tempfile_in(dir)
+    {
+        Ok(probe) => {
+            drop(probe);
+            Ok(())
+        }
+        Err(e) => fail(
+            format!("the folder `{}` is not writable ({e})", dir.display()),
+            "choose a writable folder with `-o`, or change the folder's permissions",
+        ),
+    }
+}
+
+/// The folder a file at `path` goes into (`.` for a bare name).
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
+}
+
 /// Writes `bytes` to `path` through a temporary sibling file and a rename, so readers see the
-/// old file or the whole new one, never a part.
+/// old file or the whole new one, never a part. The new file's mode is what `std::fs::write`
+/// would give it (0666 less the umask).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Diagnostic> {
-    let tmp = temp_sibling(path);
-    let write = std::fs::write(&tmp, bytes).and_then(|()| std::fs::rename(&tmp, path));
-    write.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
+    write_atomically_with(path, bytes, None)
+}
+
+/// [`write_atomically`], the new file getting `permissions` (those of the file it replaces,
+/// for `rtc fmt`) when given. The temporary file has a random name and is created exclusively
+/// (`O_EXCL`: a symlink planted at the name is never followed) and removed on any failure.
+pub fn write_atomically_with(
+    path: &Path,
+    bytes: &[u8],
+    permissions: Option<std::fs::Permissions>,
+) -> Result<(), Diagnostic> {
+    let fail = |e: std::io::Error| {
         io_error(
             format!("cannot write `{}`: {e}", path.display()),
             "check that the directory exists and is writable, or choose another path with `-o`",
         )
-    })
-}
-
-fn temp_sibling(path: &Path) -> PathBuf {
+    };
+    let dir = folder_of(path);
     let name = path
         .file_name()
         .map_or_else(|| "image".into(), |n| n.to_string_lossy().into_owned());
-    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    let mut tmp = builder.tempfile_in(dir).map_err(fail)?;
+    tmp.write_all(bytes).map_err(fail)?;
+    if let Some(p) = permissions {
+        tmp.as_file().set_permissions(p).map_err(fail)?;
+    }
+    // Dropped on an error, the temporary file is removed.
+    tmp.persist(path).map_err(|e| fail(e.error))?;
+    Ok(())
 }

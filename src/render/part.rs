@@ -17,6 +17,7 @@ use glam::DVec3;
 use super::film::{Channel, Film, Stats};
 use super::shard::Shard;
 use crate::diag::{Diagnostic, Severity};
+use crate::ir::limits::{MAX_IMAGE_BYTES, image_bytes};
 use crate::ir::{Color, Encoding};
 use crate::opt::fingerprint;
 
@@ -142,6 +143,31 @@ impl Part {
             .as_array()
             .and_then(|a| a.iter().map(|r| pair(r).map(|(a, b)| a..b)).collect())
             .ok_or_else(|| missing("rows"))?;
+        // The header's sizes are checked against the file before anything is allocated by
+        // them: an image the render would refuse, as many bands as the shard has, and pixel
+        // data of the size the rows and channels need (a 266-byte file may claim 2³² rows).
+        if image_bytes(width, height, false) > MAX_IMAGE_BYTES {
+            return Err(bad(&format!(
+                "its header claims a {width}×{height} image, larger than rtc renders"
+            )));
+        }
+        if rows.len() as u64 != shard.band_count(height) {
+            return Err(bad(&format!(
+                "its rows are not those of shard {k}/{n} of a {height}-row image"
+            )));
+        }
+        let claimed = rows
+            .iter()
+            .map(|r| u64::from(r.end.saturating_sub(r.start)))
+            .sum::<u64>()
+            .saturating_mul(u64::from(width))
+            .saturating_mul(channels.len() as u64 * 24);
+        if claimed != payload.len() as u64 {
+            return Err(bad(&format!(
+                "its header claims {claimed} bytes of pixels, the file holds {}",
+                payload.len()
+            )));
+        }
         if rows != shard.bands(height) {
             return Err(bad(&format!(
                 "its rows are not those of shard {k}/{n} of a {height}-row image"

@@ -117,6 +117,18 @@ impl Shard {
         (y / BAND_ROWS) % self.count == self.index
     }
 
+    /// How many bands [`Shard::bands`] gives for an image `height` rows tall, without making
+    /// them (`rtc merge` checks a part's header with it before allocating).
+    pub fn band_count(self, height: u32) -> u64 {
+        let bands = u64::from(height.div_ceil(BAND_ROWS));
+        let (k, n) = (u64::from(self.index), u64::from(self.count));
+        if k < bands {
+            (bands - k).div_ceil(n)
+        } else {
+            0
+        }
+    }
+
     /// The row ranges this shard renders in an image `height` rows tall, from the top.
     pub fn bands(self, height: u32) -> Vec<Range<u32>> {
         let bands = height.div_ceil(BAND_ROWS);

@@ -88,6 +88,7 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
     // Whether the last statement was an expression or `let` (which a `-` line could continue).
     let mut continuable = false;
     let mut fast_statements = 0;
+    let mut syntax_errors = 0;
     let (version, mut pos) = header(file, text, &mut diags);
     let (fast_ends, mut tapes) = match path {
         Path::FastFirst => fast_line_ends(text, &scan.top_level_lines, cutoff),
@@ -155,10 +156,17 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
                 let d = errors::convert(file, text, pos, &e);
                 let at = d.span.map_or(pos, |s| s.start as usize);
                 diags.push(d);
-                match scan
-                    .top_level_lines
+                syntax_errors += 1;
+                if syntax_errors >= crate::diag::MAX_ERRORS {
+                    diags.push(stopped_reading(file, text, at));
+                    break;
+                }
+                // From the first top-level line after the error (found by bisection: a file
+                // of bad lines made this search quadratic).
+                let from = scan.top_level_lines.partition_point(|&l| l <= at.max(pos));
+                match scan.top_level_lines[from..]
                     .iter()
-                    .find(|&&l| l > at.max(pos) && starts_statement(text, l))
+                    .find(|&&l| starts_statement(text, l))
                 {
                     Some(&next) => pos = next,
                     None => break,
@@ -183,6 +191,27 @@ fn parse_with(file: FileId, text: &str, path: Path) -> Parsed<'_> {
         diags,
         fast_statements,
     }
+}
+
+/// The note after the syntax error that reached [`crate::diag::MAX_ERRORS`]: reading stopped
+/// there, and where (what follows was not read, so its errors cannot be counted).
+fn stopped_reading(file: FileId, text: &str, at: usize) -> Diagnostic {
+    let line = text.as_bytes()[..at.min(text.len())]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1;
+    Diagnostic::new(
+        crate::diag::Severity::Note,
+        "rtc::diag::omitted",
+        Some(Span::new(file, at, at)),
+        format!(
+            "{} syntax errors: the file was not read past line {line}",
+            crate::diag::MAX_ERRORS
+        ),
+    )
+    .with_label("reading stopped here")
+    .with_help("fix these errors and run again to see the next ones")
 }
 
 /// Top-level lines from which reading fast is worth a thread of its own.

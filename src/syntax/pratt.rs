@@ -34,6 +34,19 @@ pub static PRATT: ConstPrattParser<Rule, 19> = ConstPrattParser::new_const([
     (Op::postfix(Rule::with_suffix), false),
 ]);
 
+/// True for the rules of suffixes: calls, indexing, members, record arguments, `with`.
+pub fn is_suffix(rule: Rule) -> bool {
+    matches!(
+        rule,
+        Rule::call_args
+            | Rule::index
+            | Rule::member
+            | Rule::record_arg
+            | Rule::empty_record_arg
+            | Rule::with_suffix
+    )
+}
+
 /// True for the rules of binary operators.
 pub fn is_infix(rule: Rule) -> bool {
     matches!(

@@ -145,7 +145,21 @@ fn the_command_writes_the_report_the_plot_and_the_map_and_json_has_the_documente
         text.contains("light samples") && text.contains('*'),
         "{text}"
     );
-    assert_eq!(std::fs::read_dir(dir.join("cache")).unwrap().count(), 2);
+    // One EXR per seed, each with its checksum file.
+    let cached: Vec<String> = std::fs::read_dir(dir.join("cache"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(
+        cached.iter().filter(|n| n.ends_with(".exr")).count(),
+        2,
+        "{cached:?}"
+    );
+    assert_eq!(
+        cached.iter().filter(|n| n.ends_with(".exr.sha256")).count(),
+        2,
+        "{cached:?}"
+    );
     // The second reads the cache (so `reference.files` is not empty) and prints JSON.
     let json = accuracy(&["--format", "json", "--target-error", "1", "--time", "1h"]);
     let doc: serde_json::Value = serde_json::from_str(&json).expect("JSON on stdout");

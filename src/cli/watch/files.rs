@@ -15,7 +15,7 @@ pub type ContentHash = Option<u64>;
 
 /// Hashes a file's bytes (SipHash from std: no collision matters here, only change).
 pub fn hash_file(path: &Path) -> ContentHash {
-    let bytes = std::fs::read(path).ok()?;
+    let bytes = rtc::source::read_regular(path, rtc::ir::limits::MAX_MESH_FILE_BYTES).ok()?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     bytes.hash(&mut h);
     Some(h.finish())

@@ -115,15 +115,44 @@ pub fn bind(port: u16) -> Result<TcpListener, String> {
 /// Serves requests until the process ends; each request gets its own thread (event streams
 /// stay open).
 pub fn serve(listener: TcpListener, hub: Arc<Hub>) -> Result<(), String> {
+    let port = listener.local_addr().map_or(0, |a| a.port());
     let server = tiny_http::Server::from_listener(listener, None)
         .map_err(|e| format!("cannot start the HTTP server: {e}"))?;
     std::thread::spawn(move || {
         for request in server.incoming_requests() {
+            if !loopback_host(request.headers(), port) {
+                // DNS rebinding: a web page whose name now points at 127.0.0.1 reaches this
+                // port, but its requests name its own host.
+                let _ = request.respond(
+                    tiny_http::Response::from_string(format!(
+                        "rtc watch answers only requests for http://127.0.0.1:{port}/ or http://localhost:{port}/"
+                    ))
+                    .with_status_code(403),
+                );
+                continue;
+            }
             let hub = hub.clone();
             std::thread::spawn(move || answer(request, &hub));
         }
     });
     Ok(())
+}
+
+/// Whether a request's `Host` header names this server by a loopback name and its port:
+/// `127.0.0.1`, `localhost` or `[::1]`, with `:port`. A request without one is refused too
+/// (every browser sends it).
+pub fn loopback_host(headers: &[tiny_http::Header], port: u16) -> bool {
+    let Some(host) = headers
+        .iter()
+        .find(|h| h.field.equiv("Host"))
+        .map(|h| h.value.as_str().trim().to_ascii_lowercase())
+    else {
+        return false;
+    };
+    let Some((name, p)) = host.rsplit_once(':') else {
+        return false;
+    };
+    p.parse::<u16>() == Ok(port) && matches!(name, "127.0.0.1" | "localhost" | "[::1]")
 }
 
 /// `response` with the given headers (constant ASCII: each one parses).

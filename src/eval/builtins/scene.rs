@@ -498,6 +498,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     if let Some((v, sp)) = p.get("output") {
         let rel = types::string(it, &v, sp)?;
         st.output = Some(crate::eval::modules::resolve(&it.scope.dir, &rel));
+        st.output_span = Some(sp);
     }
     let mut rv = RenderVal {
         s: st,

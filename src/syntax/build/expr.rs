@@ -13,8 +13,10 @@ use crate::syntax::pratt;
 
 use super::{Builder, P, srgb_to_linear, unescape};
 
-/// Longest operator chain in one expression: evaluation recurses once per operator.
-const MAX_CHAIN: usize = 10_000;
+/// Longest chain of operators and suffixes (calls, indexing, members, `with`) in one
+/// expression: the tree is as deep as the chain, and evaluating, formatting and dropping it
+/// recurse once per level.
+pub(crate) const MAX_CHAIN: usize = 10_000;
 
 /// An expression with what its top operator was, so that `a < b < c` and `0..1..2` can be told
 /// from `(a < b) < c`: parentheses reset the tag.
@@ -56,7 +58,9 @@ impl Builder {
     fn too_long(&self, span: Span) -> Expr {
         self.push(
             Diagnostic::error("rtc::budget::nesting", span, "expression is too long")
-                .with_label(format!("more than {MAX_CHAIN} operators in one expression"))
+                .with_label(format!(
+                    "more than {MAX_CHAIN} operators and suffixes (calls, indexing, members) in one expression"
+                ))
                 .with_help("split it into several `let` bindings"),
         );
         Expr {
@@ -71,15 +75,20 @@ impl Builder {
     fn flat(&self, p: P) -> Expr {
         let mut inner = p.clone().into_inner();
         let first = inner.next().expect("grammar: operand");
-        let mut ops = 0usize;
+        let (mut ops, mut suffixes) = (0usize, 0usize);
         for q in inner.clone() {
             let r = q.as_rule();
             if pratt::is_infix(r) || r == Rule::unary_op {
                 ops += 1;
+            } else if pratt::is_suffix(r) {
+                suffixes += 1;
             }
         }
         if first.as_rule() == Rule::unary_op {
             ops += 1;
+        }
+        if ops + suffixes > MAX_CHAIN {
+            return self.too_long(self.span(&p));
         }
         if ops == 0 {
             let mut e = self.expr(first);
@@ -87,9 +96,6 @@ impl Builder {
                 e = self.suffix(e, s);
             }
             return e;
-        }
-        if ops > MAX_CHAIN {
-            return self.too_long(self.span(&p));
         }
         let built = pratt::PRATT
             .map_primary(|q| Built {

@@ -14,6 +14,8 @@ use crate::syntax::intern::Sym;
 
 mod expr;
 
+pub(crate) use expr::MAX_CHAIN;
+
 /// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
 /// value is the same on every machine).
 pub fn srgb_to_linear(c: f64) -> f64 {

@@ -279,7 +279,13 @@ impl Reader<'_, '_> {
             }
             _ => return None,
         }
+        // A chain longer than the budget goes to pest, whose tree builder reports it.
+        let mut suffixes = 0usize;
         loop {
+            suffixes += 1;
+            if suffixes > crate::syntax::build::MAX_CHAIN {
+                return None;
+            }
             match self.peek() {
                 Some(b'(') => {
                     // A call's step holds its argument count and where it ends.

@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Issue 35's hostile inputs at full size, against the release binary: each case's exit code,
+# wall time and peak RSS from /usr/bin/time -v (GNU time), one row per case. Nothing is
+# asserted here (tests/hostile.rs holds the scaled-down regression tests); the numbers go into
+# the issue's report. Every case runs under `timeout` so a regression shows as exit 124.
+#
+#   benches/hostile.sh [RTC]      # RTC defaults to target/release/rtc (built if missing)
+#
+# Needs about 1.2 GB of free space in $TMPDIR for the 10^8-face OBJ.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+rtc="${1:-target/release/rtc}"
+[ -x "$rtc" ] || cargo build --release -q
+rtc=$(realpath "$rtc")
+work=$(mktemp -d "${TMPDIR:-/tmp}/rtc-hostile.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+scene='rtc 1
+camera { eye: [0, 0, 5], center: [0, 0, 0], up: Y, resolution: [8, 6] }
+point_light { position: [5, 5, 5] }
+sphere()'
+
+printf '%-44s %5s %9s %12s\n' case exit seconds "peak RSS MiB"
+run() { # run NAME TIMEOUT COMMAND...
+    local name=$1 limit=$2
+    shift 2
+    /usr/bin/time -v -o time.txt timeout "$limit" "$@" >/dev/null 2>err.txt
+    local code=$?
+    local wall rss
+    wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s}' time.txt)
+    rss=$(awk -F': ' '/Maximum resident/ {printf "%.0f", $2 / 1024}' time.txt)
+    printf '%-44s %5s %9s %12s\n' "$name" "$code" "$wall" "$rss"
+}
+
+# 1. A module importing itself through two symlinked folders.
+mkdir imports && (cd imports && ln -s . l1 && ln -s . l2 &&
+    printf 'rtc 1\nimport "./l1/a.rtc" as x\nimport "./l2/a.rtc" as y\npub let v = 1\n' >a.rtc &&
+    printf '%s\nimport "./a.rtc"\n' "$scene" >s.rtc)
+run "1 symlinked imports: check" 60 "$rtc" check imports/s.rtc
+
+# 2. Long chains.
+python3 -c "print('rtc 1\nlet l = [1]\nlet y = l' + '[0]' * 300000)" >index.rtc
+python3 -c "import sys; print(sys.argv[1] + '.translate(X)' * 20000)" "$scene" >translate.rtc
+run "2 300,000 [0]: check" 60 "$rtc" check index.rtc
+run "2 300,000 [0]: render" 60 "$rtc" render index.rtc -o index.png
+run "2 20,000 .translate(X): fmt --check" 60 "$rtc" fmt --check translate.rtc
+run "2 20,000 .translate(X): check" 60 "$rtc" check translate.rtc
+
+# 3. Special files.
+mkfifo fifo.rtc fifo.mtl
+printf '%s\nimport "/dev/zero" as z\n' "$scene" >zero.rtc
+printf 'mtllib fifo.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >m.obj
+printf '%s\nmesh("m.obj", use_mtl: true)\n' "$scene" >mtl.rtc
+run "3 import \"/dev/zero\": check" 60 "$rtc" check zero.rtc
+run "3 a FIFO as the scene: check" 60 "$rtc" check fifo.rtc
+run "3 a FIFO as mtllib: check" 60 "$rtc" check mtl.rtc
+
+# 8. Garbage and bad lines.
+python3 - <<'EOF'
+import random
+random.seed(1)
+kw = ['Eye', 'Light', 'Sphere', 'Plane', 'Triangle', 'Material', 'Viewport', 'Background']
+with open('garbage.in', 'w') as f:
+    n = 0
+    while n < 100_000_000:
+        l = random.choice(kw) + ' ' + ' '.join(random.choice(['x', '1', '-', 'zz', '3.5']) for _ in range(random.randint(0, 8))) + '\n'
+        f.write(l)
+        n += len(l)
+with open('bad.rtc', 'w') as f:
+    f.write('rtc 1\n' + 'let = \n' * 500_000)
+EOF
+run "8 100 MB garbage .in: check" 120 "$rtc" check garbage.in
+run "8 500,000 bad lines: check" 60 "$rtc" check bad.rtc
+
+# 13. 10^8 faces (800 MB of OBJ).
+{ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'; yes 'f 1 2 3' | head -n 100000000; } >big.obj
+printf '%s\nmesh("big.obj")\n' "$scene" >big.rtc
+run "13 10^8 faces: check" 120 "$rtc" check big.rtc
+rm big.obj
+
+# 15. A 266-byte-ish part that claims 2^32 - 1 rows.
+python3 - <<'EOF'
+import hashlib, json
+payload = bytes(4 * 16 * 24)
+h = {"scene": "s", "settings": "t", "width": 4, "height": 4294967295, "channels": ["color"],
+     "encoding": "srgb", "shard": [0, 1], "rows": [[0, 16]], "stats": [0] * 6,
+     "payload": hashlib.sha256(payload).hexdigest()}
+open('p.rtcpart', 'wb').write(b'rtc-part 1\n' + json.dumps(h).encode() + b'\n' + payload)
+EOF
+run "15 part claiming 2^32-1 rows: merge" 60 "$rtc" merge p.rtcpart -o m.png
+
+# 12. A scene whose output is outside its folder.
+mkdir -p sub && printf '%s\nrender { output: "../victim.png" }\n' "$scene" >sub/s.rtc
+run "12 output ../victim.png: render" 60 "$rtc" render sub/s.rtc
+
+# 5 (not fixed): 33,334 identical faces in the mesh BVH build.
+{ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'; yes 'f 1 2 3' | head -n 33334; } >same.obj
+printf '%s\nmesh("same.obj")\n' "$scene" >same.rtc
+run "5 33,334 identical faces: check (not fixed)" 120 "$rtc" check same.rtc
