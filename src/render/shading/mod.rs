@@ -1,6 +1,7 @@
 //! Shading models: what a surface point looks like under the lights, before reflection and
 //! refraction are added by the Whitted integrator.
 
+pub mod deal;
 pub mod glass_shadow;
 pub mod gooch;
 pub mod hatching;
@@ -9,6 +10,8 @@ pub mod phong_packet;
 
 use crate::num::Norm;
 use glam::DVec3;
+
+pub use deal::{LightShare, Weight};
 
 use super::film::Stats;
 use super::offset::SpawnPoint;
@@ -51,34 +54,6 @@ impl Default for Ctx {
     }
 }
 
-/// Which cells of an area light one camera sample takes: all of them, or (with
-/// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
-/// of its pixel (or of its refinement block), this sample being number `slot` among them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LightShare {
-    /// The sample's position among the samples sharing the cells.
-    pub slot: u32,
-    /// How many samples share the cells; 0: every sample takes every cell.
-    pub size: u32,
-}
-
-impl LightShare {
-    /// Every sample takes every cell (the course's rule).
-    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
-
-    /// The first cell and the number of cells of a light with `cells` cells this sample takes:
-    /// cells `(first + j) mod cells` for `j < count`, each weighing `1/count`. Dealing
-    /// ⌈cells/size⌉ consecutive cells to each sample covers every cell once per `size` samples
-    /// when `size` divides `cells` (4×4 cells over 2×2 or 4×4 pixel samples).
-    pub fn cells(self, cells: u32) -> (u32, u32) {
-        if self.size == 0 || cells <= 1 {
-            return (0, cells);
-        }
-        let count = cells.div_ceil(self.size);
-        ((self.slot % self.size) * count % cells, count)
-    }
-}
-
 /// A surface point to shade.
 #[derive(Clone, Copy)]
 pub struct Surface<'m> {
@@ -116,12 +91,12 @@ pub struct LightSample {
 }
 
 /// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
-/// lights), weighing `1/count` of the light.
+/// lights), weighing `weight` of the light ([`LightShare::weight`]).
 pub fn light_sample(
     light: &PreparedLight,
     index: usize,
     k: u32,
-    count: u32,
+    weight: Weight,
     s: &Surface<'_>,
     rng: &Rng,
 ) -> LightSample {
@@ -149,7 +124,7 @@ pub fn light_sample(
         l: if dist > 0.0 { d / dist } else { s.n },
         dist,
         position: pos,
-        color: light.color / f64::from(count),
+        color: light.color * f64::from(weight.num) / f64::from(weight.den),
     }
 }
 
