@@ -39,6 +39,30 @@ pub struct NotFound {
     /// The naming file's directory, whose course folders were searched (`None` for an absolute
     /// name, which is looked for nowhere else).
     pub course_dir: Option<PathBuf>,
+    /// A file next to where the name points whose name is close (`Teddy.OBJ` for `teddy.obj`:
+    /// the same but for case first), for "did you mean".
+    pub near: Option<String>,
+}
+
+/// The name of a file in `path`'s directory that is close to its file name: the same but for
+/// case first, else the closest by [`crate::diag::did_you_mean`].
+fn near_name(path: &Path) -> Option<String> {
+    let want = path.file_name()?.to_str()?;
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
+        .filter_map(|e| e.file_name().into_string().ok())
+        .collect();
+    names.sort();
+    if let Some(same) = names.iter().find(|n| n.eq_ignore_ascii_case(want)) {
+        return Some(same.clone());
+    }
+    crate::diag::did_you_mean(want, names.iter().map(String::as_str)).map(str::to_owned)
 }
 
 /// `rel` joined to `dir` without touching the file system: `.` is dropped and `x/..` removed.
@@ -66,6 +90,7 @@ pub fn find(dir: &Path, name: &str) -> Result<PathBuf, NotFound> {
         resolved: resolved.clone(),
         asset_path: asset_path.to_string_lossy().into_owned(),
         course_dir,
+        near: near_name(&resolved),
     };
     if given.is_absolute() {
         return if given.is_file() {
@@ -109,6 +134,13 @@ impl NotFound {
                 "check the path; it is relative to `{}`, or add the directory holding it to {ASSET_PATH_VAR}",
                 naming_file.display()
             ));
+        if let Some(near) = &self.near {
+            let written = Path::new(&self.name).with_file_name(near);
+            d = d.with_help(format!(
+                "did you mean `{}`? (file names are case-sensitive)",
+                written.display()
+            ));
+        }
         if let Some(dir) = &self.course_dir {
             let dir = if dir.as_os_str().is_empty() {
                 Path::new(".")

@@ -390,7 +390,16 @@ impl Builder {
                 }
             }
             Rule::ident => ExprKind::Ident(Sym::new(p.as_str())),
-            Rule::list => ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect()),
+            Rule::list => {
+                // A comma right before the closing `]` (comments and blank lines aside).
+                let body = p.as_str().strip_suffix(']').unwrap_or(p.as_str());
+                let trailing = body
+                    .lines()
+                    .map(|l| l.split("//").next().unwrap_or("").trim())
+                    .rfind(|l| !l.is_empty())
+                    .is_some_and(|l| l.ends_with(','));
+                ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect(), trailing)
+            }
             Rule::record_lit => {
                 ExprKind::Record(self.fields(p.into_inner().next().expect("grammar: record")))
             }
