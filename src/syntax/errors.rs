@@ -203,10 +203,7 @@ fn foreign_operator(file: FileId, text: &str, pos: usize, found: &str) -> Option
         }
         "`?`" => {
             let (a, b) = after.split_once(':').unwrap_or(("a", "b"));
-            let b = b
-                .trim()
-                .trim_end_matches(|c: char| matches!(c, ')' | ']' | '}' | ','))
-                .trim();
+            let b = b.trim().trim_end_matches([')', ']', '}', ',']).trim();
             let (a, b) = (a.trim(), if b.is_empty() { "b" } else { b });
             Some(
                 Diagnostic::error(
