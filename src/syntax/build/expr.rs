@@ -398,7 +398,17 @@ impl Builder {
                     .map(|l| l.split("//").next().unwrap_or("").trim())
                     .rfind(|l| !l.is_empty())
                     .is_some_and(|l| l.ends_with(','));
-                ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect(), trailing)
+                let items: Vec<Expr> = p.into_inner().map(|q| self.expr(q)).collect();
+                // Only three plain numbers, the list the formatter keeps the comma of.
+                let number = |e: &Expr| match &e.kind {
+                    ExprKind::Int(_) | ExprKind::Float(_) => true,
+                    ExprKind::Unary(UnOp::Neg, x) => {
+                        matches!(x.kind, ExprKind::Int(_) | ExprKind::Float(_))
+                    }
+                    _ => false,
+                };
+                let trailing = trailing && items.len() == 3 && items.iter().all(number);
+                ExprKind::List(items, trailing)
             }
             Rule::record_lit => {
                 ExprKind::Record(self.fields(p.into_inner().next().expect("grammar: record")))

@@ -278,7 +278,8 @@ fn one_per_line(t: &Tokens, g: &Group, p: &mut Plan) {
                 }
             }
         }
-        if !has_comma && g.br != Br::Record && k + 1 == g.items.len() {
+        // Not after three numbers: the comma would make a `Vec3` a `List` (docs/fmt.md).
+        if !has_comma && g.br != Br::Record && k + 1 == g.items.len() && !g.keep_trailing_comma {
             p.comma_after[last] = true;
         }
     }
@@ -289,9 +290,11 @@ fn one_line(t: &Tokens, g: &Group, p: &mut Plan) {
         return;
     };
     let trailing = after_item(g, k).find(|&j| t.toks[j].kind == Kind::Comma);
-    match trailing {
-        Some(j) if !g.keep_trailing_comma => p.skip[j] = true,
-        None if g.keep_trailing_comma => p.comma_after[g.items[k].1] = true,
-        _ => {}
+    // Three numbers keep the comma they have, and get none: with it they are a `List`,
+    // without it a `Vec3`.
+    if let Some(j) = trailing
+        && !g.keep_trailing_comma
+    {
+        p.skip[j] = true;
     }
 }

@@ -42,7 +42,8 @@ fn a_group_written_over_lines_gets_one_item_per_line() {
     let src = "rtc 1\nf(a, b,\n  c)\ncamera {\n  eye: [0, 0, 1], up: Y,\n  fov: 40deg\n}\nlet l = [\n1, 2, 3]\n";
     assert_eq!(
         fmt(src),
-        "rtc 1\nf(\n    a,\n    b,\n    c,\n)\ncamera {\n    eye: [0, 0, 1]\n    up: Y\n    fov: 40deg\n}\nlet l = [\n    1,\n    2,\n    3,\n]\n"
+        // Three numbers over lines get no trailing comma: it would make the `Vec3` a `List`.
+        "rtc 1\nf(\n    a,\n    b,\n    c,\n)\ncamera {\n    eye: [0, 0, 1]\n    up: Y\n    fov: 40deg\n}\nlet l = [\n    1,\n    2,\n    3\n]\n"
     );
 }
 
@@ -53,9 +54,10 @@ fn a_list_of_three_numbers_stays_a_list() {
         fmt("rtc 1\nlet l = [1, 2, 3,]\n"),
         "rtc 1\nlet l = [1, 2, 3,]\n"
     );
+    // Without a comma three numbers are a `Vec3` (issue 34): the formatter adds none.
     assert_eq!(
         fmt("rtc 1\nlet l = [1, - 2, 3]\n"),
-        "rtc 1\nlet l = [1, -2, 3,]\n"
+        "rtc 1\nlet l = [1, -2, 3]\n"
     );
     assert_eq!(
         fmt("rtc 1\nlet l = [a, b, c,]\n"),
