@@ -203,6 +203,7 @@ fn the_bias_test_catches_the_dealing_before_issue_34() {
     let old = |share: LightShare, cells: u32, _: u32| 1.0 / f64::from(share.cells(cells).1);
     for (light, size) in [((5, 5), 16), ((6, 6), 16), ((3, 3), 4)] {
         let (mean, se, _) = measured(light, size, 1 << 32, &old);
+        println!("old dealing, {light:?} over {size}: {mean:+.3} ± {se:.3} levels");
         assert!(
             mean.abs() > 3.0 * se && mean.abs() > 0.1,
             "{light:?} over {size}: {mean} ± {se}"
