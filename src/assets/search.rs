@@ -45,7 +45,7 @@ pub struct NotFound {
 }
 
 /// The name of a file in `path`'s directory that is close to its file name: the same but for
-/// case first, else the closest by [`crate::diag::did_you_mean`].
+/// case first, else the closest of the same extension by [`crate::diag::did_you_mean`].
 fn near_name(path: &Path) -> Option<String> {
     let want = path.file_name()?.to_str()?;
     let dir = match path.parent() {
@@ -62,7 +62,10 @@ fn near_name(path: &Path) -> Option<String> {
     if let Some(same) = names.iter().find(|n| n.eq_ignore_ascii_case(want)) {
         return Some(same.clone());
     }
-    crate::diag::did_you_mean(want, names.iter().map(String::as_str)).map(str::to_owned)
+    // Otherwise only a file of the same kind (extension, any case) is a suggestion.
+    let ext = |n: &str| Path::new(n).extension().map(|e| e.to_ascii_lowercase());
+    let same_kind = names.iter().filter(|n| ext(n) == ext(want));
+    crate::diag::did_you_mean(want, same_kind.map(String::as_str)).map(str::to_owned)
 }
 
 /// `rel` joined to `dir` without touching the file system: `.` is dropped and `x/..` removed.
@@ -166,6 +169,16 @@ mod tests {
         assert_eq!(join(Path::new("a"), "./x/../y"), PathBuf::from("a/y"));
         assert_eq!(join(Path::new(""), "../y"), PathBuf::from("../y"));
         assert_eq!(join(Path::new("a"), "/abs"), PathBuf::from("/abs"));
+    }
+
+    #[test]
+    fn a_near_name_differs_in_case_or_is_of_the_same_kind() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/diagnostics/lib");
+        let near = |name: &str| find(&dir, name).unwrap_err().near;
+        assert_eq!(near("teddy.obj").as_deref(), Some("Teddy.obj"));
+        assert_eq!(near("TEDDY.OBJ").as_deref(), Some("Teddy.obj"));
+        // A close name of another kind is no suggestion (`mats.rtc` for `mats.obj`).
+        assert_eq!(near("mats.obj"), None);
     }
 
     #[test]
