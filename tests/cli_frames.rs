@@ -191,7 +191,7 @@ fn a_bare_word_for_a_string_parameter_needs_quotes() {
     assert_eq!(run.status.code(), Some(1));
     let err = stderr(&run);
     assert!(
-        err.contains("error[rtc::param::unquoted]")
+        err.contains("rtc::param::unquoted")
             && err.contains("a `String` value needs quotes")
             && err.contains("--set label='\"spiral\"'")
             && !err.contains("import"),

@@ -399,16 +399,24 @@ impl Builder {
                     .rfind(|l| !l.is_empty())
                     .is_some_and(|l| l.ends_with(','));
                 let items: Vec<Expr> = p.into_inner().map(|q| self.expr(q)).collect();
-                // Only three plain numbers, the list the formatter keeps the comma of.
+                // Three plain numbers: a `List` with a trailing comma, else the `Vec3` the
+                // one-token form `[1, -2, 3]` is (so `[1, - 2, 3]` and its formatted text,
+                // which loses the space, are the same program).
                 let number = |e: &Expr| match &e.kind {
-                    ExprKind::Int(_) | ExprKind::Float(_) => true,
-                    ExprKind::Unary(UnOp::Neg, x) => {
-                        matches!(x.kind, ExprKind::Int(_) | ExprKind::Float(_))
-                    }
-                    _ => false,
+                    ExprKind::Int(i) => Some(*i as f64),
+                    ExprKind::Float(f) => Some(*f),
+                    ExprKind::Unary(UnOp::Neg, x) => match x.kind {
+                        ExprKind::Int(i) => i.checked_neg().map(|n| n as f64),
+                        ExprKind::Float(f) => Some(-f),
+                        _ => None,
+                    },
+                    _ => None,
                 };
-                let trailing = trailing && items.len() == 3 && items.iter().all(number);
-                ExprKind::List(items, trailing)
+                match items.iter().map(number).collect::<Option<Vec<f64>>>() {
+                    Some(v) if v.len() == 3 && !trailing => ExprKind::Vec3([v[0], v[1], v[2]]),
+                    Some(v) if v.len() == 3 => ExprKind::List(items, true),
+                    _ => ExprKind::List(items, false),
+                }
             }
             Rule::record_lit => {
                 ExprKind::Record(self.fields(p.into_inner().next().expect("grammar: record")))

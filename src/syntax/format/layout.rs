@@ -47,15 +47,13 @@ pub(super) fn layout(t: &Tokens) -> String {
         close_of[g.close] = i;
     }
     // An `if` / `else if` / `else` chain is laid out as one: written over several lines (an
-    // `else` on its own line, or a block broken), every block of it stands over lines.
+    // `else` on a line of its own), every block of it stands over lines.
     let if_chains = if_chains(t);
     let mut chain_of = vec![usize::MAX; t.groups.len()];
     for (c, blocks) in if_chains.iter().enumerate() {
         let written = blocks.iter().any(|&b| {
-            broken.groups[b] || {
-                let e = t.groups[b].close + 1;
-                e < t.toks.len() && is_else(t, e) && has_newline(t, e)
-            }
+            let e = t.groups[b].close + 1;
+            e < t.toks.len() && is_else(t, e) && has_newline(t, e)
         });
         for &b in blocks {
             chain_of[b] = c;
