@@ -3,11 +3,10 @@
 //! transforms, CSG operands, meshes, textures decoded, ids, limits), so a clean check means the
 //! render will start. Nothing here changes the scene.
 
-use crate::num::Norm;
-use glam::DVec3;
+mod enclosed;
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::ir::{AmbientConvention, LightKind, Object, RenderMode, Scene, Shape};
+use crate::ir::{AmbientConvention, Object, RenderMode, Scene, Shape};
 use crate::opt::{Content, Effects};
 
 /// Every finding about an evaluated scene: the lints, then what preparing it reports. One pass
@@ -65,6 +64,7 @@ struct Lints<'a> {
     out: Diagnostics,
     see_motion: bool,
     moving: Vec<crate::source::Span>,
+    enclosures: enclosed::Enclosures,
 }
 
 impl<'a> Lints<'a> {
@@ -77,17 +77,19 @@ impl<'a> Lints<'a> {
             out,
             see_motion: !scene.camera.shutter.is_some_and(|s| s.is_open()),
             moving: Vec::new(),
+            enclosures: enclosed::Enclosures::new(),
         }
     }
 
     fn object(&mut self, o: &Object) {
-        enclosed_points(self.scene, o, &mut self.out);
+        self.enclosures.object(self.scene, o);
         if self.see_motion {
             moving_spans(o, &mut self.moving);
         }
     }
 
     fn finish(mut self) -> Diagnostics {
+        self.enclosures.finish(self.scene, &mut self.out);
         invisible_bounces(self.scene, &mut self.out);
         if self.see_motion {
             invisible_motion(self.scene, self.moving, &mut self.out);
@@ -137,64 +139,6 @@ fn no_lights(scene: &Scene, no_objects: bool, out: &mut Diagnostics) {
                 "with no light the image is black (Phong's ambient term is per light)"
             })
             .with_help("add a light, e.g. `point_light { position: [5, 8, 5] }`"),
-        );
-    }
-}
-
-/// The world-space sphere of an opaque object that is a plain (possibly similarity-transformed) sphere.
-fn opaque_sphere(scene: &Scene, o: &Object) -> Option<(DVec3, f64)> {
-    let Shape::Sphere { center, radius } = o.shape else {
-        return None;
-    };
-    let transparent = o.material.is_some_and(|m| scene.material(m).refract > 0.0);
-    if transparent {
-        return None;
-    }
-    if o.transform.is_identity() {
-        // What the general case gives for it (up to the sign of a zero coordinate, which no
-        // distance sees), without three square roots.
-        return Some((center, radius));
-    }
-    let t = o.transform.affine();
-    let m = t.matrix3;
-    let scales = [m.x_axis.norm(), m.y_axis.norm(), m.z_axis.norm()];
-    let uniform = (scales[0] - scales[1]).abs() < 1e-9 * scales[0]
-        && (scales[0] - scales[2]).abs() < 1e-9 * scales[0];
-    uniform.then(|| (t.transform_point3(center), radius * scales[0]))
-}
-
-/// A point light or the camera inside the opaque sphere `o` (if it is one).
-fn enclosed_points(scene: &Scene, o: &Object, out: &mut Diagnostics) {
-    let Some((c, r)) = opaque_sphere(scene, o) else {
-        return;
-    };
-    for l in &scene.lights {
-        let p = l.kind.center();
-        if matches!(l.kind, LightKind::Point { .. }) && p.distance_to(c) < r {
-            out.push(
-                Diagnostic::warning(
-                    "rtc::scene::light_enclosed",
-                    l.span,
-                    format!(
-                        "the light at {p} is inside an opaque sphere; it lights nothing outside it"
-                    ),
-                )
-                .with_label("this light")
-                .with_secondary(o.span, "encloses the light")
-                .with_help("move the light outside the sphere, or make the sphere refractive"),
-            );
-        }
-    }
-    if scene.camera.eye.distance_to(c) < r {
-        out.push(
-            Diagnostic::warning(
-                "rtc::scene::camera_enclosed",
-                scene.camera.span,
-                "the camera is inside an opaque sphere; the image will show only its inside",
-            )
-            .with_label("this camera")
-            .with_secondary(o.span, "encloses the eye")
-            .with_help("move `eye` outside the sphere"),
         );
     }
 }

@@ -155,6 +155,17 @@ fn a_scene_without_randomness_gets_no_stochastic_sweep() {
     // The scene's own setting comes first; the front is never empty.
     assert_eq!(report.points[0].sweeps[0], Sweep::Scene);
     assert!(report.points.iter().any(|p| p.pareto));
+    // Asked for no target: the cheapest setting at the scene's own error (issue 34).
+    let [rec] = &report.recommendations[..] else {
+        panic!("one default recommendation: {:?}", report.recommendations)
+    };
+    assert_eq!(rec.goal, "scene_error");
+    let own = report.metric.of(&report.points[0].measurement.error);
+    assert_eq!(rec.value, own);
+    assert!(
+        rec.point.is_some() && rec.predicted_error.is_some_and(|e| e <= own),
+        "{rec:?}"
+    );
 }
 
 #[test]

@@ -239,7 +239,8 @@ fn a_wrong_import_is_a_violation() {
 
 /// The largest circle of files allowed in each room (the largest strongly connected component
 /// of its file import graph; a room not listed may have none). Lower a number when a room is
-/// untangled; never raise one. Issue 33 measured before → after: render 15 → 1, geometry 30 → 3
+/// untangled; never raise one. Issue 33 measured before → after: render 15 → 1, geometry 30 → 3,
+/// syntax 8 → 7 (the grammar in a file of its own)
 /// (the world and its two helpers).
 const MAX_CIRCLE: &[(&str, usize)] = &[
     ("accuracy", 4),
@@ -247,7 +248,7 @@ const MAX_CIRCLE: &[(&str, usize)] = &[
     ("eval", 26),
     ("geometry", 3),
     ("ir", 3),
-    ("syntax", 8),
+    ("syntax", 7),
 ];
 
 /// Walls inside a room: `(module, modules it may not import)`, by module path prefix (a file

@@ -175,3 +175,33 @@ fn set_overrides_a_param_and_refuses_unknown_names() {
     let run = rtc(&["check", scene.to_str().unwrap(), "--set", "size"]);
     assert_eq!(run.status.code(), Some(2));
 }
+
+/// Issue 34: `--set label=spiral` for a `String` parameter says the value needs quotes (a bare
+/// word was read as a name, and the help offered an import), and the quoted form works.
+#[test]
+fn a_bare_word_for_a_string_parameter_needs_quotes() {
+    let dir = scratch("set-string");
+    let scene = dir.join("label.rtc");
+    std::fs::write(
+        &scene,
+        "rtc 1.1\nparam label = \"grid\"\ncamera { eye: [0, 0, 5] }\npoint_light { position: [2, 5, 5] }\nsphere(radius: 1)\nprint(label)\n",
+    )
+    .unwrap();
+    let run = rtc(&["check", scene.to_str().unwrap(), "--set", "label=spiral"]);
+    assert_eq!(run.status.code(), Some(1));
+    let err = stderr(&run);
+    assert!(
+        err.contains("rtc::param::unquoted")
+            && err.contains("a `String` value needs quotes")
+            && err.contains("--set label='\"spiral\"'")
+            && !err.contains("import"),
+        "{err}"
+    );
+    let run = rtc(&[
+        "check",
+        scene.to_str().unwrap(),
+        "--set",
+        "label=\"spiral\"",
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", stderr(&run));
+}

@@ -366,3 +366,20 @@ fn provenance_is_kept_only_when_asked_and_groups_add_their_chain() {
         ));
     }
 }
+
+/// Issue 34: an object made directly in a function reads "made in `ball()` called at ...",
+/// not "made in in".
+#[test]
+fn a_call_made_object_reads_made_in_the_call() {
+    let dir = scratch("why-call");
+    let file = dir.join("ball.rtc");
+    std::fs::write(
+        &file,
+        "rtc 1.1\ncamera { eye: [0, 0, 5], resolution: [16, 12] }\npoint_light { position: [2, 5, 5] }\nfn ball() { sphere(radius: 1) }\nball()\n",
+    )
+    .unwrap();
+    let run = rtc(&["why", file.to_str().unwrap(), "8", "6"]);
+    let text = String::from_utf8_lossy(&run.stdout);
+    assert!(!text.contains("made in in"), "{text}");
+    assert!(text.contains("made in `ball()` called at"), "{text}");
+}

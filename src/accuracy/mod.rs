@@ -215,5 +215,14 @@ pub fn study(
         let r = report.recommend_time(t);
         report.recommendations.push(r);
     }
+    // Asked for nothing: the cheapest setting at the scene's own error (issue 34).
+    if options.target_error.is_none()
+        && options.time.is_none()
+        && let Some(own) = report.own()
+    {
+        let mut r = report.recommend_error(report.metric.of(&own.measurement.error));
+        r.goal = "scene_error";
+        report.recommendations.push(r);
+    }
     Ok(report)
 }

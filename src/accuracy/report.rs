@@ -87,7 +87,8 @@ pub struct Point {
 /// A recommended setting.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Recommendation {
-    /// `target_error` or `time`.
+    /// `target_error`, `time`, or `scene_error` (asked for neither: the cheapest setting at
+    /// the scene's own error).
     pub goal: &'static str,
     /// The asked error or seconds.
     pub value: f64,

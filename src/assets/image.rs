@@ -28,6 +28,20 @@ pub struct ImageError {
     pub too_large: bool,
 }
 
+/// Whether `path` is a JPEG (it starts with the SOI marker FF D8) with no end-of-image marker
+/// (FF D9) after its last start-of-scan (FF DA): cut short, which the decoder does not report.
+fn jpeg_truncated(path: &Path) -> bool {
+    let Ok(bytes) = std::fs::read(path) else {
+        return false;
+    };
+    if !bytes.starts_with(&[0xff, 0xd8]) {
+        return false;
+    }
+    let last_scan = bytes.windows(2).rposition(|w| w == [0xff, 0xda]);
+    let after = last_scan.map_or(&bytes[..], |p| &bytes[p..]);
+    !after.windows(2).any(|w| w == [0xff, 0xd9])
+}
+
 /// The largest data window among an EXR file's parts, in pixels (0 for other formats). The
 /// decoder reports an EXR's display window as its size but reads, and allocates, by the data
 /// windows: a 537-byte file with a 2×2 display window and a 2×10⁹ data window took 1.7 GB
@@ -99,6 +113,15 @@ impl Picture {
                 message: format!("{what}; at most {MAX_TEXTURE_PIXELS} are decoded"),
                 missing: false,
                 too_large: true,
+            });
+        }
+        if jpeg_truncated(path) {
+            // The JPEG decoder fills a truncated scan with grey and reports nothing.
+            return Err(ImageError {
+                message: "the JPEG data ends before its end-of-image marker: the file is truncated"
+                    .into(),
+                missing: false,
+                too_large: false,
             });
         }
         // The format comes from the extension.
@@ -243,6 +266,17 @@ mod tests {
         let e = Picture::load(&path).unwrap_err();
         assert!(!e.missing, "{e:?}");
         assert!(Picture::load(&dir.join("none.png")).unwrap_err().missing);
+        // A JPEG cut short decodes without complaint (grey fill); it is malformed here.
+        let jpeg = std::fs::read(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/course/textures/earthmap1k.jpg"),
+        )
+        .unwrap();
+        let cut = dir.join("cut.jpg");
+        std::fs::write(&cut, &jpeg[..jpeg.len() / 2]).unwrap();
+        let e = Picture::load(&cut).unwrap_err();
+        assert!(!e.missing && e.message.contains("truncated"), "{e:?}");
+        std::fs::write(&cut, &jpeg).unwrap();
+        assert!(Picture::load(&cut).is_ok());
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

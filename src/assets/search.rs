@@ -39,6 +39,33 @@ pub struct NotFound {
     /// The naming file's directory, whose course folders were searched (`None` for an absolute
     /// name, which is looked for nowhere else).
     pub course_dir: Option<PathBuf>,
+    /// A file next to where the name points whose name is close (`Teddy.OBJ` for `teddy.obj`:
+    /// the same but for case first), for "did you mean".
+    pub near: Option<String>,
+}
+
+/// The name of a file in `path`'s directory that is close to its file name: the same but for
+/// case first, else the closest of the same extension by [`crate::diag::did_you_mean`].
+fn near_name(path: &Path) -> Option<String> {
+    let want = path.file_name()?.to_str()?;
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
+        .filter_map(|e| e.file_name().into_string().ok())
+        .collect();
+    names.sort();
+    if let Some(same) = names.iter().find(|n| n.eq_ignore_ascii_case(want)) {
+        return Some(same.clone());
+    }
+    // Otherwise only a file of the same kind (extension, any case) is a suggestion.
+    let ext = |n: &str| Path::new(n).extension().map(|e| e.to_ascii_lowercase());
+    let same_kind = names.iter().filter(|n| ext(n) == ext(want));
+    crate::diag::did_you_mean(want, same_kind.map(String::as_str)).map(str::to_owned)
 }
 
 /// `rel` joined to `dir` without touching the file system: `.` is dropped and `x/..` removed.
@@ -66,6 +93,7 @@ pub fn find(dir: &Path, name: &str) -> Result<PathBuf, NotFound> {
         resolved: resolved.clone(),
         asset_path: asset_path.to_string_lossy().into_owned(),
         course_dir,
+        near: near_name(&resolved),
     };
     if given.is_absolute() {
         return if given.is_file() {
@@ -109,6 +137,13 @@ impl NotFound {
                 "check the path; it is relative to `{}`, or add the directory holding it to {ASSET_PATH_VAR}",
                 naming_file.display()
             ));
+        if let Some(near) = &self.near {
+            let written = Path::new(&self.name).with_file_name(near);
+            d = d.with_help(format!(
+                "did you mean `{}`? (file names are case-sensitive)",
+                written.display()
+            ));
+        }
         if let Some(dir) = &self.course_dir {
             let dir = if dir.as_os_str().is_empty() {
                 Path::new(".")
@@ -134,6 +169,16 @@ mod tests {
         assert_eq!(join(Path::new("a"), "./x/../y"), PathBuf::from("a/y"));
         assert_eq!(join(Path::new(""), "../y"), PathBuf::from("../y"));
         assert_eq!(join(Path::new("a"), "/abs"), PathBuf::from("/abs"));
+    }
+
+    #[test]
+    fn a_near_name_differs_in_case_or_is_of_the_same_kind() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/diagnostics/lib");
+        let near = |name: &str| find(&dir, name).unwrap_err().near;
+        assert_eq!(near("teddy.obj").as_deref(), Some("Teddy.obj"));
+        assert_eq!(near("TEDDY.OBJ").as_deref(), Some("Teddy.obj"));
+        // A close name of another kind is no suggestion (`mats.rtc` for `mats.obj`).
+        assert_eq!(near("mats.obj"), None);
     }
 
     #[test]

@@ -44,46 +44,40 @@ pub fn table(r: &Report) -> String {
         "each point: median of {} render(s) per seed, {seeds}; error against the reference",
         r.repeat
     );
+    // At most ~100 columns: the setting's width is its longest label; the sweeps a point
+    // belongs to, its rays and its relMSE are in the JSON report (`--format json`).
+    let width = r
+        .points
+        .iter()
+        .map(|p| p.measurement.setting.label().chars().count())
+        .max()
+        .unwrap_or(0)
+        .max("setting".len());
     let _ = writeln!(
         out,
-        "{:>3}  {:<30} {:<34} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>9} {:>9} {:>5}",
-        "#",
-        "sweeps",
-        "setting",
-        "time ms",
-        "full s",
-        "Mrays",
-        "ꟻLIP",
-        "±",
-        "worst1%",
-        "RMSE",
-        "relMSE",
-        "front"
+        "{:>3}  {:<width$} {:>8} {:>8} {:>8} {:>8} {:>8} {:>9} {:>5}",
+        "#", "setting", "time ms", "full s", "ꟻLIP", "±", "worst1%", "RMSE", "front"
     );
     for (i, p) in r.points.iter().enumerate() {
         let m = &p.measurement;
-        let sweeps: Vec<&str> = p.sweeps.iter().map(|s| s.key()).collect();
         let _ = writeln!(
             out,
-            "{i:>3}  {:<30} {:<34} {:>9.2} {:>9.3} {:>9.3} {:>8.5} {:>8.5} {:>8.5} {:>9.3e} {:>9.3e} {:>5}",
-            sweeps.join(","),
+            "{i:>3}  {:<width$} {:>8.2} {:>8.3} {:>8.5} {:>8.5} {:>8.5} {:>9.3e} {:>5}",
             m.setting.label(),
             m.seconds * 1e3,
             r.full_seconds(p),
-            m.rays as f64 / 1e6,
             m.error.flip_mean,
             m.spread.flip_mean,
             m.error.flip_worst,
             m.error.rmse,
-            m.error.rel_mse,
             if p.pareto { "*" } else { "" },
         );
     }
     let _ = writeln!(
         out,
-        "time ms: median wall time of one render at the swept size; full s: predicted at the \
-         scene's own size; ±: standard deviation of mean ꟻLIP over the seeds; front: on the \
-         Pareto front of time and {}",
+        "time ms: median wall time of one render at the swept size; full s: predicted at the\n\
+         scene's own size; ±: standard deviation of mean ꟻLIP over the seeds; front: on the\n\
+         Pareto front of time and {} (rays, relMSE and the sweeps: `--format json`)",
         r.metric.label()
     );
     for rec in &r.recommendations {
@@ -122,6 +116,11 @@ fn reference_line(r: &Report) -> String {
 fn recommendation(r: &Report, rec: &Recommendation) -> String {
     let goal = match rec.goal {
         "target_error" => format!("--target-error {} ({})", rec.value, r.metric.label()),
+        "scene_error" => format!(
+            "the scene's own {} ({:.5}; `--target-error E` or `--time T` asks for another)",
+            r.metric.label(),
+            rec.value
+        ),
         _ => format!("--time {} s", rec.value),
     };
     match (rec.point, rec.predicted_seconds, rec.predicted_error) {

@@ -159,7 +159,8 @@ pub(crate) fn chain_text(sources: &SourceMap, chain: &[&Step]) -> String {
             (StepKind::Iteration { at: a, bindings }, _) => {
                 format!("in iteration {bindings} of the `for` at {}", at(*a))
             }
-            (StepKind::Call { name, at: a }, 0) => format!("in `{name}()` called at {}", at(*a)),
+            // Read after "made in" or "placed by a group in": no second "in".
+            (StepKind::Call { name, at: a }, 0) => format!("`{name}()` called at {}", at(*a)),
             (StepKind::Call { name, at: a }, _) => format!("called from `{name}()` at {}", at(*a)),
         })
         .collect::<Vec<_>>()

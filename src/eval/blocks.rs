@@ -182,6 +182,31 @@ impl Interp<'_> {
         span: Span,
         out: &mut Sink,
     ) -> R<()> {
+        // The variable of a loop over a `Vec3` holds Floats: the help of a `Float` index says so.
+        let vec3 = matches!(it, Value::Vec3(_));
+        if vec3 {
+            self.vec3_loops.push(gens[level].var.sym);
+        }
+        let r = self.for_steps_in(gens, level, it, steps, filter, body, span, out);
+        if vec3 {
+            self.vec3_loops.pop();
+        }
+        r
+    }
+
+    /// [`Interp::for_steps`] itself.
+    #[allow(clippy::too_many_arguments)]
+    fn for_steps_in(
+        &mut self,
+        gens: &[Generator],
+        level: usize,
+        it: &Value,
+        steps: std::ops::Range<u64>,
+        filter: Option<&Expr>,
+        body: &Block,
+        span: Span,
+        out: &mut Sink,
+    ) -> R<()> {
         let g = &gens[level];
         for i in steps {
             let v = match it {

@@ -1,7 +1,7 @@
 //! `obj.bounds`: world-space axis-aligned bounds of an object value, as a record with `min`,
 //! `max`, `center`, `size`, `top_center` and `bottom_center` (top and bottom along +Y).
 //!
-//! Every fact comes from geometry (`geometry::shape::bounds` per shape, `geometry::csg::bounds`
+//! Every fact comes from geometry (`geometry::shapes::bounds` per shape, `geometry::shapes::csg::bounds`
 //! for CSG, `Aabb::transformed` for the corners) and a mesh's vertex bounds from the asset
 //! service; only the walk over object values is here: each leaf's box is moved into world
 //! space by its whole chain of transforms before boxes combine, which is tighter for rotated

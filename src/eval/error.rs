@@ -21,8 +21,13 @@ impl From<Diagnostic> for EvalError {
     }
 }
 
-/// Most trace frames kept on one error; deeper recursion is summarised by the budget message.
+/// Most trace frames kept on one error: the innermost half and the outermost half, so a deep
+/// (mutual) recursion shows both where it failed and where it started.
 pub const MAX_FRAMES: usize = 8;
+
+/// The note on a trace whose middle frames were dropped.
+const ELIDED: &str =
+    "the trace shows the innermost and the outermost calls; the calls in between are left out";
 
 impl EvalError {
     /// Adds an outer trace frame (no-op for poisoned values and once the trace is long).
@@ -35,7 +40,14 @@ impl EvalError {
                     .trace
                     .last()
                     .is_some_and(|f| f.span == span && f.message == msg);
-                if !repeat && d.trace.len() < MAX_FRAMES {
+                if !repeat {
+                    if d.trace.len() >= MAX_FRAMES {
+                        // Drop the oldest of the outer half: the outermost frames keep coming.
+                        d.trace.remove(MAX_FRAMES / 2);
+                        if !d.notes.iter().any(|n| n == ELIDED) {
+                            d.notes.push(ELIDED.to_string());
+                        }
+                    }
                     d.trace.push(crate::diag::TraceFrame { span, message: msg });
                 }
                 EvalError::Diag(d)

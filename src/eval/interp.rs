@@ -46,6 +46,9 @@ pub struct Interp<'a> {
     pub(super) overrides: Vec<super::params::Override>,
     /// The `param` names the scene file declared so far.
     pub(super) params: Vec<Sym>,
+    /// The variables of the `for` loops running over a `Vec3` (their values are Floats), for
+    /// the help of a `Float` index.
+    pub(super) vec3_loops: Vec<Sym>,
     /// Where objects come from, when asked (`EvalOptions::provenance`).
     pub(super) prov: Option<Box<super::provenance::Builder>>,
     /// Material and texture values made so far ([`Interp::next_made`]).
@@ -84,6 +87,7 @@ impl<'a> Interp<'a> {
             loading: Vec::new(),
             overrides: Vec::new(),
             params: Vec::new(),
+            vec3_loops: Vec::new(),
             prov: opts.provenance.then(Box::default),
             made: 0,
             split: super::split::Role::Off,
@@ -203,7 +207,7 @@ impl<'a> Interp<'a> {
             ExprKind::Vec3(v) => Ok(Value::Vec3((*v).into())),
             ExprKind::StrLit(s) => Ok(Value::Str(s.clone())),
             ExprKind::Ident(s) => self.lookup(*s, e.span),
-            ExprKind::List(items) => self.list(items, e.span),
+            ExprKind::List(items, trailing) => self.list(items, *trailing, e.span),
             ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e.span),
             ExprKind::Call(callee, args) => self.call_expr(callee, args, e.span),
             ExprKind::Member(obj, name) => self.member(obj, *name),
@@ -248,7 +252,9 @@ impl<'a> Interp<'a> {
             ExprKind::Index(obj, idx) => {
                 let v = self.eval(obj)?;
                 let i = self.eval(idx)?;
-                super::members::index(v, i, idx.span)?
+                let from_vec3 =
+                    matches!(&idx.kind, ExprKind::Ident(s) if self.vec3_loops.contains(s));
+                super::members::index(v, i, (idx.span, from_vec3))?
             }
             ExprKind::With(base, fields) => {
                 let v = self.eval(base)?;
@@ -292,7 +298,7 @@ impl<'a> Interp<'a> {
             | ExprKind::Vec3(_)
             | ExprKind::StrLit(_)
             | ExprKind::Ident(_)
-            | ExprKind::List(_)
+            | ExprKind::List(..)
             | ExprKind::Binary(..)
             | ExprKind::Call(..)
             | ExprKind::Member(..) => return self.eval(e),
@@ -361,8 +367,9 @@ impl<'a> Interp<'a> {
     }
 
     #[inline(never)]
-    fn list(&mut self, items: &[Expr], span: Span) -> R<Value> {
-        if let [a, b, c] = items {
+    /// `[...]`: three numbers make a `Vec3`, unless a trailing comma (`trailing`) keeps a `List`.
+    fn list(&mut self, items: &[Expr], trailing: bool, span: Span) -> R<Value> {
+        if let ([a, b, c], false) = (items, trailing) {
             // `[x, y, z]` of numbers is a Vec3: pure arithmetic in registers first (as in
             // `binary`), then each element evaluated without a heap list.
             let budget = &mut { PURE_NODES };

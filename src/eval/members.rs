@@ -192,10 +192,14 @@ pub fn unknown(
     d.with_help(help).into()
 }
 
-/// `v[i]`.
-pub fn index(v: Value, i: Value, ispan: Span) -> R<Value> {
+/// `v[i]`; `from_vec3`: the index is the variable of a `for` over a `Vec3` (for the help).
+pub fn index(v: Value, i: Value, (ispan, from_vec3): (Span, bool)) -> R<Value> {
     let Value::Int(k) = i else {
         let help = match i {
+            // `for i in [0, 2, 4]`: three plain numbers are a `Vec3`, whose elements are Floats.
+            Value::Float(f) if f == f.trunc() && from_vec3 => {
+                "three numbers in brackets (`[0, 2, 4]`) make a `Vec3`, whose elements are Floats; write `[0, 2, 4,]` (with a trailing comma) for a `List` of Ints, or use `int(...)`"
+            }
             // `0..n / 2` gives Float elements: `/` always divides exactly.
             Value::Float(f) if f == f.trunc() => {
                 "`/` always gives a `Float`; divide with `div` for an `Int` (`n div 2`), or use `int(...)`"

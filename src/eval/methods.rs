@@ -87,6 +87,16 @@ pub fn call_method(
         }
         _ => {}
     }
+    if n == "moving" && recv.type_name() == "Light" {
+        return Err(super::error::error(
+            "rtc::motion::light",
+            name.span,
+            "lights cannot move within a frame: there is no motion blur of lights",
+        )
+        .with_label("only objects and the camera have `.moving`")
+        .with_help("move the light from frame to frame instead: compute its position from `time` (§28.1), e.g. `position: [2 + time, 5, 5]`")
+        .into());
+    }
     let known: Vec<&str> = match &recv {
         Value::Object(_) => object_methods(),
         Value::Transform(_) => [super::transform::METHODS, &["point", "vector"]].concat(),

@@ -12,6 +12,7 @@ use super::error::{R, error};
 use super::interp::Interp;
 use super::types;
 use super::value::{Obj, ObjShape, Value};
+use crate::diag::Diagnostic;
 use crate::ir::{self, Motion};
 use crate::source::Span;
 
@@ -22,7 +23,25 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
     let translate = p.vec3_or(it, "translate", DVec3::ZERO)?;
     let rotate = match p.get("rotate") {
         None => DQuat::IDENTITY,
-        Some((v, sp)) => rotation(it, &v, sp)?,
+        Some((v, sp)) => {
+            let q = rotation(it, &v, sp)?;
+            if let Some(deg) = written_turn(it.snippet(sp)) {
+                it.warn(
+                    Diagnostic::warning(
+                        "rtc::motion::short_arc",
+                        sp,
+                        format!(
+                            "a motion turns by at most half a turn: {}° is turned the shorter way, by {}°",
+                            super::value::fmt_f(deg),
+                            super::value::fmt_f(short_arc(deg))
+                        ),
+                    )
+                    .with_label("the rotation at shutter close; the motion takes the shorter arc to it")
+                    .with_help("turn at most 180deg per `.moving`; for a longer spin render frames, each placing the object at its angle from `time` (§28.1), e.g. `.rotate(z: time * 270deg).moving(rotate: rotate(z: 90deg))`"),
+                );
+            }
+            q
+        }
     };
     let scale = match p.get("scale") {
         None => DVec3::ONE,
@@ -74,8 +93,59 @@ fn already_moving(o: &Obj) -> Option<Span> {
     }
 }
 
+/// The largest angle, in degrees, written in the text of a `rotate:` argument when it is more
+/// than half a turn (`rotate(z: 270deg)`, `0.75turn`): the motion cannot take that arc.
+fn written_turn(text: &str) -> Option<f64> {
+    let b = text.as_bytes();
+    let mut best: Option<f64> = None;
+    let mut i = 0;
+    while i < b.len() {
+        let starts = b[i].is_ascii_digit()
+            && (i == 0
+                || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'.' || b[i - 1] == b'_'));
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let end = (i..b.len())
+            .find(|&j| !(b[j].is_ascii_digit() || b[j] == b'.'))
+            .unwrap_or(b.len());
+        let value: f64 = text[i..end].parse().unwrap_or(0.0);
+        let unit = &text[end..];
+        let deg = if unit.starts_with("deg") || unit.starts_with('°') {
+            value
+        } else if unit.starts_with("turn") {
+            value * 360.0
+        } else if unit.starts_with("rad") {
+            value.to_degrees()
+        } else {
+            0.0
+        };
+        if deg > 180.0 && best.is_none_or(|b| deg > b) {
+            best = Some(deg);
+        }
+        i = end;
+    }
+    best
+}
+
+/// The signed angle, in degrees, the shorter arc turns for a written `deg` (270 → −90).
+fn short_arc(deg: f64) -> f64 {
+    let r = deg.rem_euclid(360.0);
+    if r > 180.0 { r - 360.0 } else { r }
+}
+
 /// A rotation transform (`rotate(y: 90deg)`) as a unit quaternion.
 fn rotation(it: &Interp, v: &Value, sp: Span) -> R<DQuat> {
+    if let Value::Angle(a) = v {
+        // `moving(rotate: 45deg)`: an angle alone names no axis.
+        let deg = super::value::fmt_f(a.to_degrees());
+        return Err(types::mismatch(it, "Transform", v, sp)
+            .with_help(format!(
+                "an angle alone has no axis: write `rotate: rotate(y: {deg}deg)` (or `x:`, `z:`)"
+            ))
+            .into());
+    }
     let Value::Transform(t) = v else {
         return Err(types::mismatch(it, "Transform", v, sp).into());
     };

@@ -91,6 +91,24 @@ impl Interp<'_> {
         else {
             return Ok(default);
         };
+        if let (Value::Str(_), crate::syntax::ast::ExprKind::Ident(word)) =
+            (&default, &o.value.kind)
+        {
+            // `--set label=spiral`: the shell ate no quotes, there were none; the word is not
+            // a name the scene means.
+            return Err(error(
+                "rtc::param::unquoted",
+                o.value.span,
+                format!("`--set {}`: a `String` value needs quotes", l.name.sym),
+            )
+            .with_label("a bare word is read as a name")
+            .with_secondary(l.value.span, "the default is a `String`")
+            .with_help(format!(
+                "quote it inside the shell's quotes: `--set {}='\"{word}\"'`",
+                l.name.sym
+            ))
+            .into());
+        }
         let v = self.eval(&o.value)?;
         match (&default, v) {
             (Value::Float(_), Value::Int(i)) => Ok(Value::Float(i as f64)),

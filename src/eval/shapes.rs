@@ -34,7 +34,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("difference", difference),
 ];
 
-/// Checks a shape by geometry's rules (the one home of shape validity, `geometry::shape`) and
+/// Checks a shape by geometry's rules (the one home of shape validity, `geometry::shapes`) and
 /// makes it a value; a flaw is reported on the span of the parameter it blames (from `spans`),
 /// else on the call.
 fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
@@ -425,7 +425,7 @@ fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
-/// `geometry::shape::encloses_volume`).
+/// `geometry::shapes::encloses_volume`).
 pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {

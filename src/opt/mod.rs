@@ -1,6 +1,6 @@
 //! The preparation stage: IR scene → [`Prepared`] scene, once per scene, before any ray.
 //!
-//! It validates the scene once (ids, camera, limits, every shape by `geometry::shape`, CSG
+//! It validates the scene once (ids, camera, limits, every shape by `geometry::shapes`, CSG
 //! operands, transforms), loads assets through the asset service (meshes, their MTL materials,
 //! textures), shares each mesh file between the objects that place it (instancing), builds the
 //! whole material table (the scene's, the fallback, then MTL materials), prepares lights,

@@ -1,4 +1,4 @@
-//! IR objects → prepared [`Primitive`]s: shape checks (by `geometry::shape`), transforms,
+//! IR objects → prepared [`Primitive`]s: shape checks (by `geometry::shapes`), transforms,
 //! materials, mesh loading through the asset service with instancing (one BVH per file and
 //! smoothing, shared by every object placing it), MTL material ids, and diagnostics for
 //! everything that cannot be drawn.

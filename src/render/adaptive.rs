@@ -14,6 +14,14 @@
 //!   happens to land on the other side of a level boundary. The contrast test alone left such
 //!   pixels one level off, which ꟻLIP counts (on scenes/five_spheres.rtc, +20% mean ꟻLIP
 //!   against uniform 4×4 for the same RMSE; +0.1% with this test, docs/convergence.md).
+//!
+//! In a scene that draws random numbers (an area light, a lens, gloss, motion blur) the first
+//! pass is noisy, and the quantisation test only sees the noise: its predicted change lies
+//! between the pixel and its neighbours' mean, so it crosses a level wherever the noise exceeds
+//! one, at every threshold (issue 34: 9457 refined pixels of 19 200 at threshold 0.02, 9165 at
+//! 0.5). There the noise estimate — how far the pixel is from its 4-neighbours — is weighed
+//! against the threshold alone (the contrast test), so the threshold is the noise a user
+//! tolerates: a higher threshold refines a subset of the pixels a lower one refines.
 
 use super::film::encode;
 use super::sampler::Grid;
@@ -31,6 +39,8 @@ pub struct Criterion {
     curvature: f64,
     /// How film colours become bytes.
     encoding: Encoding,
+    /// Whether the quantisation test runs (not in a noisy scene: module doc).
+    levels: bool,
 }
 
 impl Criterion {
@@ -45,6 +55,16 @@ impl Criterion {
             threshold,
             curvature: 0.5 * (s(fine) - s(first)),
             encoding,
+            levels: true,
+        }
+    }
+
+    /// The same test for a scene whose first pass is `noisy` (it draws random numbers): the
+    /// threshold alone decides there, against the noise estimate (module doc).
+    pub fn with_noise(self, noisy: bool) -> Criterion {
+        Criterion {
+            levels: !noisy,
+            ..self
         }
     }
 
@@ -62,6 +82,9 @@ impl Criterion {
             .any(|&v| (v - c).abs().max_element() > self.threshold)
         {
             return true;
+        }
+        if !self.levels {
+            return false;
         }
         // Twice the predicted change: the second differences come from one first-pass value per
         // pixel, so the prediction is rough; encoding is monotone, so this also catches every
@@ -108,5 +131,10 @@ mod tests {
         // No finer grid, no curvature term.
         let same = Criterion::new(Grid::new(2), Grid::new(2), 0.02, Encoding::Srgb);
         assert_eq!(same.curvature, 0.0);
+        // In a noisy scene the level crossing alone does not refine; contrast still does.
+        let noisy = k.with_noise(true);
+        assert!(!noisy.refines(ridge(boundary), 1, 1, 3, 3));
+        assert!(noisy.refines(edge, 1, 1, 3, 3));
+        assert!(k.with_noise(false).refines(ridge(boundary), 1, 1, 3, 3));
     }
 }

@@ -5,6 +5,7 @@
 
 use std::any::Any;
 
+use super::deal::LightShare;
 use super::film::Stats;
 use super::sampler::Rng;
 
@@ -67,34 +68,6 @@ impl Scratch {
     /// Gives a buffer back for the next packet.
     pub fn give<T: Send + 'static>(&mut self, b: Box<T>) {
         self.free.push(b);
-    }
-}
-
-/// Which cells of an area light one camera sample takes: all of them, or (with
-/// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
-/// of its pixel (or of its refinement block), this sample being number `slot` among them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LightShare {
-    /// The sample's position among the samples sharing the cells.
-    pub slot: u32,
-    /// How many samples share the cells; 0: every sample takes every cell.
-    pub size: u32,
-}
-
-impl LightShare {
-    /// Every sample takes every cell (the course's rule).
-    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
-
-    /// The first cell and the number of cells of a light with `cells` cells this sample takes:
-    /// cells `(first + j) mod cells` for `j < count`, each weighing `1/count`. Dealing
-    /// ⌈cells/size⌉ consecutive cells to each sample covers every cell once per `size` samples
-    /// when `size` divides `cells` (4×4 cells over 2×2 or 4×4 pixel samples).
-    pub fn cells(self, cells: u32) -> (u32, u32) {
-        if self.size == 0 || cells <= 1 {
-            return (0, cells);
-        }
-        let count = cells.div_ceil(self.size);
-        ((self.slot % self.size) * count % cells, count)
     }
 }
 

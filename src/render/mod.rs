@@ -29,6 +29,7 @@ pub mod aov;
 pub mod bump;
 pub mod camera;
 pub mod context;
+pub mod deal;
 pub mod explain;
 pub mod exr;
 pub mod film;
@@ -174,9 +175,10 @@ pub fn render_region(
     )?;
     if let Some((fine, threshold)) = sampler.refine {
         // Adaptive sampling: a pixel takes the finer grid where `adaptive::Criterion` says
-        // (contrast to a 4-neighbour, or a predicted change of 8-bit level). Both passes are
-        // pure per pixel.
-        let criterion = adaptive::Criterion::new(first, fine, threshold, scene.settings().encoding);
+        // (contrast to a 4-neighbour, or in a scene without random numbers a predicted change
+        // of 8-bit level). Both passes are pure per pixel.
+        let criterion = adaptive::Criterion::new(first, fine, threshold, scene.settings().encoding)
+            .with_noise(view.random);
         let coarse = &values;
         let at = |x: u32, y: u32| coarse[(y as usize * w as usize + x as usize) * n];
         let (refined, more) = tiles::run(&pool, w, h, n, own_rows, progress, |x, y, ctx, out| {

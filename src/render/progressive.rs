@@ -17,7 +17,8 @@
 //!   in the same order whatever decided them), so the final [`SampleMap`] re-renders the same
 //!   bytes without a clock or an estimate (`--samples-from`).
 
-use super::context::{Ctx, LightShare};
+use super::context::Ctx;
+use super::deal::LightShare;
 use super::film::{Channel, Film, Stats};
 use super::integrator::Integrator;
 use super::progress::Progress;

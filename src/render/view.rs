@@ -7,7 +7,8 @@ use crate::geometry::Ray;
 use crate::opt::Prepared;
 
 use super::camera::{self, Camera, MovingCamera};
-use super::context::{BATCH, Ctx, LightShare};
+use super::context::{BATCH, Ctx};
+use super::deal::LightShare;
 use super::sampler::{Grid, Rng};
 
 /// The camera rays of an image's first samples, as an image-wide pass traces them before any

@@ -295,8 +295,9 @@ pub enum ExprKind {
     StrLit(Rc<str>),
     /// A name.
     Ident(Sym),
-    /// `[a, b]`
-    List(Vec<Expr>),
+    /// `[a, b]`; `true` for three plain numbers followed by a comma (`[1, 2, 3,]`, a `List`
+    /// where three numbers would make a `Vec3`: docs/fmt.md).
+    List(Vec<Expr>, bool),
     /// `{ a: 1 }`
     Record(Vec<Field>),
     /// `-x`, `!x`

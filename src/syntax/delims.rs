@@ -251,7 +251,7 @@ fn scan_range(file: FileId, text: &str, from: usize, to: usize) -> Scan {
 
 /// `n // 2`: a `//` right after a value, followed by a number, reads like division but starts a
 /// comment. Warned, because the statement silently means `n`. A comment that starts with a word
-/// (`r // radius`, `x // 2 spheres`) is not warned.
+/// (`r // radius`, `x // 2 spheres`), or that lists numbers (`x // 1, 2, 4`), is not warned.
 fn division_comment(file: FileId, text: &str, at: usize) -> Option<Diagnostic> {
     let line_start = text[..at].rfind('\n').map_or(0, |p| p + 1);
     let before = text[line_start..at].trim_end();
@@ -259,6 +259,12 @@ fn division_comment(file: FileId, text: &str, at: usize) -> Option<Diagnostic> {
         .rsplit(|c: char| !(c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | ')' | ']')))
         .next()
         .filter(|w| !w.is_empty())?;
+    // After a call or a bracket the word before `//` is not the whole operand: no guess.
+    let operand = if operand.ends_with([')', ']']) || operand.contains(['(', '[']) {
+        "x"
+    } else {
+        operand
+    };
     let line_end = text[at..].find('\n').map_or(text.len(), |p| at + p);
     let comment = text[at + 2..line_end].trim();
     let digits = comment
@@ -266,7 +272,11 @@ fn division_comment(file: FileId, text: &str, at: usize) -> Option<Diagnostic> {
         .unwrap_or(comment.len());
     let (number, rest) = comment.split_at(digits);
     let rest = rest.trim_start();
-    let reads_as_math = rest.is_empty() || rest.starts_with(['+', '-', '*', '/', ')', ']', ',']);
+    // A comma ends an item only at the end of the line (`n // 2,` in a list); a comma with more
+    // after it (`// 1, 2, 4`) is an enumeration: clearly a comment.
+    let reads_as_math = rest.is_empty()
+        || rest.starts_with(['+', '-', '*', '/', ')', ']'])
+        || rest.trim_end() == ",";
     if number.is_empty() || !number.starts_with(|c: char| c.is_ascii_digit()) || !reads_as_math {
         return None;
     }

@@ -4,7 +4,7 @@ use pest::error::{Error, ErrorVariant, InputLocation};
 
 use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
-use crate::syntax::Rule;
+use crate::syntax::grammar::Rule;
 
 /// Human words for a grammar rule, or `None` for rules that only add noise.
 fn rule_words(rule: Rule) -> Option<&'static str> {
@@ -107,6 +107,9 @@ pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diag
         .with_label("statements end at the end of the line")
         .with_help("remove the `;`");
     }
+    if let Some(d) = foreign_operator(file, text, pos, &found) {
+        return d;
+    }
     let expected = join_or(&words);
     let span = Span::new(file, pos, pos + len);
     let mut d = Diagnostic::error(
@@ -165,6 +168,58 @@ fn missing_statement(file: FileId, text: &str, pos: usize) -> Option<Diagnostic>
             "bind a new name (`let {word}2 = ...`), or accumulate with `reduce(list, start, f)` or a `for` (§6)"
         )),
     )
+}
+
+/// Operators other languages have and rtc spells differently, where the parse stopped at one:
+/// `^` (power, `**` in rtc) and the conditional `c ? a : b` (`if c { a } else { b }`).
+fn foreign_operator(file: FileId, text: &str, pos: usize, found: &str) -> Option<Diagnostic> {
+    let line_start = text[..pos].rfind('\n').map_or(0, |p| p + 1);
+    let line_end = text[pos..].find('\n').map_or(text.len(), |p| pos + p);
+    let before = text[line_start..pos].trim_end();
+    let operand = |s: &str| {
+        s.rsplit(|c: char| !(c.is_ascii_alphanumeric() || matches!(c, '_' | '.')))
+            .next()
+            .filter(|w| !w.is_empty())
+            .unwrap_or("x")
+            .to_owned()
+    };
+    let after = text.get(pos + 1..line_end).unwrap_or("").trim_start();
+    match found {
+        "`^`" => {
+            let right = after
+                .split(|c: char| !(c.is_ascii_alphanumeric() || matches!(c, '_' | '.')))
+                .next()
+                .filter(|w| !w.is_empty())
+                .unwrap_or("2");
+            Some(
+                Diagnostic::error(
+                    "rtc::syntax::power",
+                    Span::new(file, pos, pos + 1),
+                    "rtc's power operator is `**`, not `^`",
+                )
+                .with_label("`^` is not an operator in rtc")
+                .with_help(format!("write `{} ** {right}`", operand(before))),
+            )
+        }
+        "`?`" => {
+            let (a, b) = after.split_once(':').unwrap_or(("a", "b"));
+            let b = b.trim().trim_end_matches([')', ']', '}', ',']).trim();
+            let (a, b) = (a.trim(), if b.is_empty() { "b" } else { b });
+            Some(
+                Diagnostic::error(
+                    "rtc::syntax::no_conditional",
+                    Span::new(file, pos, pos + 1),
+                    "rtc has no `?:` conditional operator",
+                )
+                .with_label("`?` is not an operator in rtc")
+                .with_help(format!(
+                    "write `if {} {{ {a} }} else {{ {b} }}` (`if` is an expression)",
+                    operand(before)
+                )),
+            )
+        }
+        _ => None,
+    }
 }
 
 /// When pest stopped at the start of a later line, the problem is at the end of the line before.

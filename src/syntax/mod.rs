@@ -7,6 +7,7 @@ mod delims;
 mod errors;
 mod fast;
 pub mod format;
+mod grammar;
 pub mod intern;
 mod numbers;
 mod pratt;
@@ -20,10 +21,7 @@ use pest::Parser;
 use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
 
-/// The generated pest parser.
-#[derive(pest_derive::Parser)]
-#[grammar = "../grammar/rtc.pest"]
-pub struct RtcParser;
+pub use grammar::{RtcParser, Rule};
 
 /// The language versions this build understands: `rtc 1` and `rtc 1.1` name the same language
 /// (1.1 is a compatible extension of 1; docs/language.md §2).

@@ -8,8 +8,8 @@
 
 use pest::pratt_parser::{Assoc, ConstPrattParser, Op};
 
-use crate::syntax::Rule;
 use crate::syntax::ast::BinOp;
+use crate::syntax::grammar::Rule;
 
 /// The precedence table.
 pub static PRATT: ConstPrattParser<Rule, 19> = ConstPrattParser::new_const([

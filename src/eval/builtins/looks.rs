@@ -230,6 +230,34 @@ pub fn mat_warnings(it: &mut Interp, m: &Mat, span: Span) {
             .with_help("lower `reflect` or `refract` so their sum is at most 1"),
         );
     }
+    if m.m.gloss > 0.0 && m.m.reflect == 0.0 && m.m.refract == 0.0 {
+        it.warn(
+            Diagnostic::warning(
+                "rtc::material::gloss_unused",
+                span,
+                "`gloss` does nothing on a material that neither reflects nor refracts",
+            )
+            .with_label("gloss blurs reflected and refracted rays; this material casts none")
+            .with_help("give it `reflect` (e.g. `reflect: 0.3`) or `refract` for gloss to blur, or remove `gloss`; for a broader highlight lower `n`"),
+        );
+    }
+    let c = m.m.color;
+    if c.max_element() > 1.0 {
+        let bytes = c.to_array().map(|x| x.round().clamp(0.0, 255.0) as u8);
+        let hex = format!("#{:02x}{:02x}{:02x}", bytes[0], bytes[1], bytes[2]);
+        let shown = c.to_array().map(crate::eval::value::fmt_f).join(", ");
+        it.warn(
+            Diagnostic::warning(
+                "rtc::material::color_range",
+                span,
+                "a material colour has a channel above 1: colours run from 0 to 1",
+            )
+            .with_label(format!("`color` is [{shown}]: it will be blown out"))
+            .with_help(format!(
+                "for 0–255 values write `{hex}`, or divide by 255 (`rgb({shown}) / 255`); only lights may exceed 1"
+            )),
+        );
+    }
 }
 
 fn material(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {

@@ -196,6 +196,22 @@ fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value> {
+    // `max(xs)` of an empty list: say so, at the list.
+    if let [one] = a.as_slice()
+        && super::lists::items(&one.value).is_some_and(|l| l.is_empty())
+    {
+        return Err(error(
+            "rtc::value::empty",
+            one.span,
+            format!("`{}` of an empty list has no value", s.name),
+        )
+        .with_label("this list is empty")
+        .with_help(format!(
+            "give `{}` a list with at least one element, or check `len(...) > 0` first (`if len(xs) > 0 {{ {}(xs) }} else {{ 0 }}`)",
+            s.name, s.name
+        ))
+        .into());
+    }
     let items: Vec<(Value, crate::source::Span)> = match a.as_slice() {
         [one] => match super::lists::items(&one.value) {
             Some(l) => l.iter().map(|v| (v.clone(), one.span)).collect(),

@@ -1,6 +1,6 @@
 //! The world's queries for a batch of rays at once (a pixel's camera rays, its hit points'
 //! shadow rays): each ray gets exactly the answer of the one-ray query, and meshes fixed in
-//! place trace the batch as a packet (`geometry::bvh_packet`).
+//! place trace the batch as a packet (`geometry::bvh::packet`).
 
 use super::{Among, BALL, GeoHit, Ray, SphereHit, SurfaceHit, World};
 use crate::geometry::bvh::packet::PACKET;

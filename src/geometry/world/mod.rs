@@ -308,7 +308,7 @@ impl World {
     }
 
     /// The loose spheres a bundle of ray segments may meet at all, for
-    /// [`World::intersect_among`] and [`World::occluded_among`] (`geometry::sphere_cull`).
+    /// [`World::intersect_among`] and [`World::occluded_among`] (`geometry::lanes::cull`).
     pub fn among(&self, bundle: &Bundle) -> Among {
         if self.spheres.is_empty() {
             return Among::ALL;

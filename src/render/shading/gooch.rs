@@ -27,10 +27,11 @@ pub fn shade<R: Recorder>(
     for (i, light) in scene.lights().iter().enumerate() {
         let mut term = LightTerm::new(i);
         let (first, count) = ctx.lights.cells(light.samples);
-        let share = 1.0 / f64::from(count);
         for j in 0..count {
             let k = (first + j) % light.samples;
-            let ls = light_sample(light, i, k, count, s, &ctx.rng);
+            let w = ctx.lights.weight(light.samples, k);
+            let share = w.value();
+            let ls = light_sample(light, i, k, w, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             let tone = cool * (1.0 - n_dot_l) / 2.0 + warm * (1.0 + n_dot_l) / 2.0;
             if R::ON {

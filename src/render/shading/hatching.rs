@@ -55,7 +55,8 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
         let (first, count) = ctx.lights.cells(light.samples);
         for j in 0..count {
             let k = (first + j) % light.samples;
-            let ls = light_sample(light, i, k, count, s, &ctx.rng);
+            let w = ctx.lights.weight(light.samples, k);
+            let ls = light_sample(light, i, k, w, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             if R::ON {
                 term.samples += 1;
@@ -65,11 +66,10 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
                 match transmission(scene, s, &ls, &mut ctx.stats) {
                     Some(pass) => {
                         let through = pass.element_sum() / 3.0;
-                        tone += s.mat.kd * n_dot_l * lum / f64::from(count) * through;
+                        tone += w.of(s.mat.kd * n_dot_l * lum) * through;
                         if R::ON {
                             term.tinted += u32::from(pass != Color::ONE);
-                            term.diffuse +=
-                                Color::splat(s.mat.kd * n_dot_l * lum / f64::from(count) * through);
+                            term.diffuse += Color::splat(w.of(s.mat.kd * n_dot_l * lum) * through);
                         }
                     }
                     None if R::ON => {

@@ -30,7 +30,8 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
         let (first, count) = ctx.lights.cells(light.samples);
         for j in 0..count {
             let k = (first + j) % light.samples;
-            let ls = light_sample(light, i, k, count, s, &ctx.rng);
+            let w = ctx.lights.weight(light.samples, k);
+            let ls = light_sample(light, i, k, w, s, &ctx.rng);
             let n_dot_l = s.n.dot(ls.l);
             if R::ON {
                 term.samples += 1;

@@ -8,6 +8,7 @@ use glam::DVec3;
 use crate::geometry::Ray;
 use crate::ir::{Color, LightKind, Material};
 use crate::opt::{Prepared, PreparedLight};
+use crate::render::deal::Weight;
 use crate::render::film::Stats;
 use crate::render::offset::SpawnPoint;
 use crate::render::sampler::Rng;
@@ -49,12 +50,12 @@ pub struct LightSample {
 }
 
 /// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
-/// lights), weighing `1/count` of the light.
+/// lights), weighing `weight` of the light ([`crate::render::deal::LightShare::weight`]).
 pub fn light_sample(
     light: &PreparedLight,
     index: usize,
     k: u32,
-    count: u32,
+    weight: Weight,
     s: &Surface<'_>,
     rng: &Rng,
 ) -> LightSample {
@@ -82,7 +83,7 @@ pub fn light_sample(
         l: if dist > 0.0 { d / dist } else { s.n },
         dist,
         position: pos,
-        color: light.color / f64::from(count),
+        color: light.color * f64::from(weight.num) / f64::from(weight.den),
     }
 }
 

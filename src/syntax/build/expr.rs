@@ -5,8 +5,8 @@ use std::rc::Rc;
 
 use crate::diag::Diagnostic;
 use crate::source::Span;
-use crate::syntax::Rule;
 use crate::syntax::ast::*;
+use crate::syntax::grammar::Rule;
 use crate::syntax::intern::Sym;
 use crate::syntax::numbers::{self, Number, NumberError};
 use crate::syntax::pratt;
@@ -396,7 +396,34 @@ impl Builder {
                 }
             }
             Rule::ident => ExprKind::Ident(Sym::new(p.as_str())),
-            Rule::list => ExprKind::List(p.into_inner().map(|q| self.expr(q)).collect()),
+            Rule::list => {
+                // A comma right before the closing `]` (comments and blank lines aside).
+                let body = p.as_str().strip_suffix(']').unwrap_or(p.as_str());
+                let trailing = body
+                    .lines()
+                    .map(|l| l.split("//").next().unwrap_or("").trim())
+                    .rfind(|l| !l.is_empty())
+                    .is_some_and(|l| l.ends_with(','));
+                let items: Vec<Expr> = p.into_inner().map(|q| self.expr(q)).collect();
+                // Three plain numbers: a `List` with a trailing comma, else the `Vec3` the
+                // one-token form `[1, -2, 3]` is (so `[1, - 2, 3]` and its formatted text,
+                // which loses the space, are the same program).
+                let number = |e: &Expr| match &e.kind {
+                    ExprKind::Int(i) => Some(*i as f64),
+                    ExprKind::Float(f) => Some(*f),
+                    ExprKind::Unary(UnOp::Neg, x) => match x.kind {
+                        ExprKind::Int(i) => i.checked_neg().map(|n| n as f64),
+                        ExprKind::Float(f) => Some(-f),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                match items.iter().map(number).collect::<Option<Vec<f64>>>() {
+                    Some(v) if v.len() == 3 && !trailing => ExprKind::Vec3([v[0], v[1], v[2]]),
+                    Some(v) if v.len() == 3 => ExprKind::List(items, true),
+                    _ => ExprKind::List(items, false),
+                }
+            }
             Rule::record_lit => {
                 ExprKind::Record(self.fields(p.into_inner().next().expect("grammar: record")))
             }

@@ -8,8 +8,8 @@ use pest::iterators::Pair;
 
 use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
-use crate::syntax::Rule;
 use crate::syntax::ast::*;
+use crate::syntax::grammar::Rule;
 use crate::syntax::intern::Sym;
 
 mod expr;

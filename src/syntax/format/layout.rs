@@ -46,6 +46,20 @@ pub(super) fn layout(t: &Tokens) -> String {
     for (i, g) in t.groups.iter().enumerate() {
         close_of[g.close] = i;
     }
+    // An `if` / `else if` / `else` chain is laid out as one: written over several lines (an
+    // `else` on a line of its own), every block of it stands over lines.
+    let if_chains = if_chains(t);
+    let mut chain_of = vec![usize::MAX; t.groups.len()];
+    for (c, blocks) in if_chains.iter().enumerate() {
+        let written = blocks.iter().any(|&b| {
+            let e = t.groups[b].close + 1;
+            e < t.toks.len() && is_else(t, e) && has_newline(t, e)
+        });
+        for &b in blocks {
+            chain_of[b] = c;
+            broken.groups[b] |= written;
+        }
+    }
     loop {
         let plan = plan(t, &broken);
         let printed = print(t, &plan);
@@ -54,7 +68,12 @@ pub(super) fn layout(t: &Tokens) -> String {
             if text.chars().count() <= MAX_WIDTH {
                 continue;
             }
-            match pick(t, &broken, &close_of, &printed.tok_line, line) {
+            match pick(t, &broken, &close_of, &chain_of, &printed.tok_line, line) {
+                Some(Unit::Group(g)) if chain_of[g] != usize::MAX => {
+                    for &b in &if_chains[chain_of[g]] {
+                        broken.groups[b] = true;
+                    }
+                }
                 Some(Unit::Group(g)) => broken.groups[g] = true,
                 Some(Unit::Chain(c)) => broken.chains[c] = true,
                 None => continue,
@@ -65,6 +84,47 @@ pub(super) fn layout(t: &Tokens) -> String {
             return printed.text;
         }
     }
+}
+
+fn is_else(t: &Tokens, i: usize) -> bool {
+    t.toks[i].kind == Kind::Word && t.toks[i].text == "else"
+}
+
+/// The blocks of each `if` chain of two or more (`if c { } else if d { } else { }`), as group
+/// indices in order: a block followed by `else` is linked to the first block opening after it.
+fn if_chains(t: &Tokens) -> Vec<Vec<usize>> {
+    let mut open_blocks: Vec<(usize, usize)> = (t.groups.iter().enumerate())
+        .filter(|(_, g)| g.br == Br::Block)
+        .map(|(i, g)| (g.open, i))
+        .collect();
+    open_blocks.sort_unstable();
+    let mut next = vec![usize::MAX; t.groups.len()];
+    let mut has_prev = vec![false; t.groups.len()];
+    for (i, g) in t.groups.iter().enumerate() {
+        let e = g.close + 1;
+        if g.br != Br::Block || e >= t.toks.len() || !is_else(t, e) {
+            continue;
+        }
+        let k = open_blocks.partition_point(|&(o, _)| o <= e);
+        if let Some(&(_, b)) = open_blocks.get(k) {
+            next[i] = b;
+            has_prev[b] = true;
+        }
+    }
+    let mut chains = Vec::new();
+    for start in 0..t.groups.len() {
+        if has_prev[start] || next[start] == usize::MAX {
+            continue;
+        }
+        let mut chain = vec![start];
+        let mut at = start;
+        while next[at] != usize::MAX && chain.len() <= t.groups.len() {
+            at = next[at];
+            chain.push(at);
+        }
+        chains.push(chain);
+    }
+    chains
 }
 
 /// Which groups are one item per line and which chains are broken.
@@ -105,6 +165,7 @@ fn pick(
     t: &Tokens,
     broken: &Broken,
     close_of: &[usize],
+    chain_of: &[usize],
     tok_line: &[usize],
     line: usize,
 ) -> Option<Unit> {
@@ -125,11 +186,13 @@ fn pick(
             .iter()
             .any(|&(oa, ob, _)| oa <= a && ob >= b && (oa, ob) != (a, b))
     };
-    // Largest first; a chain and a group over the same tokens: the group.
+    // The blocks of an `if` chain first (breaking `a == b` in its conditions reads badly);
+    // then largest first; a chain and a group over the same tokens: the group.
+    let in_if = |u: Unit| matches!(u, Unit::Group(g) if chain_of[g] != usize::MAX);
     let (_, _, unit) = *found
         .iter()
         .filter(outer)
-        .max_by_key(|&&(a, b, u)| (b - a, matches!(u, Unit::Group(_)), usize::MAX - a))?;
+        .max_by_key(|&&(a, b, u)| (in_if(u), b - a, matches!(u, Unit::Group(_)), usize::MAX - a))?;
     let Unit::Group(mut best) = unit else {
         return Some(unit);
     };
@@ -213,7 +276,8 @@ fn one_per_line(t: &Tokens, g: &Group, p: &mut Plan) {
                 }
             }
         }
-        if !has_comma && g.br != Br::Record && k + 1 == g.items.len() {
+        // Not after three numbers: the comma would make a `Vec3` a `List` (docs/fmt.md).
+        if !has_comma && g.br != Br::Record && k + 1 == g.items.len() && !g.keep_trailing_comma {
             p.comma_after[last] = true;
         }
     }
@@ -224,9 +288,11 @@ fn one_line(t: &Tokens, g: &Group, p: &mut Plan) {
         return;
     };
     let trailing = after_item(g, k).find(|&j| t.toks[j].kind == Kind::Comma);
-    match trailing {
-        Some(j) if !g.keep_trailing_comma => p.skip[j] = true,
-        None if g.keep_trailing_comma => p.comma_after[g.items[k].1] = true,
-        _ => {}
+    // Three numbers keep the comma they have, and get none: with it they are a `List`,
+    // without it a `Vec3`.
+    if let Some(j) = trailing
+        && !g.keep_trailing_comma
+    {
+        p.skip[j] = true;
     }
 }

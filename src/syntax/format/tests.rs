@@ -32,7 +32,8 @@ fn lines_are_indented_by_brackets_and_continuations() {
     let src = "rtc 1\nfn f(x) {\n  let y = x\n      .scale(2)\n  if y {\n  1\n  }\n  else { 2 }\n}\nlet s = a\n- b\n";
     assert_eq!(
         fmt(src),
-        "rtc 1\nfn f(x) {\n    let y = x\n        .scale(2)\n    if y {\n        1\n    } else { 2 }\n}\nlet s = a\n    - b\n"
+        // The `if` chain was written over lines: every block of it stands over lines.
+        "rtc 1\nfn f(x) {\n    let y = x\n        .scale(2)\n    if y {\n        1\n    } else {\n        2\n    }\n}\nlet s = a\n    - b\n"
     );
 }
 
@@ -41,7 +42,8 @@ fn a_group_written_over_lines_gets_one_item_per_line() {
     let src = "rtc 1\nf(a, b,\n  c)\ncamera {\n  eye: [0, 0, 1], up: Y,\n  fov: 40deg\n}\nlet l = [\n1, 2, 3]\n";
     assert_eq!(
         fmt(src),
-        "rtc 1\nf(\n    a,\n    b,\n    c,\n)\ncamera {\n    eye: [0, 0, 1]\n    up: Y\n    fov: 40deg\n}\nlet l = [\n    1,\n    2,\n    3,\n]\n"
+        // Three numbers over lines get no trailing comma: it would make the `Vec3` a `List`.
+        "rtc 1\nf(\n    a,\n    b,\n    c,\n)\ncamera {\n    eye: [0, 0, 1]\n    up: Y\n    fov: 40deg\n}\nlet l = [\n    1,\n    2,\n    3\n]\n"
     );
 }
 
@@ -52,9 +54,10 @@ fn a_list_of_three_numbers_stays_a_list() {
         fmt("rtc 1\nlet l = [1, 2, 3,]\n"),
         "rtc 1\nlet l = [1, 2, 3,]\n"
     );
+    // Without a comma three numbers are a `Vec3` (issue 34): the formatter adds none.
     assert_eq!(
         fmt("rtc 1\nlet l = [1, - 2, 3]\n"),
-        "rtc 1\nlet l = [1, -2, 3,]\n"
+        "rtc 1\nlet l = [1, -2, 3]\n"
     );
     assert_eq!(
         fmt("rtc 1\nlet l = [a, b, c,]\n"),
@@ -147,4 +150,24 @@ fn long_chains_break_before_operators_and_method_calls() {
         fmt("rtc 1\nx.f().g()\n  .h()\n"),
         "rtc 1\nx\n    .f()\n    .g()\n    .h()\n"
     );
+}
+
+/// Issue 34: an `else if` chain written over lines stays over lines (it was joined into one
+/// line), and a chain too long for its line breaks its blocks, not the `==` in its conditions.
+#[test]
+fn else_if_chains_break_their_blocks_together() {
+    let src = "rtc 1\nfn size(n) {\n  if n < 2 { 1 }\n  else if n < 5 { 2 }\n  else { 3 }\n}\n";
+    assert_eq!(
+        fmt(src),
+        "rtc 1\nfn size(n) {\n    if n < 2 {\n        1\n    } else if n < 5 {\n        2\n    } else {\n        3\n    }\n}\n"
+    );
+    let long = "rtc 1\nlet colour = if size(3) == 1 { #ff0000 } else if size(3) == 2 { #00ff00 } else if size(3) == 3 { #0000ff } else { #ffffff }\n";
+    assert_eq!(
+        fmt(long),
+        "rtc 1\nlet colour = if size(3) == 1 {\n    #ff0000\n} else if size(3) == 2 {\n    #00ff00\n} else if size(3) == 3 {\n    #0000ff\n} else {\n    #ffffff\n}\n"
+    );
+    // Short chains on one line stay there; formatting is idempotent.
+    let short = "rtc 1\nlet r = if big { 2 } else { 1 }\n";
+    assert_eq!(fmt(short), short);
+    assert_eq!(fmt(&fmt(long)), fmt(long));
 }

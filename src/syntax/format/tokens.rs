@@ -7,7 +7,7 @@
 use pest::Parser;
 use pest::iterators::Pair;
 
-use crate::syntax::{RtcParser, Rule};
+use crate::syntax::grammar::{RtcParser, Rule};
 
 /// What kind of bracket group an opener starts (decides spacing and whether it may break).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
