@@ -278,7 +278,7 @@ mod tests {
     /// several pixels of a row and for partial packets.
     #[test]
     fn pinhole_packets_are_the_rays_one_by_one() {
-        let mut rnd = crate::geometry::test_uniform(41);
+        let mut rnd = crate::geometry::testing::test_uniform(41);
         for round in 0..40 {
             let eye = DVec3::new(rnd(), rnd(), rnd()) * 50.0 - 25.0;
             let c = ir::Camera {

@@ -267,7 +267,7 @@ mod tests {
     /// point alone does, edge cases (zero and huge coordinates, exact points) included.
     #[test]
     fn packets_spawn_the_rays_points_spawn_alone() {
-        let mut rnd = crate::geometry::test_uniform(23);
+        let mut rnd = crate::geometry::testing::test_uniform(23);
         for round in 0..40 {
             let points: Vec<SpawnPoint> = (0..lanes::WIDTH)
                 .map(|i| {

@@ -47,10 +47,8 @@ impl FileGraph {
                 let owner = (1..=u.absolute.len())
                     .rev()
                     .find_map(|n| index.get(&u.absolute[..n]).copied());
-                if let Some(b) = owner {
-                    if b != a && rooms[b] == rooms[a] {
-                        edges[a].insert(b);
-                    }
+                if let Some(b) = owner.filter(|&b| b != a && rooms[b] == rooms[a]) {
+                    edges[a].insert(b);
                 }
             }
         }
