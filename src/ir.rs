@@ -355,6 +355,17 @@ pub enum Shape {
         /// Radius (> 0).
         radius: f64,
     },
+    /// A flat ring: a disk with a round hole in its middle.
+    Ring {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Outer radius (> 0).
+        radius: f64,
+        /// Radius of the hole (0 ≤ inner < radius).
+        inner: f64,
+    },
     /// A cylinder between two points.
     Cylinder {
         /// Centre of the bottom cap.
@@ -424,6 +435,7 @@ impl Shape {
             Shape::Quad { .. } => "quad",
             Shape::Polygon { .. } => "polygon",
             Shape::Disk { .. } => "disk",
+            Shape::Ring { .. } => "ring",
             Shape::Cylinder { .. } => "cylinder",
             Shape::Cone { .. } => "cone",
             Shape::Torus { .. } => "torus",

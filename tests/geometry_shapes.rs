@@ -220,6 +220,36 @@ fn cases() -> Vec<Case> {
             min_hit_share: 0.2,
         });
     }
+    {
+        let (c, n, r, inner) = (
+            DVec3::new(-0.1, 0.2, 0.1),
+            DVec3::new(0.3, 1.0, -0.5).unit(),
+            1.1,
+            0.45,
+        );
+        v.push(Case {
+            name: "ring",
+            shape: Shape::Ring {
+                center: c,
+                normal: n,
+                radius: r,
+                inner,
+            },
+            side: Box::new(move |q| (q - c).dot(n)),
+            dist: Box::new(move |q| {
+                let w = q - c;
+                let radial = (w - w.dot(n) * n).norm();
+                if radial <= r * (1.0 + 1e-9) && radial >= inner * (1.0 - 1e-9) {
+                    w.dot(n).abs()
+                } else {
+                    1e9
+                }
+            }),
+            aim: (c - r, c + r),
+            size: 2.0 * r,
+            min_hit_share: 0.15,
+        });
+    }
     for capped in [true, false] {
         let (b, t, r) = (DVec3::new(0.0, -1.0, 0.0), DVec3::new(0.5, 1.0, 0.2), 0.6);
         let side: Box<dyn Fn(DVec3) -> f64> = if capped {

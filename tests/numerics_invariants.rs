@@ -228,6 +228,20 @@ fn cases() -> Vec<Case> {
             edge: None,
         },
         Case {
+            name: "ring",
+            shape: Shape::Ring {
+                center: DVec3::ZERO,
+                normal: DVec3::Z,
+                radius: 1.0,
+                inner: 0.4,
+            },
+            distance: |q| q.z,
+            closed: false,
+            convex: false,
+            extent: DVec3::new(1.0, 1.0, 0.01),
+            edge: None,
+        },
+        Case {
             name: "polygon",
             shape: Shape::Polygon {
                 points: vec![

@@ -23,6 +23,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("quad", quad),
     ("polygon", polygon),
     ("disk", disk),
+    ("ring", ring),
     ("cylinder", cylinder),
     ("cone", cone),
     ("torus", torus),
@@ -152,6 +153,24 @@ fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         s,
         &[("radius", rs)],
+    )
+}
+
+fn ring(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &["center", "normal", "radius", "inner"], a)?;
+    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
+    let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
+    let (radius, rs) = p.num_or(it, "radius", 1.0)?;
+    let (inner, is) = p.num_or(it, "inner", 0.5)?;
+    checked(
+        Shape::Ring {
+            center,
+            normal,
+            radius,
+            inner,
+        },
+        s,
+        &[("radius", rs), ("inner", is)],
     )
 }
 

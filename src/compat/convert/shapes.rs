@@ -156,6 +156,18 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
             direction(*normal),
             number(*radius)
         ),
+        Shape::Ring {
+            center,
+            normal,
+            radius,
+            inner,
+        } => format!(
+            "ring(center: {}, normal: {}, radius: {}, inner: {})",
+            v(*center),
+            direction(*normal),
+            number(*radius),
+            number(*inner)
+        ),
         Shape::Cylinder {
             base,
             top,

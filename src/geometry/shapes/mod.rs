@@ -22,6 +22,7 @@ pub mod parallelogram;
 pub mod plane;
 pub mod polygon;
 pub mod quartic;
+pub mod ring;
 pub mod sphere;
 pub mod torus;
 pub mod triangle;
@@ -39,6 +40,7 @@ use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::parallelogram::Quad;
 use crate::geometry::shapes::polygon::{Polygon, PolygonError};
+use crate::geometry::shapes::ring::Ring;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::MappingFrame, ray::Ray};
@@ -229,6 +231,8 @@ pub enum Leaf {
     Polygon(Box<Polygon>),
     /// A disk.
     Disk(Disk),
+    /// A flat ring.
+    Ring(Ring),
     /// A cylinder.
     Cylinder(Box<Cylinder>),
     /// A cone or frustum.
@@ -250,6 +254,7 @@ impl Leaf {
             Leaf::Quad(x) => x.bounds(),
             Leaf::Polygon(x) => x.bounds(),
             Leaf::Disk(x) => x.bounds(),
+            Leaf::Ring(x) => x.bounds(),
             Leaf::Cylinder(x) => x.bounds(),
             Leaf::Cone(x) => x.bounds(),
             Leaf::Torus(x) => x.bounds(),
@@ -268,6 +273,7 @@ impl Leaf {
             Leaf::Quad(x) => x.intersect(r, t_min, t_max),
             Leaf::Polygon(x) => x.intersect(r, t_min, t_max),
             Leaf::Disk(x) => x.intersect(r, t_min, t_max),
+            Leaf::Ring(x) => x.intersect(r, t_min, t_max),
             Leaf::Cylinder(x) => x.intersect(r, t_min, t_max),
             Leaf::Cone(x) => x.intersect(r, t_min, t_max),
             Leaf::Torus(x) => x.intersect(r, t_min, t_max),
@@ -286,6 +292,7 @@ impl Leaf {
             Leaf::Quad(x) => x.point_error(p),
             Leaf::Polygon(x) => x.point_error(p),
             Leaf::Disk(x) => x.point_error(p),
+            Leaf::Ring(x) => x.point_error(p),
             Leaf::Cylinder(x) => x.point_error(p),
             Leaf::Cone(x) => x.point_error(p),
             Leaf::Torus(x) => x.point_error(p),
@@ -312,7 +319,11 @@ impl Leaf {
             Leaf::Cone(x) => x.crossings(r, out),
             Leaf::Torus(x) => x.crossings(r, out),
             Leaf::Blob(x) => x.crossings(r, out),
-            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => {}
+            Leaf::Triangle(_)
+            | Leaf::Quad(_)
+            | Leaf::Polygon(_)
+            | Leaf::Disk(_)
+            | Leaf::Ring(_) => {}
         }
     }
 
@@ -326,7 +337,11 @@ impl Leaf {
             Leaf::Cone(c) => c.is_closed() && c.contains(q),
             Leaf::Torus(t) => t.contains(q),
             Leaf::Blob(b) => b.contains(q),
-            Leaf::Triangle(_) | Leaf::Quad(_) | Leaf::Polygon(_) | Leaf::Disk(_) => false,
+            Leaf::Triangle(_)
+            | Leaf::Quad(_)
+            | Leaf::Polygon(_)
+            | Leaf::Disk(_)
+            | Leaf::Ring(_) => false,
         }
     }
 
@@ -469,6 +484,31 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 )
             })?)
         }
+        Shape::Ring {
+            center,
+            normal,
+            radius,
+            inner,
+        } => {
+            positive("radius", *radius)?;
+            finite("center", &[*center, *normal])?;
+            if !(*inner >= 0.0 && *inner < *radius) {
+                return Err(ShapeFlaw::degenerate(
+                    "inner",
+                    "the ring's hole is not smaller than the ring",
+                    "a ring's `inner` radius must be at least 0 and less than its `radius`",
+                    "make `inner` smaller than `radius` (0 gives a whole disk)",
+                ));
+            }
+            Leaf::Ring(Ring::new(*center, *normal, *radius, *inner).ok_or_else(|| {
+                ShapeFlaw::degenerate(
+                    "normal",
+                    "the ring's normal is the zero vector",
+                    "a direction needs a non-zero length",
+                    "give a direction, e.g. `normal: Y`",
+                )
+            })?)
+        }
         Shape::Cylinder {
             base,
             top,
@@ -588,7 +628,8 @@ pub fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool)
         Shape::Triangle { .. }
         | Shape::Quad { .. }
         | Shape::Polygon { .. }
-        | Shape::Disk { .. } => false,
+        | Shape::Disk { .. }
+        | Shape::Ring { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
         Shape::Mesh { path, smooth, .. } => closed_mesh(path, *smooth),
         Shape::Csg { children, .. } => children
