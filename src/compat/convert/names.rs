@@ -40,6 +40,7 @@ const RESERVED: &[&str] = &[
     "quad",
     "polygon",
     "disk",
+    "ring",
     "cylinder",
     "cone",
     "torus",
