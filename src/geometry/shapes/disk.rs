@@ -37,6 +37,28 @@ impl Disk {
 
     /// Nearest hit in (t_min, t_max); uv = (angle / 2π, distance / radius).
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let (t, x, y, r2) = self.plane_hit(ray, t_min, t_max)?;
+        if r2 > self.radius * self.radius {
+            return None;
+        }
+        let angle = libm::atan2(y, x).rem_euclid(TAU);
+        Some(Hit {
+            t,
+            normal: self.normal,
+            uv: DVec2::new(angle / TAU, r2.sqrt() / self.radius),
+        })
+    }
+
+    /// Where `ray` meets the disk's plane in (t_min, t_max): `t`, the point's in-plane
+    /// coordinates (x, y) about the centre and its squared distance from the centre (shared
+    /// with [`super::ring::Ring`], which cuts a hole by that distance).
+    #[inline]
+    pub(crate) fn plane_hit(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<(f64, f64, f64, f64)> {
         let denom = self.normal.dot(ray.dir);
         if denom == 0.0 {
             return None;
@@ -47,16 +69,17 @@ impl Disk {
         }
         let w = ray.at(t) - self.center;
         let (x, y) = (w.dot(self.e1), w.dot(self.e2));
-        let r2 = x * x + y * y;
-        if r2 > self.radius * self.radius {
-            return None;
-        }
-        let angle = libm::atan2(y, x).rem_euclid(TAU);
-        Some(Hit {
-            t,
-            normal: self.normal,
-            uv: DVec2::new(angle / TAU, r2.sqrt() / self.radius),
-        })
+        Some((t, x, y, x * x + y * y))
+    }
+
+    /// The disk's radius.
+    pub fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// The disk's unit normal.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane.

@@ -1,6 +1,5 @@
 //! Flat rings: a disk with a round hole in its middle (POV-Ray's `disc` with a hole radius).
 
-use crate::num::Norm;
 use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
@@ -8,18 +7,11 @@ use glam::{DVec2, DVec3};
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
-/// A ring in object space: the points of a disk of radius `radius` at least `inner` from its
-/// centre.
+/// A ring in object space: the points of a disk at least `inner` from its centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ring {
     disk: Disk,
-    center: DVec3,
-    normal: DVec3,
-    radius: f64,
     inner: f64,
-    /// In-plane frame for texture coordinates (the disk's).
-    e1: DVec3,
-    e2: DVec3,
 }
 
 impl Ring {
@@ -27,46 +19,24 @@ impl Ring {
     /// not smaller than the radius.
     pub fn new(center: DVec3, normal: DVec3, radius: f64, inner: f64) -> Option<Ring> {
         let disk = Disk::new(center, normal, radius)?;
-        if !(inner >= 0.0 && inner < radius) {
-            return None;
-        }
-        let normal = normal.try_unit()?;
-        let e1 = normal.any_orthonormal_vector();
-        Some(Ring {
-            disk,
-            center,
-            normal,
-            radius,
-            inner,
-            e1,
-            e2: normal.cross(e1),
-        })
+        (inner >= 0.0 && inner < radius).then_some(Ring { disk, inner })
     }
 
     /// Nearest hit in (t_min, t_max); uv = (angle / 2π, (distance − inner) / (radius − inner)):
     /// v runs across the band from the hole's edge to the rim.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        let denom = self.normal.dot(ray.dir);
-        if denom == 0.0 {
-            return None;
-        }
-        let t = (self.center - ray.origin).dot(self.normal) / denom;
-        if !(t > t_min && t < t_max) {
-            return None;
-        }
-        let w = ray.at(t) - self.center;
-        let (x, y) = (w.dot(self.e1), w.dot(self.e2));
-        let r2 = x * x + y * y;
-        if r2 > self.radius * self.radius || r2 < self.inner * self.inner {
+        let (t, x, y, r2) = self.disk.plane_hit(ray, t_min, t_max)?;
+        let radius = self.disk.radius();
+        if r2 > radius * radius || r2 < self.inner * self.inner {
             return None;
         }
         let angle = libm::atan2(y, x).rem_euclid(TAU);
         Some(Hit {
             t,
-            normal: self.normal,
+            normal: self.disk.normal(),
             uv: DVec2::new(
                 angle / TAU,
-                (r2.sqrt() - self.inner) / (self.radius - self.inner),
+                (r2.sqrt() - self.inner) / (radius - self.inner),
             ),
         })
     }
