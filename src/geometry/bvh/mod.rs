@@ -8,6 +8,7 @@
 
 pub(crate) mod cluster;
 pub mod packet;
+mod ties;
 pub(crate) mod traverse;
 
 use std::time::{Duration, Instant};
@@ -286,10 +287,13 @@ impl Bvh {
 /// panic on them (the obj_mtl fuzzer found a 10 kB OBJ that did, `tests/bvh_degenerate.rs`).
 fn build_binary(boxes: &[BAabb], config: BvhBuildParams, core: &mut Duration) -> Bvh2 {
     let start = Instant::now();
-    let mut bvh2 = PlocBuilder::with_capacity(boxes.len()).build(
+    let ties = ties::find(boxes);
+    let untied = ties.as_ref().map(|t| t.builder_boxes(boxes));
+    let input = untied.as_deref().unwrap_or(boxes);
+    let mut bvh2 = PlocBuilder::with_capacity(input.len()).build(
         config.ploc_search_distance,
-        boxes,
-        (0..boxes.len() as u32).collect(),
+        input,
+        (0..input.len() as u32).collect(),
         config.sort_precision,
         config.search_depth_threshold,
     );
@@ -305,6 +309,9 @@ fn build_binary(boxes: &[BAabb], config: BvhBuildParams, core: &mut Duration) ->
         config.reinsertion_batch_ratio * config.post_collapse_reinsertion_batch_ratio_multiplier,
         None,
     );
+    if let Some(ties) = &ties {
+        ties.splice(&mut bvh2, boxes, config.max_prims_per_leaf.clamp(1, MAX_LEAF));
+    }
     *core += start.elapsed();
     bvh2
 }
