@@ -38,25 +38,28 @@ fn unbounded(span: Span) -> super::error::EvalError {
 /// Bounds in the space the object's own transform maps into, composed with `parent`.
 fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Aabb> {
     let t = parent * o.transform;
-    let children = match &o.shape {
+    match &o.shape {
         ObjShape::Prim(Shape::Mesh { path, smooth, .. }) => {
-            return Ok(mesh_bounds(path, *smooth, span)?.transformed(&t));
+            Ok(mesh_bounds(path, *smooth, span)?.transformed(&t))
         }
         ObjShape::Prim(s) => {
             let local = shapes::bounds(s).filter(Aabb::is_finite);
-            return local
+            local
                 .map(|b| b.transformed(&t))
-                .ok_or_else(|| unbounded(span));
+                .ok_or_else(|| unbounded(span))
         }
-        ObjShape::Group(ch) => (CsgOp::Union, ch),
-        ObjShape::Csg(op, ch) => (*op, ch),
-    };
-    let (op, ch) = children;
+        ObjShape::Group(ch) => combined(CsgOp::Union, ch, t, span),
+        ObjShape::Csg(op, ch) => combined(*op, &ch.items(), t, span),
+    }
+}
+
+/// Bounds of `op` over `ch`, each placed by `t`.
+fn combined(op: CsgOp, ch: &[Obj], t: DAffine3, span: Span) -> R<Aabb> {
     // A difference is bounded by its base alone: the cutters need no bounds of their own.
     let operands = if op == CsgOp::Difference {
         &ch[..ch.len().min(1)]
     } else {
-        &ch[..]
+        ch
     };
     let mut boxes = Vec::with_capacity(operands.len());
     for c in operands {

@@ -225,7 +225,7 @@ impl Lowerer {
             }
             ObjShape::Csg(op, ch) => {
                 let mut kids = Vec::with_capacity(ch.len());
-                for c in ch.iter() {
+                for c in ch.items().iter() {
                     match &c.shape {
                         // A group inside CSG acts as the union of its children.
                         ObjShape::Group(g) => {

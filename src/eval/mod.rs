@@ -14,6 +14,7 @@ pub(crate) mod members;
 pub(crate) mod methods;
 pub mod modules;
 pub(crate) mod motion;
+pub(crate) mod operands;
 pub(crate) mod ops;
 pub(crate) mod params;
 pub(crate) mod program;

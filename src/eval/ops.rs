@@ -8,6 +8,7 @@ use crate::syntax::ast::{BinOp, UnOp};
 
 use super::error::{R, error};
 use super::interp::Interp;
+use super::operands::Operands;
 use super::value::{Obj, ObjShape, Value};
 
 /// `-x`, `!x`.
@@ -362,23 +363,35 @@ fn csg(
     for (o, s) in [(a, ls), (b, rs)] {
         super::shapes::require_closed(it, o, s)?;
     }
-    let mut children: Vec<Obj> = Vec::new();
-    let flat = |o: &Rc<Obj>, first: bool, children: &mut Vec<Obj>| match &o.shape {
-        ObjShape::Csg(k, ch)
-            if *k == op
-                && o.material.is_none()
-                && o.motion.is_none()
-                && o.transform == glam::DAffine3::IDENTITY
-                && (first || op != CsgOp::Difference) =>
-        {
-            children.extend(ch.iter().cloned())
+    // An operand that is already this operation, plain (no material, motion or transform),
+    // lends its operands: `a | b | c` is one union of three. Only a difference's base may
+    // lend (`(a - b) - c` is `a - b - c`; `a - (b - c)` is not).
+    let operands_of = |o: &'_ Rc<Obj>, first: bool| -> Option<Operands> {
+        match &o.shape {
+            ObjShape::Csg(k, ch)
+                if *k == op
+                    && o.material.is_none()
+                    && o.motion.is_none()
+                    && o.transform == glam::DAffine3::IDENTITY
+                    && (first || op != CsgOp::Difference) =>
+            {
+                Some(ch.clone())
+            }
+            _ => None,
         }
-        _ => children.push((**o).clone()),
     };
-    flat(a, true, &mut children);
-    flat(b, false, &mut children);
+    let right = match operands_of(b, false) {
+        Some(ch) => ch.items().to_vec(),
+        None => vec![(**b).clone()],
+    };
+    // Extending the left operand's list is amortised O(1), so a union grown one object at a
+    // time (`reduce(l, start, fn(u, x) u | x)`) is linear, not quadratic (`eval::operands`).
+    let children = match operands_of(a, true) {
+        Some(ch) => ch.extended(right),
+        None => Operands::new(std::iter::once((**a).clone()).chain(right).collect()),
+    };
     Ok(Value::Object(Rc::new(Obj {
-        shape: ObjShape::Csg(op, Rc::new(children)),
+        shape: ObjShape::Csg(op, children),
         transform: glam::DAffine3::IDENTITY,
         material: None,
         motion: None,

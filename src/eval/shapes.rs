@@ -405,7 +405,7 @@ fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -
         require_closed(it, c, sp)?;
     }
     Ok(Value::Object(Rc::new(Obj {
-        shape: ObjShape::Csg(op, Rc::new(children)),
+        shape: ObjShape::Csg(op, super::operands::Operands::new(children)),
         transform: DAffine3::IDENTITY,
         material: None,
         motion: None,

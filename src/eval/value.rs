@@ -203,7 +203,7 @@ pub enum ObjShape {
     /// A primitive (never `Shape::Csg`).
     Prim(ir::Shape),
     /// CSG over children.
-    Csg(ir::CsgOp, Rc<Vec<Obj>>),
+    Csg(ir::CsgOp, super::operands::Operands),
     /// A group, flattened into its children in the IR.
     Group(Rc<Vec<Obj>>),
 }

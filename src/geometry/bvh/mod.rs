@@ -310,7 +310,11 @@ fn build_binary(boxes: &[BAabb], config: BvhBuildParams, core: &mut Duration) ->
         None,
     );
     if let Some(ties) = &ties {
-        ties.splice(&mut bvh2, boxes, config.max_prims_per_leaf.clamp(1, MAX_LEAF));
+        ties.splice(
+            &mut bvh2,
+            boxes,
+            config.max_prims_per_leaf.clamp(1, MAX_LEAF),
+        );
     }
     *core += start.elapsed();
     bvh2

@@ -395,7 +395,11 @@ fn identical_boxes_build_a_balanced_tree() {
     let plain = Bvh::build(&boxes, ids.clone(), medium);
     let grouped = Bvh::build_grouped(&boxes, ids.clone(), BvhBuildParams::fast_build(), 4);
     let clustered = Bvh::build_clustered(n, |i| boxes[i], &ids, 4, BvhBuildParams::fast_build());
-    for (bvh, label) in [(&plain, "plain"), (&grouped, "grouped"), (&clustered, "clustered")] {
+    for (bvh, label) in [
+        (&plain, "plain"),
+        (&grouped, "grouped"),
+        (&clustered, "clustered"),
+    ] {
         check_brute_force(bvh, &boxes, label);
         // log₈ of the 5,000 copies in leaves of four is 4 levels; the rest adds a few.
         assert!(depth(bvh) <= 16, "{label}: depth {}", depth(bvh));

@@ -52,7 +52,9 @@ pub(super) fn find(boxes: &[BAabb]) -> Option<Ties> {
         }
         let mut members: Vec<u32> = run.iter().map(|k| k.1).collect();
         members.sort_by_key(|&i| (box_bits(&boxes[i as usize]), i));
-        for same in members.chunk_by(|&a, &b| box_bits(&boxes[a as usize]) == box_bits(&boxes[b as usize])) {
+        for same in
+            members.chunk_by(|&a, &b| box_bits(&boxes[a as usize]) == box_bits(&boxes[b as usize]))
+        {
             if same.len() > TIE_GROUP {
                 groups.insert(same[0], same.to_vec());
             }
@@ -176,7 +178,10 @@ mod tests {
         let group = &ties.groups[&100];
         assert_eq!(group.len(), TIE_GROUP + 1);
         assert_eq!(group.last(), Some(&(boxes.len() as u32 - 1)));
-        assert!(group.windows(2).all(|w| w[0] < w[1]), "members in index order");
+        assert!(
+            group.windows(2).all(|w| w[0] < w[1]),
+            "members in index order"
+        );
         assert_eq!(ties.kept.len(), boxes.len() - TIE_GROUP);
     }
 }

@@ -1,0 +1,130 @@
+//! The operands of a CSG value, a list that `a | b | c | ...` extends in amortised constant
+//! time.
+//!
+//! Why: values are immutable, so `acc | x` used to copy all of `acc`'s operands into a new
+//! list to add one: a union grown by `reduce` over 20,000 objects made 200 million copies
+//! (34 s, issue 35). Here views share one growing list: a view is the list's first `len`
+//! items, and extending a view that ends where the list ends pushes in place (every older view
+//! keeps its own length, so it still sees exactly its operands). Extending a view the list has
+//! already grown past copies its items into a new list, as before: that only happens when one
+//! value is extended twice, e.g. `let u = a | b; let v = u | c; let w = u | d`.
+
+use std::cell::{Ref, RefCell};
+use std::fmt;
+use std::rc::Rc;
+
+use super::value::Obj;
+
+/// A view of the first `len` operands of a shared list.
+#[derive(Clone)]
+pub struct Operands {
+    shared: Rc<RefCell<Vec<Obj>>>,
+    len: usize,
+}
+
+impl Operands {
+    /// A view of all of `items`.
+    pub fn new(items: Vec<Obj>) -> Operands {
+        let len = items.len();
+        Operands {
+            shared: Rc::new(RefCell::new(items)),
+            len,
+        }
+    }
+
+    /// How many operands.
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// The operands, in order.
+    pub fn items(&self) -> Ref<'_, [Obj]> {
+        Ref::map(self.shared.borrow(), |v| &v[..self.len])
+    }
+
+    /// These operands followed by `more`, sharing this view's list when nothing was added
+    /// after it yet.
+    pub fn extended(&self, more: Vec<Obj>) -> Operands {
+        if let Ok(mut list) = self.shared.try_borrow_mut()
+            && list.len() == self.len
+        {
+            list.extend(more);
+            return Operands {
+                shared: Rc::clone(&self.shared),
+                len: list.len(),
+            };
+        }
+        let mut fresh = self.items().to_vec();
+        fresh.extend(more);
+        Operands::new(fresh)
+    }
+}
+
+impl fmt::Debug for Operands {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_list().entries(self.items().iter()).finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::eval::value::ObjShape;
+    use crate::ir::Shape;
+
+    fn ball(r: f64) -> Obj {
+        Obj {
+            shape: ObjShape::Prim(Shape::Sphere {
+                center: glam::DVec3::ZERO,
+                radius: r,
+            }),
+            transform: glam::DAffine3::IDENTITY,
+            material: None,
+            motion: None,
+            span: crate::source::Span::default(),
+            origin: 0,
+        }
+    }
+
+    fn radii(o: &Operands) -> Vec<f64> {
+        o.items()
+            .iter()
+            .map(|c| match &c.shape {
+                ObjShape::Prim(Shape::Sphere { radius, .. }) => *radius,
+                _ => f64::NAN,
+            })
+            .collect()
+    }
+
+    /// Every view keeps exactly its operands however the shared list grows, and extending an
+    /// older view a second time copies instead of disturbing the newer one.
+    #[test]
+    fn views_keep_their_operands() {
+        let a = Operands::new(vec![ball(1.0)]);
+        let b = a.extended(vec![ball(2.0)]);
+        let c = b.extended(vec![ball(3.0), ball(4.0)]);
+        assert!(Rc::ptr_eq(&a.shared, &c.shared), "a chain shares one list");
+        let d = b.extended(vec![ball(5.0)]);
+        assert!(
+            !Rc::ptr_eq(&b.shared, &d.shared),
+            "a second extension copies"
+        );
+        assert_eq!(radii(&a), [1.0]);
+        assert_eq!(radii(&b), [1.0, 2.0]);
+        assert_eq!(radii(&c), [1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(radii(&d), [1.0, 2.0, 5.0]);
+        assert_eq!((c.len(), d.len()), (4, 3));
+    }
+
+    /// Extending a view while its list is borrowed (the operand on the right shares it, as in
+    /// `u | u`) copies rather than panicking.
+    #[test]
+    fn extending_while_borrowed_copies() {
+        let a = Operands::new(vec![ball(1.0), ball(2.0)]);
+        let held = a.items();
+        let b = a.extended(vec![ball(3.0)]);
+        drop(held);
+        assert_eq!(radii(&b), [1.0, 2.0, 3.0]);
+        assert_eq!(radii(&a), [1.0, 2.0]);
+    }
+}
