@@ -70,6 +70,7 @@ fn scene_of(path: &Path, smooth: bool) -> Scene {
             span: Span::default(),
         }],
         settings: RenderSettings::default(),
+        memory: Default::default(),
     }
 }
 

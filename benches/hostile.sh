@@ -93,7 +93,54 @@ run "15 part claiming 2^32-1 rows: merge" 60 "$rtc" merge p.rtcpart -o m.png
 mkdir -p sub && printf '%s\nrender { output: "../victim.png" }\n' "$scene" >sub/s.rtc
 run "12 output ../victim.png: render" 60 "$rtc" render sub/s.rtc
 
-# 5 (not fixed): 33,334 identical faces in the mesh BVH build.
+# 5. Super-linear work: identical faces in the mesh BVH build, a union grown by `reduce`, a
+# formatter on a long `else if` chain, a long evaluation under `--time-limit`.
 { printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'; yes 'f 1 2 3' | head -n 33334; } >same.obj
 printf '%s\nmesh("same.obj")\n' "$scene" >same.rtc
-run "5 33,334 identical faces: check (not fixed)" 120 "$rtc" check same.rtc
+run "5 33,334 identical faces: check" 120 "$rtc" check same.rtc
+printf '%s\nlet b = for i in 0..20000 { sphere(center: [i * 0.01, 0, 0], radius: 0.1) }\nreduce(b, sphere(radius: 0.01), fn(a, x) a | x)\n' "$scene" >reduce.rtc
+run "5 union of 20,000 by reduce: check" 120 "$rtc" check reduce.rtc
+python3 -c "
+print('rtc 1\nfn g(x: Int) -> Int {\n    if x == 0 { 0 }')
+for i in range(1, 3000): print(f'    else if x == {i} {{ {i} }}')
+print('    else { -1 }\n}\nlet y = g(5)')" >elif.rtc
+run "5 3,000 else if: fmt --check" 120 "$rtc" fmt --check elif.rtc
+printf '%s\nfor i in 0..49000000 { }\n' "$scene" >long.rtc
+run "5 49M empty iterations: render --time-limit 1" 120 "$rtc" render long.rtc -o long.png --time-limit 1
+python3 -c "
+n = 1200
+print('\n'.join(f'v {i} {j} {(i * j) % 7}' for i in range(n) for j in range(n)))
+print('\n'.join(f'f {i*n+j+1} {i*n+j+2} {(i+1)*n+j+1}\nf {i*n+j+2} {(i+1)*n+j+2} {(i+1)*n+j+1}' for i in range(n - 1) for j in range(n - 1)))" >grid.obj
+printf '%s\nmesh("grid.obj")\n' "$scene" >gridmesh.rtc
+run "5 2.9M-triangle mesh: render --time-limit 1" 120 "$rtc" render gridmesh.rtc -o gridmesh.png --time-limit 1
+rm grid.obj
+
+# 4 (and issue 34). Memory: four 8192² PNGs, a YAML alias tree over a 1 MB leaf, 2,000 copies of
+# a 4 MB string, an `iterate` that never ends, a grid of 25M spheres (default budget of 4 GiB).
+python3 - <<'EOF2'
+import struct, zlib
+def chunk(kind, data):
+    return struct.pack('>I', len(data)) + kind + data + struct.pack('>I', zlib.crc32(kind + data))
+w = h = 8192
+row = b'\x00' + b'\x80\x40\x20' * w
+raw = zlib.compress(row * h, 9)
+png = b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 8, 2, 0, 0, 0)) + chunk(b'IDAT', raw) + chunk(b'IEND', b'')
+for name in 'abcd':
+    open(f'{name}.png', 'wb').write(png)
+leaf = 'x' * 1_000_000
+lines = [f'a0: &a0 "{leaf}"']
+for k in range(1, 12):
+    lines.append(f'a{k}: &a{k} [*a{k-1}, *a{k-1}, *a{k-1}, *a{k-1}]')
+open('bomb.yaml', 'w').write('\n'.join(lines) + '\n')
+EOF2
+{ printf '%s\n' "$scene"; for t in a b c d; do printf 'sphere().material(material { texture: image("%s.png") })\n' $t; done; } >pngs.rtc
+run "4 four 8192x8192 PNGs: check" 120 "$rtc" check pngs.rtc
+run "4 YAML aliases over a 1 MB leaf: check" 120 "$rtc" check bomb.yaml
+printf '%s\nfn grow(s: String, n: Int) -> String { if n == 0 { s } else { grow(s + s, n - 1) } }\nlet big = grow("0123456789abcdef", 18)\nlet all = for i in 0..2000 { big + str(i) }\n' "$scene" >strings.rtc
+run "4 2,000 x (4 MB string + str(i)): check" 120 "$rtc" check strings.rtc
+printf 'rtc 1\nlet x = iterate(0, fn(i) i + 1, fn(i) true)\n' >iterate.rtc
+run "34 iterate that never ends: check" 120 "$rtc" check iterate.rtc
+run "34 ... under --memory-budget 128MiB" 120 "$rtc" check iterate.rtc --memory-budget 128MiB
+printf '%s\nfor i in 0..5000 { for j in 0..5000 { sphere(center: [i, j, 0], radius: 0.1) } }\n' "$scene" >grid.rtc
+run "34 grid of 25M spheres: check" 120 "$rtc" check grid.rtc
+run "34 ... under --memory-budget 512MiB" 120 "$rtc" check grid.rtc --memory-budget 512MiB

@@ -39,8 +39,10 @@ pub struct MaterialId(pub u32);
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct TextureId(pub u32);
 
-/// A whole evaluated scene, ready for optimisation and rendering.
-#[derive(Clone, Debug, PartialEq)]
+/// A whole evaluated scene, ready for optimisation and rendering. Two scenes are equal when
+/// what they show and how they render are: `memory` is the load's bookkeeping (a course
+/// scene read from `.in` and from YAML is the same scene, charged differently).
+#[derive(Clone, Debug)]
 pub struct Scene {
     /// The one camera.
     pub camera: Camera,
@@ -54,6 +56,29 @@ pub struct Scene {
     pub objects: Vec<Object>,
     /// How to render.
     pub settings: RenderSettings,
+    /// The load's memory budget and what the front end charged to it; the preparation
+    /// charges the textures and meshes it loads on top.
+    pub memory: limits::Memory,
+}
+
+impl PartialEq for Scene {
+    fn eq(&self, other: &Scene) -> bool {
+        let Scene {
+            camera,
+            lights,
+            materials,
+            textures,
+            objects,
+            settings,
+            memory: _,
+        } = self;
+        *camera == other.camera
+            && *lights == other.lights
+            && *materials == other.materials
+            && *textures == other.textures
+            && *objects == other.objects
+            && *settings == other.settings
+    }
 }
 
 impl Scene {

@@ -36,8 +36,16 @@ impl SceneFormat {
 pub fn load(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> ir::Loaded {
     match SceneFormat::of(path) {
         Some(SceneFormat::Rtc) => crate::eval::load_file(path, sources, options),
-        Some(SceneFormat::LegacyIn) => crate::compat::load_in(path, sources),
-        Some(SceneFormat::CourseYaml) => crate::compat::load_yaml(path, sources),
+        Some(SceneFormat::LegacyIn) => {
+            let mut loaded = crate::compat::load_in(path, sources);
+            if let Some(scene) = &mut loaded.scene {
+                scene.memory = ir::limits::Memory::new(options.max_memory);
+            }
+            loaded
+        }
+        Some(SceneFormat::CourseYaml) => {
+            crate::compat::load_yaml_within(path, sources, options.max_memory)
+        }
         None => Loaded::failure(
             IO_ERROR,
             format!("`{}` is not a scene file rtc knows", path.display()),

@@ -227,3 +227,54 @@ fn the_time_limit_stops_the_render_and_keeps_the_old_image() {
         assert_eq!(run.status.code(), Some(2), "{bad}: {}", stderr(&run));
     }
 }
+
+/// Calls count against the loop budget as loop iterations do: a recursion that branches into
+/// two calls at every level stays within the depth budget and would run for ever otherwise.
+#[test]
+fn a_branching_recursion_meets_the_loop_budget() {
+    let small = EvalOptions {
+        max_loop_iterations: 10_000,
+        ..EvalOptions::default()
+    };
+    let text = "rtc 1\nfn f(n: Int) -> Int { if n == 0 { 1 } else { f(n - 1) + f(n - 1) } }\nlet x = f(60)\n";
+    let mut sources = SourceMap::new();
+    let loaded = load_source(Path::new("doubling.rtc"), text, &mut sources, &small);
+    let d = loaded
+        .diagnostics
+        .items
+        .iter()
+        .find(|d| d.code == "rtc::budget::loop")
+        .unwrap_or_else(|| panic!("{:?}", loaded.diagnostics.items));
+    assert!(
+        d.label.as_deref().is_some_and(|l| l.contains("calls")),
+        "{d:?}"
+    );
+}
+
+/// `--time-limit` covers the evaluation too: a scene still evaluating when the time is up
+/// stops there, at the loop, instead of evaluating to the end and stopping at the first band
+/// of rows.
+#[test]
+fn the_time_limit_stops_a_long_evaluation_where_it_is() {
+    let dir = scratch("time-eval");
+    let scene = scene_file(
+        &dir,
+        "rtc 1\ncamera { eye: [0, 0, 5], center: [0, 0, 0], up: Y, resolution: [8, 6] }\n\
+         point_light { position: [5, 5, 5] }\nfor i in 0..40000000 { }\nsphere()\n",
+    );
+    let s = scene.to_str().unwrap();
+    let out = dir.join("out.png");
+    let run = rtc(&[
+        "render",
+        s,
+        "-o",
+        out.to_str().unwrap(),
+        "--time-limit",
+        "0.2",
+    ]);
+    let text = stderr(&run);
+    assert_eq!(run.status.code(), Some(1), "{text}");
+    assert!(text.contains("rtc::render::time_limit"), "{text}");
+    assert!(text.contains(&format!("{s}:4:")), "at the loop: {text}");
+    assert!(!out.exists());
+}

@@ -36,6 +36,13 @@ fn same_split(path: &Path, src: &str, opts: &EvalOptions) -> Loaded {
             "{} in {parts} parts: another scene",
             path.display()
         );
+        // The memory charged is the same too (the budget stops both at the same place).
+        assert_eq!(
+            split.scene.as_ref().map(|s| s.memory),
+            serial.scene.as_ref().map(|s| s.memory),
+            "{} in {parts} parts: other bytes charged",
+            path.display()
+        );
     }
     serial
 }

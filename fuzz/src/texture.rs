@@ -95,5 +95,6 @@ pub fn one_object_scene(object: Object) -> Scene {
             shadows: true,
             ..RenderSettings::default()
         },
+        memory: Default::default(),
     }
 }

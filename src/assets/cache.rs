@@ -65,6 +65,11 @@ impl<T> Cache<T> {
             .unwrap_or_else(|e| e.into_inner())
     }
 
+    /// The value for `key` if it is loaded.
+    pub fn get(&self, key: &FileKey) -> Option<Arc<T>> {
+        self.map().get(key).cloned()
+    }
+
     /// The value for `key`, loading it with `load` the first time.
     pub fn get_or_load<E>(
         &self,

@@ -63,6 +63,20 @@ fn exr_data_window_pixels(path: &Path) -> Result<u64, ImageError> {
         .unwrap_or(0))
 }
 
+/// Bytes one decoded texel takes (three f64 channels).
+pub const DECODED_BYTES_PER_PIXEL: u64 = std::mem::size_of::<DVec3>() as u64;
+
+/// Bytes the image at `path` takes once decoded, from its header alone; `None` when it is not
+/// a regular file within the byte budget or its header cannot be read.
+pub fn header_bytes(path: &Path) -> Option<u64> {
+    crate::source::open_regular(path, MAX_TEXTURE_FILE_BYTES).ok()?;
+    let (w, h) = image::ImageReader::open(path)
+        .ok()?
+        .into_dimensions()
+        .ok()?;
+    Some(u64::from(w) * u64::from(h) * DECODED_BYTES_PER_PIXEL)
+}
+
 impl Picture {
     /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
     pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {

@@ -15,6 +15,7 @@ pub mod obj_count;
 pub mod obj_error;
 pub mod obj_fast;
 pub mod obj_file;
+pub mod obj_inside;
 pub mod search;
 
 use std::path::Path;
@@ -33,6 +34,15 @@ static PICTURES: Cache<Picture> = Cache::new();
 /// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process.
 pub fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
     MESHES.get_or_load(FileKey::of(path, smooth), || MeshAsset::load(path, smooth))
+}
+
+/// Bytes the image at `path` takes decoded: from the cache if it is there, else from its
+/// header's size (nothing is decoded). 0 when the header cannot be read: decoding will say why.
+pub fn picture_bytes(path: &Path) -> u64 {
+    match PICTURES.get(&FileKey::of(path, false)) {
+        Some(p) => p.memory() as u64,
+        None => image::header_bytes(path).unwrap_or(0),
+    }
 }
 
 /// The image at `path`, decoded once per process.

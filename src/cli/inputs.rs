@@ -1,4 +1,5 @@
-//! What the command line tells a scene before it is evaluated: `--frame`, `--fps`, `--set`.
+//! What the command line tells a scene before it is evaluated: `--frame`, `--fps`, `--set`,
+//! `--memory-budget`.
 
 use rtc::eval::EvalOptions;
 
@@ -14,6 +15,10 @@ pub(crate) struct SceneInputs {
     /// Overrides a `param` the scene file declares (repeatable): `--set size=3`, `-D size=3`.
     #[arg(long = "set", short = 'D', value_name = "NAME=VALUE")]
     set: Vec<String>,
+    /// Most memory one load of the scene may take for its values, objects, textures and meshes
+    /// (`512MiB`, `8GiB`; default 4GiB).
+    #[arg(long, value_name = "SIZE", value_parser = rtc::ir::limits::parse_bytes)]
+    memory_budget: Option<u64>,
 }
 
 impl SceneInputs {
@@ -49,6 +54,9 @@ impl SceneInputs {
             frame,
             fps: self.fps,
             overrides,
+            max_memory: self
+                .memory_budget
+                .unwrap_or(rtc::ir::limits::DEFAULT_MEMORY_BUDGET),
             ..EvalOptions::default()
         })
     }

@@ -105,16 +105,17 @@ fn render(
         ..
     } = *job;
     let subject = file.display().to_string();
-    // `--threads` bounds the evaluation's loop parts too.
-    let opts = &EvalOptions {
-        loop_parts: rtc::eval::LoopParts::Auto { threads },
-        ..opts.clone()
-    };
-    let mut sources = SourceMap::new();
     let load_start = std::time::Instant::now();
     let deadline = job
         .time_limit
         .map(|s| load_start + std::time::Duration::from_secs_f64(s));
+    // `--threads` bounds the evaluation's loop parts too; `--time-limit` covers the evaluation.
+    let opts = &EvalOptions {
+        loop_parts: rtc::eval::LoopParts::Auto { threads },
+        deadline,
+        ..opts.clone()
+    };
+    let mut sources = SourceMap::new();
     let loaded = load(file, &mut sources, opts);
     let load_time = load_start.elapsed();
     let color = format == Format::Human && std::io::stderr().is_terminal();
@@ -187,9 +188,15 @@ fn render(
         .aovs
         .contains(&rtc::render::Channel::Object)
         .then(|| cli::aov::sidecar(&scene, &sources, &image_path));
-    let prepared = match rtc::opt::prepare_owned(scene) {
-        Ok(p) => p,
-        Err(diags) => {
+    let camera = scene.camera.clone();
+    let prepared = match prepare_before(scene, deadline) {
+        None => {
+            let limit = job.time_limit.unwrap_or_default();
+            print(&[time_limit_reached(&camera, limit)], &sources);
+            return Outcome::SceneErrors;
+        }
+        Some(Ok(p)) => p,
+        Some(Err(diags)) => {
             print(&diags.items, &sources);
             eprintln!("{}", cli::check::count_line(&diags));
             return outcome_of(&diags, false);
@@ -253,6 +260,32 @@ fn render(
             }
         }
     }
+}
+
+/// The preparation of `scene` (meshes loaded, BVHs built), or `None` when `deadline` passes
+/// first: it then runs on a thread of its own, abandoned when the time is up (the process
+/// ends with the error; nothing has been written).
+fn prepare_before(
+    scene: rtc::ir::Scene,
+    deadline: Option<std::time::Instant>,
+) -> Option<Result<rtc::opt::Prepared, rtc::diag::Diagnostics>> {
+    let Some(deadline) = deadline else {
+        return Some(rtc::opt::prepare_owned(scene));
+    };
+    let (done, result) = std::sync::mpsc::channel();
+    // A stack as deep as the main thread's and more (reserved, not touched): the preparation
+    // recurses through CSG trees.
+    let spawned = std::thread::Builder::new()
+        .stack_size(64 << 20)
+        .spawn(move || {
+            let _ = done.send(rtc::opt::prepare_owned(scene));
+        });
+    if spawned.is_err() {
+        // No thread to be had (the system's limit): nothing can run, so stop as if timed out.
+        return None;
+    }
+    let left = deadline.saturating_duration_since(std::time::Instant::now());
+    result.recv_timeout(left).ok()
 }
 
 /// The diagnostic for a render stopped by `--time-limit`, at the camera (what sets the work).

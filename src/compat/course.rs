@@ -290,6 +290,7 @@ impl Draft {
             textures: parts.textures,
             objects: parts.objects,
             settings: parts.settings,
+            memory: crate::ir::limits::Memory::default(),
         })
     }
 }

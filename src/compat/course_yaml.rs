@@ -30,10 +30,17 @@ const TOP_KEYS: &[&str] = &[
 ];
 
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
-pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> Option<Scene> {
+/// The YAML tree's nodes are charged to `memory`, which the scene carries on.
+pub fn parse(
+    text: &str,
+    file: FileId,
+    path: &Path,
+    diags: &mut Diagnostics,
+    mut memory: crate::ir::limits::Memory,
+) -> Option<Scene> {
     let whole = Span::new(file, 0, 0);
     let errors_before = diags.error_count();
-    let Some(root) = yaml_tree::parse_first_document(text, file, diags) else {
+    let Some(root) = yaml_tree::parse_first_document(text, file, diags, &mut memory) else {
         if diags.error_count() == errors_before {
             diags.push(
                 Diagnostic::error("rtc::yaml::empty", whole, "the YAML file holds no scene")
@@ -75,11 +82,12 @@ pub fn parse(text: &str, file: FileId, path: &Path, diags: &mut Diagnostics) -> 
     }
     settings(&mut top, &mut draft, diags);
     top.finish("the scene", TOP_KEYS, diags);
-    draft.finish(
+    let scene = draft.finish(
         whole,
         "add `Eye: [200, 200, 1000]` or a `Camera:` block",
         diags,
-    )
+    )?;
+    Some(Scene { memory, ..scene })
 }
 
 /// The items of a list; a non-list is reported and yields nothing. An empty value (`Objects:`

@@ -46,9 +46,14 @@ pub fn load_in(path: &Path, sources: &mut SourceMap) -> Loaded {
 
 /// Reads a course YAML scene (COURSE.md §2) into the IR.
 pub fn load_yaml(path: &Path, sources: &mut SourceMap) -> Loaded {
+    load_yaml_within(path, sources, crate::ir::limits::DEFAULT_MEMORY_BUDGET)
+}
+
+/// [`load_yaml`] under a memory budget of `max_memory` bytes (`--memory-budget`).
+pub fn load_yaml_within(path: &Path, sources: &mut SourceMap, max_memory: u64) -> Loaded {
     match read(path) {
         Ok((text, latin1)) => {
-            let loaded = load_yaml_source(path, &text, sources);
+            let loaded = yaml_source_within(path, &text, sources, max_memory);
             with_encoding_note(loaded, latin1, sources)
         }
         Err(loaded) => loaded,
@@ -76,9 +81,19 @@ pub fn load_in_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loade
 
 /// Parses course YAML text as if read from `path` (textures and meshes resolve against it).
 pub fn load_yaml_source(path: &Path, text: &str, sources: &mut SourceMap) -> Loaded {
+    yaml_source_within(
+        path,
+        text,
+        sources,
+        crate::ir::limits::DEFAULT_MEMORY_BUDGET,
+    )
+}
+
+fn yaml_source_within(path: &Path, text: &str, sources: &mut SourceMap, max_memory: u64) -> Loaded {
     let file = sources.add(path, text);
     let mut diags = Diagnostics::default();
-    let scene = course_yaml::parse(text, file, path, &mut diags);
+    let memory = crate::ir::limits::Memory::new(max_memory);
+    let scene = course_yaml::parse(text, file, path, &mut diags, memory);
     sort_by_position(&mut diags);
     Loaded {
         scene,

@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use serde_saphyr::granit_parser::{Event, Parser, ScalarStyle, Span as YamlSpan, StructureStyle};
 
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::ir::limits::Memory;
 use crate::source::{FileId, Span};
 
 /// Upper bound on nodes (aliases are expanded by copying), so an alias bomb cannot exhaust memory.
@@ -68,13 +69,20 @@ fn shorten(text: &str) -> String {
 
 /// The first document of a YAML text, or `None` after a syntax error (reported in `diags`).
 /// A second document is reported as a warning, as the course reader did.
-pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -> Option<YamlNode> {
+/// Every node and scalar byte made, aliases' copies included, is charged to `memory`.
+pub fn parse_first_document(
+    text: &str,
+    file: FileId,
+    diags: &mut Diagnostics,
+    memory: &mut Memory,
+) -> Option<YamlNode> {
     let mut builder = Builder {
         text,
         file,
         stack: Vec::new(),
         anchors: HashMap::new(),
         nodes: 0,
+        memory: *memory,
         root: None,
     };
     let mut documents = 0usize;
@@ -129,6 +137,7 @@ pub fn parse_first_document(text: &str, file: FileId, diags: &mut Diagnostics) -
             }
         }
     }
+    *memory = builder.memory;
     builder.root
 }
 
@@ -173,9 +182,11 @@ struct Builder<'t> {
     text: &'t str,
     file: FileId,
     stack: Vec<Open>,
-    /// Anchored nodes with their subtree sizes.
-    anchors: HashMap<usize, (YamlNode, usize)>,
+    /// Anchored nodes with their subtrees' node counts and bytes.
+    anchors: HashMap<usize, (YamlNode, usize, u64)>,
     nodes: usize,
+    /// The load's memory budget, charged for every node made.
+    memory: Memory,
     root: Option<YamlNode>,
 }
 
@@ -250,22 +261,23 @@ impl Builder<'_> {
                 }
             }
             Event::Alias(id) => {
-                let Some(&(_, size)) = self.anchors.get(&id) else {
+                let Some(&(_, size, bytes)) = self.anchors.get(&id) else {
                     return Err(Box::new(
                         Diagnostic::error("rtc::yaml::syntax", span, "unknown YAML alias")
                             .with_label("no anchor of this name before it"),
                     ));
                 };
                 // Budget the whole copied subtree before copying it (an alias bomb).
-                self.spend(size.saturating_sub(1), span)?;
-                let Some((target, _)) = self.anchors.get(&id) else {
+                self.spend(size, span)?;
+                self.charge(bytes, span)?;
+                let Some((target, ..)) = self.anchors.get(&id) else {
                     return Ok(());
                 };
                 let node = YamlNode {
                     kind: target.kind.clone(),
                     span,
                 };
-                self.finish_node(node, 0)?;
+                self.place(node, 0)?;
             }
             _ => {}
         }
@@ -287,11 +299,28 @@ impl Builder<'_> {
         Ok(())
     }
 
+    /// Charges `bytes` of nodes about to be made to the memory budget.
+    fn charge(&mut self, bytes: u64, span: Span) -> Result<(), Box<Diagnostic>> {
+        self.memory
+            .charge(bytes)
+            .map_err(|over| Box::new(over.diagnostic(span, "expanding this YAML node")))
+    }
+
     fn finish_node(&mut self, node: YamlNode, anchor: usize) -> Result<(), Box<Diagnostic>> {
         self.spend(1, node.span)?;
+        let own = match &node.kind {
+            YamlKind::Scalar { text, .. } => NODE_BYTES + text.len() as u64,
+            _ => NODE_BYTES,
+        };
+        self.charge(own, node.span)?;
+        self.place(node, anchor)
+    }
+
+    /// Records an anchored node and adds a finished node to its parent (or makes it the root).
+    fn place(&mut self, node: YamlNode, anchor: usize) -> Result<(), Box<Diagnostic>> {
         if anchor != 0 {
-            self.anchors
-                .insert(anchor, (node.clone(), deep_count(&node)));
+            let (count, bytes) = deep_size(&node);
+            self.anchors.insert(anchor, (node.clone(), count, bytes));
         }
         match self.stack.last_mut() {
             Some(Open::Seq(items, ..)) => items.push(node),
@@ -310,16 +339,19 @@ impl Builder<'_> {
 }
 
 /// Number of nodes in a subtree, for the alias-expansion budget.
-fn deep_count(node: &YamlNode) -> usize {
+/// Bytes one node is charged besides its scalar text.
+const NODE_BYTES: u64 = std::mem::size_of::<YamlNode>() as u64;
+
+/// The nodes under `node` (itself included) and the bytes they hold.
+fn deep_size(node: &YamlNode) -> (usize, u64) {
+    let add = |a: (usize, u64), b: (usize, u64)| (a.0 + b.0, a.1.saturating_add(b.1));
     match &node.kind {
-        YamlKind::Scalar { .. } => 1,
-        YamlKind::Seq(items) => 1 + items.iter().map(deep_count).sum::<usize>(),
-        YamlKind::Map(entries) => {
-            1 + entries
-                .iter()
-                .map(|(k, v)| deep_count(k) + deep_count(v))
-                .sum::<usize>()
-        }
+        YamlKind::Scalar { text, .. } => (1, NODE_BYTES + text.len() as u64),
+        YamlKind::Seq(items) => items.iter().map(deep_size).fold((1, NODE_BYTES), add),
+        YamlKind::Map(entries) => entries
+            .iter()
+            .map(|(k, v)| add(deep_size(k), deep_size(v)))
+            .fold((1, NODE_BYTES), add),
     }
 }
 
@@ -329,7 +361,7 @@ mod tests {
 
     fn parse(text: &str) -> (Option<YamlNode>, Diagnostics) {
         let mut diags = Diagnostics::default();
-        let node = parse_first_document(text, FileId(0), &mut diags);
+        let node = parse_first_document(text, FileId(0), &mut diags, &mut Memory::default());
         (node, diags)
     }
 

@@ -215,16 +215,7 @@ impl Interp<'_> {
                 Value::Vec3(v) => Value::Float(v.to_array()[i as usize]),
                 _ => return Ok(()),
             };
-            self.loop_iters += 1;
-            if self.loop_iters > self.opts.max_loop_iterations {
-                return Err(error("rtc::budget::loop", span, "loop budget exhausted")
-                    .with_label(format!(
-                        "the scene's loops ran more than {} iterations in total",
-                        self.opts.max_loop_iterations
-                    ))
-                    .with_help("reduce the ranges of the loops")
-                    .into());
-            }
+            self.step(span, super::budgets::Step::Loop)?;
             self.locals.push((g.var.sym, v));
             let r = self.for_level(gens, level + 1, filter, body, span, out);
             self.locals.pop();
@@ -270,10 +261,11 @@ impl Interp<'_> {
         }
         match out {
             Sink::List(list) => {
+                self.check_list_len(list.len() + 1, span)?;
+                self.charge(super::value::VALUE_BYTES, span, "this loop's list")?;
                 list.push(v);
-                self.check_list_len(list.len(), span)?;
             }
-            Sink::Emit(lowerer, stmt) => lowerer.emit(&v, self.opts.max_objects, *stmt)?,
+            Sink::Emit(lowerer, stmt) => lowerer.emit(&v, &self.object_budget(), *stmt)?,
         }
         Ok(())
     }

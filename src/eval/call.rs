@@ -148,6 +148,7 @@ impl Interp<'_> {
             .with_help("make sure the recursion reaches a base case")
             .into());
         }
+        self.step(span, super::budgets::Step::Call)?;
         let mut slots: Vec<Option<(crate::syntax::intern::Sym, Value, Span)>> =
             vec![None; def.params.len()];
         let mut next_pos = 0;

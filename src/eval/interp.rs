@@ -9,12 +9,15 @@ use crate::source::{SourceMap, Span};
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
 
+use crate::ir::limits::Memory;
+
 use super::EvalOptions;
 use super::blocks::Sink;
+use super::budgets;
 use super::error::{EvalError, R, error, suggest};
 use super::modules::{Module, Scope};
 use super::ops::Num;
-use super::value::{Closure, Record, Value};
+use super::value::{Closure, Record, VALUE_BYTES, Value};
 
 /// Most operator nodes one try of the pure arithmetic path visits (`Interp::pure_num`).
 const PURE_NODES: u32 = 16;
@@ -36,6 +39,8 @@ pub struct Interp<'a> {
     pub(super) scope: Rc<Scope>,
     /// Loop iterations so far (budget).
     pub(super) loop_iters: u64,
+    /// Bytes of strings and lists made so far, charged to the memory budget (`budgets.rs`).
+    pub(super) memory: std::cell::Cell<u64>,
     /// Nested user calls (budget).
     pub(super) depth: u32,
     /// Evaluated modules by key (`std.x` or resolved path).
@@ -82,6 +87,7 @@ impl<'a> Interp<'a> {
             frame_base: 0,
             scope,
             loop_iters: 0,
+            memory: std::cell::Cell::new(0),
             depth: 0,
             modules: HashMap::new(),
             loading: Vec::new(),
@@ -325,6 +331,7 @@ impl<'a> Interp<'a> {
             match p {
                 StrPart::Text(t) => s.push_str(t),
                 StrPart::Interp(e, prec) => {
+                    let before = s.len();
                     let v = self.eval(e)?;
                     match (prec, v.as_f64(), &v) {
                         (Some(p), Some(f), _) => s.push_str(&format!("{f:.p$}")),
@@ -332,6 +339,7 @@ impl<'a> Interp<'a> {
                         _ => s.push_str(&v.show()),
                     }
                     self.check_string_len(s.len(), e.span)?;
+                    self.charge((s.len() - before) as u64, e.span, "this string")?;
                 }
             }
         }
@@ -340,30 +348,57 @@ impl<'a> Interp<'a> {
 
     /// Checks a string length (bytes) against the budget.
     pub fn check_string_len(&self, len: usize, span: Span) -> R<()> {
-        if len as u64 > self.opts.max_string_len {
-            return Err(error("rtc::budget::string", span, "string is too long")
-                .with_label(format!(
-                    "this string grows past {} bytes",
-                    self.opts.max_string_len
-                ))
-                .with_help("build shorter text; strings label and report, they do not hold data")
-                .into());
-        }
-        Ok(())
+        budgets::string_len(len, self.opts.max_string_len, span)
     }
 
     /// Checks a list length against the budget.
     pub fn check_list_len(&self, len: usize, span: Span) -> R<()> {
-        if len as u64 > self.opts.max_list_len {
-            return Err(error("rtc::budget::list", span, "list is too long")
-                .with_label(format!(
-                    "this list grows past {} elements",
-                    self.opts.max_list_len
-                ))
-                .with_help("build fewer elements, e.g. with a coarser `step`")
-                .into());
-        }
+        budgets::list_len(len, self.opts.max_list_len, span)
+    }
+
+    /// A new string of `len` bytes is about to be made: its length and memory budgets.
+    pub fn new_string(&self, len: usize, span: Span) -> R<()> {
+        self.check_string_len(len, span)?;
+        self.charge(len as u64, span, "this string")
+    }
+
+    /// A new list of `len` elements is about to be made: its length and memory budgets.
+    pub fn new_list(&self, len: usize, span: Span) -> R<()> {
+        self.check_list_len(len, span)?;
+        self.charge((len as u64).saturating_mul(VALUE_BYTES), span, "this list")
+    }
+
+    /// Charges `bytes` that `what` (at `span`) is about to hold to the memory budget.
+    pub fn charge(&self, bytes: u64, span: Span, what: &str) -> R<()> {
+        let mut m = self.memory_used();
+        budgets::charge(&mut m, bytes, span, what)?;
+        self.memory.set(m.used);
         Ok(())
+    }
+
+    /// The memory budget with the values' bytes charged (objects are charged as the lowering
+    /// counts them: [`Interp::object_budget`]).
+    pub fn memory_used(&self) -> Memory {
+        Memory {
+            budget: self.opts.max_memory,
+            used: self.memory.get(),
+        }
+    }
+
+    /// What emitting objects may use now.
+    pub fn object_budget(&self) -> budgets::ObjectBudget {
+        budgets::ObjectBudget {
+            max_objects: self.opts.max_objects,
+            memory: self.memory_used(),
+        }
+    }
+
+    /// Counts one loop iteration or call against the loop budget, and now and then looks at
+    /// the deadline.
+    pub fn step(&mut self, span: Span, kind: budgets::Step) -> R<()> {
+        self.loop_iters += 1;
+        let (max, deadline) = (self.opts.max_loop_iterations, self.opts.deadline);
+        budgets::step(self.loop_iters, max, deadline, span, kind)
     }
 
     #[inline(never)]
@@ -392,7 +427,7 @@ impl<'a> Interp<'a> {
         for it in items {
             out.push(self.eval(it)?);
         }
-        self.check_list_len(out.len(), span)?;
+        self.new_list(out.len(), span)?;
         Ok(Value::List(Rc::new(out)))
     }
 

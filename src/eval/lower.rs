@@ -58,10 +58,17 @@ pub fn emittable(v: &Value) -> bool {
 
 impl Lowerer {
     /// Adds an emitted value; `Err` carries the type of a value that cannot be emitted.
-    pub fn emit(&mut self, v: &Value, max_objects: u64, span: Span) -> Result<(), Diagnostic> {
+    pub fn emit(
+        &mut self,
+        v: &Value,
+        budget: &super::budgets::ObjectBudget,
+        span: Span,
+    ) -> Result<(), Diagnostic> {
+        let max_objects = budget.max_objects;
         match v {
             Value::Object(o) => {
                 self.object(o, DAffine3::IDENTITY, None);
+                budget.check_memory(self.objects.len(), span)?;
                 if self.objects.len() as u64 > max_objects {
                     return Err(Diagnostic::error(
                         "rtc::budget::objects",
@@ -77,7 +84,7 @@ impl Lowerer {
             Value::Render(r) => self.renders.push(r.clone()),
             Value::List(l) => {
                 for x in l.iter() {
-                    self.emit(x, max_objects, span)?;
+                    self.emit(x, budget, span)?;
                 }
             }
             Value::Unit => {}
@@ -389,6 +396,7 @@ impl Lowerer {
             textures: self.textures,
             objects: self.objects,
             settings,
+            memory: ir::limits::Memory::default(),
         })
     }
 }

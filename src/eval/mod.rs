@@ -3,6 +3,7 @@
 pub(crate) mod assets;
 pub(crate) mod blocks;
 pub(crate) mod bounds;
+pub(crate) mod budgets;
 pub(crate) mod builtins;
 pub(crate) mod call;
 pub(crate) mod error;
@@ -66,6 +67,12 @@ pub struct EvalOptions {
     /// Whether long top-level loops may be evaluated on several threads (the result is the
     /// same either way).
     pub loop_parts: LoopParts,
+    /// Bytes the whole load may hold: the evaluation's strings, lists and objects, then the
+    /// textures and meshes the preparation loads (`ir::limits::Memory`, `--memory-budget`).
+    pub max_memory: u64,
+    /// When the evaluation must stop (`--time-limit`, counted from the start of the command):
+    /// past it, the next loop step or call is `rtc::render::time_limit`.
+    pub deadline: Option<std::time::Instant>,
 }
 
 /// Frames per second unless the command line says otherwise (film's rate).
@@ -86,6 +93,8 @@ impl Default for EvalOptions {
             overrides: Vec::new(),
             provenance: false,
             loop_parts: LoopParts::default(),
+            max_memory: crate::ir::limits::DEFAULT_MEMORY_BUDGET,
+            deadline: None,
         }
     }
 }
@@ -213,8 +222,12 @@ fn load_source_here(
     if let (Some(b), Some(origins)) = (it.prov.take(), lowerer.origins.take()) {
         loaded.provenance = Some((*b).finish(origins));
     }
+    // What the evaluation charged goes on to the preparation, which charges the textures and
+    // meshes to the same budget.
+    let mut memory = it.memory_used();
+    memory.used += lowerer.objects.len() as u64 * budgets::OBJECT_BYTES;
     match lowerer.finish() {
-        Ok(scene) => loaded.scene = Some(scene),
+        Ok(scene) => loaded.scene = Some(crate::ir::Scene { memory, ..scene }),
         Err(errs) => loaded.diagnostics.items.extend(errs),
     }
     loaded

@@ -13,18 +13,25 @@ use std::cell::{Ref, RefCell};
 use std::fmt;
 use std::rc::Rc;
 
-use super::value::Obj;
-
-/// A view of the first `len` operands of a shared list.
-#[derive(Clone)]
-pub struct Operands {
-    shared: Rc<RefCell<Vec<Obj>>>,
+/// A view of the first `len` operands of a shared list (of objects, `value::Obj`; generic so
+/// that this file stands below the values).
+pub struct Operands<T> {
+    shared: Rc<RefCell<Vec<T>>>,
     len: usize,
 }
 
-impl Operands {
+impl<T> Clone for Operands<T> {
+    fn clone(&self) -> Operands<T> {
+        Operands {
+            shared: Rc::clone(&self.shared),
+            len: self.len,
+        }
+    }
+}
+
+impl<T: Clone> Operands<T> {
     /// A view of all of `items`.
-    pub fn new(items: Vec<Obj>) -> Operands {
+    pub fn new(items: Vec<T>) -> Operands<T> {
         let len = items.len();
         Operands {
             shared: Rc::new(RefCell::new(items)),
@@ -38,13 +45,13 @@ impl Operands {
     }
 
     /// The operands, in order.
-    pub fn items(&self) -> Ref<'_, [Obj]> {
+    pub fn items(&self) -> Ref<'_, [T]> {
         Ref::map(self.shared.borrow(), |v| &v[..self.len])
     }
 
     /// These operands followed by `more`, sharing this view's list when nothing was added
     /// after it yet.
-    pub fn extended(&self, more: Vec<Obj>) -> Operands {
+    pub fn extended(&self, more: Vec<T>) -> Operands<T> {
         if let Ok(mut list) = self.shared.try_borrow_mut()
             && list.len() == self.len
         {
@@ -60,7 +67,7 @@ impl Operands {
     }
 }
 
-impl fmt::Debug for Operands {
+impl<T: Clone + fmt::Debug> fmt::Debug for Operands<T> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_list().entries(self.items().iter()).finish()
     }
@@ -69,50 +76,28 @@ impl fmt::Debug for Operands {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::eval::value::ObjShape;
-    use crate::ir::Shape;
 
-    fn ball(r: f64) -> Obj {
-        Obj {
-            shape: ObjShape::Prim(Shape::Sphere {
-                center: glam::DVec3::ZERO,
-                radius: r,
-            }),
-            transform: glam::DAffine3::IDENTITY,
-            material: None,
-            motion: None,
-            span: crate::source::Span::default(),
-            origin: 0,
-        }
-    }
-
-    fn radii(o: &Operands) -> Vec<f64> {
-        o.items()
-            .iter()
-            .map(|c| match &c.shape {
-                ObjShape::Prim(Shape::Sphere { radius, .. }) => *radius,
-                _ => f64::NAN,
-            })
-            .collect()
+    fn all(o: &Operands<u32>) -> Vec<u32> {
+        o.items().to_vec()
     }
 
     /// Every view keeps exactly its operands however the shared list grows, and extending an
     /// older view a second time copies instead of disturbing the newer one.
     #[test]
     fn views_keep_their_operands() {
-        let a = Operands::new(vec![ball(1.0)]);
-        let b = a.extended(vec![ball(2.0)]);
-        let c = b.extended(vec![ball(3.0), ball(4.0)]);
+        let a = Operands::new(vec![1]);
+        let b = a.extended(vec![2]);
+        let c = b.extended(vec![3, 4]);
         assert!(Rc::ptr_eq(&a.shared, &c.shared), "a chain shares one list");
-        let d = b.extended(vec![ball(5.0)]);
+        let d = b.extended(vec![5]);
         assert!(
             !Rc::ptr_eq(&b.shared, &d.shared),
             "a second extension copies"
         );
-        assert_eq!(radii(&a), [1.0]);
-        assert_eq!(radii(&b), [1.0, 2.0]);
-        assert_eq!(radii(&c), [1.0, 2.0, 3.0, 4.0]);
-        assert_eq!(radii(&d), [1.0, 2.0, 5.0]);
+        assert_eq!(all(&a), [1]);
+        assert_eq!(all(&b), [1, 2]);
+        assert_eq!(all(&c), [1, 2, 3, 4]);
+        assert_eq!(all(&d), [1, 2, 5]);
         assert_eq!((c.len(), d.len()), (4, 3));
     }
 
@@ -120,11 +105,11 @@ mod tests {
     /// `u | u`) copies rather than panicking.
     #[test]
     fn extending_while_borrowed_copies() {
-        let a = Operands::new(vec![ball(1.0), ball(2.0)]);
+        let a = Operands::new(vec![1, 2]);
         let held = a.items();
-        let b = a.extended(vec![ball(3.0)]);
+        let b = a.extended(vec![3]);
         drop(held);
-        assert_eq!(radii(&b), [1.0, 2.0, 3.0]);
-        assert_eq!(radii(&a), [1.0, 2.0]);
+        assert_eq!(all(&b), [1, 2, 3]);
+        assert_eq!(all(&a), [1, 2]);
     }
 }

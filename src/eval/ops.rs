@@ -185,11 +185,11 @@ pub fn binary(
         (Mul, Int(_) | Float(_), Color(b)) => Color(l.as_f64().unwrap_or(0.0) * *b),
         (Div, Color(a), Int(_) | Float(_)) => Color(*a / nonzero(r.as_f64(), rs)?),
         (Add, Str(a), Str(b)) => {
-            it.check_string_len(a.len() + b.len(), span)?;
+            it.new_string(a.len() + b.len(), span)?;
             Str(format!("{a}{b}").into())
         }
         (Add, List(a), List(b)) => {
-            it.check_list_len(a.len() + b.len(), span)?;
+            it.new_list(a.len() + b.len(), span)?;
             List(Rc::new(a.iter().chain(b.iter()).cloned().collect()))
         }
         (Then, Transform(a), Transform(b)) => Transform(Rc::new(**b * **a)),
@@ -366,7 +366,7 @@ fn csg(
     // An operand that is already this operation, plain (no material, motion or transform),
     // lends its operands: `a | b | c` is one union of three. Only a difference's base may
     // lend (`(a - b) - c` is `a - b - c`; `a - (b - c)` is not).
-    let operands_of = |o: &'_ Rc<Obj>, first: bool| -> Option<Operands> {
+    let operands_of = |o: &'_ Rc<Obj>, first: bool| -> Option<Operands<Obj>> {
         match &o.shape {
             ObjShape::Csg(k, ch)
                 if *k == op

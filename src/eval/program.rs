@@ -119,7 +119,7 @@ impl Interp<'_> {
                     };
                     match scene.as_deref_mut() {
                         Some(l) => {
-                            if let Err(d) = l.emit(&v, self.opts.max_objects, e.span) {
+                            if let Err(d) = l.emit(&v, &self.object_budget(), e.span) {
                                 self.diags.push(d);
                             }
                         }

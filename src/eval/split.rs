@@ -172,6 +172,7 @@ fn parts_for(threads: usize) -> usize {
 pub(crate) struct Mark {
     made: u64,
     loop_iters: u64,
+    memory: u64,
     diags: usize,
     objects: usize,
     lights: usize,
@@ -186,6 +187,7 @@ impl Mark {
         Mark {
             made: it.made,
             loop_iters: it.loop_iters,
+            memory: it.memory.get(),
             diags: it.diags.len(),
             objects: l.objects.len(),
             lights: l.lights.len(),
@@ -207,6 +209,8 @@ pub(crate) struct Part {
     diags: Vec<(Diagnostic, bool)>,
     /// Loop iterations run.
     iterations: u64,
+    /// Bytes charged to the memory budget.
+    memory: u64,
     /// Material and texture values made.
     made: u64,
     /// The part stopped at an error or emitted a `render` block: not to be used.
@@ -445,6 +449,15 @@ impl Interp<'_> {
             && p.start == *start
             && self.loop_iters + p.iterations <= self.opts.max_loop_iterations
             && (lowerer.objects.len() + p.scene.objects.len()) as u64 <= self.opts.max_objects
+            && self.memory_fits(p, lowerer)
+    }
+
+    /// Whether a helper's values and objects fit the memory budget after this thread's.
+    fn memory_fits(&self, p: &Part, lowerer: &Lowerer) -> bool {
+        let mut budget = self.object_budget();
+        let objects = lowerer.objects.len() + p.scene.objects.len();
+        budget.memory.charge(p.memory).is_ok()
+            && budget.check_memory(objects, Span::default()).is_ok()
     }
 
     /// Appends a helper's part as if this thread had evaluated it.
@@ -456,6 +469,7 @@ impl Interp<'_> {
             }
         }
         self.loop_iters += p.iterations;
+        self.memory.set(self.memory.get() + p.memory);
         self.made += p.made;
         lowerer.absorb(p.scene, start.made, start.materials, start.textures);
     }
@@ -502,6 +516,7 @@ impl Interp<'_> {
             scene,
             diags,
             iterations: self.loop_iters - start.loop_iters,
+            memory: self.memory.get() - start.memory,
             made: self.made - start.made,
             unusable,
         });
@@ -515,7 +530,12 @@ impl Interp<'_> {
         lowerer: &mut Lowerer,
     ) -> R<()> {
         let g = &lp.gens[0];
+        // The main thread evaluated the loop's iterable once and counted its steps and bytes;
+        // this replay of it must not count them again in the part.
+        let counted = (self.loop_iters, self.memory.get());
         let it = self.eval(&g.iter)?;
+        (self.loop_iters, _) = counted;
+        self.memory.set(counted.1);
         if steps.end > self.loop_len(&it, g)? {
             return Err(EvalError::Poisoned);
         }

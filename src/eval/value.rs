@@ -197,13 +197,17 @@ pub struct Obj {
     pub origin: u32,
 }
 
+/// Bytes one list element is charged to the memory budget: the size of a value (what the
+/// element holds besides is charged when it is made).
+pub const VALUE_BYTES: u64 = std::mem::size_of::<Value>() as u64;
+
 /// Geometry of an object value.
 #[derive(Clone, Debug)]
 pub enum ObjShape {
     /// A primitive (never `Shape::Csg`).
     Prim(ir::Shape),
     /// CSG over children.
-    Csg(ir::CsgOp, super::operands::Operands),
+    Csg(ir::CsgOp, super::operands::Operands<Obj>),
     /// A group, flattened into its children in the IR.
     Group(Rc<Vec<Obj>>),
 }

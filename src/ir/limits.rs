@@ -59,3 +59,171 @@ pub const MAX_TEXTURE_FILE_BYTES: u64 = 1 << 30;
 /// Most rays per glossy lobe (`gloss_samples`): the lobe's samples are one Sobol' sequence of
 /// at most this many points per camera sample.
 pub const MAX_GLOSS_SAMPLES: u32 = 1024;
+
+/// Bytes one scene load may hold unless `--memory-budget` says otherwise: the evaluation's
+/// strings, lists and objects, then the textures and meshes the preparation loads. Generous
+/// for real scenes (a million spheres charge about 300 MB, the largest test mesh 60 MB) and
+/// well inside a 24 GiB machine; four 8192² textures (1.5 GiB each) do not fit.
+pub const DEFAULT_MEMORY_BUDGET: u64 = 4 << 30;
+
+/// The diagnostic code of a load past its memory budget.
+pub const MEMORY_BUDGET_CODE: &str = "rtc::budget::memory";
+
+/// A scene load's memory budget and the bytes charged to it so far. Charges are counted
+/// where the bytes are asked for, before they are allocated, and never given back (a string
+/// built and dropped in a loop still counts), so the count bounds the work of building values
+/// as well as what they hold; the same scene charges the same bytes in the same order on any
+/// machine and thread count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Memory {
+    /// Most bytes the load may charge.
+    pub budget: u64,
+    /// Bytes charged so far.
+    pub used: u64,
+}
+
+impl Default for Memory {
+    fn default() -> Memory {
+        Memory::new(DEFAULT_MEMORY_BUDGET)
+    }
+}
+
+/// A charge that does not fit a [`Memory`] budget.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MemoryOver {
+    /// Bytes asked for.
+    pub asked: u64,
+    /// Bytes already charged.
+    pub used: u64,
+    /// The budget.
+    pub budget: u64,
+}
+
+impl Memory {
+    /// Nothing charged yet under `budget`.
+    pub fn new(budget: u64) -> Memory {
+        Memory { budget, used: 0 }
+    }
+
+    /// Charges `bytes` when they fit; otherwise charges nothing and says by how much not.
+    pub fn charge(&mut self, bytes: u64) -> Result<(), MemoryOver> {
+        match self.used.checked_add(bytes) {
+            Some(total) if total <= self.budget => {
+                self.used = total;
+                Ok(())
+            }
+            _ => Err(MemoryOver {
+                asked: bytes,
+                used: self.used,
+                budget: self.budget,
+            }),
+        }
+    }
+
+    /// Bytes still free.
+    pub fn left(&self) -> u64 {
+        self.budget.saturating_sub(self.used)
+    }
+}
+
+impl MemoryOver {
+    /// The error at `span`, where `what` (e.g. "this texture") asked for the bytes.
+    pub fn diagnostic(&self, span: crate::source::Span, what: &str) -> crate::diag::Diagnostic {
+        crate::diag::Diagnostic::error(
+            MEMORY_BUDGET_CODE,
+            span,
+            format!(
+                "the scene needs more than its memory budget of {}",
+                show_bytes(self.budget)
+            ),
+        )
+        .with_label(format!(
+            "{what} would take {} more, with {} already in use",
+            show_bytes(self.asked),
+            show_bytes(self.used)
+        ))
+        .with_help(format!(
+            "make the scene smaller, or allow more with `--memory-budget {}`",
+            show_bytes(self.used.saturating_add(self.asked).next_power_of_two()).replace(' ', "")
+        ))
+    }
+}
+
+/// Bytes for people: `512 B`, `1.5 KiB`, `4 GiB`.
+pub fn show_bytes(bytes: u64) -> String {
+    const UNITS: [&str; 5] = ["B", "KiB", "MiB", "GiB", "TiB"];
+    let mut value = bytes as f64;
+    let mut unit = 0;
+    while value >= 1024.0 && unit + 1 < UNITS.len() {
+        value /= 1024.0;
+        unit += 1;
+    }
+    if unit == 0 || value.fract() == 0.0 {
+        format!("{value} {}", UNITS[unit])
+    } else {
+        format!("{value:.1} {}", UNITS[unit])
+    }
+}
+
+/// A size as the command line writes it: a number of bytes, optionally with a unit (`K`,
+/// `KiB`, `M`, `MiB`, `G`, `GiB`, `T`, `TiB`, powers of 1024; case ignored): `4GiB`, `512M`,
+/// `1.5G`.
+pub fn parse_bytes(text: &str) -> Result<u64, String> {
+    let t = text.trim();
+    let split = t
+        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+        .unwrap_or(t.len());
+    let (number, unit) = (&t[..split], t[split..].trim());
+    let value: f64 = number
+        .parse()
+        .map_err(|_| format!("`{text}` is not a size: write bytes or e.g. `512MiB`, `4GiB`"))?;
+    let scale: u64 = match unit.to_ascii_lowercase().as_str() {
+        "" | "b" => 1,
+        "k" | "kb" | "kib" => 1 << 10,
+        "m" | "mb" | "mib" => 1 << 20,
+        "g" | "gb" | "gib" => 1 << 30,
+        "t" | "tb" | "tib" => 1 << 40,
+        _ => {
+            return Err(format!(
+                "`{unit}` is not a size unit: use KiB, MiB, GiB or TiB"
+            ));
+        }
+    };
+    let bytes = value * scale as f64;
+    if !bytes.is_finite() || bytes < 1.0 || bytes > u64::MAX as f64 {
+        return Err(format!("`{text}` is not a usable size"));
+    }
+    Ok(bytes as u64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A charge fits up to the budget exactly; one past it is refused and charges nothing.
+    #[test]
+    fn charges_fit_up_to_the_budget() {
+        let mut m = Memory::new(100);
+        assert!(m.charge(60).is_ok());
+        assert!(m.charge(40).is_ok());
+        assert_eq!(m.left(), 0);
+        let over = m.charge(1).unwrap_err();
+        assert_eq!((over.asked, over.used, over.budget), (1, 100, 100));
+        assert_eq!(m.used, 100);
+        assert!(m.charge(u64::MAX).is_err(), "no overflow");
+    }
+
+    #[test]
+    fn sizes_parse_and_show() {
+        assert_eq!(parse_bytes("4GiB"), Ok(4 << 30));
+        assert_eq!(parse_bytes("512m"), Ok(512 << 20));
+        assert_eq!(parse_bytes("1.5 G"), Ok(3 << 29));
+        assert_eq!(parse_bytes("1000"), Ok(1000));
+        assert!(parse_bytes("lots").is_err());
+        assert!(parse_bytes("4 parsecs").is_err());
+        assert!(parse_bytes("0").is_err());
+        assert_eq!(show_bytes(4 << 30), "4 GiB");
+        assert_eq!(show_bytes(1536), "1.5 KiB");
+        assert_eq!(show_bytes(12), "12 B");
+    }
+}

@@ -51,7 +51,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     let mut diags = Diagnostics::default();
     let mut content = Content::without_objects(scene);
     let (mut materials, fallback) = material_table(scene);
-    let mut b = objects::Builder::new(materials.len() as u32);
+    let mut b = objects::Builder::new(materials.len() as u32, scene.memory);
     // Each object goes straight into the world's storage (a plain sphere into its compact
     // form), so a million spheres never exist as a million full primitives.
     let mut parts = WorldParts::default();
@@ -69,7 +69,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         }
     }
     validate::scene(scene, &mut diags);
-    let textures = textures::load_all(&scene.textures, &mut diags);
+    let textures = textures::load_all(&scene.textures, &mut diags, &mut b.memory);
     let mesh_stats = b.stats();
     materials.extend(std::mem::take(&mut b.extra_materials));
     diags.extend(std::mem::take(&mut b.diagnostics));
@@ -179,7 +179,7 @@ impl<'a> Validator<'a> {
             scene,
             diags: Diagnostics::default(),
             fallback,
-            b: objects::Builder::new(materials.len() as u32),
+            b: objects::Builder::new(materials.len() as u32, scene.memory),
         }
     }
 
@@ -193,7 +193,7 @@ impl<'a> Validator<'a> {
     pub fn finish(mut self) -> Diagnostics {
         validate::scene(self.scene, &mut self.diags);
         // `prepare` loads the textures even after an object's error, so the check does too.
-        let _ = textures::load_all(&self.scene.textures, &mut self.diags);
+        let _ = textures::load_all(&self.scene.textures, &mut self.diags, &mut self.b.memory);
         self.diags.extend(std::mem::take(&mut self.b.diagnostics));
         self.diags
     }

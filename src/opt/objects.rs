@@ -16,6 +16,7 @@ use crate::geometry::mesh::{Mesh, MeshParts};
 use crate::geometry::shapes;
 use crate::geometry::world::balls::Ball;
 use crate::geometry::world::primitive::{Geom, MeshRef, Primitive};
+use crate::ir::limits::Memory;
 use crate::ir::{Material, MaterialId, Object, Shape};
 
 /// What the meshes placed so far took.
@@ -45,17 +46,22 @@ pub struct Builder {
     mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
     /// Findings so far.
     pub diagnostics: Diagnostics,
+    /// The load's memory budget: each mesh placed is charged once (its file's data, then its
+    /// triangles and BVH), and the textures after the objects.
+    pub memory: Memory,
 }
 
 impl Builder {
-    /// A builder for `scene`; MTL materials get ids from `first_extra` on.
-    pub fn new(first_extra: u32) -> Builder {
+    /// A builder for a scene whose loading charged `memory` so far; MTL materials get ids
+    /// from `first_extra` on.
+    pub fn new(first_extra: u32, memory: Memory) -> Builder {
         Builder {
             base: first_extra,
             extra_materials: Vec::new(),
             cache: HashMap::new(),
             mtl_ids: HashMap::new(),
             diagnostics: Diagnostics::default(),
+            memory,
         }
     }
 
@@ -246,6 +252,13 @@ impl Builder {
         }
         match assets::mesh(path, smooth) {
             Ok(asset) => {
+                // The file's data, charged before its triangles are laid out and its BVH
+                // built; the prepared mesh is charged once built.
+                if let Err(over) = self.memory.charge(asset_bytes(&asset)) {
+                    let what = format!("the mesh `{}`", path.display());
+                    self.diagnostics.push(over.diagnostic(o.span, &what));
+                    return None;
+                }
                 for w in &asset.warnings {
                     self.diagnostics.push(
                         Diagnostic::warning(
@@ -263,6 +276,11 @@ impl Builder {
                     uvs: &asset.uvs,
                     material_of: &asset.material_of,
                 }));
+                if let Err(over) = self.memory.charge(mesh.memory() as u64) {
+                    let what = format!("the triangles and BVH of `{}`", path.display());
+                    self.diagnostics.push(over.diagnostic(o.span, &what));
+                    return None;
+                }
                 self.cache.insert(key, (asset.clone(), mesh.clone()));
                 Some((asset, mesh))
             }
@@ -293,4 +311,32 @@ impl Builder {
 /// Whether the mesh file is a closed surface (through the asset cache).
 fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
     assets::mesh(path, smooth).is_ok_and(|m| m.is_closed())
+}
+
+/// The bounds of a mesh file in its own coordinates and whether it is a closed surface (a
+/// solid to the enclosure lints); `None` when it does not load.
+pub fn mesh_bounds(
+    path: &std::path::Path,
+    smooth: bool,
+) -> Option<(crate::geometry::aabb::Aabb, bool)> {
+    let m = assets::mesh(path, smooth).ok()?;
+    Some((
+        crate::geometry::aabb::Aabb::new(m.min, m.max),
+        m.is_closed(),
+    ))
+}
+
+/// Whether point `p` (in the file's coordinates) is inside the closed mesh file; false when it
+/// does not load or is not closed.
+pub fn inside_mesh(path: &std::path::Path, smooth: bool, p: glam::DVec3) -> bool {
+    assets::mesh(path, smooth).is_ok_and(|m| m.is_closed() && m.contains(p))
+}
+
+/// Heap bytes of a mesh file's data as loaded.
+fn asset_bytes(a: &MeshAsset) -> u64 {
+    (std::mem::size_of_val(a.vertices.as_slice())
+        + std::mem::size_of_val(a.triangles.as_slice())
+        + std::mem::size_of_val(a.normals.as_slice())
+        + std::mem::size_of_val(a.uvs.as_slice())
+        + std::mem::size_of_val(a.material_of.as_slice())) as u64
 }

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use crate::assets;
 use crate::diag::Diagnostics;
+use crate::ir::limits::Memory;
 use crate::ir::{Color, Mapping, Texture};
 
 pub use crate::assets::Picture;
@@ -21,7 +22,12 @@ pub enum TextureMap {
 }
 
 /// Every texture of a scene, decoded; `None` (with the problems in `out`) when one cannot be.
-pub fn load_all(textures: &[Texture], out: &mut Diagnostics) -> Option<Vec<TextureMap>> {
+/// Each image is charged to `memory` from its header's size before it is decoded.
+pub fn load_all(
+    textures: &[Texture],
+    out: &mut Diagnostics,
+    memory: &mut Memory,
+) -> Option<Vec<TextureMap>> {
     let mut maps = Vec::with_capacity(textures.len());
     for t in textures {
         match t {
@@ -29,9 +35,15 @@ pub fn load_all(textures: &[Texture], out: &mut Diagnostics) -> Option<Vec<Textu
                 path,
                 mapping,
                 span,
-            } => match assets::picture(path) {
-                Ok(pic) => maps.push(TextureMap::Image(pic, *mapping)),
-                Err(e) => out.push(e.diagnostic(*span, path)),
+            } => match memory.charge(assets::picture_bytes(path)) {
+                Err(over) => {
+                    let what = format!("the texture `{}`", path.display());
+                    out.push(over.diagnostic(*span, &what));
+                }
+                Ok(()) => match assets::picture(path) {
+                    Ok(pic) => maps.push(TextureMap::Image(pic, *mapping)),
+                    Err(e) => out.push(e.diagnostic(*span, path)),
+                },
             },
             Texture::Checker { a, b, size } => {
                 maps.push(TextureMap::Checker(*a, *b, positive(*size)));

@@ -98,6 +98,7 @@ pub fn empty(eye: [f64; 3]) -> Scene {
         textures: vec![],
         objects: vec![],
         settings: RenderSettings::default(),
+        memory: Default::default(),
     }
 }
 

@@ -90,6 +90,7 @@ pub fn scene(objects: Vec<Object>) -> Scene {
         textures: Vec::new(),
         objects,
         settings: RenderSettings::default(),
+        memory: Default::default(),
     }
 }
 

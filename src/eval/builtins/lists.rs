@@ -6,7 +6,7 @@ use std::rc::Rc;
 
 use super::{BuiltinFn, Params};
 use crate::eval::call::{ArgVal, CallSite};
-use crate::eval::error::{R, error};
+use crate::eval::error::R;
 use crate::eval::interp::Interp;
 use crate::eval::types;
 use crate::eval::value::Value;
@@ -69,7 +69,7 @@ pub fn call(it: &mut Interp, f: &Value, args: &[Value], fs: Span, site: Span) ->
 }
 
 fn list(it: &Interp, v: Vec<Value>, span: Span) -> R<Value> {
-    it.check_list_len(v.len(), span)?;
+    it.new_list(v.len(), span)?;
     Ok(Value::List(Rc::new(v)))
 }
 
@@ -215,18 +215,10 @@ fn iterate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         if !types::boolean(it, &keep, cs)? {
             break;
         }
-        it.loop_iters += 1;
-        if it.loop_iters > it.opts.max_loop_iterations {
-            return Err(error("rtc::budget::loop", s.span, "loop budget exhausted")
-                .with_label(format!(
-                    "`iterate` ran past the budget of {} iterations",
-                    it.opts.max_loop_iterations
-                ))
-                .with_help("make sure `while` becomes false")
-                .into());
-        }
+        it.step(s.span, crate::eval::budgets::Step::Iterate)?;
+        it.check_list_len(out.len() + 1, s.span)?;
+        it.charge(crate::eval::value::VALUE_BYTES, s.span, "`iterate`'s list")?;
         out.push(x.clone());
-        it.check_list_len(out.len(), s.span)?;
         x = call(it, &next, &[x], ns, s.span)?;
     }
     Ok(Value::List(Rc::new(out)))
