@@ -16,10 +16,15 @@ use crate::diag::Diagnostic;
 use crate::ir::{self, Motion};
 use crate::source::Span;
 
-/// `obj.moving(translate:, rotate:, scale:)`: the change of the object's placement from shutter
-/// open to shutter close, applied after its placement (as a `.translate(...)` would be).
+/// `obj.moving(translate:, rotate:, scale:, spin:, axis:)`: the change of the object's
+/// placement from shutter open to shutter close, applied after its placement (as a
+/// `.translate(...)` would be); `spin:` turns it about `axis:` by any angle, whole turns too.
 pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(site, &["translate", "rotate", "scale"], args)?;
+    let mut p = Params::new(
+        site,
+        &["translate", "rotate", "scale", "spin", "axis"],
+        args,
+    )?;
     let translate = p.vec3_or(it, "translate", DVec3::ZERO)?;
     let rotate = match p.get("rotate") {
         None => DQuat::IDENTITY,
@@ -37,7 +42,7 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
                         ),
                     )
                     .with_label("the rotation at shutter close; the motion takes the shorter arc to it")
-                    .with_help("turn at most 180deg per `.moving`; for a longer spin render frames, each placing the object at its angle from `time` (§28.1), e.g. `.rotate(z: time * 270deg).moving(rotate: rotate(z: 90deg))`"),
+                    .with_help("for a turn of more than 180deg, spin about an axis: `.moving(spin: 270deg, axis: Z)`"),
                 );
             }
             q
@@ -61,6 +66,7 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
             s
         }
     };
+    let spin = spin(it, &mut p)?;
     if let Some(inner) = already_moving(&o) {
         let mut d = error(
             "rtc::motion::nested",
@@ -75,9 +81,39 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
         return Err(d.into());
     }
     let o2 = Rc::make_mut(&mut o);
-    o2.motion = Some(Motion::new(translate, rotate, scale));
+    let motion = Motion::new(translate, rotate, scale);
+    o2.motion = Some(match spin {
+        Some((axis, angle)) => motion.with_spin(axis, angle),
+        None => motion,
+    });
     o2.origin = it.derive(o2.origin);
     Ok(Value::Object(o))
+}
+
+/// `spin:` and `axis:` of `.moving`: the axis and the angle (radians, any size), or `None`
+/// without a spin. Each needs the other; the axis must not be zero.
+fn spin(it: &Interp, p: &mut Params) -> R<Option<(DVec3, f64)>> {
+    let angle = p.get("spin");
+    let axis = p.get("axis");
+    match (angle, axis) {
+        (None, None) => Ok(None),
+        (Some((a, sp)), Some((x, xs))) => {
+            let angle = types::angle(it, &a, sp)?;
+            let axis = types::vec3(it, &x, xs)?;
+            let shown = format!("[{}, {}, {}]", axis.x, axis.y, axis.z);
+            check_shown(axis.norm() > 0.0 && axis.is_finite(), "axis", "a direction (not zero)", &shown, xs)?;
+            check_shown(angle.is_finite(), "spin", "a finite angle", &format!("{angle}"), sp)?;
+            Ok(Some((axis, angle)))
+        }
+        (Some((_, sp)), None) => Err(error("rtc::motion::spin_axis", sp, "a spin needs an axis")
+            .with_label("no `axis:` to turn about")
+            .with_help("add the axis it turns about, e.g. `.moving(spin: 720deg, axis: Y)`")
+            .into()),
+        (None, Some((_, xs))) => Err(error("rtc::motion::spin_axis", xs, "an axis without a spin")
+            .with_label("nothing turns about this axis")
+            .with_help("say how far it turns, e.g. `.moving(spin: 720deg, axis: Y)`, or remove `axis:`")
+            .into()),
+    }
 }
 
 /// The span of the object itself, or of a member of its group, that already has a motion. CSG

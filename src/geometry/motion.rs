@@ -25,18 +25,14 @@ pub fn swept_bounds(local: Aabb, transform: DAffine3, motion: &Motion) -> Aabb {
         b = b.union(local.transformed(&motion.at(transform, s)));
     }
     // A corner p moves as x(s) = F·q(s) with q(s) = D(s)·r, r = F⁻¹·T·p (F: the motion's frame).
-    // |q'(s)| ≤ |translate| + θ·|S(s)·r| + |scale − 1|·|r| (θ: the slerp's whole angle).
+    // |q'(s)| ≤ |translate| + θ·|S(s)·r| + |scale − 1|·|r| (θ: the whole angle turned, the
+    // slerp's arc or the spin).
     let to_motion = motion.frame.inverse() * transform;
     let r_max = corners(&local)
         .iter()
         .map(|c| to_motion.transform_point3(*c).norm())
         .fold(0.0, f64::max);
-    let q = if motion.rotate.w < 0.0 {
-        -motion.rotate
-    } else {
-        motion.rotate
-    };
-    let theta = 2.0 * libm::acos(q.w.clamp(-1.0, 1.0));
+    let theta = motion.turned();
     let s_max = motion.scale.abs().max_element().max(1.0);
     let ds = (motion.scale - DVec3::ONE).abs().max_element();
     let speed = motion.translate.norm() + (theta * s_max + ds) * r_max;
@@ -81,5 +77,27 @@ mod tests {
                 "s = {s}"
             );
         }
+    }
+
+    /// A spin of three quarters of a turn and more sweeps the whole circle it turns through,
+    /// not the shorter arc between its ends.
+    #[test]
+    fn a_long_spin_is_covered() {
+        let local = Aabb::new(DVec3::new(2.0, -0.1, -0.1), DVec3::new(2.2, 0.1, 0.1));
+        let motion = Motion::new(DVec3::ZERO, DQuat::IDENTITY, DVec3::ONE)
+            .with_spin(DVec3::Z, 450f64.to_radians());
+        let b = swept_bounds(local, DAffine3::IDENTITY, &motion);
+        for i in 0..=1000 {
+            let s = f64::from(i) / 1000.0;
+            let placed = local.transformed(&motion.at(DAffine3::IDENTITY, s));
+            assert!(
+                b.contains(placed.min, 0.0) && b.contains(placed.max, 0.0),
+                "s = {s}"
+            );
+        }
+        assert!(
+            b.min.x < -2.0 && b.min.y < -2.0,
+            "the far side of the circle: {b:?}"
+        );
     }
 }

@@ -2,6 +2,8 @@
 
 use glam::{DAffine3, DQuat, DVec3};
 
+use crate::num::Norm;
+
 /// The interval of a frame during which the film is exposed, in fractions of a frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shutter {
@@ -20,7 +22,8 @@ impl Shutter {
 
 /// An object's motion while the shutter is open: at shutter fraction `s` ∈ [0, 1] (0 = open,
 /// 1 = close) its object-to-world transform is `frame · D(s) · frame⁻¹ · transform`, with
-/// `D(s) = translate(s·translate) · rotate(slerp(1, rotate, s)) · scale(lerp(1, scale, s))`:
+/// `D(s) = translate(s·translate) · rotate(slerp(1, rotate, s)) · spin(s) · scale(lerp(1, scale, s))`
+/// (`spin(s)`: a turn by `s·|spin|` about `spin`'s direction, any number of turns):
 /// pbrt-v4's `AnimatedTransform` interpolation (translation and scale linearly, rotation by
 /// quaternion slerp) from the identity to the motion. `frame` is the space the motion was given
 /// in (the object's parent space when `.moving` was called, carried through later transforms).
@@ -32,6 +35,9 @@ pub struct Motion {
     pub rotate: DQuat,
     /// Scale factors at shutter close.
     pub scale: DVec3,
+    /// A spin about an axis through the origin: its direction, its length the angle in
+    /// radians turned by shutter close (any size: `2π·n` is n whole turns; zero: none).
+    pub spin: DVec3,
     /// The space the motion is expressed in (maps it to world space).
     pub frame: DAffine3,
 }
@@ -43,13 +49,49 @@ impl Motion {
             translate,
             rotate,
             scale,
+            spin: DVec3::ZERO,
             frame: DAffine3::IDENTITY,
         }
     }
 
+    /// The same motion with a spin of `angle` radians about `axis` (not zero) by shutter close.
+    pub fn with_spin(self, axis: DVec3, angle: f64) -> Motion {
+        let length = axis.norm();
+        Motion {
+            spin: if length > 0.0 && angle != 0.0 {
+                axis / length * angle
+            } else {
+                DVec3::ZERO
+            },
+            ..self
+        }
+    }
+
+    /// The angle the spin has turned at shutter fraction `s`, as a rotation.
+    fn spin_at(&self, s: f64) -> DQuat {
+        let angle = self.spin.norm();
+        if angle == 0.0 {
+            return DQuat::IDENTITY;
+        }
+        // From libm's sin and cos, as slerp does, so every machine turns alike.
+        let (axis, half) = (self.spin / angle, 0.5 * s * angle);
+        let (sin, cos) = (libm::sin(half), libm::cos(half));
+        DQuat::from_xyzw(axis.x * sin, axis.y * sin, axis.z * sin, cos)
+    }
+
+    /// The whole angle the motion turns through, in radians: the slerp's arc, or the spin.
+    pub fn turned(&self) -> f64 {
+        let q = if self.rotate.w < 0.0 {
+            -self.rotate
+        } else {
+            self.rotate
+        };
+        2.0 * libm::acos(q.w.clamp(-1.0, 1.0)) + self.spin.norm()
+    }
+
     /// The motion's own transform `D(s)` at shutter fraction `s`.
     pub fn delta(&self, s: f64) -> DAffine3 {
-        let q = slerp_from_identity(self.rotate, s);
+        let q = slerp_from_identity(self.rotate, s) * self.spin_at(s);
         let scale = DVec3::ONE.lerp(self.scale, s);
         DAffine3::from_scale_rotation_translation(scale, q, self.translate * s)
     }
@@ -73,7 +115,10 @@ impl Motion {
 
     /// True when nothing moves.
     pub fn is_still(&self) -> bool {
-        self.translate == DVec3::ZERO && self.rotate == DQuat::IDENTITY && self.scale == DVec3::ONE
+        self.translate == DVec3::ZERO
+            && self.rotate == DQuat::IDENTITY
+            && self.scale == DVec3::ONE
+            && self.spin == DVec3::ZERO
     }
 }
 
@@ -106,7 +151,6 @@ pub struct CameraMotion {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Norm;
 
     #[test]
     fn the_motion_interpolates_translation_and_scale_linearly_and_rotation_by_slerp() {
@@ -131,6 +175,24 @@ mod tests {
         let moved = m.transformed(p);
         let origin = moved.at(p, 1.0).transform_point3(DVec3::ZERO);
         assert!((origin - DVec3::new(7.0, 0.0, 0.0)).norm() < 1e-12);
+    }
+
+    /// A spin turns the whole angle, past half a turn and past whole turns, linearly in time,
+    /// about its axis; a still motion with a zero spin stays still.
+    #[test]
+    fn a_spin_turns_any_angle_about_its_axis() {
+        let m = Motion::new(DVec3::ZERO, DQuat::IDENTITY, DVec3::ONE)
+            .with_spin(DVec3::new(0.0, 0.0, 2.0), 630f64.to_radians());
+        assert!(!m.is_still());
+        assert!((m.turned() - 630f64.to_radians()).abs() < 1e-12);
+        for (s, degrees) in [(0.0, 0.0), (0.25, 157.5), (0.5, 315.0), (1.0, 630.0)] {
+            let p = m.delta(s).transform_point3(DVec3::X);
+            let a = f64::to_radians(degrees);
+            let want = DVec3::new(libm::cos(a), libm::sin(a), 0.0);
+            assert!((p - want).norm() < 1e-12, "s = {s}: {p:?}");
+        }
+        let none = Motion::new(DVec3::ZERO, DQuat::IDENTITY, DVec3::ONE).with_spin(DVec3::Z, 0.0);
+        assert!(none.is_still());
     }
 
     #[test]
