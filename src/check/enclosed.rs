@@ -1,5 +1,6 @@
 //! The lints "a light inside an opaque object" and "the camera inside an opaque object", for
-//! every closed solid (sphere, box, capped cylinder and cone, torus, blob, CSG of those), each
+//! every closed solid (sphere, box, capped cylinder and cone, torus, blob, a mesh whose file is
+//! a closed surface, CSG of those), each
 //! by its own inside test (`geometry::shapes::Leaf::contains`, `geometry::shapes::csg::combine`), placed
 //! by its transform. An enclosure is a mistake only when something lies outside it: a light
 //! inside a solid that also holds the other objects lights them, and a sky dome around the
@@ -13,6 +14,7 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::geometry::aabb::Aabb;
 use crate::geometry::shapes::{self, csg};
 use crate::ir::{Object, Scene, Shape};
+use crate::opt::objects::{inside_mesh, mesh_bounds};
 
 /// At most this many enclosing objects are kept for the end of the pass.
 const MAX_FOUND: usize = 16;
@@ -143,10 +145,12 @@ fn opaque(scene: &Scene, o: &Object) -> bool {
         }
 }
 
-/// Whether `o` encloses a volume whose inside `contains` can tell (meshes are not read here).
+/// Whether `o` encloses a volume whose inside `contains` can tell (a mesh when its file is a
+/// closed surface).
 fn closed(o: &Object) -> bool {
-    !matches!(o.shape, Shape::Mesh { .. })
-        && shapes::encloses_volume(&o.shape, &|_: &std::path::Path, _: bool| false)
+    shapes::encloses_volume(&o.shape, &|path: &std::path::Path, smooth: bool| {
+        mesh_bounds(path, smooth).is_some_and(|(_, closed)| closed)
+    })
 }
 
 /// Whether world point `p` is inside object `o` (at its shutter-open placement); false for
@@ -163,7 +167,7 @@ fn contains(o: &Object, p: DVec3) -> bool {
     };
     match &o.shape {
         Shape::Csg { op, children } => csg::combine(*op, children.iter().map(|c| contains(c, q))),
-        Shape::Mesh { .. } => false,
+        Shape::Mesh { path, smooth, .. } => inside_mesh(path, *smooth, q),
         s => shapes::leaf(s).is_ok_and(|l| l.contains(q)),
     }
 }
@@ -179,9 +183,11 @@ fn representative(o: &Object) -> Option<DVec3> {
     c.is_finite().then_some(c)
 }
 
-/// The object-space bounds of a shape, CSG included; `None` for meshes and invalid shapes.
+/// The object-space bounds of a shape, CSG included; `None` for invalid shapes and meshes that
+/// do not load.
 fn local_bounds(s: &Shape) -> Option<Aabb> {
     match s {
+        Shape::Mesh { path, smooth, .. } => mesh_bounds(path, *smooth).map(|(b, _)| b),
         Shape::Csg { op, children } => {
             let boxes: Option<Vec<Aabb>> = children
                 .iter()
