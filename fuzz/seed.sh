@@ -43,6 +43,31 @@ for f in tests/data/course/models/*.obj; do
   done
 done
 
+# The hostile probe's shapes of input (issue 35), cut to the fuzzers' input sizes: brackets
+# nested past the budget, long postfix chains, a long `else if` chain, a union grown by
+# `reduce`, a YAML alias tree, an OBJ repeating one face. (Symlinked folders and special files
+# are not fuzzable: tests/hostile.rs tests them directly.)
+python3 - "$out" <<'PY'
+import sys
+out = sys.argv[1]
+def put(target, name, text):
+    with open(f"{out}/{target}/hostile_{name}", "w") as f:
+        f.write(text)
+put("rtc_eval", "parens.rtc", "rtc 1\nlet a = " + "(" * 260 + "1" + ")" * 260 + "\n")
+put("rtc_eval", "index_chain.rtc", "rtc 1\nlet l = [1]\nlet y = l" + "[0]" * 2000 + "\n")
+put("rtc_eval", "translate_chain.rtc", "rtc 1\nsphere()" + ".translate(X)" * 500 + "\n")
+put("rtc_eval", "else_if.rtc", "rtc 1\nfn g(x: Int) -> Int {\n    if x == 0 { 0 }\n"
+    + "".join(f"    else if x == {i} {{ {i} }}\n" for i in range(1, 200)) + "    else { -1 }\n}\nlet y = g(5)\n")
+put("rtc_eval", "reduce_union.rtc", "rtc 1\nlet b = for i in 0..500 { sphere(center: [i, 0, 0]) }\n"
+    "reduce(b, sphere(), fn(a, x) a | x)\n")
+put("rtc_eval", "doubling.rtc", "rtc 1\nfn f(n: Int) -> Int { if n == 0 { 1 } else { f(n - 1) + f(n - 1) } }\nlet x = f(40)\n")
+yaml = 'a0: &a0 "' + "x" * 1000 + '"\n' + "".join(
+    f"a{k}: &a{k} [*a{k-1}, *a{k-1}, *a{k-1}, *a{k-1}]\n" for k in range(1, 12))
+put("course_yaml", "aliases.yaml", yaml)
+with open(f"{out}/obj_mtl/hostile_same_face", "w") as f:
+    f.write("\x00v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n" * 3000)
+PY
+
 # Images: tiny PNG, JPEG, HDR and EXR files of every colour type, and the course textures
 # scaled down (needs Python 3 with Pillow).
 python3 "$here/image_seeds.py" "$out/texture"

@@ -152,6 +152,31 @@ proptest! {
         let src: String = toks.iter().map(|&i| TOKENS[i]).collect();
         run(&format!("rtc 1\n{src}"));
     }
+
+    /// The shapes of input the hostile probe used (issue 35), at random sizes around their
+    /// budgets: brackets nested deep, long postfix chains, long `else if` chains and unions
+    /// grown one object at a time. Each ends in its result or a coded error; past the
+    /// nesting budget (200 brackets) it is the nesting error.
+    #[test]
+    fn hostile_shapes_never_panic(shape in 0..5usize, n in 0..600usize) {
+        let src = match shape {
+            0 => format!("rtc 1\nlet a = {}1{}\n", "(".repeat(n), ")".repeat(n)),
+            1 => format!("rtc 1\nlet a = {}1{}\n", "[".repeat(n), "]".repeat(n)),
+            2 => format!("rtc 1\nlet l = [1]\nlet y = l{}\n", "[0]".repeat(n)),
+            3 => {
+                let arms: String = (1..n).map(|i| format!(" else if x == {i} {{ {i} }}")).collect();
+                format!("rtc 1\nfn g(x: Int) -> Int {{ if x == 0 {{ 0 }}{arms} else {{ -1 }} }}\nlet y = g(3)\n")
+            }
+            _ => format!(
+                "rtc 1\nlet b = for i in 0..{n} {{ sphere(center: [i, 0, 0]) }}\n\
+                 let u = reduce(b, sphere(), fn(a, x) a | x)\n"
+            ),
+        };
+        run(&src);
+        if shape < 2 && n > 200 {
+            prop_assert!(codes(&src).contains(&"rtc::budget::nesting"), "{shape} {n}");
+        }
+    }
 }
 
 /// Inputs built to exhaust a stack, a loop or memory end in one clear error each (with its
