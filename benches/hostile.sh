@@ -4,7 +4,8 @@
 # asserted here (tests/hostile.rs holds the scaled-down regression tests); the numbers go into
 # the issue's report. Every case runs under `timeout` so a regression shows as exit 124.
 #
-#   benches/hostile.sh [RTC]      # RTC defaults to target/release/rtc (built if missing)
+#   benches/hostile.sh [RTC [CASE...]]  # RTC defaults to target/release/rtc (built if missing);
+#                                       # CASEs (numbers, e.g. `7 13`) run only those cases
 #
 # Needs about 1.2 GB of free space in $TMPDIR for the 10^8-face OBJ.
 set -uo pipefail
@@ -12,6 +13,10 @@ cd "$(dirname "$0")/.."
 rtc="${1:-target/release/rtc}"
 [ -x "$rtc" ] || cargo build --release -q
 rtc=$(realpath "$rtc")
+benches=$(realpath benches)
+shift || true
+only=" $* "
+want() { [ "$only" = "  " ] || [[ "$only" == *" $1 "* ]]; }
 work=$(mktemp -d "${TMPDIR:-/tmp}/rtc-hostile.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -32,12 +37,15 @@ run() { # run NAME TIMEOUT COMMAND...
     printf '%-44s %5s %9s %12s\n' "$name" "$code" "$wall" "$rss"
 }
 
+if want 1; then
 # 1. A module importing itself through two symlinked folders.
 mkdir imports && (cd imports && ln -s . l1 && ln -s . l2 &&
     printf 'rtc 1\nimport "./l1/a.rtc" as x\nimport "./l2/a.rtc" as y\npub let v = 1\n' >a.rtc &&
     printf '%s\nimport "./a.rtc"\n' "$scene" >s.rtc)
 run "1 symlinked imports: check" 60 "$rtc" check imports/s.rtc
+fi
 
+if want 2; then
 # 2. Long chains.
 python3 -c "print('rtc 1\nlet l = [1]\nlet y = l' + '[0]' * 300000)" >index.rtc
 python3 -c "import sys; print(sys.argv[1] + '.translate(X)' * 20000)" "$scene" >translate.rtc
@@ -45,7 +53,9 @@ run "2 300,000 [0]: check" 60 "$rtc" check index.rtc
 run "2 300,000 [0]: render" 60 "$rtc" render index.rtc -o index.png
 run "2 20,000 .translate(X): fmt --check" 60 "$rtc" fmt --check translate.rtc
 run "2 20,000 .translate(X): check" 60 "$rtc" check translate.rtc
+fi
 
+if want 3; then
 # 3. Special files.
 mkfifo fifo.rtc fifo.mtl
 printf '%s\nimport "/dev/zero" as z\n' "$scene" >zero.rtc
@@ -54,7 +64,9 @@ printf '%s\nmesh("m.obj", use_mtl: true)\n' "$scene" >mtl.rtc
 run "3 import \"/dev/zero\": check" 60 "$rtc" check zero.rtc
 run "3 a FIFO as the scene: check" 60 "$rtc" check fifo.rtc
 run "3 a FIFO as mtllib: check" 60 "$rtc" check mtl.rtc
+fi
 
+if want 8; then
 # 8. Garbage and bad lines.
 python3 - <<'EOF'
 import random
@@ -71,13 +83,17 @@ with open('bad.rtc', 'w') as f:
 EOF
 run "8 100 MB garbage .in: check" 120 "$rtc" check garbage.in
 run "8 500,000 bad lines: check" 60 "$rtc" check bad.rtc
+fi
 
+if want 13; then
 # 13. 10^8 faces (800 MB of OBJ).
 { printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'; yes 'f 1 2 3' | head -n 100000000; } >big.obj
 printf '%s\nmesh("big.obj")\n' "$scene" >big.rtc
 run "13 10^8 faces: check" 120 "$rtc" check big.rtc
 rm big.obj
+fi
 
+if want 15; then
 # 15. A 266-byte-ish part that claims 2^32 - 1 rows.
 python3 - <<'EOF'
 import hashlib, json
@@ -88,12 +104,43 @@ h = {"scene": "s", "settings": "t", "width": 4, "height": 4294967295, "channels"
 open('p.rtcpart', 'wb').write(b'rtc-part 1\n' + json.dumps(h).encode() + b'\n' + payload)
 EOF
 run "15 part claiming 2^32-1 rows: merge" 60 "$rtc" merge p.rtcpart -o m.png
+fi
 
+if want 12; then
 # 12. A scene whose output is outside its folder.
 mkdir -p sub && printf '%s\nrender { output: "../victim.png" }\n' "$scene" >sub/s.rtc
 run "12 output ../victim.png: render" 60 "$rtc" render sub/s.rtc
+fi
 
+if want 7; then
+# 7. `rtc watch` against a 300 MiB URL, and against 3,000 connections that never finish their
+# request (benches/watch_client.py). The watch runs under /usr/bin/time until the client is
+# done, then gets SIGTERM; the last column is what the client saw.
+printf '%s\n' "$scene" >w.rtc
+watch_case() { # watch_case NAME MODE
+    /usr/bin/time -v -o time.txt "$rtc" watch w.rtc --port 0 >/dev/null 2>watch.txt &
+    local tpid=$! port="" pid seen code wall rss i
+    for i in $(seq 100); do
+        port=$(grep -o '127.0.0.1:[0-9]*' watch.txt | head -n 1 | cut -d: -f2)
+        [ -n "$port" ] && break
+        sleep 0.1
+    done
+    pid=$(ps -o pid= --ppid "$tpid" | tr -d ' ')
+    seen=$(timeout 300 python3 "$benches/watch_client.py" "$2" "$port" "$pid")
+    kill -TERM "$pid"
+    wait "$tpid"
+    code=$?
+    wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s}' time.txt)
+    rss=$(awk -F': ' '/Maximum resident/ {printf "%.0f", $2 / 1024}' time.txt)
+    printf '%-44s %5s %9s %12s  %s\n' "$1" "$code" "$wall" "$rss" "$seen"
+}
+watch_case "7 watch: a 300 MiB URL" url
+watch_case "7 watch: 3,000 unfinished requests" idle
+fi
+
+if want 5; then
 # 5 (not fixed): 33,334 identical faces in the mesh BVH build.
 { printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'; yes 'f 1 2 3' | head -n 33334; } >same.obj
 printf '%s\nmesh("same.obj")\n' "$scene" >same.rtc
 run "5 33,334 identical faces: check (not fixed)" 120 "$rtc" check same.rtc
+fi

@@ -10,6 +10,7 @@
 
 mod files;
 mod html;
+mod http;
 mod progressive;
 mod server;
 
@@ -70,7 +71,7 @@ pub fn run(options: &Options) -> Outcome {
         }
     };
     let hub = Arc::new(Hub::default());
-    if let Err(message) = server::serve(listener, hub.clone()) {
+    if let Err(message) = server::serve(listener, hub.clone(), http::Limits::from_env()) {
         eprintln!("error: {message}");
         return Outcome::IoOrUsage;
     }
