@@ -194,3 +194,114 @@ fn idle_connections_time_out_and_a_page_is_served_after_them() {
     drop(idle);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+// ---- 16. a long session: the asset cache, the files watched ----------------------------------
+
+/// A texture rewritten twenty times (as `rtc watch` sees an edited texture) is decoded afresh
+/// each time and cached once: the old versions are dropped, and one still held (by a render
+/// in progress) stays valid until it is let go.
+#[test]
+fn a_texture_edited_many_times_is_cached_once() {
+    let dir = scratch("texture-versions");
+    let tex = dir.join("t.png");
+    let held = {
+        image::RgbImage::from_pixel(2, 2, image::Rgb([255, 0, 0]))
+            .save(&tex)
+            .unwrap();
+        rtc::assets::picture(&tex).unwrap()
+    };
+    for n in 1..=20u8 {
+        // A different size each time, so even a coarse file clock tells the versions apart.
+        let img = image::RgbImage::from_pixel(2 + u32::from(n), 2, image::Rgb([0, n * 10, 0]));
+        img.save(&tex).unwrap();
+        let now = rtc::assets::picture(&tex).unwrap();
+        assert!(now.nearest(glam::DVec2::splat(0.5)).y > 0.0, "version {n}");
+        assert_eq!(rtc::assets::cached_loads(&tex), 1, "version {n}");
+    }
+    assert!(
+        held.nearest(glam::DVec2::splat(0.5)).x > 0.9,
+        "the held version"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A rewrite that keeps the size and the modification time (a coarse clock, or a tool that
+/// restores times) looks unchanged to the cache; `rtc watch` compares contents and forgets the
+/// file, and the next load reads the new bytes.
+#[test]
+fn a_forgotten_file_loads_afresh_whatever_its_time_says() {
+    let dir = scratch("texture-same-time");
+    let tex = dir.join("t.png");
+    let save = |rgb: [u8; 3]| {
+        image::RgbImage::from_pixel(2, 2, image::Rgb(rgb))
+            .save(&tex)
+            .unwrap()
+    };
+    save([255, 0, 0]);
+    let time = std::fs::metadata(&tex).unwrap().modified().unwrap();
+    let red = rtc::assets::picture(&tex).unwrap();
+    let len = std::fs::metadata(&tex).unwrap().len();
+    save([0, 0, 255]);
+    assert_eq!(std::fs::metadata(&tex).unwrap().len(), len, "same size");
+    let file = std::fs::File::options().write(true).open(&tex).unwrap();
+    file.set_modified(time).unwrap();
+    drop(file);
+    let stale = rtc::assets::picture(&tex).unwrap();
+    assert!(
+        std::sync::Arc::ptr_eq(&red, &stale),
+        "same size and time: cached"
+    );
+    rtc::assets::forget(&tex);
+    let blue = rtc::assets::picture(&tex).unwrap();
+    assert!(blue.nearest(glam::DVec2::splat(0.5)).z > 0.9);
+    assert_eq!(rtc::assets::cached_loads(&tex), 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A scene whose only colour comes from a mesh's MTL file, named with a space as tobj reads
+/// `mtllib` lines (the whole rest of the line): an edit of the MTL file alone re-renders with
+/// the new colour. Before, the watched name was cut at the space (so the file was not watched),
+/// and a watched MTL edit rendered the cached mesh's old materials again.
+#[test]
+fn an_edit_of_a_material_library_alone_re_renders_with_its_colour() {
+    let dir = scratch("mtl-edit");
+    let mtl = dir.join("my colours.mtl");
+    std::fs::write(&mtl, "newmtl paint\nKd 1 0 0\nKa 0.3 0.3 0.3\nKs 0 0 0\n").unwrap();
+    std::fs::write(
+        dir.join("quad.obj"),
+        "mtllib my colours.mtl\nv -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nusemtl paint\nf 1 2 3 4\n",
+    )
+    .unwrap();
+    let scene = dir.join("scene.rtc");
+    std::fs::write(
+        &scene,
+        "rtc 1\n\
+         camera { eye: [0, 0, 5], center: [0, 0, 0], up: Y, fov: 40deg, resolution: [40, 30] }\n\
+         point_light { position: [0, 0, 10], color: rgb(1, 1, 1) }\n\
+         mesh(\"quad.obj\", use_mtl: true)\n\
+         render { encoding: linear }\n",
+    )
+    .unwrap();
+    let watch = Watch::start(&scene);
+    let mut events = watch.events();
+    let first = events.wait_for("frame", |f| f["stage"] == "final");
+    let red = center_pixel(&watch.frame_png(first["n"].as_u64().unwrap()));
+    assert!(
+        red[0] > 100 && red[2] < 30,
+        "red from the MTL file: {red:?}"
+    );
+    watch_support::save(&mtl, "newmtl paint\nKd 0 0 1\nKa 0.3 0.3 0.3\nKs 0 0 0\n");
+    let next = events.wait_for("frame", |f| f["stage"] == "final");
+    let blue = center_pixel(&watch.frame_png(next["n"].as_u64().unwrap()));
+    assert!(
+        blue[2] > 100 && blue[0] < 30,
+        "blue after the edit: {blue:?}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The RGB bytes of the image's centre pixel.
+fn center_pixel(png: &[u8]) -> [u8; 3] {
+    let img = image::load_from_memory(png).unwrap().to_rgb8();
+    img.get_pixel(img.width() / 2, img.height() / 2).0
+}
