@@ -36,6 +36,25 @@ run() { # run NAME TIMEOUT COMMAND...
     rss=$(awk -F': ' '/Maximum resident/ {printf "%.0f", $2 / 1024}' time.txt)
     printf '%-44s %5s %9s %12s\n' "$name" "$code" "$wall" "$rss"
 }
+# `rtc watch` of SCENE (w.rtc) under /usr/bin/time while benches/watch_client.py MODE runs
+# against it, then SIGTERM; the last column is what the client saw.
+watch_case() { # watch_case NAME MODE [SCENE]
+    /usr/bin/time -v -o time.txt "$rtc" watch "${3:-w.rtc}" --port 0 >/dev/null 2>watch.txt &
+    local tpid=$! port="" pid seen code wall rss i
+    for i in $(seq 100); do
+        port=$(grep -o '127.0.0.1:[0-9]*' watch.txt | head -n 1 | cut -d: -f2)
+        [ -n "$port" ] && break
+        sleep 0.1
+    done
+    pid=$(ps -o pid= --ppid "$tpid" | tr -d ' ')
+    seen=$(timeout 300 python3 "$benches/watch_client.py" "$2" "$port" "$pid" "$work/t.png")
+    kill -TERM "$pid"
+    wait "$tpid"
+    code=$?
+    wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s}' time.txt)
+    rss=$(awk -F': ' '/Maximum resident/ {printf "%.0f", $2 / 1024}' time.txt)
+    printf '%-44s %5s %9s %12s  %s\n' "$1" "$code" "$wall" "$rss" "$seen"
+}
 
 if want 1; then
 # 1. A module importing itself through two symlinked folders.
@@ -114,28 +133,28 @@ fi
 
 if want 7; then
 # 7. `rtc watch` against a 300 MiB URL, and against 3,000 connections that never finish their
-# request (benches/watch_client.py). The watch runs under /usr/bin/time until the client is
-# done, then gets SIGTERM; the last column is what the client saw.
+# request (benches/watch_client.py).
 printf '%s\n' "$scene" >w.rtc
-watch_case() { # watch_case NAME MODE
-    /usr/bin/time -v -o time.txt "$rtc" watch w.rtc --port 0 >/dev/null 2>watch.txt &
-    local tpid=$! port="" pid seen code wall rss i
-    for i in $(seq 100); do
-        port=$(grep -o '127.0.0.1:[0-9]*' watch.txt | head -n 1 | cut -d: -f2)
-        [ -n "$port" ] && break
-        sleep 0.1
-    done
-    pid=$(ps -o pid= --ppid "$tpid" | tr -d ' ')
-    seen=$(timeout 300 python3 "$benches/watch_client.py" "$2" "$port" "$pid")
-    kill -TERM "$pid"
-    wait "$tpid"
-    code=$?
-    wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s}' time.txt)
-    rss=$(awk -F': ' '/Maximum resident/ {printf "%.0f", $2 / 1024}' time.txt)
-    printf '%-44s %5s %9s %12s  %s\n' "$1" "$code" "$wall" "$rss" "$seen"
-}
 watch_case "7 watch: a 300 MiB URL" url
 watch_case "7 watch: 3,000 unfinished requests" idle
+fi
+
+if want 16; then
+# 16. A long `rtc watch` session: a 1024×1024 texture (24 MiB decoded) rewritten 40 times, each
+# save rendered to its final frame; the resident memory after the 10th and the 40th.
+printf '%s\n' "$scene" | sed 's/^sphere()$/sphere().material(material { texture: image("t.png") })/' >tex.rtc
+python3 - <<'EOF'
+import struct, zlib
+w = h = 1024
+row = b"\x00" + bytes([40, 40, 40]) * w
+def chunk(kind, data):
+    c = struct.pack(">I", len(data)) + kind + data
+    return c + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+body = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
+body += chunk(b"IDAT", zlib.compress(row * h, 1)) + chunk(b"IEND", b"")
+open("t.png", "wb").write(body)
+EOF
+watch_case "16 watch: a texture edited 40 times" texture tex.rtc
 fi
 
 if want 5; then
