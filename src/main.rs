@@ -2,8 +2,9 @@
 //! `rtc watch FILE` serves a live page that re-renders it on every change.
 //! `rtc accuracy FILE` measures what its quality knobs cost and buy.
 //! `rtc why FILE X Y` explains what made one pixel.
-//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 an `rtc accuracy` sweep
-//! interrupted by Ctrl-C (its partial report is written). Diagnostics go to stderr;
+//! Exit codes: 0 success, 1 scene errors, 2 usage or I/O problems, 130 a command ended by
+//! Ctrl-C, SIGTERM or SIGHUP (no temporary file left; an `rtc accuracy` sweep writes its
+//! partial report first). Diagnostics go to stderr;
 //! stdout carries only what was asked for (`--format json`).
 #![forbid(unsafe_code)]
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
@@ -160,6 +161,7 @@ fn main() -> ExitCode {
         return ExitCode::from(2);
     }
     let cli = Cli::parse();
+    cli::interrupt::install();
     let outcome = match cli.command {
         Command::Check {
             file,

@@ -42,6 +42,84 @@ fn a_planted_symlink_at_a_temporary_name_is_never_followed() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+// ---- 14. a signal during a write ------------------------------------------------------------
+
+/// `rtc render -o out.png` in `dir` with `env`, its output streams closed.
+fn spawn_render(dir: &Path, args: &[&str], env: &[(&str, &str)]) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_rtc"))
+        .args(["render", "s.rtc", "-o", "out.png"])
+        .args(args)
+        .envs(env.iter().copied())
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap()
+}
+
+/// SIGTERM, SIGINT or SIGHUP while the image's temporary file exists and is not yet renamed
+/// (held open by `RTC_TEST_WRITE_PAUSE_MS`): the process ends with 130, the temporary file is
+/// removed and the existing image is untouched. Before, the signal ended the process without
+/// destructors and `tempfile` never removed `.out.png.XXXXXX.tmp`.
+#[cfg(unix)]
+#[test]
+fn a_signal_between_the_temporary_file_and_the_rename_leaves_no_file() {
+    let dir = scratch("signal-in-write");
+    write(&dir.join("s.rtc"), SCENE);
+    let out = write(&dir.join("out.png"), "the old image");
+    let pause = [(rtc::render::output::WRITE_PAUSE_VAR, "60000")];
+    for name in ["TERM", "INT", "HUP"] {
+        let mut child = spawn_render(&dir, &[], &pause);
+        let start = std::time::Instant::now();
+        while !dot_files(&dir).iter().any(|n| n.starts_with(".out.png.")) {
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "no temporary file appeared"
+            );
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        signal(child.id(), name);
+        let status = wait_guarded(&mut child);
+        assert_eq!(status.code(), Some(130), "SIG{name}: {status:?}");
+        assert_eq!(dot_files(&dir), Vec::<String>::new(), "SIG{name}");
+        assert_eq!(std::fs::read(&out).unwrap(), b"the old image", "SIG{name}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// SIGTERM at several moments of a render that takes a while: never a temporary file left, and
+/// the old image is either untouched or (the render won the race) replaced by a whole new one.
+#[cfg(unix)]
+#[test]
+fn a_signal_at_any_moment_of_a_render_leaves_no_temporary_file() {
+    let dir = scratch("signal-any-moment");
+    let slow = SCENE.replace("[8, 6]", "[600, 400]") + "render { supersampling: 8 }\n";
+    write(&dir.join("s.rtc"), &slow);
+    let out = write(&dir.join("out.png"), "the old image");
+    for after_ms in [0, 30, 100, 300, 1000, 3000] {
+        std::fs::write(&out, "the old image").unwrap();
+        let mut child = spawn_render(&dir, &["--threads", "1"], &[]);
+        std::thread::sleep(Duration::from_millis(after_ms));
+        // The process may have ended already; kill(1) then fails, which is no defect.
+        let _ = Command::new("kill")
+            .args(["-TERM", &child.id().to_string()])
+            .status();
+        let status = wait_guarded(&mut child);
+        assert_eq!(dot_files(&dir), Vec::<String>::new(), "after {after_ms} ms");
+        let bytes = std::fs::read(&out).unwrap();
+        if status.success() {
+            assert!(
+                image::load_from_memory(&bytes).is_ok(),
+                "after {after_ms} ms"
+            );
+        } else {
+            assert_eq!(bytes, b"the old image", "after {after_ms} ms: {status:?}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 // ---- 9. `rtc fmt` in place -------------------------------------------------------------------
 
 #[cfg(unix)]

@@ -31,9 +31,14 @@ use cache::{Cache, FileKey};
 static MESHES: Cache<MeshAsset> = Cache::new();
 static PICTURES: Cache<Picture> = Cache::new();
 
-/// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process.
+/// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
+/// when it or one of its material libraries changes).
 pub fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
-    MESHES.get_or_load(FileKey::of(path, smooth), || MeshAsset::load(path, smooth))
+    MESHES.get_or_load(
+        FileKey::of(path, smooth),
+        || MeshAsset::load(path, smooth),
+        |m| m.libraries.clone(),
+    )
 }
 
 /// Bytes the image at `path` takes decoded: from the cache if it is there, else from its
@@ -45,9 +50,27 @@ pub fn picture_bytes(path: &Path) -> u64 {
     }
 }
 
-/// The image at `path`, decoded once per process.
+/// The image at `path`, decoded once per process (again when it changes).
 pub fn picture(path: &Path) -> Result<Arc<Picture>, ImageError> {
-    PICTURES.get_or_load(FileKey::of(path, false), || Picture::load(path))
+    PICTURES.get_or_load(
+        FileKey::of(path, false),
+        || Picture::load(path),
+        |_| Vec::new(),
+    )
+}
+
+/// Forgets the loads of `path` and of every mesh that read it as a material library: for a
+/// file whose content changed though its size and modification time did not (`rtc watch`
+/// compares contents; a file system's clock may be too coarse to tell two writes apart).
+pub fn forget(path: &Path) {
+    MESHES.forget(path);
+    PICTURES.forget(path);
+}
+
+/// How many loads of `path` the process keeps (versions, and a mesh's smooth and flat
+/// variants): one per variant however often the file changed.
+pub fn cached_loads(path: &Path) -> usize {
+    MESHES.count(path) + PICTURES.count(path)
 }
 
 /// Forgets every cached asset (benchmarks use it to time loading afresh).

@@ -39,6 +39,9 @@ pub struct MeshAsset {
     pub materials: Vec<Material>,
     /// Warnings met while loading (a missing `.mtl`).
     pub warnings: Vec<String>,
+    /// The material libraries its `mtllib` lines name, read or not (the cache reloads the mesh
+    /// when one of them changes).
+    pub libraries: Vec<PathBuf>,
     /// Smallest corner of the vertices' bounds (object space).
     pub min: DVec3,
     /// Largest corner of the vertices' bounds.
@@ -59,6 +62,7 @@ struct Faces {
     material_of: Vec<u32>,
     materials: Vec<Material>,
     warnings: Vec<String>,
+    libraries: Vec<PathBuf>,
 }
 
 impl MeshAsset {
@@ -123,6 +127,7 @@ impl MeshAsset {
             material_of,
             materials,
             warnings,
+            libraries,
         } = faces;
         if triangles.is_empty() {
             return Err(MeshError::new("the file has no faces with area", None));
@@ -163,6 +168,7 @@ impl MeshAsset {
             material_of,
             materials,
             warnings,
+            libraries,
             min,
             max,
             load_time: start.elapsed(),
@@ -209,6 +215,7 @@ fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, Mes
     })?;
     let mut warnings = Vec::new();
     let materials = convert_materials(libs.borrow_mut().merged(), &mut warnings);
+    let libraries = libs.borrow().files();
     let super::obj_fast::ObjData {
         positions,
         texcoords,
@@ -277,6 +284,7 @@ fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, Mes
         material_of,
         materials,
         warnings,
+        libraries,
     }))
 }
 
@@ -289,8 +297,10 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         single_index: false,
         ..Default::default()
     };
+    let libs = super::obj_file::Libraries::new(path);
     let (models, mtl) =
-        super::obj_file::read_text(path, text, &opts).map_err(|e| locate(path, e))?;
+        super::obj_file::read_text(&libs, text, &opts).map_err(|e| locate(path, e))?;
+    let libraries = libs.files();
     let mut warnings = Vec::new();
     let materials = convert_materials(mtl, &mut warnings);
     let mut vertices: Vec<Vec3> = Vec::new();
@@ -403,6 +413,7 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         material_of,
         materials,
         warnings,
+        libraries,
     })
 }
 

@@ -7,7 +7,7 @@
 
 use std::cell::RefCell;
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use tobj::{LoadError, LoadOptions, Model};
 
@@ -21,21 +21,54 @@ pub type Materials = Result<Vec<tobj::Material>, String>;
 pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), LoadError> {
     let text = crate::source::read_regular(path, crate::ir::limits::MAX_MESH_FILE_BYTES)
         .map_err(|_| LoadError::OpenFileFailed)?;
-    read_text(path, &text, opts)
+    read_text(&Libraries::new(path), &text, opts)
 }
 
-/// [`read`] of the file's bytes `text`, already read.
+/// [`read`] of the file's bytes `text`, already read, its libraries loaded through `libs`
+/// (made for the same file), which lists them afterwards.
 pub fn read_text(
-    path: &Path,
+    libs: &Libraries,
     text: &[u8],
     opts: &LoadOptions,
 ) -> Result<(Vec<Model>, Materials), LoadError> {
     if let Some(e) = bad_face_index(text) {
         return Err(e);
     }
-    let libs = Libraries::new(path);
     let (models, materials) = tobj::load_obj_buf(&mut &text[..], opts, |lib| libs.load(lib))?;
     Ok((models, libs.finish(materials)))
+}
+
+/// Where the library an `mtllib` line names is read from: relative to the OBJ file's folder.
+pub fn library_path(obj: &Path, lib: &Path) -> PathBuf {
+    obj.parent()
+        .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib))
+}
+
+/// The material libraries the OBJ file `obj` (its bytes `text`) names, by tobj's reading of an
+/// `mtllib` line (the line's first word; the name is the rest after the first space, trimmed,
+/// so it may hold spaces), without parsing anything else: what a loaded mesh reads besides
+/// its own file (the fingerprint of shards, `rtc watch`).
+pub fn library_paths(obj: &Path, text: &[u8]) -> Vec<PathBuf> {
+    let mut out: Vec<PathBuf> = Vec::new();
+    for line in text.split(|&b| b == b'\n') {
+        let line = line.strip_suffix(b"\r").unwrap_or(line);
+        // Cheap test first: most lines of a large file are vertices and faces.
+        if !line.trim_ascii_start().starts_with(b"mtllib") {
+            continue;
+        }
+        let Ok(line) = std::str::from_utf8(line) else {
+            continue;
+        };
+        if line.split_whitespace().next() != Some("mtllib") {
+            continue;
+        }
+        let name = line.split_once(' ').unwrap_or_default().1.trim();
+        let path = library_path(obj, Path::new(name));
+        if !out.contains(&path) {
+            out.push(path);
+        }
+    }
+    out
 }
 
 /// The material libraries of one OBJ file, loaded as tobj loads them (its loader callback and
@@ -44,6 +77,8 @@ pub struct Libraries<'a> {
     obj: &'a Path,
     /// The first library with a colour line tobj would panic on.
     problem: RefCell<Option<String>>,
+    /// Every library asked for (read or not), once each, in order.
+    files: RefCell<Vec<PathBuf>>,
     /// Materials merged so far, their names, and the last library's error (tobj's rules).
     merged: Vec<tobj::Material>,
     names: HashMap<String, usize>,
@@ -56,6 +91,7 @@ impl<'a> Libraries<'a> {
         Libraries {
             obj,
             problem: RefCell::new(None),
+            files: RefCell::new(Vec::new()),
             merged: Vec::new(),
             names: HashMap::new(),
             error: None,
@@ -64,10 +100,13 @@ impl<'a> Libraries<'a> {
 
     /// Reads the library `lib` (relative to the OBJ file) as tobj's material loader.
     pub fn load(&self, lib: &Path) -> tobj::MTLLoadResult {
-        let full = self
-            .obj
-            .parent()
-            .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib));
+        let full = library_path(self.obj, lib);
+        {
+            let mut files = self.files.borrow_mut();
+            if !files.contains(&full) {
+                files.push(full.clone());
+            }
+        }
         // Only a regular file within the budget of §24: `mtllib /dev/zero` would read for ever.
         let text = crate::source::read_regular(&full, MAX_MTL_BYTES)
             .map_err(|_| LoadError::OpenFileFailed)?;
@@ -92,6 +131,11 @@ impl<'a> Libraries<'a> {
             }
             Err(e) => self.error = Some(e),
         }
+    }
+
+    /// The libraries asked for so far (read or not: one that appears later changes the mesh).
+    pub fn files(&self) -> Vec<PathBuf> {
+        self.files.borrow().clone()
     }
 
     /// The index a `usemtl` line's name selects, among the libraries merged so far.
@@ -223,8 +267,30 @@ fn short_colour_line(text: &[u8]) -> Option<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::{bad_face_index, integer, short_colour_line};
+    use super::*;
     use tobj::LoadError;
+
+    /// The libraries a file names are the ones its loader reads: the rest of the `mtllib`
+    /// line, spaces and all (`rtc watch` cut such a name at the space and watched neither part).
+    #[test]
+    fn library_paths_are_read_as_the_loader_reads_them() {
+        let obj = Path::new("models/m.obj");
+        let text = b"# mtllib not.mtl\nmtllib my colours.mtl\r\nmtllibx no.mtl\n  mtllib b.mtl \nv 0 0 0\nmtllib b.mtl\n";
+        assert_eq!(
+            library_paths(obj, text),
+            vec![
+                PathBuf::from("models/my colours.mtl"),
+                // tobj names an indented line's library by all after its first space, keyword
+                // and all: that (missing) file is what the loader asks for, so it is watched.
+                PathBuf::from("models/mtllib b.mtl"),
+                PathBuf::from("models/b.mtl")
+            ]
+        );
+        // What the loader asked for, through tobj, is the same list.
+        let libs = Libraries::new(obj);
+        let _ = read_text(&libs, text, &LoadOptions::default());
+        assert_eq!(libs.files(), library_paths(obj, text));
+    }
 
     #[test]
     fn face_indices_tobj_cannot_hold_are_found() {

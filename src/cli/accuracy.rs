@@ -10,7 +10,6 @@ use rtc::source::SourceMap;
 
 use crate::cli::report::{self, Format};
 use crate::cli::{Outcome, load, outcome_of};
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rtc::accuracy::report::Report;
@@ -25,19 +24,6 @@ pub const PLOT_FILE: &str = "plot.svg";
 pub const MAP_FILE: &str = "flip-map.png";
 /// The JSON report's file name in the output directory.
 pub const JSON_FILE: &str = "report.json";
-
-/// Set by the first Ctrl-C: the sweep stops after the current render, and the partial report is
-/// written. A second Ctrl-C ends the process at once.
-static INTERRUPTED: AtomicBool = AtomicBool::new(false);
-
-/// Installs the Ctrl-C handler (once per process).
-pub fn catch_interrupt() {
-    let _ = ctrlc::set_handler(|| {
-        if INTERRUPTED.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
-}
 
 /// The bar over the sweep's renders on stderr (when it is a terminal); cancels on Ctrl-C.
 pub struct SweepBar {
@@ -81,7 +67,7 @@ impl SweepProgress for SweepBar {
     }
 
     fn cancelled(&self) -> bool {
-        INTERRUPTED.load(Ordering::Relaxed)
+        super::interrupt::interrupted()
     }
 
     fn end(&self) {
@@ -226,8 +212,9 @@ pub fn parse_positive(text: &str) -> Result<f64, String> {
     }
 }
 
+/// Writes a report file atomically (a signal mid-write leaves the old file or none).
 fn write(path: PathBuf, bytes: &[u8]) -> Result<PathBuf, Diagnostic> {
-    std::fs::write(&path, bytes).map_err(|e| io_error(&path, &e))?;
+    rtc::render::output::write_atomically(&path, bytes)?;
     Ok(path)
 }
 
@@ -373,7 +360,8 @@ pub(crate) fn run(args: &AccuracyArgs) -> Outcome {
         target_error: args.target_error,
         time: args.time,
     };
-    catch_interrupt();
+    // The first signal stops the sweep after the current render; a second ends it.
+    super::interrupt::graceful();
     let bar = SweepBar::on_stderr();
     let study = match rtc::accuracy::study(&scene, &options, &bar) {
         Ok(r) => r,

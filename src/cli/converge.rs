@@ -77,14 +77,8 @@ pub fn render(
         PathBuf::from(p)
     });
     if req.samples_from.as_deref() != Some(map_path.as_path()) {
-        std::fs::write(&map_path, out.map.to_text()).map_err(|e| {
-            Diagnostic::new(
-                Severity::Error,
-                IO_ERROR,
-                None,
-                format!("cannot write {}: {e}", map_path.display()),
-            )
-        })?;
+        // Atomically, as the image: a signal mid-write leaves no half map.
+        rtc::render::output::write_atomically(&map_path, out.map.to_text().as_bytes())?;
         eprintln!(
             "wrote {} (reproduce: --samples-from {})",
             map_path.display(),

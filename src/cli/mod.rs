@@ -10,6 +10,7 @@ pub mod diff;
 pub mod fmt;
 pub mod frames;
 pub mod inputs;
+pub mod interrupt;
 pub mod progress;
 pub mod render;
 pub mod report;

@@ -66,19 +66,11 @@ fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// The `mtllib` files an OBJ names, resolved beside it as the OBJ loader does.
+/// The `mtllib` files an OBJ names, resolved beside it as the OBJ loader does (one rule:
+/// `assets::obj_file::library_paths`).
 fn material_libraries(obj: &Path) -> Vec<PathBuf> {
     let Ok(text) = crate::source::read_regular(obj, crate::ir::limits::MAX_MESH_FILE_BYTES) else {
         return Vec::new();
     };
-    let dir = obj.parent().unwrap_or(Path::new("."));
-    String::from_utf8_lossy(&text)
-        .lines()
-        .filter_map(|l| l.trim_start().strip_prefix("mtllib"))
-        .flat_map(|rest| {
-            rest.split_whitespace()
-                .map(|n| dir.join(n))
-                .collect::<Vec<_>>()
-        })
-        .collect()
+    crate::assets::obj_file::library_paths(obj, &text)
 }

@@ -1,11 +1,14 @@
 //! Writing images: PNG or PPM (8-bit, encoded) or OpenEXR (linear, unclamped `f32` colour) by
 //! extension, through a temporary file and a rename so a failed or interrupted render never
-//! clobbers an existing image.
+//! clobbers an existing image. The temporary files of writes in progress are known
+//! ([`abandon_writes`]), so a command ended by a signal, which runs no destructors, can remove
+//! them first.
 
 use std::io::Write;
+use std::sync::{Mutex, MutexGuard};
 
 use image::ImageEncoder;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::diag::{Diagnostic, IO_ERROR, Severity};
 
@@ -132,10 +135,7 @@ pub fn check_folder(path: &Path) -> Result<(), Diagnostic> {
             "create the folder first, or choose another path with `-o`",
         );
     }
-    match tempfile::Builder::new()
-        .prefix(".rtc-probe.")
-        .tempfile_in(dir)
-    {
+    match Tracked::create(tempfile::Builder::new().prefix(".rtc-probe."), dir) {
         Ok(probe) => {
             drop(probe);
             Ok(())
@@ -188,12 +188,107 @@ pub fn write_atomically_with(
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    let mut tmp = builder.tempfile_in(dir).map_err(fail)?;
-    tmp.write_all(bytes).map_err(fail)?;
-    if let Some(p) = permissions {
-        tmp.as_file().set_permissions(p).map_err(fail)?;
-    }
+    let mut tmp = Tracked::create(&builder, dir).map_err(fail)?;
+    tmp.write(bytes, permissions).map_err(fail)?;
+    test_pause();
     // Dropped on an error, the temporary file is removed.
-    tmp.persist(path).map_err(|e| fail(e.error))?;
-    Ok(())
+    tmp.persist(path).map_err(fail)
+}
+
+/// Environment variable, for tests only: milliseconds an atomic write waits between writing its
+/// temporary file and renaming it, so that a test can signal the process inside that window.
+pub const WRITE_PAUSE_VAR: &str = "RTC_TEST_WRITE_PAUSE_MS";
+
+/// Waits as long as [`WRITE_PAUSE_VAR`] says (read once per process; unset: not at all).
+fn test_pause() {
+    static PAUSE: std::sync::OnceLock<Option<std::time::Duration>> = std::sync::OnceLock::new();
+    let pause = PAUSE.get_or_init(|| {
+        let ms = std::env::var(WRITE_PAUSE_VAR).ok()?.trim().parse().ok()?;
+        Some(std::time::Duration::from_millis(ms))
+    });
+    if let Some(d) = pause {
+        std::thread::sleep(*d);
+    }
+}
+
+/// The temporary files of the writes in progress.
+static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn live() -> MutexGuard<'static, Vec<PathBuf>> {
+    // A poisoned lock only means a thread panicked while holding it; the list is still whole.
+    LIVE.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Removes the temporary files of every write in progress, then runs `then` while no write can
+/// create, rename or forget one: for a signal handler that ends the process in `then` (an
+/// ended process runs no destructors, so `tempfile`'s own clean-up never happens). A write
+/// that had renamed its file into place keeps it: the image is whole.
+pub fn abandon_writes<R>(then: impl FnOnce() -> R) -> R {
+    let mut live = live();
+    for path in live.drain(..) {
+        // Already gone (its write failed and removed it) is as good as removed.
+        let _ = std::fs::remove_file(&path);
+    }
+    then()
+}
+
+/// A temporary file listed in [`LIVE`] from its creation until it is renamed into place or
+/// removed: both happen under the list's lock, so [`abandon_writes`] sees every file that
+/// exists.
+struct Tracked {
+    file: Option<tempfile::NamedTempFile>,
+    path: PathBuf,
+}
+
+impl Tracked {
+    /// Creates a temporary file in `dir` with `builder` and lists it.
+    fn create(builder: &tempfile::Builder, dir: &Path) -> std::io::Result<Tracked> {
+        let mut live = live();
+        let file = builder.tempfile_in(dir)?;
+        let path = file.path().to_path_buf();
+        live.push(path.clone());
+        Ok(Tracked {
+            file: Some(file),
+            path,
+        })
+    }
+
+    /// Writes `bytes` to the file and gives it `permissions`, if any.
+    fn write(
+        &mut self,
+        bytes: &[u8],
+        permissions: Option<std::fs::Permissions>,
+    ) -> std::io::Result<()> {
+        // The file is taken only by `persist` and `drop`, which consume the value.
+        let Some(file) = self.file.as_mut() else {
+            return Err(std::io::Error::other("the temporary file is gone"));
+        };
+        file.write_all(bytes)?;
+        if let Some(p) = permissions {
+            file.as_file().set_permissions(p)?;
+        }
+        Ok(())
+    }
+
+    /// Renames the file to `to` (on failure it is removed) and forgets it.
+    fn persist(mut self, to: &Path) -> std::io::Result<()> {
+        let mut live = live();
+        let result = match self.file.take() {
+            // The error holds the file; dropping it removes the file, under the lock.
+            Some(file) => file.persist(to).map(drop).map_err(|e| e.error),
+            None => Ok(()),
+        };
+        live.retain(|p| *p != self.path);
+        result
+    }
+}
+
+impl Drop for Tracked {
+    fn drop(&mut self) {
+        if let Some(file) = self.file.take() {
+            let mut live = live();
+            drop(file);
+            live.retain(|p| *p != self.path);
+        }
+    }
 }

@@ -89,3 +89,40 @@ pub fn mkfifo(path: &Path) {
     let ok = Command::new("mkfifo").arg(path).status().unwrap();
     assert!(ok.success(), "mkfifo {}", path.display());
 }
+
+/// Waits for `child` to end; one still running after a minute is killed and fails the test.
+pub fn wait_guarded(child: &mut std::process::Child) -> std::process::ExitStatus {
+    let start = Instant::now();
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return status;
+        }
+        if start.elapsed() > Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("the process did not end within a minute");
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+/// Sends the signal `name` (`TERM`, `INT`, `HUP`) to process `pid` with kill(1).
+#[cfg(unix)]
+pub fn signal(pid: u32, name: &str) {
+    let ok = Command::new("kill")
+        .args([format!("-{name}"), pid.to_string()])
+        .status()
+        .unwrap();
+    assert!(ok.success(), "kill -{name} {pid}");
+}
+
+/// The names in `dir` that start with a dot: rtc's temporary files (`.out.png.XXXXXX.tmp`,
+/// `.rtc-probe.XXXXXX`).
+pub fn dot_files(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect();
+    names.sort();
+    names
+}

@@ -49,8 +49,15 @@ pub struct Watch {
 impl Watch {
     /// Starts `rtc watch SCENE --port 0` and reads the address it serves on.
     pub fn start(scene: &Path) -> Watch {
+        Watch::start_with(scene, &[])
+    }
+
+    /// [`Watch::start`] with extra environment variables (`RTC_WATCH_IDLE_MS` for the limits
+    /// tests).
+    pub fn start_with(scene: &Path, env: &[(&str, &str)]) -> Watch {
         let mut child = Command::new(env!("CARGO_BIN_EXE_rtc"))
             .args(["watch", scene.to_str().unwrap(), "--port", "0"])
+            .envs(env.iter().copied())
             .stderr(Stdio::piped())
             .spawn()
             .expect("rtc watch starts");
@@ -65,6 +72,11 @@ impl Watch {
         // Keep draining stderr so the child never blocks on a full pipe.
         std::thread::spawn(move || lines.for_each(drop));
         Watch { child, addr }
+    }
+
+    /// The process id of the running `rtc watch`.
+    pub fn pid(&self) -> u32 {
+        self.child.id()
     }
 
     /// Opens the event stream.

@@ -66,9 +66,21 @@ impl Snapshot {
         }
     }
 
-    /// True when any file's content differs from this snapshot (or was added or removed).
-    pub fn differs_from(&self, now: &Snapshot) -> bool {
-        self.hashes != now.hashes
+    /// The files whose content differs between this snapshot and `now` (added, removed or
+    /// changed), in path order.
+    pub fn changed(&self, now: &Snapshot) -> Vec<PathBuf> {
+        let mut out: BTreeSet<PathBuf> = BTreeSet::new();
+        for (path, hash) in &self.hashes {
+            if now.hashes.get(path) != Some(hash) {
+                out.insert(path.clone());
+            }
+        }
+        for path in now.hashes.keys() {
+            if !self.hashes.contains_key(path) {
+                out.insert(path.clone());
+            }
+        }
+        out.into_iter().collect()
     }
 
     /// The files recorded.
@@ -96,9 +108,9 @@ mod tests {
         let files: BTreeSet<PathBuf> = [f.clone()].into();
         let before = Snapshot::take(&files);
         std::fs::write(&f, "a").unwrap();
-        assert!(!before.differs_from(&Snapshot::take(&files)));
+        assert!(before.changed(&Snapshot::take(&files)).is_empty());
         std::fs::write(&f, "b").unwrap();
-        assert!(before.differs_from(&Snapshot::take(&files)));
+        assert_eq!(before.changed(&Snapshot::take(&files)), vec![f.clone()]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -10,6 +10,7 @@
 
 mod files;
 mod html;
+mod http;
 mod progressive;
 mod server;
 
@@ -70,7 +71,7 @@ pub fn run(options: &Options) -> Outcome {
         }
     };
     let hub = Arc::new(Hub::default());
-    if let Err(message) = server::serve(listener, hub.clone()) {
+    if let Err(message) = server::serve(listener, hub.clone(), http::Limits::from_env()) {
         eprintln!("error: {message}");
         return Outcome::IoOrUsage;
     }
@@ -101,9 +102,14 @@ pub fn run(options: &Options) -> Outcome {
     };
     loop {
         let (snapshot, failed) = state.reload(&mut watcher);
-        if !wait_for_change(&rx, &snapshot, failed) {
+        let Some(changed) = wait_for_change(&rx, &snapshot, failed) else {
             eprintln!("error: the file watcher stopped");
             return Outcome::IoOrUsage;
+        };
+        // The cached loads of a changed file go, even where its size and modification time
+        // look the same; the render in progress keeps its own until it stops.
+        for path in &changed {
+            rtc::assets::forget(path);
         }
     }
 }
@@ -180,20 +186,22 @@ impl WatchState<'_> {
 }
 
 /// Blocks until a dependency's content differs from `snapshot` (any file event at all while the
-/// scene is broken: the fix may be a file it could not name yet). False when the watcher ends.
+/// scene is broken: the fix may be a file it could not name yet), and returns the dependencies
+/// whose content changed. `None` when the watcher ends.
 fn wait_for_change(
     rx: &mpsc::Receiver<notify::Result<notify::Event>>,
     snapshot: &Snapshot,
     failed: bool,
-) -> bool {
+) -> Option<Vec<PathBuf>> {
     loop {
-        let Ok(event) = rx.recv() else { return false };
+        let event = rx.recv().ok()?;
         if !is_change(&event) {
             continue;
         }
         while rx.recv_timeout(DEBOUNCE).is_ok() {}
-        if failed || snapshot.differs_from(&Snapshot::take(&snapshot.files())) {
-            return true;
+        let changed = snapshot.changed(&Snapshot::take(&snapshot.files()));
+        if failed || !changed.is_empty() {
+            return Some(changed);
         }
     }
 }

@@ -1,12 +1,15 @@
 //! The watch page's HTTP side, on 127.0.0.1 only: `/` is the page, `/events` a server-sent event
 //! stream ("frame N is ready", diagnostics, progress), `/frame/N.png` the latest image. Image
-//! bytes never go through the event stream: the page fetches them when told.
+//! bytes never go through the event stream: the page fetches them when told. The HTTP side
+//! itself (limits, parsing) is [`http`](super::http).
 
 use std::collections::{BTreeMap, VecDeque};
 use std::io::Write;
-use std::net::{Ipv4Addr, TcpListener};
+use std::net::{Ipv4Addr, TcpListener, TcpStream};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::time::Duration;
+
+use super::http::{self, Limits, Request};
 
 const PAGE: &str = include_str!("page.html");
 
@@ -14,9 +17,11 @@ const PAGE: &str = include_str!("page.html");
 /// far behind still gets the latest state of each kind when it reconnects).
 const BACKLOG: usize = 256;
 
-/// How long an idle event stream waits before a keep-alive comment (which also notices a
-/// closed page).
+/// How long an idle event stream waits before a keep-alive comment.
 const KEEPALIVE: Duration = Duration::from_secs(10);
+
+/// How often an idle event stream looks whether its page has closed the connection.
+const CLOSED_CHECK: Duration = Duration::from_secs(1);
 
 /// The latest image and the events announced so far, shared by the renderer and every client.
 #[derive(Default)]
@@ -112,41 +117,21 @@ pub fn bind(port: u16) -> Result<TcpListener, String> {
     }
 }
 
-/// Serves requests until the process ends; each request gets its own thread (event streams
-/// stay open).
-pub fn serve(listener: TcpListener, hub: Arc<Hub>) -> Result<(), String> {
+/// Serves requests on a thread of its own until the process ends, within `limits`
+/// ([`http`](super::http): a connection cap, an idle limit, a bounded request head).
+pub fn serve(listener: TcpListener, hub: Arc<Hub>, limits: Limits) -> Result<(), String> {
     let port = listener.local_addr().map_or(0, |a| a.port());
-    let server = tiny_http::Server::from_listener(listener, None)
-        .map_err(|e| format!("cannot start the HTTP server: {e}"))?;
-    std::thread::spawn(move || {
-        for request in server.incoming_requests() {
-            if !loopback_host(request.headers(), port) {
-                // DNS rebinding: a web page whose name now points at 127.0.0.1 reaches this
-                // port, but its requests name its own host.
-                let _ = request.respond(
-                    tiny_http::Response::from_string(format!(
-                        "rtc watch answers only requests for http://127.0.0.1:{port}/ or http://localhost:{port}/"
-                    ))
-                    .with_status_code(403),
-                );
-                continue;
-            }
-            let hub = hub.clone();
-            std::thread::spawn(move || answer(request, &hub));
-        }
-    });
-    Ok(())
+    http::serve(listener, limits, move |request, stream| {
+        answer(&request, stream, &hub, port)
+    })
+    .map_err(|e| format!("cannot start the HTTP server: {e}"))
 }
 
 /// Whether a request's `Host` header names this server by a loopback name and its port:
 /// `127.0.0.1`, `localhost` or `[::1]`, with `:port`. A request without one is refused too
 /// (every browser sends it).
-pub fn loopback_host(headers: &[tiny_http::Header], port: u16) -> bool {
-    let Some(host) = headers
-        .iter()
-        .find(|h| h.field.equiv("Host"))
-        .map(|h| h.value.as_str().trim().to_ascii_lowercase())
-    else {
+pub fn loopback_host(host: Option<&str>, port: u16) -> bool {
+    let Some(host) = host.map(|h| h.trim().to_ascii_lowercase()) else {
         return false;
     };
     let Some((name, p)) = host.rsplit_once(':') else {
@@ -155,50 +140,54 @@ pub fn loopback_host(headers: &[tiny_http::Header], port: u16) -> bool {
     p.parse::<u16>() == Ok(port) && matches!(name, "127.0.0.1" | "localhost" | "[::1]")
 }
 
-/// `response` with the given headers (constant ASCII: each one parses).
-fn with_headers<R: std::io::Read>(
-    mut response: tiny_http::Response<R>,
-    headers: &[(&str, &str)],
-) -> tiny_http::Response<R> {
-    for (name, value) in headers {
-        if let Ok(h) = tiny_http::Header::from_bytes(name.as_bytes(), value.as_bytes()) {
-            response.add_header(h);
-        }
+fn answer(request: &Request, stream: &mut TcpStream, hub: &Hub, port: u16) {
+    if !loopback_host(request.header("Host"), port) {
+        // DNS rebinding: a web page whose name now points at 127.0.0.1 reaches this port, but
+        // its requests name its own host.
+        let text = format!(
+            "rtc watch answers only requests for http://127.0.0.1:{port}/ or http://localhost:{port}/"
+        );
+        return http::respond_text(stream, 403, "Forbidden", &text);
     }
-    response
-}
-
-fn answer(request: tiny_http::Request, hub: &Hub) {
-    let path = request.url().split('?').next().unwrap_or("").to_string();
-    // A failed respond means the page went away; there is nobody to tell.
-    let _ = match path.as_str() {
-        "/" | "/index.html" => request.respond(with_headers(
-            tiny_http::Response::from_string(PAGE),
-            &[
-                ("Content-Type", "text/html; charset=utf-8"),
-                ("Cache-Control", "no-store"),
-            ],
-        )),
+    let no_store = ("Cache-Control", "no-store");
+    // A failed write means the page went away; there is nobody to tell.
+    let _ = match request.path() {
+        "/" | "/index.html" => http::respond(
+            stream,
+            200,
+            "OK",
+            &[("Content-Type", "text/html; charset=utf-8"), no_store],
+            PAGE.as_bytes(),
+        ),
         "/events" => {
-            stream_events(request, hub);
+            stream_events(stream, hub);
             Ok(())
         }
         p if p.starts_with("/frame/") => match hub.frame() {
-            Some(png) => request.respond(with_headers(
-                tiny_http::Response::from_data(png.as_slice()),
-                &[("Content-Type", "image/png"), ("Cache-Control", "no-store")],
-            )),
-            None => request
-                .respond(tiny_http::Response::from_string("no frame yet").with_status_code(404)),
+            Some(png) => http::respond(
+                stream,
+                200,
+                "OK",
+                &[("Content-Type", "image/png"), no_store],
+                &png,
+            ),
+            None => {
+                http::respond_text(stream, 404, "Not Found", "no frame yet");
+                Ok(())
+            }
         },
-        _ => request.respond(tiny_http::Response::from_string("not found").with_status_code(404)),
+        _ => {
+            http::respond_text(stream, 404, "Not Found", "not found");
+            Ok(())
+        }
     };
 }
 
-/// Writes the event stream by hand (headers, then events as they come, flushed one by one):
-/// tiny_http's own responses buffer their body.
-fn stream_events(request: tiny_http::Request, hub: &Hub) {
-    let mut w = request.into_writer();
+/// Writes the event stream: its head, then events as they come, each flushed at once, until
+/// the page goes away: a failed write (also a page that stopped reading for the idle limit), or
+/// the end of its side of the connection, looked for every [`CLOSED_CHECK`], so that a closed
+/// page frees its place among the connections at once rather than at the next write.
+fn stream_events(w: &mut TcpStream, hub: &Hub) {
     let head = "HTTP/1.1 200 OK\r\nContent-Type: text/event-stream\r\nCache-Control: no-store\r\nConnection: close\r\n\r\nretry: 500\n\n";
     let (first, mut seen) = hub.snapshot();
     if w.write_all(head.as_bytes())
@@ -208,13 +197,22 @@ fn stream_events(request: tiny_http::Request, hub: &Hub) {
     {
         return;
     }
+    let mut quiet = Duration::ZERO;
     loop {
-        let (text, now) = hub.after(seen, KEEPALIVE);
+        let (text, now) = hub.after(seen, CLOSED_CHECK);
         seen = now;
-        let text = if text.is_empty() {
-            ": keep-alive\n\n".to_string()
-        } else {
+        let text = if !text.is_empty() {
+            quiet = Duration::ZERO;
             text
+        } else if peer_closed(w) {
+            return;
+        } else {
+            quiet += CLOSED_CHECK;
+            if quiet < KEEPALIVE {
+                continue;
+            }
+            quiet = Duration::ZERO;
+            ": keep-alive\n\n".to_string()
         };
         if w.write_all(text.as_bytes())
             .and_then(|_| w.flush())
@@ -223,4 +221,19 @@ fn stream_events(request: tiny_http::Request, hub: &Hub) {
             return;
         }
     }
+}
+
+/// Whether the client has closed its side (or the connection failed): a read that does not
+/// wait finds the end of the stream. Bytes it sent after its request are left unread.
+fn peer_closed(stream: &TcpStream) -> bool {
+    if stream.set_nonblocking(true).is_err() {
+        return true;
+    }
+    let mut byte = [0u8; 1];
+    let closed = match stream.peek(&mut byte) {
+        Ok(0) => true,
+        Ok(_) => false,
+        Err(e) => e.kind() != std::io::ErrorKind::WouldBlock,
+    };
+    stream.set_nonblocking(false).is_err() || closed
 }
