@@ -53,15 +53,26 @@ impl Enclosures {
         if self.found.len() >= MAX_FOUND
             || matches!(o.shape, Shape::Plane { .. })
             || !opaque(scene, o)
-            || !closed(o)
         {
             return;
         }
+        // Points outside the object's box are outside it: only what is left asks whether it is
+        // a closed solid and what its inside holds (for a large mesh, both walk its faces).
+        let world = local_bounds(&o.shape).map(|b| b.transformed(&o.transform.affine()));
+        let near = |p: DVec3| world.is_none_or(|b| b.contains(p, 0.0));
         let lights: Vec<usize> = (scene.lights.iter().enumerate())
-            .filter(|(_, l)| contains(o, l.kind.center()))
+            .filter(|(_, l)| near(l.kind.center()))
             .map(|(i, _)| i)
             .collect();
-        let eye = contains(o, scene.camera.eye);
+        let eye = near(scene.camera.eye);
+        if (lights.is_empty() && !eye) || !closed(o) {
+            return;
+        }
+        let lights: Vec<usize> = lights
+            .into_iter()
+            .filter(|&i| contains(o, scene.lights[i].kind.center()))
+            .collect();
+        let eye = eye && contains(o, scene.camera.eye);
         if eye || !lights.is_empty() {
             self.found.push(Found {
                 object: o.clone(),

@@ -11,7 +11,7 @@ use rtc::source::SourceMap;
 use crate::cli;
 use crate::cli::inputs::SceneInputs;
 use crate::cli::report::{self, Format};
-use crate::cli::{Outcome, load, outcome_of, usage_error};
+use crate::cli::{Outcome, outcome_of, usage_error};
 
 /// What `rtc render` was asked to do, besides the frames.
 pub(crate) struct RenderJob<'a> {
@@ -116,7 +116,8 @@ fn render(
         ..opts.clone()
     };
     let mut sources = SourceMap::new();
-    let loaded = load(file, &mut sources, opts);
+    // The scene lints run with the preparation, under `--time-limit` (they may read meshes).
+    let loaded = rtc::loader::load(file, &mut sources, opts);
     let load_time = load_start.elapsed();
     let color = format == Format::Human && std::io::stderr().is_terminal();
     let print = |diags: &[Diagnostic], sources: &SourceMap| {
@@ -189,14 +190,15 @@ fn render(
         .contains(&rtc::render::Channel::Object)
         .then(|| cli::aov::sidecar(&scene, &sources, &image_path));
     let camera = scene.camera.clone();
-    let prepared = match prepare_before(scene, deadline) {
-        None => {
-            let limit = job.time_limit.unwrap_or_default();
-            print(&[time_limit_reached(&camera, limit)], &sources);
-            return Outcome::SceneErrors;
-        }
-        Some(Ok(p)) => p,
-        Some(Err(diags)) => {
+    let Some((lints, prepared)) = prepare_before(scene, deadline) else {
+        let limit = job.time_limit.unwrap_or_default();
+        print(&[time_limit_reached(&camera, limit)], &sources);
+        return Outcome::SceneErrors;
+    };
+    print(&lints.items, &sources);
+    let prepared = match prepared {
+        Ok(p) => p,
+        Err(diags) => {
             print(&diags.items, &sources);
             eprintln!("{}", cli::check::count_line(&diags));
             return outcome_of(&diags, false);
@@ -262,15 +264,19 @@ fn render(
     }
 }
 
-/// The preparation of `scene` (meshes loaded, BVHs built), or `None` when `deadline` passes
-/// first: it then runs on a thread of its own, abandoned when the time is up (the process
-/// ends with the error; nothing has been written).
-fn prepare_before(
-    scene: rtc::ir::Scene,
-    deadline: Option<std::time::Instant>,
-) -> Option<Result<rtc::opt::Prepared, rtc::diag::Diagnostics>> {
+/// What the scene lints find and the preparation of `scene` (meshes loaded, BVHs built).
+type Prepare = (
+    rtc::diag::Diagnostics,
+    Result<rtc::opt::Prepared, rtc::diag::Diagnostics>,
+);
+
+/// The scene lints and the preparation of `scene`, or `None` when `deadline` passes first:
+/// they then run on a thread of their own, abandoned when the time is up (the process ends
+/// with the error; nothing has been written).
+fn prepare_before(scene: rtc::ir::Scene, deadline: Option<std::time::Instant>) -> Option<Prepare> {
+    let run = move || (rtc::check::lint(&scene), rtc::opt::prepare_owned(scene));
     let Some(deadline) = deadline else {
-        return Some(rtc::opt::prepare_owned(scene));
+        return Some(run());
     };
     let (done, result) = std::sync::mpsc::channel();
     // A stack as deep as the main thread's and more (reserved, not touched): the preparation
@@ -278,7 +284,7 @@ fn prepare_before(
     let spawned = std::thread::Builder::new()
         .stack_size(64 << 20)
         .spawn(move || {
-            let _ = done.send(rtc::opt::prepare_owned(scene));
+            let _ = done.send(run());
         });
     if spawned.is_err() {
         // No thread to be had (the system's limit): nothing can run, so stop as if timed out.

@@ -319,7 +319,9 @@ impl Builder<'_> {
     /// Records an anchored node and adds a finished node to its parent (or makes it the root).
     fn place(&mut self, node: YamlNode, anchor: usize) -> Result<(), Box<Diagnostic>> {
         if anchor != 0 {
+            // The anchor keeps its own copy for the aliases to clone: charged as well.
             let (count, bytes) = deep_size(&node);
+            self.charge(bytes, node.span)?;
             self.anchors.insert(anchor, (node.clone(), count, bytes));
         }
         match self.stack.last_mut() {
