@@ -110,7 +110,8 @@ impl Interp<'_> {
         match f {
             Value::Fn(c) => self.call_closure(&c, args, span),
             Value::Builtin(b) => {
-                let mut v = (b.f)(self, CallSite { span, name: b.name }, args)?;
+                let f = super::builtins::function(b.id);
+                let mut v = f(self, CallSite { span, name: b.name }, args)?;
                 if let (Some(p), Value::Object(o)) = (&mut self.prov, &mut v) {
                     // An object a built-in just made (`sphere`, `group`, ...) is owned by the
                     // result alone and has no origin yet: it was made here.

@@ -73,3 +73,17 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         .or_else(|| crate::diag::did_you_mean(name, cands.iter().copied()))
         .map(|c| format!("a similar name exists: `{c}`"))
 }
+
+/// What the type and error helpers need of the evaluation: the source text a span covers, to
+/// quote it in a help line. The interpreter is one; so is a source map. Taking this instead of
+/// the interpreter keeps the helpers (`types`) below it in the import graph.
+pub trait Quote {
+    /// The text `span` covers.
+    fn snippet(&self, span: Span) -> &str;
+}
+
+impl Quote for crate::source::SourceMap {
+    fn snippet(&self, span: Span) -> &str {
+        crate::source::SourceMap::snippet(self, span)
+    }
+}

@@ -132,7 +132,15 @@ impl<'a> Interp<'a> {
     pub fn snippet(&self, span: Span) -> &str {
         self.sources.snippet(span)
     }
+}
 
+impl super::error::Quote for Interp<'_> {
+    fn snippet(&self, span: Span) -> &str {
+        self.sources.snippet(span)
+    }
+}
+
+impl Interp<'_> {
     /// Looks a name up: locals of this frame, then module items, then built-ins.
     #[inline]
     pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {

@@ -6,8 +6,7 @@ use crate::diag::Diagnostic;
 use crate::source::Span;
 use crate::syntax::ast::TypeAnn;
 
-use super::error::{R, error, suggest};
-use super::interp::Interp;
+use super::error::{Quote, R, error, suggest};
 use super::value::Value;
 
 /// Every type name an annotation may use.
@@ -35,7 +34,7 @@ pub const TYPE_NAMES: &[&str] = &[
 ];
 
 /// "expected `T`, found `U`" at `span`, with a label and a concrete help where one is known.
-pub fn mismatch(it: &Interp, expected: &str, found: &Value, span: Span) -> Diagnostic {
+pub fn mismatch(it: &impl Quote, expected: &str, found: &Value, span: Span) -> Diagnostic {
     let snippet = it.snippet(span).trim();
     let d = error(
         "rtc::type::mismatch",
@@ -101,7 +100,7 @@ pub fn has_type(name: &str, v: &Value) -> bool {
 }
 
 /// Checks `v` against an annotation, widening Int to Float where Float is declared.
-pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value> {
+pub fn check_ann(it: &impl Quote, t: &TypeAnn, v: Value, span: Span) -> R<Value> {
     let name = t.name.sym.as_str();
     if !TYPE_NAMES.contains(&name) {
         let d = error(
@@ -148,13 +147,13 @@ pub fn check_ann(it: &mut Interp, t: &TypeAnn, v: Value, span: Span) -> R<Value>
 }
 
 /// A number (Int or Float) as f64.
-pub fn num(it: &Interp, v: &Value, span: Span) -> R<f64> {
+pub fn num(it: &impl Quote, v: &Value, span: Span) -> R<f64> {
     v.as_f64()
         .ok_or_else(|| mismatch(it, "Float", v, span).into())
 }
 
 /// An Int.
-pub fn int(it: &Interp, v: &Value, span: Span) -> R<i64> {
+pub fn int(it: &impl Quote, v: &Value, span: Span) -> R<i64> {
     match v {
         Value::Int(i) => Ok(*i),
         _ => Err(mismatch(it, "Int", v, span).into()),
@@ -162,7 +161,7 @@ pub fn int(it: &Interp, v: &Value, span: Span) -> R<i64> {
 }
 
 /// An angle in radians.
-pub fn angle(it: &Interp, v: &Value, span: Span) -> R<f64> {
+pub fn angle(it: &impl Quote, v: &Value, span: Span) -> R<f64> {
     match v {
         Value::Angle(a) => Ok(*a),
         _ => Err(mismatch(it, "Angle", v, span).into()),
@@ -170,7 +169,7 @@ pub fn angle(it: &Interp, v: &Value, span: Span) -> R<f64> {
 }
 
 /// A Vec3; a `List` of exactly three numbers (what `.map` on a list gives) is one too.
-pub fn vec3(it: &Interp, v: &Value, span: Span) -> R<DVec3> {
+pub fn vec3(it: &impl Quote, v: &Value, span: Span) -> R<DVec3> {
     match v {
         Value::Vec3(x) => Ok(*x),
         Value::List(l) => match l.as_slice() {
@@ -185,7 +184,7 @@ pub fn vec3(it: &Interp, v: &Value, span: Span) -> R<DVec3> {
 }
 
 /// A colour.
-pub fn color(it: &Interp, v: &Value, span: Span) -> R<DVec3> {
+pub fn color(it: &impl Quote, v: &Value, span: Span) -> R<DVec3> {
     match v {
         Value::Color(x) => Ok(*x),
         _ => Err(mismatch(it, "Color", v, span).into()),
@@ -193,7 +192,7 @@ pub fn color(it: &Interp, v: &Value, span: Span) -> R<DVec3> {
 }
 
 /// A Bool.
-pub fn boolean(it: &Interp, v: &Value, span: Span) -> R<bool> {
+pub fn boolean(it: &impl Quote, v: &Value, span: Span) -> R<bool> {
     match v {
         Value::Bool(b) => Ok(*b),
         _ => Err(mismatch(it, "Bool", v, span).into()),
@@ -201,7 +200,7 @@ pub fn boolean(it: &Interp, v: &Value, span: Span) -> R<bool> {
 }
 
 /// A String.
-pub fn string(it: &Interp, v: &Value, span: Span) -> R<std::rc::Rc<str>> {
+pub fn string(it: &impl Quote, v: &Value, span: Span) -> R<std::rc::Rc<str>> {
     match v {
         Value::Str(s) => Ok(s.clone()),
         _ => Err(mismatch(it, "String", v, span).into()),

@@ -73,13 +73,14 @@ pub enum Value {
     Module(Rc<crate::eval::modules::Module>),
 }
 
-/// A built-in function: its name and implementation.
+/// A built-in function: its name and which it is (its implementation is looked up by `id` in
+/// the built-ins' table, so values need not know the interpreter's signature).
 #[derive(Clone, Copy)]
 pub struct Builtin {
     /// Name used in messages.
     pub name: &'static str,
-    /// Implementation.
-    pub f: crate::eval::builtins::BuiltinFn,
+    /// Its index in the built-ins' table (`builtins::function`).
+    pub id: u16,
 }
 
 impl fmt::Debug for Builtin {

@@ -23,9 +23,9 @@ use super::value::{Builtin, Value};
 /// The signature of every built-in function.
 pub type BuiltinFn = fn(&mut Interp, CallSite, Vec<ArgVal>) -> R<Value>;
 
-fn table() -> Vec<(&'static str, Value)> {
-    let mut t: Vec<(&'static str, Value)> = Vec::new();
-    let fns: Vec<(&'static str, BuiltinFn)> = [
+/// Every built-in function, in the order of their ids.
+fn functions() -> Vec<(&'static str, BuiltinFn)> {
+    [
         math::FNS,
         lists::FNS,
         looks::FNS,
@@ -34,9 +34,23 @@ fn table() -> Vec<(&'static str, Value)> {
         super::transform::FNS,
         super::rng::FNS,
     ]
-    .concat();
-    for (name, f) in fns {
-        t.push((name, Value::Builtin(Builtin { name, f })));
+    .concat()
+}
+
+/// The implementations by id ([`Builtin::id`]).
+static FUNCTIONS: std::sync::LazyLock<Vec<BuiltinFn>> =
+    std::sync::LazyLock::new(|| functions().into_iter().map(|(_, f)| f).collect());
+
+/// The implementation of the built-in with id `id`.
+pub fn function(id: u16) -> BuiltinFn {
+    FUNCTIONS[usize::from(id)]
+}
+
+fn table() -> Vec<(&'static str, Value)> {
+    let mut t: Vec<(&'static str, Value)> = Vec::new();
+    for (id, (name, _)) in functions().into_iter().enumerate() {
+        let id = u16::try_from(id).expect("fewer than 65,536 built-ins");
+        t.push((name, Value::Builtin(Builtin { name, id })));
     }
     t.extend(math::constants());
     t.extend(scene::constants());
