@@ -6,7 +6,8 @@
 //! [`loader`] picks the front end by extension. [`opt::prepare`] turns the IR into a
 //! [`opt::Prepared`] scene (validation, [`assets`], instancing, materials, the [`geometry`]
 //! world); [`render::render`] turns that into a [`render::film::Film`]; [`check::check`] is
-//! `rtc check`; [`accuracy`] measures what each quality knob costs and buys (`rtc accuracy`).
+//! `rtc check`; [`convert`] is the back end that writes an IR as rtc source (`rtc convert`);
+//! [`accuracy`] measures what each quality knob costs and buys (`rtc accuracy`).
 //! Diagnostics are plain data ([`diag`]); the library prints nothing.
 #![forbid(unsafe_code)]
 // Diagnostics are returned by value on cold error paths; boxing them buys nothing measurable.
@@ -16,6 +17,7 @@ pub mod accuracy;
 pub mod assets;
 pub mod check;
 pub mod compat;
+pub mod convert;
 pub mod diag;
 pub mod eval;
 pub mod geometry;

@@ -13,7 +13,7 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use rtc::compat::convert::{Converted, convert};
+use rtc::convert::{Converted, convert};
 use rtc::eval::{EvalOptions, load_file};
 use rtc::ir::{Material, Object, Scene, Shape, Texture};
 use rtc::source::{SourceMap, Span};

@@ -22,7 +22,7 @@ pub fn run(file: &Path, output: Option<&Path>, format: Format) -> Outcome {
         None => Path::new(".").to_path_buf(),
     };
     let mut sources = SourceMap::default();
-    let converted = rtc::compat::convert::convert(file, &out_dir, &mut sources);
+    let converted = rtc::convert::convert(file, &out_dir, &mut sources);
     let diags = &converted.diagnostics;
     if !diags.items.is_empty() {
         let subject = file.display().to_string();

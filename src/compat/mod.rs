@@ -16,7 +16,6 @@
 //! checked by geometry's rules when the scene is prepared (`rtc::param::*`, the codes the scene
 //! language uses), not here: one home for shape validity.
 
-pub mod convert;
 pub mod course;
 pub mod course_yaml;
 pub mod legacy_in;

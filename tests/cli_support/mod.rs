@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// Runs the `rtc` binary with `args` from the repository root.
+#[allow(dead_code)] // not every test that shares these helpers runs the binary
 pub fn rtc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_rtc"))
         .args(args)

@@ -4,9 +4,10 @@
 use crate::num::Norm;
 use std::path::Path;
 
-use glam::{DAffine3, DMat3, DVec3};
+use glam::{DMat3, DVec3};
 
-use super::text::{color, direction, number, string, vector};
+use super::placement;
+use super::text::{color, number, string, unit_direction, vector};
 use crate::ir::{CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shape, Texture};
 
 /// Longest line before an object's methods go on lines of their own.
@@ -130,7 +131,7 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
             format!(
                 "plane(point: {}, normal: {})",
                 v(*point),
-                direction(*normal)
+                unit_direction(*normal)
             )
         }
         Shape::Box { min, max } => format!("box(min: {}, max: {})", v(*min), v(*max)),
@@ -153,7 +154,7 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
         } => format!(
             "disk(center: {}, normal: {}, radius: {})",
             v(*center),
-            direction(*normal),
+            unit_direction(*normal),
             number(*radius)
         ),
         Shape::Ring {
@@ -164,7 +165,7 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
         } => format!(
             "ring(center: {}, normal: {}, radius: {}, inner: {})",
             v(*center),
-            direction(*normal),
+            unit_direction(*normal),
             number(*radius),
             number(*inner)
         ),
@@ -255,37 +256,12 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
 /// The constructor, then the methods that place the object and give its material.
 fn calls(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Vec<String> {
     let mut parts = vec![shape(o, names, asset)];
-    parts.extend(placement(&o.transform.affine()));
+    parts.extend(placement::methods(
+        &o.transform.affine(),
+        o.motion.as_deref(),
+    ));
     if let Some(m) = o.material {
         parts.push(format!(".material({})", names(m.0)));
     }
     parts
-}
-
-/// The methods that place an object, read in application order: a per-axis `.scale` when the
-/// linear part is diagonal, else `.matrix` of it, then `.translate`. Each reproduces the
-/// transform's numbers exactly (the language composes them as products with 0 and 1).
-pub fn placement(t: &DAffine3) -> Vec<String> {
-    let mut out = Vec::new();
-    let m = t.matrix3;
-    if m != DMat3::IDENTITY {
-        let d = DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z);
-        if m == DMat3::from_diagonal(d) {
-            if d.x == d.y && d.y == d.z {
-                out.push(format!(".scale({})", number(d.x)));
-            } else {
-                out.push(format!(".scale({})", vector(d)));
-            }
-        } else {
-            let row = |i: usize| {
-                let r = m.row(i);
-                format!("[{}, {}, {}, 0]", number(r.x), number(r.y), number(r.z))
-            };
-            out.push(format!(".matrix([{}, {}, {}])", row(0), row(1), row(2)));
-        }
-    }
-    if t.translation != DVec3::ZERO {
-        out.push(format!(".translate({})", vector(t.translation)));
-    }
-    out
 }

@@ -29,6 +29,12 @@ pub fn vector(v: DVec3) -> String {
     format!("[{}, {}, {}]", number(v.x), number(v.y), number(v.z))
 }
 
+/// A unit direction the language normalises (`normal:`): the vector whose unit vector is
+/// exactly `n`, with the axis constants where it is one.
+pub fn unit_direction(n: DVec3) -> String {
+    direction(super::exact::unit_preimage(n))
+}
+
 /// A direction, using the axis constants `X`, `Y`, `Z` where `v` is one.
 pub fn direction(v: DVec3) -> String {
     match (v.x, v.y, v.z) {

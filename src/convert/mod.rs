@@ -1,16 +1,22 @@
-//! `rtc convert`: a course scene (`.in` or YAML) as readable rtc source that renders the same
-//! bytes (docs/convert.md). The course front end reads the file into the IR; the writer goes
-//! from that IR back to text, taking from the file only what the IR does not keep: its comments
-//! (carried next to the items they precede) and the comments that name materials.
+//! The rtc back end: an IR scene as rtc source. `rtc convert` (docs/convert.md) uses it for a
+//! course scene (`.in` or YAML): the course front end reads the file into the IR, the writer
+//! goes from that IR back to text, taking from the file only what the IR does not keep: its
+//! comments (carried next to the items they precede) and the comments that name materials.
+//! [`to_source`] writes the IR of any front end (tests/convert_roundtrip.rs evaluates it back to
+//! the same IR for every scene of the repository).
 //!
 //! Exactness: numbers are written in shortest round-trip form, shapes with the parameters the
 //! language stores unchanged, placements as methods whose composition reproduces the transform,
-//! the course camera as the field of view whose pixel is |up| to the bit.
+//! motion with the arguments that give back its numbers, the course camera as the field of view
+//! whose pixel is |up| to the bit.
 
 pub mod comments;
+pub mod exact;
 pub mod names;
+pub mod placement;
 pub mod shapes;
 pub mod text;
+pub mod view;
 pub mod write;
 
 use std::path::{Component, Path, PathBuf};
@@ -38,8 +44,16 @@ pub fn convert(path: &Path, out_dir: &Path, sources: &mut SourceMap) -> Converte
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase());
     let (loaded, syntax, format) = match ext.as_deref() {
-        Some("in") => (super::load_in(path, sources), Syntax::In, "course `.in`"),
-        Some("yaml" | "yml") => (super::load_yaml(path, sources), Syntax::Yaml, "course YAML"),
+        Some("in") => (
+            crate::compat::load_in(path, sources),
+            Syntax::In,
+            "course `.in`",
+        ),
+        Some("yaml" | "yml") => (
+            crate::compat::load_yaml(path, sources),
+            Syntax::Yaml,
+            "course YAML",
+        ),
         _ => {
             let mut diagnostics = Diagnostics::default();
             diagnostics.push(
@@ -63,7 +77,13 @@ pub fn convert(path: &Path, out_dir: &Path, sources: &mut SourceMap) -> Converte
             let file_name = path
                 .file_name()
                 .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-            Some(to_rtc(scene, source, syntax, &file_name, format, out_dir))
+            let comments = comments::scan(source, syntax);
+            Some(to_rtc(
+                scene,
+                &comments,
+                Some((&file_name, format)),
+                out_dir,
+            ))
         }
         _ => None,
     };
@@ -73,18 +93,23 @@ pub fn convert(path: &Path, out_dir: &Path, sources: &mut SourceMap) -> Converte
     }
 }
 
-/// The rtc text of `scene`, read from the course `source`.
+/// The rtc source of `scene`, from any front end, that evaluates to the same scene (spans
+/// apart; equal materials are shared by one `let`); asset and output paths are written
+/// relative to `out_dir`, the directory the rtc file will be in.
+pub fn to_source(scene: &Scene, out_dir: &Path) -> String {
+    to_rtc(scene, &[], None, out_dir)
+}
+
+/// The rtc text of `scene` with the `comments` of the file it was read from; `origin` is the
+/// course file's name and format.
 fn to_rtc(
     scene: &Scene,
-    source: &str,
-    syntax: Syntax,
-    file_name: &str,
-    format: &str,
+    comments: &[Comment],
+    origin: Option<(&str, &str)>,
     out_dir: &Path,
 ) -> String {
-    let comments = comments::scan(source, syntax);
     let spans = write::items(scene);
-    let hint_of = |id: MaterialId| material_hint(scene, &comments, &spans, id);
+    let hint_of = |id: MaterialId| material_hint(scene, comments, &spans, id);
     let palette = names::palette(scene, |id| hint_of(id).map(|i| comments[i].text.clone()));
     // A comment that became a material's name is not repeated; comments naming materials of
     // YAML objects trail the `material:` key (`material: # blue`).
@@ -92,13 +117,12 @@ fn to_rtc(
         .filter_map(|i| hint_of(MaterialId(i as u32)))
         .filter(|&i| !comments[i].own_line)
         .collect();
-    let placed = write::place(&comments, &spans, &used);
+    let placed = write::place(comments, &spans, &used);
     let out_dir = absolute(out_dir);
     let asset = |p: &Path| relative(&out_dir, &absolute(p));
     let doc = write::Doc {
-        file_name,
-        format,
-        comments: &comments,
+        origin,
+        comments,
         asset: &asset,
     };
     write::write(scene, &doc, &palette, &placed)
