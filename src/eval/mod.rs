@@ -12,6 +12,7 @@ pub(crate) mod interp;
 pub mod library;
 pub(crate) mod lower;
 pub(crate) mod members;
+pub(crate) mod meters;
 pub(crate) mod methods;
 pub mod modules;
 pub(crate) mod motion;
