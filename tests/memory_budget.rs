@@ -82,6 +82,26 @@ fn objects_are_charged_and_the_place_does_not_depend_on_threads() {
     assert!(memory_error(&scene, 64 << 20, LoopParts::Always(3)).is_none());
 }
 
+/// Runs `rtc ARGS`, which must stop at the memory budget (exit 1, its code); its stderr.
+fn refused(args: &[&str]) -> String {
+    let run = rtc(args);
+    let text = String::from_utf8_lossy(&run.stderr).into_owned();
+    assert_eq!(run.status.code(), Some(1), "{args:?}: {text}");
+    assert!(text.contains(MEMORY_BUDGET_CODE), "{text}");
+    text
+}
+
+/// Runs `rtc ARGS`, which must succeed.
+fn passes(args: &[&str]) {
+    let run = rtc(args);
+    assert_eq!(
+        run.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
+
 /// Writes a `w`×`h` PNG of one colour.
 fn png(path: &Path, w: u32, h: u32) {
     image::RgbImage::from_pixel(w, h, image::Rgb([200, 100, 50]))
@@ -115,10 +135,7 @@ fn textures_are_charged_before_they_are_decoded() {
         vec!["check", f, "--memory-budget", "4MiB"],
         vec!["render", f, "-o", o, "--memory-budget", "4MiB"],
     ] {
-        let run = rtc(&args);
-        let text = String::from_utf8_lossy(&run.stderr).into_owned();
-        assert_eq!(run.status.code(), Some(1), "{args:?}: {text}");
-        assert!(text.contains(MEMORY_BUDGET_CODE), "{text}");
+        let text = refused(&args);
         assert!(
             text.contains(&format!("{f}:6:")),
             "the third texture: {text}"
@@ -126,13 +143,7 @@ fn textures_are_charged_before_they_are_decoded() {
         assert!(text.contains("c.png"), "{text}");
     }
     assert_eq!(std::fs::read(&out).unwrap(), b"precious");
-    let run = rtc(&["check", f, "--memory-budget", "8MiB"]);
-    assert_eq!(
-        run.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    passes(&["check", f, "--memory-budget", "8MiB"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -152,21 +163,12 @@ fn meshes_are_charged_when_they_load() {
     let file = dir.join("s.rtc");
     std::fs::write(&file, format!("{CAMERA}mesh(path: \"m.obj\")\n")).unwrap();
     let f = file.to_str().unwrap();
-    let run = rtc(&["check", f, "--memory-budget", "32KiB"]);
-    let text = String::from_utf8_lossy(&run.stderr).into_owned();
-    assert_eq!(run.status.code(), Some(1), "{text}");
-    assert!(text.contains(MEMORY_BUDGET_CODE), "{text}");
+    let text = refused(&["check", f, "--memory-budget", "32KiB"]);
     assert!(
         text.contains(&format!("{f}:4:1")) && text.contains("m.obj"),
         "{text}"
     );
-    let run = rtc(&["check", f, "--memory-budget", "16MiB"]);
-    assert_eq!(
-        run.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    passes(&["check", f, "--memory-budget", "16MiB"]);
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -44,7 +44,8 @@ impl Enclosures {
 
     /// Takes in one top-level object.
     pub(super) fn object(&mut self, scene: &Scene, o: &Object) {
-        if let Some(p) = representative(o) {
+        let world = local_bounds(&o.shape).map(|b| b.transformed(&o.transform.affine()));
+        if let Some(p) = representative(o, world) {
             self.points = Some(match self.points {
                 None => (p, p),
                 Some((lo, hi)) => (lo.min(p), hi.max(p)),
@@ -58,7 +59,6 @@ impl Enclosures {
         }
         // Points outside the object's box are outside it: only what is left asks whether it is
         // a closed solid and what its inside holds (for a large mesh, both walk its faces).
-        let world = local_bounds(&o.shape).map(|b| b.transformed(&o.transform.affine()));
         let near = |p: DVec3| world.is_none_or(|b| b.contains(p, 0.0));
         let lights: Vec<usize> = (scene.lights.iter().enumerate())
             .filter(|(_, l)| near(l.kind.center()))
@@ -183,13 +183,13 @@ fn contains(o: &Object, p: DVec3) -> bool {
     }
 }
 
-/// One point standing for where `o` is: its world bounds' centre, or a plane's own point.
-fn representative(o: &Object) -> Option<DVec3> {
-    let t = o.transform.affine();
+/// One point standing for where `o` is: the centre of its world bounds `world`, or a plane's
+/// own point.
+fn representative(o: &Object, world: Option<Aabb>) -> Option<DVec3> {
     if let Shape::Plane { point, .. } = o.shape {
-        return Some(t.transform_point3(point));
+        return Some(o.transform.affine().transform_point3(point));
     }
-    let b = local_bounds(&o.shape)?.transformed(&t);
+    let b = world?;
     let c = 0.5 * (b.min + b.max);
     c.is_finite().then_some(c)
 }

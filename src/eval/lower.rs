@@ -339,8 +339,9 @@ impl Lowerer {
         id
     }
 
-    /// Builds the scene; `Err` lists what is missing or duplicated.
-    pub fn finish(mut self) -> Result<ir::Scene, Vec<Diagnostic>> {
+    /// Builds the scene, which carries on the load's `memory` charged so far; `Err` lists what
+    /// is missing or duplicated.
+    pub fn finish(mut self, memory: ir::limits::Memory) -> Result<ir::Scene, Vec<Diagnostic>> {
         let mut errs = Vec::new();
         if self.cameras.len() > 1 {
             errs.push(
@@ -396,7 +397,7 @@ impl Lowerer {
             textures: self.textures,
             objects: self.objects,
             settings,
-            memory: ir::limits::Memory::default(),
+            memory,
         })
     }
 }

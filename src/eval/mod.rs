@@ -227,8 +227,8 @@ fn load_source_here(
     // meshes to the same budget.
     let mut memory = it.memory_used();
     memory.used += lowerer.objects.len() as u64 * budgets::OBJECT_BYTES;
-    match lowerer.finish() {
-        Ok(scene) => loaded.scene = Some(crate::ir::Scene { memory, ..scene }),
+    match lowerer.finish(memory) {
+        Ok(scene) => loaded.scene = Some(scene),
         Err(errs) => loaded.diagnostics.items.extend(errs),
     }
     loaded

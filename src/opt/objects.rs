@@ -310,7 +310,7 @@ impl Builder {
 
 /// Whether the mesh file is a closed surface (through the asset cache).
 fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
-    assets::mesh(path, smooth).is_ok_and(|m| m.is_closed())
+    mesh_bounds(path, smooth).is_some_and(|(_, closed)| closed)
 }
 
 /// The bounds of a mesh file in its own coordinates and whether it is a closed surface (a
