@@ -349,6 +349,15 @@ fn wall(from: &[String], u: &Use) -> Option<String> {
 fn no_room_has_a_larger_circle_than_its_cap() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let graph = architecture_support::graph::FileGraph::of_crate(root);
+    // `RTC_ARCH_EDGES=eval` prints that room's file imports, to see what closes a circle.
+    if let Ok(room) = std::env::var("RTC_ARCH_EDGES") {
+        for (a, targets) in graph.edges.iter().enumerate() {
+            if graph.rooms[a] == room {
+                let names: Vec<&str> = targets.iter().map(|&b| graph.files[b].as_str()).collect();
+                eprintln!("{} -> {}", graph.files[a], names.join(" "));
+            }
+        }
+    }
     let mut problems = Vec::new();
     for (room, circle) in graph.largest_circles() {
         eprintln!("{room:>10}: largest circle {} file(s)", circle.len());
