@@ -7,13 +7,13 @@ use std::path::PathBuf;
 use crate::source::Span;
 
 use super::error::R;
-use super::interp::Interp;
+use super::host::Host;
 
 /// The file `rel` names from the current module (a `what` file: "mesh", "image"); an error
 /// naming every place looked at if there is none.
-pub fn existing(it: &Interp, rel: &str, span: Span, what: &str) -> R<PathBuf> {
-    crate::assets::search::find(&it.scope.dir, rel).map_err(|missing| {
-        let file = &it.sources.get(it.scope.file).path;
+pub fn existing(it: &dyn Host, rel: &str, span: Span, what: &str) -> R<PathBuf> {
+    crate::assets::search::find(it.dir(), rel).map_err(|missing| {
+        let file = it.file_path();
         missing.diagnostic(span, what, file).into()
     })
 }

@@ -9,6 +9,7 @@ use crate::syntax::ast::*;
 
 use super::error::{R, error};
 use super::interp::Interp;
+use super::lower::Sink;
 use super::value::{Closure, Value};
 
 impl Interp<'_> {
@@ -295,7 +296,7 @@ impl Interp<'_> {
             self.emit_part(&lp, lowerer);
             return Ok(true);
         }
-        if matches!(self.split, super::split::Role::Main(_)) {
+        if matches!(self.split, super::parts::Role::Main(_)) {
             self.emit_split_for(&lp, stmt, lowerer)?;
             return Ok(true);
         }
@@ -303,12 +304,4 @@ impl Interp<'_> {
         self.for_level(gens, 0, lp.filter, body, lp.header, &mut sink)?;
         Ok(true)
     }
-}
-
-/// Where the elements of a `for` go.
-pub enum Sink<'a> {
-    /// Collected into a list value.
-    List(&'a mut Vec<Value>),
-    /// Emitted straight into the scene (top-level loops), with the statement's span.
-    Emit(&'a mut super::lower::Lowerer, Span),
 }

@@ -14,7 +14,7 @@ use crate::ir::{CsgOp, Shape};
 use crate::source::Span;
 
 use super::error::{R, error};
-use super::interp::Interp;
+use super::host::Host;
 use super::value::{Obj, ObjShape, Value};
 
 /// A mesh's vertex bounds, through the asset service (which keeps the load for the render; no
@@ -83,11 +83,11 @@ fn combined(op: CsgOp, ch: &[Obj], t: DAffine3, span: Span) -> R<Aabb> {
 }
 
 /// The `bounds` record of an object.
-pub fn bounds_value(_it: &mut Interp, o: &Obj, span: Span) -> R<Value> {
+pub fn bounds_value(_it: &mut dyn Host, o: &Obj, span: Span) -> R<Value> {
     let b = bb(o, DAffine3::IDENTITY, span)?;
     let (lo, hi) = (b.min, b.max);
     let c = (lo + hi) / 2.0;
-    Ok(super::members::record_of(
+    Ok(super::value::record_of(
         &[
             ("min", Value::Vec3(lo)),
             ("max", Value::Vec3(hi)),

@@ -1,69 +1,14 @@
 //! Calls: argument matching for user functions and dispatch to built-ins and methods.
 
-use std::cell::RefCell;
 use std::rc::Rc;
 
 use crate::source::Span;
-use crate::syntax::ast::{Arg, Expr, ExprKind, Name};
+use crate::syntax::ast::{Arg, Expr, ExprKind};
 
+use super::args::{ArgVal, CallSite, args_vec};
 use super::error::{EvalError, R, error, suggest};
 use super::interp::Interp;
 use super::value::{Closure, Value};
-
-/// An evaluated argument.
-#[derive(Clone, Debug)]
-pub struct ArgVal {
-    /// `name:` of a named argument.
-    pub name: Option<Name>,
-    /// The value.
-    pub value: Value,
-    /// Span of the value expression.
-    pub span: Span,
-}
-
-/// What a built-in learns about its call site.
-#[derive(Clone, Copy, Debug)]
-pub struct CallSite {
-    /// The whole call.
-    pub span: Span,
-    /// The function's name as called (for messages).
-    pub name: &'static str,
-}
-
-thread_local! {
-    /// Emptied argument vectors of finished built-in calls (`Params` gives each back), for the
-    /// next calls: a loop making a million spheres otherwise allocates and frees two per sphere.
-    static SPARE_ARGS: RefCell<Vec<Vec<ArgVal>>> = const { RefCell::new(Vec::new()) };
-}
-
-/// Most spare argument vectors kept, and the largest kept (in arguments).
-const SPARE_VECS: usize = 8;
-const SPARE_CAPACITY: usize = 16;
-
-/// Gives an argument vector back for reuse (its remaining values are dropped now).
-pub fn recycle_args(mut args: Vec<ArgVal>) {
-    if args.capacity() == 0 || args.capacity() > SPARE_CAPACITY {
-        return;
-    }
-    args.clear();
-    SPARE_ARGS.with(|s| {
-        let mut s = s.borrow_mut();
-        if s.len() < SPARE_VECS {
-            s.push(args);
-        }
-    });
-}
-
-/// An empty argument vector with room for `n`, reused when one is spare.
-fn args_vec(n: usize) -> Vec<ArgVal> {
-    match SPARE_ARGS.with(|s| s.borrow_mut().pop()) {
-        Some(mut v) => {
-            v.reserve(n);
-            v
-        }
-        None => Vec::with_capacity(n),
-    }
-}
 
 impl Interp<'_> {
     fn eval_args(&mut self, args: &[Arg]) -> R<Vec<ArgVal>> {

@@ -9,11 +9,11 @@ use crate::source::{SourceMap, Span};
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
 
-use super::EvalOptions;
-use super::blocks::Sink;
 use super::error::{EvalError, R, error, suggest};
+use super::lower::Sink;
 use super::modules::{Module, Scope};
 use super::ops::Num;
+use super::options::EvalOptions;
 use super::value::{Closure, Record, Value};
 
 /// Most operator nodes one try of the pure arithmetic path visits (`Interp::pure_num`).
@@ -56,7 +56,7 @@ pub struct Interp<'a> {
     /// Material and texture values made so far ([`Interp::next_made`]).
     pub(super) made: u64,
     /// This thread's part in evaluating long loops on several threads.
-    pub(super) split: super::split::Role,
+    pub(super) split: super::parts::Role,
 }
 
 impl Drop for Interp<'_> {
@@ -93,7 +93,7 @@ impl<'a> Interp<'a> {
             vec3_loops: Vec::new(),
             prov: opts.provenance.then(Box::default),
             made: 0,
-            split: super::split::Role::Off,
+            split: super::parts::Role::Off,
         }
     }
 
@@ -112,6 +112,21 @@ impl<'a> Interp<'a> {
     /// The provenance origin of an object derived now from one of origin `from`.
     pub fn derive(&mut self, from: u32) -> u32 {
         self.prov.as_mut().map_or(from, |p| p.derive(from))
+    }
+
+    /// Records a finding every time (`print`'s notes).
+    pub fn report(&mut self, d: Diagnostic) {
+        self.diags.push(d);
+    }
+
+    /// The folder relative asset paths of the current module resolve against.
+    pub fn dir(&self) -> &std::path::Path {
+        &self.scope.dir
+    }
+
+    /// The path of the current module's file (for messages).
+    pub fn file_path(&self) -> &std::path::Path {
+        &self.sources.get(self.scope.file).path
     }
 
     /// Records a warning once per (code, span), however often a loop reaches it.

@@ -9,7 +9,8 @@ use crate::diag::Diagnostics;
 use crate::source::SourceMap;
 use crate::syntax::ast::{ExprKind, File, Stmt};
 
-use super::{EvalOptions, interp, modules};
+use super::options::{EvalOptions, on_eval_stack};
+use super::{interp, modules};
 
 /// What checking a library module found.
 #[derive(Debug, Default)]
@@ -62,7 +63,7 @@ pub fn load_library(
     if !is_library(&probe) {
         return None;
     }
-    super::on_eval_stack(|| evaluate(path, text, sources, options))
+    on_eval_stack(|| evaluate(path, text, sources, options))
 }
 
 /// Evaluates a library module as an import would (nothing may be emitted).

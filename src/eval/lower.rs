@@ -276,12 +276,12 @@ impl Lowerer {
     /// value this thread knows by that number, shared if this thread lowered it already.
     pub(super) fn absorb(
         &mut self,
-        part: super::split::ScenePart,
+        part: super::parts::ScenePart,
         made: u64,
         materials: usize,
         textures: usize,
     ) {
-        let super::split::ScenePart {
+        let super::parts::ScenePart {
             objects,
             lights,
             cameras,
@@ -410,4 +410,12 @@ fn renumber(o: &mut ir::Object, remat: &impl Fn(ir::MaterialId) -> ir::MaterialI
             renumber(c, remat);
         }
     }
+}
+
+/// Where the elements of a `for` go.
+pub enum Sink<'a> {
+    /// Collected into a list value.
+    List(&'a mut Vec<Value>),
+    /// Emitted straight into the scene (top-level loops), with the statement's span.
+    Emit(&'a mut Lowerer, Span),
 }

@@ -4,11 +4,10 @@ use std::rc::Rc;
 
 use crate::source::Span;
 use crate::syntax::ast::Name;
-use crate::syntax::intern::Sym;
 
 use super::error::{R, error, suggest};
-use super::interp::Interp;
-use super::value::{FieldVal, Record, Value};
+use super::host::Host;
+use super::value::Value;
 
 /// Members each type offers (for did-you-mean).
 fn members_of(v: &Value) -> Vec<&'static str> {
@@ -23,7 +22,7 @@ fn members_of(v: &Value) -> Vec<&'static str> {
     }
 }
 
-pub fn member(it: &mut Interp, v: Value, name: Name, vspan: Span) -> R<Value> {
+pub fn member(it: &mut dyn Host, v: Value, name: Name, vspan: Span) -> R<Value> {
     let n = name.sym.as_str();
     let found = match &v {
         Value::Module(m) => {
@@ -251,19 +250,4 @@ pub fn index(v: Value, i: Value, (ispan, from_vec3): (Span, bool)) -> R<Value> {
         Value::Vec3(x) => Value::Float(x[k as usize]),
         _ => unreachable!("checked above"),
     })
-}
-
-/// Builds a record value from (name, value) pairs with `span` for every field.
-pub fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
-    Value::Record(Rc::new(Record {
-        fields: fields
-            .iter()
-            .map(|(k, v)| FieldVal {
-                name: Sym::new(k),
-                value: v.clone(),
-                span,
-                name_span: span,
-            })
-            .collect(),
-    }))
 }

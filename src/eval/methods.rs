@@ -6,15 +6,15 @@ use std::rc::Rc;
 use crate::source::Span;
 use crate::syntax::ast::Name;
 
-use super::call::{ArgVal, CallSite};
+use super::args::{ArgVal, CallSite};
 use super::error::R;
-use super::interp::Interp;
+use super::host::Host;
 use super::types;
 use super::value::{Obj, Value};
 
 /// `recv.name(args)`.
 pub fn call_method(
-    it: &mut Interp,
+    it: &mut dyn Host,
     recv: Value,
     name: Name,
     args: Vec<ArgVal>,
@@ -77,7 +77,7 @@ pub fn call_method(
             return with_receiver(it, recv, name, args, span);
         }
         Value::Transform(t) if n == "point" || n == "vector" => {
-            let mut p = super::builtins::Params::new(site, &["v"], args)?;
+            let mut p = super::args::Params::new(site, &["v"], args)?;
             let (v, _) = p.vec3(it, "v")?;
             return Ok(Value::Vec3(if n == "point" {
                 t.transform_point3(v)
@@ -117,7 +117,7 @@ pub fn call_method(
 }
 
 /// `obj.material(m)`: the object with its own material.
-fn set_material(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+fn set_material(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
     let m = match args.as_slice() {
         // One material, positional or `material:`: what the schema below accepts, matched
         // without it (a loop of a million spheres calls this once per sphere).
@@ -129,11 +129,11 @@ fn set_material(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVa
             },
         ] if name.is_none_or(|n| n.sym.as_str() == "material") => {
             let m = m.clone();
-            super::call::recycle_args(args);
+            super::args::recycle_args(args);
             m
         }
         _ => {
-            let mut p = super::builtins::Params::new(site, &["material"], args)?;
+            let mut p = super::args::Params::new(site, &["material"], args)?;
             let (m, ms) = p.req("material")?;
             let Value::Material(m) = m else {
                 return Err(types::mismatch(it, "Material", &m, ms).into());
@@ -167,7 +167,7 @@ const VEC_METHODS: &[&str] = &["length", "normalize", "dot", "cross", "distance"
 
 /// `recv.f(args)` as the built-in `f(recv, args)`.
 fn with_receiver(
-    it: &mut Interp,
+    it: &mut dyn Host,
     recv: Value,
     name: Name,
     mut args: Vec<ArgVal>,
@@ -188,13 +188,13 @@ fn with_receiver(
 /// `l.map(f)` and `l.filter(f)` on a list or a vector. Mapping a vector to numbers gives a
 /// vector again; otherwise the result is a list.
 fn map_filter(
-    it: &mut Interp,
+    it: &mut dyn Host,
     recv: &Value,
     map: bool,
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<Value> {
-    let mut p = super::builtins::Params::new(site, &["f"], args)?;
+    let mut p = super::args::Params::new(site, &["f"], args)?;
     let (f, fs) = p.req("f")?;
     if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
         return Err(types::mismatch(it, "Fn", &f, fs).into());

@@ -1,5 +1,6 @@
 //! Evaluation of `.rtc` files to the IR: names, types, loops, functions, modules, budgets.
 
+pub(crate) mod args;
 pub(crate) mod assets;
 pub(crate) mod blocks;
 pub(crate) mod bounds;
@@ -8,6 +9,8 @@ pub(crate) mod builtins;
 pub(crate) mod call;
 pub(crate) mod error;
 pub(crate) mod fxhash;
+pub(crate) mod host;
+pub(crate) mod host_impl;
 pub(crate) mod interp;
 pub mod library;
 pub(crate) mod lower;
@@ -18,7 +21,10 @@ pub mod modules;
 pub(crate) mod motion;
 pub(crate) mod operands;
 pub(crate) mod ops;
+pub(crate) mod options;
+pub(crate) mod param_stmt;
 pub(crate) mod params;
+pub(crate) mod parts;
 pub(crate) mod program;
 pub(crate) mod provenance;
 pub mod rng;
@@ -37,68 +43,9 @@ use crate::diag::{Diagnostic, Severity};
 use crate::ir::Loaded;
 use crate::source::SourceMap;
 
-pub use split::LoopParts;
+pub(crate) use options::on_eval_stack;
+pub use options::{DEFAULT_FPS, EvalOptions, LoopParts};
 pub use value::SHOW_LIMIT;
-
-/// Budgets that keep evaluation finite; each overrun is a clear error.
-#[derive(Clone, Debug)]
-pub struct EvalOptions {
-    /// Total loop iterations over the whole evaluation.
-    pub max_loop_iterations: u64,
-    /// Depth of nested user-function calls.
-    pub max_recursion_depth: u32,
-    /// Objects in the scene.
-    pub max_objects: u64,
-    /// Elements in any one list.
-    pub max_list_len: u64,
-    /// Bytes in any one string.
-    pub max_string_len: u64,
-    /// Distinct files imported by one evaluation, all nesting levels together.
-    pub max_imports: u32,
-    /// Imports nested inside imports (a file that imports a file that imports ...).
-    pub max_import_depth: u32,
-    /// The frame evaluated: the built-in `frame` (`rtc render --frame N`).
-    pub frame: i64,
-    /// Frames per second: the built-in `time` is `frame / fps` (`rtc render --fps`).
-    pub fps: f64,
-    /// `--set NAME=VALUE` pairs overriding the scene file's `param` declarations.
-    pub overrides: Vec<(String, String)>,
-    /// Record where each object came from (`ir::Loaded::provenance`, for `rtc why`).
-    pub provenance: bool,
-    /// Whether long top-level loops may be evaluated on several threads (the result is the
-    /// same either way).
-    pub loop_parts: LoopParts,
-    /// Bytes the whole load may hold: the evaluation's strings, lists and objects, then the
-    /// textures and meshes the preparation loads (`ir::limits::Memory`, `--memory-budget`).
-    pub max_memory: u64,
-    /// When the evaluation must stop (`--time-limit`, counted from the start of the command):
-    /// past it, the next loop step or call is `rtc::render::time_limit`.
-    pub deadline: Option<std::time::Instant>,
-}
-
-/// Frames per second unless the command line says otherwise (film's rate).
-pub const DEFAULT_FPS: f64 = 24.0;
-
-impl Default for EvalOptions {
-    fn default() -> EvalOptions {
-        EvalOptions {
-            max_loop_iterations: 50_000_000,
-            max_recursion_depth: 256,
-            max_objects: 10_000_000,
-            max_list_len: 10_000_000,
-            max_string_len: 10_000_000,
-            max_imports: 10_000,
-            max_import_depth: 64,
-            frame: 0,
-            fps: DEFAULT_FPS,
-            overrides: Vec::new(),
-            provenance: false,
-            loop_parts: LoopParts::default(),
-            max_memory: crate::ir::limits::DEFAULT_MEMORY_BUDGET,
-            deadline: None,
-        }
-    }
-}
 
 /// Parses and evaluates the scene file at `path`, reading it from disk.
 pub fn load_file(path: &Path, sources: &mut SourceMap, options: &EvalOptions) -> Loaded {
@@ -181,24 +128,6 @@ pub fn load_source(
     })
 }
 
-/// Runs `f` on a thread with the evaluation's large stack; `None` if the thread cannot start.
-pub(crate) fn on_eval_stack<T: Send>(f: impl FnOnce() -> T + Send) -> Option<T> {
-    // Evaluation recurses with the user's functions (up to `max_recursion_depth`) and expression
-    // nesting; a dedicated thread with a large stack keeps that independent of the caller's
-    // thread (test harness and rayon threads have small stacks).
-    std::thread::scope(|s| {
-        std::thread::Builder::new()
-            .name("rtc-eval".into())
-            .stack_size(EVAL_STACK_BYTES)
-            .spawn_scoped(s, f)
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .ok()
-    })
-}
-
-/// Stack of the evaluation thread (reserved address space; pages are touched only as needed).
-pub(crate) const EVAL_STACK_BYTES: usize = 256 << 20;
-
 fn load_source_here(
     path: &Path,
     text: String,
@@ -242,7 +171,7 @@ fn run_root<'a>(
     text: String,
     sources: &'a mut SourceMap,
     options: &'a EvalOptions,
-    helper: Option<split::Helper>,
+    helper: Option<parts::Helper>,
     loaded: &mut Loaded,
 ) -> Option<(interp::Interp<'a>, lower::Lowerer)> {
     let file = sources.add(path, text);
@@ -262,8 +191,8 @@ fn run_root<'a>(
     }
     let mut it = interp::Interp::new(options, sources, scope);
     it.split = match helper {
-        Some(h) => split::Role::Helper(Box::new(h)),
-        None => split::Role::main(options, file),
+        Some(h) => parts::Role::Helper(Box::new(h)),
+        None => parts::Role::main(options, file),
     };
     it.overrides = overrides;
     // Modules are told apart by their canonical file (symlinked folders name one file by many
@@ -284,8 +213,8 @@ fn replay(
     text: String,
     sources: &mut SourceMap,
     options: &EvalOptions,
-    helper: split::Helper,
-) -> Option<split::Part> {
+    helper: parts::Helper,
+) -> Option<parts::Part> {
     let mut loaded = Loaded::default();
     let (mut it, _) = run_root(path, text, sources, options, Some(helper), &mut loaded)?;
     it.split.take_part()

@@ -6,10 +6,10 @@ use std::rc::Rc;
 
 use glam::{DAffine3, DMat3, DQuat, DVec3};
 
-use super::builtins::{Params, check_shown};
-use super::call::{ArgVal, CallSite};
+use super::args::{ArgVal, CallSite};
+use super::args::{Params, check_shown};
 use super::error::{R, error};
-use super::interp::Interp;
+use super::host::Host;
 use super::types;
 use super::value::{Obj, ObjShape, Value};
 use crate::diag::Diagnostic;
@@ -19,7 +19,7 @@ use crate::source::Span;
 /// `obj.moving(translate:, rotate:, scale:, spin:, axis:)`: the change of the object's
 /// placement from shutter open to shutter close, applied after its placement (as a
 /// `.translate(...)` would be); `spin:` turns it about `axis:` by any angle, whole turns too.
-pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+pub fn moving(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(
         site,
         &["translate", "rotate", "scale", "spin", "axis"],
@@ -92,7 +92,7 @@ pub fn moving(it: &mut Interp, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>
 
 /// `spin:` and `axis:` of `.moving`: the axis and the angle (radians, any size), or `None`
 /// without a spin. Each needs the other; the axis must not be zero.
-fn spin(it: &Interp, p: &mut Params) -> R<Option<(DVec3, f64)>> {
+fn spin(it: &dyn Host, p: &mut Params) -> R<Option<(DVec3, f64)>> {
     let angle = p.get("spin");
     let axis = p.get("axis");
     match (angle, axis) {
@@ -172,7 +172,7 @@ fn short_arc(deg: f64) -> f64 {
 }
 
 /// A rotation transform (`rotate(y: 90deg)`) as a unit quaternion.
-fn rotation(it: &Interp, v: &Value, sp: Span) -> R<DQuat> {
+fn rotation(it: &dyn Host, v: &Value, sp: Span) -> R<DQuat> {
     if let Value::Angle(a) = v {
         // `moving(rotate: 45deg)`: an angle alone names no axis.
         let deg = super::value::fmt_f(a.to_degrees());
@@ -245,7 +245,7 @@ pub fn shutter(p: &mut Params) -> R<Option<ir::Shutter>> {
 
 /// `eye_close:` and `center_close:`: where the camera is and looks when the shutter closes.
 pub fn camera_motion(
-    it: &Interp,
+    it: &dyn Host,
     p: &mut Params,
     eye: DVec3,
     center: DVec3,
@@ -283,7 +283,7 @@ pub fn camera_motion(
 
 /// `look_at(from:, to:, up:)`: places an object made at the origin at `from`, its +Z axis
 /// turned towards `to` and its +Y axis towards `up`.
-pub fn look_at_fn(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+pub fn look_at_fn(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["from", "to", "up"], a)?;
     let from = p.vec3_or(it, "from", DVec3::ZERO)?;
     let (to, ts) = p.vec3(it, "to")?;
@@ -297,7 +297,7 @@ pub fn look_at_fn(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// `obj.look_at(to, up:)`: turns the object about its own origin so that what was its +Z axis
 /// points at `to` (and +Y towards `up`).
 pub fn look_at_method(
-    it: &mut Interp,
+    it: &mut dyn Host,
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<(DVec3, DVec3, Span)> {

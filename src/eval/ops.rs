@@ -7,7 +7,7 @@ use crate::source::Span;
 use crate::syntax::ast::{BinOp, UnOp};
 
 use super::error::{R, error};
-use super::interp::Interp;
+use super::host::Host;
 use super::operands::Operands;
 use super::value::{Obj, ObjShape, Value};
 
@@ -122,7 +122,7 @@ pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
 /// `a op b` for every operator except the short-circuit `&&` and `||`.
 #[allow(clippy::too_many_arguments)]
 pub fn binary(
-    it: &mut Interp,
+    it: &mut dyn Host,
     op: BinOp,
     l: Value,
     r: Value,
@@ -229,7 +229,13 @@ pub fn binary(
 }
 
 /// An operation whose result is infinite or NaN: stopped here, before it reaches geometry.
-fn not_finite(it: &Interp, op: BinOp, l: &Value, r: &Value, span: Span) -> super::error::EvalError {
+fn not_finite(
+    it: &dyn Host,
+    op: BinOp,
+    l: &Value,
+    r: &Value,
+    span: Span,
+) -> super::error::EvalError {
     let help = if op == BinOp::Pow {
         "a negative base needs a whole exponent; keep results below about 1.8e308"
     } else {
@@ -298,7 +304,7 @@ fn equal(a: &Value, b: &Value) -> Option<bool> {
 }
 
 fn op_error(
-    it: &Interp,
+    it: &dyn Host,
     op: BinOp,
     l: &Value,
     r: &Value,
@@ -349,7 +355,7 @@ fn op_error(
 /// Builds a CSG node; nested nodes of the same operation (without their own transform or
 /// material) are flattened so `a | b | c` is one union of three.
 fn csg(
-    it: &mut Interp,
+    it: &mut dyn Host,
     op: CsgOp,
     l: &Value,
     r: &Value,

@@ -17,10 +17,11 @@
 
 use glam::DVec3;
 
-use super::builtins::{BuiltinFn, Params};
-use super::call::{ArgVal, CallSite};
+use super::args::Params;
+use super::args::{ArgVal, CallSite};
 use super::error::R;
-use super::interp::Interp;
+use super::host::BuiltinFn;
+use super::host::Host;
 use super::types;
 use super::value::Value;
 
@@ -76,7 +77,7 @@ pub fn sphere_point(seed: u64, key: &str, i: i64, solid: bool) -> DVec3 {
     r * DVec3::new(s * libm::cos(phi), s * libm::sin(phi), z)
 }
 
-fn random(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn random(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["seed"], a)?;
     let (v, sp) = p.req("seed")?;
     let seed = types::int(it, &v, sp)?;
@@ -86,7 +87,7 @@ fn random(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// `rng.uniform(key, i)`, `rng.normal(key, i)`, `rng.in_sphere(key, i)`, `rng.on_sphere(key, i)`,
 /// `rng.range(key, i, lo, hi)`.
 pub fn method(
-    it: &mut Interp,
+    it: &mut dyn Host,
     seed: u64,
     name: &'static str,
     site: CallSite,

@@ -5,10 +5,11 @@ use std::rc::Rc;
 
 use glam::{DAffine3, DVec3};
 
-use super::builtins::{BuiltinFn, Params, positive};
-use super::call::{ArgVal, CallSite};
+use super::args::{ArgVal, CallSite};
+use super::args::{Params, positive};
 use super::error::{R, error};
-use super::interp::Interp;
+use super::host::BuiltinFn;
+use super::host::Host;
 use super::types;
 use super::value::{Obj, ObjShape, Value, obj_kind};
 use crate::ir::{BlobComponent, CsgOp, Shape};
@@ -60,7 +61,7 @@ fn prim(shape: Shape, span: Span) -> Value {
     }))
 }
 
-fn unit_dir(it: &Interp, p: &mut Params, name: &str, default: DVec3) -> R<DVec3> {
+fn unit_dir(it: &dyn Host, p: &mut Params, name: &str, default: DVec3) -> R<DVec3> {
     match p.get(name) {
         None => Ok(default),
         Some((v, sp)) => {
@@ -80,21 +81,21 @@ fn unit_dir(it: &Interp, p: &mut Params, name: &str, default: DVec3) -> R<DVec3>
     }
 }
 
-fn sphere(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn sphere(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["center", "radius"], a)?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let (radius, rs) = p.num_or(it, "radius", 1.0)?;
     checked(Shape::Sphere { center, radius }, s, &[("radius", rs)])
 }
 
-fn plane(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn plane(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["point", "normal"], a)?;
     let point = p.vec3_or(it, "point", DVec3::ZERO)?;
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
     checked(Shape::Plane { point, normal }, s, &[])
 }
 
-fn box_(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn box_(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max"], a)?;
     let min = p.vec3_or(it, "min", DVec3::splat(-0.5))?;
     let (max, ms) = match p.get("max") {
@@ -104,7 +105,7 @@ fn box_(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     checked(Shape::Box { min, max }, s, &[("max", ms)])
 }
 
-fn triangle(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn triangle(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["a", "b", "c"], a)?;
     let (va, _) = p.vec3(it, "a")?;
     let (vb, _) = p.vec3(it, "b")?;
@@ -118,7 +119,7 @@ fn triangle(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn quad(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["corner", "u", "v"], a)?;
     let corner = p.vec3_or(it, "corner", DVec3::ZERO)?;
     let (u, _) = p.vec3(it, "u")?;
@@ -126,7 +127,7 @@ fn quad(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     checked(Shape::Quad { corner, u, v }, s, &[("v", vs)])
 }
 
-fn polygon(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn polygon(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["points"], a)?;
     let (v, sp) = p.req("points")?;
     let items: Vec<Value> = match &v {
@@ -140,7 +141,7 @@ fn polygon(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     checked(Shape::Polygon { points }, s, &[("points", sp)])
 }
 
-fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn disk(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["center", "normal", "radius"], a)?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
@@ -156,7 +157,7 @@ fn disk(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn ring(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn ring(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["center", "normal", "radius", "inner"], a)?;
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
     let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
@@ -176,7 +177,7 @@ fn ring(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// Reads `base`/`top`, or `center`/`axis`/`height` (centred on `center` along `axis`), with the
 /// span to blame for the top.
-fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
+fn ends(it: &dyn Host, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
     let base = p.get("base");
     let top = p.get("top");
     let center = p.vec3_or(it, "center", DVec3::ZERO)?;
@@ -204,7 +205,7 @@ fn ends(it: &Interp, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
     })
 }
 
-fn cylinder(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn cylinder(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(
         s,
         &[
@@ -227,7 +228,7 @@ fn cylinder(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn cone(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(
         s,
         &[
@@ -259,7 +260,7 @@ fn cone(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn torus(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["major_radius", "minor_radius", "center"], a)?;
     let (major, ms) = p.num(it, "major_radius")?;
     let (minor, ns) = p.num(it, "minor_radius")?;
@@ -275,7 +276,7 @@ fn torus(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["components", "threshold"], a)?;
     let (v, sp) = p.req("components")?;
     let Value::List(items) = &v else {
@@ -318,7 +319,7 @@ fn blob(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
-fn mesh(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["path", "smooth", "use_mtl"], a)?;
     let (pv, ps) = p.req("path")?;
     let rel = types::string(it, &pv, ps)?;
@@ -363,7 +364,7 @@ fn only_obj(path: &std::path::Path, span: Span) -> R<()> {
 }
 
 /// Flattens nested lists of objects (as `for` produces) into `out`.
-pub fn collect_objects(it: &Interp, v: &Value, span: Span, out: &mut Vec<Obj>) -> R<()> {
+pub fn collect_objects(it: &dyn Host, v: &Value, span: Span, out: &mut Vec<Obj>) -> R<()> {
     match v {
         Value::Object(o) => out.push((**o).clone()),
         Value::List(l) => {
@@ -377,14 +378,14 @@ pub fn collect_objects(it: &Interp, v: &Value, span: Span, out: &mut Vec<Obj>) -
     Ok(())
 }
 
-fn object_list(it: &Interp, p: &mut Params, name: &str) -> R<(Vec<Obj>, Span)> {
+fn object_list(it: &dyn Host, p: &mut Params, name: &str) -> R<(Vec<Obj>, Span)> {
     let (v, sp) = p.req(name)?;
     let mut out = Vec::new();
     collect_objects(it, &v, sp, &mut out)?;
     Ok((out, sp))
 }
 
-fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn group(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["children"], a)?;
     let (children, _) = object_list(it, &mut p, "children")?;
     Ok(Value::Object(Rc::new(Obj {
@@ -397,7 +398,7 @@ fn group(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
+fn csg_node(it: &dyn Host, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
     if let Err(flaw) = crate::geometry::shapes::csg_operands(children.len()) {
         return Err(flaw.diagnostic(sp).into());
     }
@@ -414,7 +415,7 @@ fn csg_node(it: &Interp, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -
     })))
 }
 
-fn union(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn union(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["objects", "merge"], a)?;
     let (children, sp) = object_list(it, &mut p, "objects")?;
     let op = if p.bool_or(it, "merge", false)? {
@@ -425,13 +426,13 @@ fn union(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     csg_node(it, op, children, sp, s)
 }
 
-fn intersection(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn intersection(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["objects"], a)?;
     let (children, sp) = object_list(it, &mut p, "objects")?;
     csg_node(it, CsgOp::Intersection, children, sp, s)
 }
 
-fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn difference(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["base", "cutters"], a)?;
     let (bv, bs) = p.req("base")?;
     let Value::Object(base) = &bv else {
@@ -445,7 +446,7 @@ fn difference(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
 /// `geometry::shapes::encloses_volume`).
-pub fn require_closed(it: &Interp, o: &Obj, span: Span) -> R<()> {
+pub fn require_closed(it: &dyn Host, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {
         // A mesh file's closedness is checked when the preparation stage loads it.

@@ -4,10 +4,11 @@
 use crate::num::Norm;
 use glam::{DAffine3, DMat3, DVec3};
 
-use super::builtins::{BuiltinFn, Params};
-use super::call::{ArgVal, CallSite};
+use super::args::Params;
+use super::args::{ArgVal, CallSite};
 use super::error::{R, error};
-use super::interp::Interp;
+use super::host::BuiltinFn;
+use super::host::Host;
 use super::types;
 use super::value::Value;
 use crate::source::Span;
@@ -52,13 +53,13 @@ pub fn nonsingular(a: DAffine3, span: Span) -> R<DAffine3> {
     Ok(a)
 }
 
-fn translate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn translate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["offset"], a)?;
     let (v, sp) = p.vec3(it, "offset")?;
     nonsingular(DAffine3::from_translation(v), sp)
 }
 
-fn scale(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn scale(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["factor"], a)?;
     let (v, sp) = p.req("factor")?;
     let f = match &v {
@@ -71,7 +72,7 @@ fn scale(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     nonsingular(DAffine3::from_scale(f), sp)
 }
 
-fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn rotate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["x", "y", "z", "axis", "angle"], a)?;
     if let Some((av, asp)) = p.get("axis") {
         let axis = types::vec3(it, &av, asp)?;
@@ -95,7 +96,7 @@ fn rotate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     Ok(DAffine3::from_rotation_z(z) * DAffine3::from_rotation_y(y) * DAffine3::from_rotation_x(x))
 }
 
-fn matrix(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn matrix(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["rows"], a)?;
     let (v, sp) = p.req("rows")?;
     let bad = || {
@@ -130,7 +131,7 @@ fn matrix(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     nonsingular(DAffine3::from_mat3_translation(mat, tr), sp)
 }
 
-fn around(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn around(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     let mut p = Params::new(s, &["pivot", "transform"], a)?;
     let (pivot, _) = p.vec3(it, "pivot")?;
     let (tv, ts) = p.req("transform")?;
@@ -140,14 +141,14 @@ fn around(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     Ok(DAffine3::from_translation(pivot) * *inner * DAffine3::from_translation(-pivot))
 }
 
-fn identity(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
+fn identity(_: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<DAffine3> {
     Params::new(s, &[], a)?;
     Ok(DAffine3::IDENTITY)
 }
 
 /// Builds the transform a method such as `.rotate(y: 30deg)` applies (`.transform(t)` passes `t`).
 pub fn method_transform(
-    it: &mut Interp,
+    it: &mut dyn Host,
     name: &'static str,
     site: CallSite,
     args: Vec<ArgVal>,

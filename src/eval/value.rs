@@ -427,3 +427,18 @@ pub fn a_type(t: &str) -> String {
     let vowel = t.starts_with(['A', 'E', 'I', 'O', 'U']);
     format!("{} `{t}`", if vowel { "an" } else { "a" })
 }
+
+/// Builds a record value from (name, value) pairs with `span` for every field.
+pub fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
+    Value::Record(Rc::new(Record {
+        fields: fields
+            .iter()
+            .map(|(k, v)| FieldVal {
+                name: Sym::new(k),
+                value: v.clone(),
+                span,
+                name_span: span,
+            })
+            .collect(),
+    }))
+}

@@ -6,11 +6,16 @@ use crate::source::Span;
 use crate::syntax::ast::Name;
 
 use super::error::{R, error, suggest};
-use super::interp::Interp;
+use super::host::Host;
 use super::value::Value;
 
 /// Applies the updates to a copy of `base`.
-pub fn with(it: &mut Interp, base: Value, bspan: Span, upd: Vec<(Name, Value, Span)>) -> R<Value> {
+pub fn with(
+    it: &mut dyn Host,
+    base: Value,
+    bspan: Span,
+    upd: Vec<(Name, Value, Span)>,
+) -> R<Value> {
     match base {
         Value::Material(m) => {
             let mut m2 = (*m).clone();

@@ -4,10 +4,11 @@
 
 use std::rc::Rc;
 
-use super::{BuiltinFn, Params};
-use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::args::Params;
+use crate::eval::args::{ArgVal, CallSite};
 use crate::eval::error::R;
-use crate::eval::interp::Interp;
+use crate::eval::host::BuiltinFn;
+use crate::eval::host::Host;
 use crate::eval::types;
 use crate::eval::value::Value;
 use crate::source::Span;
@@ -38,7 +39,7 @@ pub fn items(v: &Value) -> Option<Rc<Vec<Value>>> {
 }
 
 /// The list argument `name`, or a type error that says a list was expected.
-fn list_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Rc<Vec<Value>>, Span)> {
+fn list_arg(it: &dyn Host, p: &mut Params, name: &str) -> R<(Rc<Vec<Value>>, Span)> {
     let (v, sp) = p.req(name)?;
     match items(&v) {
         Some(l) => Ok((l, sp)),
@@ -47,7 +48,7 @@ fn list_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Rc<Vec<Value>>, Span)
 }
 
 /// A function argument, checked to be callable.
-fn fn_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Value, Span)> {
+fn fn_arg(it: &dyn Host, p: &mut Params, name: &str) -> R<(Value, Span)> {
     let (f, sp) = p.req(name)?;
     if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
         return Err(types::mismatch(it, "Fn", &f, sp).into());
@@ -56,7 +57,7 @@ fn fn_arg(it: &Interp, p: &mut Params, name: &str) -> R<(Value, Span)> {
 }
 
 /// Calls `f` with positional arguments.
-pub fn call(it: &mut Interp, f: &Value, args: &[Value], fs: Span, site: Span) -> R<Value> {
+pub fn call(it: &mut dyn Host, f: &Value, args: &[Value], fs: Span, site: Span) -> R<Value> {
     let a = args
         .iter()
         .map(|v| ArgVal {
@@ -68,12 +69,12 @@ pub fn call(it: &mut Interp, f: &Value, args: &[Value], fs: Span, site: Span) ->
     it.call_value(f.clone(), a, site, fs)
 }
 
-fn list(it: &Interp, v: Vec<Value>, span: Span) -> R<Value> {
+fn list(it: &dyn Host, v: Vec<Value>, span: Span) -> R<Value> {
     it.new_list(v.len(), span)?;
     Ok(Value::List(Rc::new(v)))
 }
 
-fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn len(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (v, sp) = p.req("list")?;
     Ok(Value::Int(match v {
@@ -87,7 +88,7 @@ fn len(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// `sum(list)`: the elements added with `+`, so numbers, angles, vectors and colours all sum
 /// (the first element starts the sum; `sum([])` is `0`).
-fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn sum(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let mut iter = l.iter();
@@ -102,7 +103,7 @@ fn sum(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `flatten(list)`: the elements of the inner lists in order (one level; other elements stay).
-fn flatten(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn flatten(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let mut out = Vec::new();
@@ -116,7 +117,7 @@ fn flatten(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `concat(a, b, ...)`: the lists one after another.
-fn concat(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn concat(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut out = Vec::new();
     for x in a {
         let Some(l) = items(&x.value) else {
@@ -128,14 +129,14 @@ fn concat(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     list(it, out, s.span)
 }
 
-fn reverse(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn reverse(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     list(it, l.iter().rev().cloned().collect(), sp)
 }
 
 /// `zip(a, b)`: pairs `[a[i], b[i]]` up to the shorter length.
-fn zip(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn zip(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["a", "b"], a)?;
     let (x, sp) = list_arg(it, &mut p, "a")?;
     let (y, _) = list_arg(it, &mut p, "b")?;
@@ -148,7 +149,7 @@ fn zip(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `enumerate(list)`: pairs `[i, list[i]]`.
-fn enumerate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn enumerate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list"], a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let pairs = l
@@ -160,7 +161,7 @@ fn enumerate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `any` and `all`: over `Bool`s, or over what a predicate `f` says of each element.
-fn any_all(it: &mut Interp, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Value> {
+fn any_all(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Value> {
     let mut p = Params::new(s, &["list", "f"], a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let f = match p.get("f") {
@@ -180,17 +181,17 @@ fn any_all(it: &mut Interp, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Value>
     Ok(Value::Bool(!want))
 }
 
-fn any(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn any(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     any_all(it, s, a, true)
 }
 
-fn all(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn all(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     any_all(it, s, a, false)
 }
 
 /// `reduce(list, init, f)`: `f(f(f(init, l[0]), l[1]), ...)`, the accumulation a loop with a
 /// mutable variable would do.
-fn reduce(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn reduce(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["list", "init", "f"], a)?;
     let (l, _) = list_arg(it, &mut p, "list")?;
     let (mut acc, _) = p.req("init")?;
@@ -204,7 +205,7 @@ fn reduce(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// `iterate(start, next, while)`: the list `start, next(start), next(next(start)), ...` for as
 /// long as `while` holds for the element: a `while` loop as a value. Every step counts against
 /// the loop budget.
-fn iterate(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn iterate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["start", "next", "while"], a)?;
     let (mut x, _) = p.req("start")?;
     let (next, ns) = fn_arg(it, &mut p, "next")?;

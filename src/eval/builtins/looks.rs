@@ -4,11 +4,12 @@ use std::rc::Rc;
 
 use glam::DVec3;
 
-use super::{BuiltinFn, Params, check, positive, unit_interval};
 use crate::diag::Diagnostic;
-use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::args::{ArgVal, CallSite};
+use crate::eval::args::{Params, check, positive, unit_interval};
 use crate::eval::error::{R, error, suggest};
-use crate::eval::interp::Interp;
+use crate::eval::host::BuiltinFn;
+use crate::eval::host::Host;
 use crate::eval::types;
 use crate::eval::value::{Mat, Tex, Value};
 use crate::ir;
@@ -26,7 +27,7 @@ pub const FNS: &[(&str, BuiltinFn)] = &[
     ("image", image),
 ];
 
-fn channels(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<[f64; 3]> {
+fn channels(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<[f64; 3]> {
     if let [one] = a.as_slice()
         && let Some(g) = one.value.as_f64()
     {
@@ -43,18 +44,18 @@ fn channels(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<[f64; 3]> {
     Ok(out)
 }
 
-fn rgb(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn rgb(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Color(channels(it, s, a)?.into()))
 }
 
-fn srgb(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn srgb(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let c = channels(it, s, a)?;
     Ok(Value::Color(c.map(srgb_to_linear).into()))
 }
 
 /// `hsv(hue: Angle, s, v)`: hue is an angle (0deg red, 120deg green), s and v in [0, 1]; the
 /// result is the sRGB-encoded colour converted to linear.
-fn hsv(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn hsv(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["hue", "s", "v"], a)?;
     let (hv, hs) = p.req("hue")?;
     if let Some(x) = hv.as_f64() {
@@ -116,7 +117,7 @@ pub const MAT_FIELDS: &[&str] = &[
 
 /// Sets one material field with type and range checks (shared by `material` and `with`).
 pub fn set_mat_field(
-    it: &Interp,
+    it: &dyn Host,
     m: &mut Mat,
     name: crate::syntax::ast::Name,
     v: &Value,
@@ -208,7 +209,7 @@ pub fn set_mat_field(
 }
 
 /// Energy warnings after a material is complete.
-pub fn mat_warnings(it: &mut Interp, m: &Mat, span: Span) {
+pub fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
     if m.m.kd + m.m.ks > 1.0 + 1e-9 {
         it.warn(
             Diagnostic::warning("rtc::material::energy", span, "`kd + ks` is greater than 1")
@@ -260,7 +261,7 @@ pub fn mat_warnings(it: &mut Interp, m: &Mat, span: Span) {
     }
 }
 
-fn material(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, MAT_FIELDS, a)?;
     let mut m = Mat {
         m: ir::Material {
@@ -284,7 +285,7 @@ fn material(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Material(Rc::new(m)))
 }
 
-fn pattern(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3, f64)> {
+fn pattern(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3, f64)> {
     let mut p = Params::new(s, &["size", "a", "b"], a)?;
     let (size, ss) = p.num_or(it, "size", 1.0)?;
     positive("size", size, ss)?;
@@ -293,7 +294,7 @@ fn pattern(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3, f64)> {
     Ok((ca, cb, size))
 }
 
-fn checker(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn checker(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Checker { a, b, size },
@@ -301,7 +302,7 @@ fn checker(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn stripes(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn stripes(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (a, b, size) = pattern(it, s, a)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Stripes { a, b, size },
@@ -309,7 +310,7 @@ fn stripes(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn image(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["path", "mapping"], a)?;
     let (pv, ps) = p.req("path")?;
     let rel = types::string(it, &pv, ps)?;

@@ -5,11 +5,12 @@ use std::rc::Rc;
 
 use glam::DVec3;
 
-use super::{BuiltinFn, Params};
 use crate::diag::{Diagnostic, Severity};
-use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::args::Params;
+use crate::eval::args::{ArgVal, CallSite};
 use crate::eval::error::{R, error};
-use crate::eval::interp::Interp;
+use crate::eval::host::BuiltinFn;
+use crate::eval::host::Host;
 use crate::eval::types;
 use crate::eval::value::Value;
 
@@ -55,24 +56,24 @@ pub fn constants() -> Vec<(&'static str, Value)> {
     ]
 }
 
-fn one(it: &Interp, site: CallSite, args: Vec<ArgVal>) -> R<(f64, crate::source::Span)> {
+fn one(it: &dyn Host, site: CallSite, args: Vec<ArgVal>) -> R<(f64, crate::source::Span)> {
     let mut p = Params::new(site, &["x"], args)?;
     p.num(it, "x")
 }
 
-fn one_angle(it: &Interp, site: CallSite, args: Vec<ArgVal>) -> R<f64> {
+fn one_angle(it: &dyn Host, site: CallSite, args: Vec<ArgVal>) -> R<f64> {
     let mut p = Params::new(site, &["angle"], args)?;
     let (v, s) = p.req("angle")?;
     types::angle(it, &v, s)
 }
 
-fn sin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn sin(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(libm::sin(one_angle(it, s, a)?)))
 }
-fn cos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn cos(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(libm::cos(one_angle(it, s, a)?)))
 }
-fn tan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn tan(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(libm::tan(one_angle(it, s, a)?)))
 }
 
@@ -111,32 +112,32 @@ fn finite(s: CallSite, x: f64, v: f64) -> R<Value> {
     .into())
 }
 
-fn unit_arg(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<f64> {
+fn unit_arg(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<f64> {
     let (x, sp) = one(it, s, a)?;
     domain(s, (-1.0..=1.0).contains(&x), "in [-1, 1]", x, sp)?;
     Ok(x)
 }
-fn asin(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn asin(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Angle(libm::asin(unit_arg(it, s, a)?)))
 }
-fn acos(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn acos(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Angle(libm::acos(unit_arg(it, s, a)?)))
 }
-fn atan(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn atan(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Angle(libm::atan(one(it, s, a)?.0)))
 }
-fn atan2(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn atan2(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["y", "x"], a)?;
     let (y, _) = p.num(it, "y")?;
     let (x, _) = p.num(it, "x")?;
     Ok(Value::Angle(libm::atan2(y, x)))
 }
-fn sqrt(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn sqrt(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     domain(s, x >= 0.0, ">= 0", x, sp)?;
     Ok(Value::Float(x.sqrt()))
 }
-fn abs(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn abs(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["x"], a)?;
     let (v, sp) = p.req("x")?;
     Ok(match v {
@@ -158,28 +159,28 @@ fn to_int(x: f64, sp: crate::source::Span) -> R<Value> {
     }
     Ok(Value::Int(x as i64))
 }
-fn floor(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn floor(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     to_int(x.floor(), sp)
 }
-fn ceil(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn ceil(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     to_int(x.ceil(), sp)
 }
-fn round(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn round(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     to_int(x.round(), sp)
 }
-fn exp(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn exp(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let x = one(it, s, a)?.0;
     finite(s, x, libm::exp(x))
 }
-fn ln(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn ln(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     domain(s, x > 0.0, "> 0", x, sp)?;
     Ok(Value::Float(libm::log(x)))
 }
-fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn pow(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["base", "exponent"], a)?;
     let (b, _) = p.num(it, "base")?;
     let (e, sp) = p.num(it, "exponent")?;
@@ -195,7 +196,7 @@ fn pow(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(v))
 }
 
-fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value> {
+fn min_max(it: &dyn Host, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value> {
     // `max(xs)` of an empty list: say so, at the list.
     if let [one] = a.as_slice()
         && super::lists::items(&one.value).is_some_and(|l| l.is_empty())
@@ -250,34 +251,34 @@ fn min_max(it: &Interp, s: CallSite, a: Vec<ArgVal>, want_min: bool) -> R<Value>
         .into()
     })
 }
-fn min(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn min(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     min_max(it, s, a, true)
 }
-fn max(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn max(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     min_max(it, s, a, false)
 }
 
-fn two_vecs(it: &Interp, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3)> {
+fn two_vecs(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3)> {
     let mut p = Params::new(s, &["a", "b"], a)?;
     Ok((p.vec3(it, "a")?.0, p.vec3(it, "b")?.0))
 }
-fn dot(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn dot(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, y) = two_vecs(it, s, a)?;
     Ok(Value::Float(x.dot(y)))
 }
-fn cross(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn cross(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, y) = two_vecs(it, s, a)?;
     Ok(Value::Vec3(x.cross(y)))
 }
-fn distance(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn distance(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, y) = two_vecs(it, s, a)?;
     Ok(Value::Float(x.distance_to(y)))
 }
-fn length(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn length(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["v"], a)?;
     Ok(Value::Float(p.vec3(it, "v")?.0.norm()))
 }
-fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn normalize(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["v"], a)?;
     let (v, sp) = p.vec3(it, "v")?;
     if v.length_squared() == 0.0 || !v.is_finite() {
@@ -290,14 +291,14 @@ fn normalize(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }
     Ok(Value::Vec3(v.unit()))
 }
-fn float(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn float(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Float(one(it, s, a)?.0))
 }
-fn int(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn int(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (x, sp) = one(it, s, a)?;
     to_int(x.trunc(), sp)
 }
-fn str_(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn str_(_: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["value"], a)?;
     let (v, _) = p.req("value")?;
     Ok(match v {
@@ -306,9 +307,9 @@ fn str_(_: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })
 }
 
-fn print(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn print(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let text: Vec<String> = a.iter().map(|x| x.value.show()).collect();
-    it.diags.push(Diagnostic::new(
+    it.report(Diagnostic::new(
         Severity::Note,
         "rtc::print",
         Some(s.span),
@@ -317,7 +318,7 @@ fn print(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Unit)
 }
 
-fn assert(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn assert(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["condition", "message"], a)?;
     let (c, sp) = p.req("condition")?;
     let ok = types::boolean(it, &c, sp)?;

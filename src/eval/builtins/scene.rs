@@ -5,10 +5,11 @@ use std::rc::Rc;
 
 use glam::DVec3;
 
-use super::{BuiltinFn, Params, check, positive, unit_interval};
-use crate::eval::call::{ArgVal, CallSite};
+use crate::eval::args::{ArgVal, CallSite};
+use crate::eval::args::{Params, check, positive, unit_interval};
 use crate::eval::error::{R, error};
-use crate::eval::interp::Interp;
+use crate::eval::host::BuiltinFn;
+use crate::eval::host::Host;
 use crate::eval::types;
 use crate::eval::value::{RenderVal, Value};
 use crate::ir;
@@ -50,7 +51,7 @@ pub fn constants() -> Vec<(&'static str, Value)> {
     .collect()
 }
 
-fn int_in(it: &Interp, v: &Value, sp: Span, name: &str, lo: i64, hi: i64) -> R<i64> {
+fn int_in(it: &dyn Host, v: &Value, sp: Span, name: &str, lo: i64, hi: i64) -> R<i64> {
     let i = types::int(it, v, sp)?;
     check(
         i >= lo && i <= hi,
@@ -62,7 +63,7 @@ fn int_in(it: &Interp, v: &Value, sp: Span, name: &str, lo: i64, hi: i64) -> R<i
     Ok(i)
 }
 
-fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(
         s,
         &[
@@ -102,7 +103,7 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         None => (40f64.to_radians(), s.span),
     };
     let shown = format!("{}deg", crate::eval::value::fmt_f(fov.to_degrees()));
-    super::check_shown(
+    crate::eval::args::check_shown(
         fov > 0.0 && fov < std::f64::consts::PI,
         "fov",
         "in (0deg, 180deg)",
@@ -178,11 +179,11 @@ fn camera(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn light_color(it: &Interp, p: &mut Params) -> R<DVec3> {
+fn light_color(it: &dyn Host, p: &mut Params) -> R<DVec3> {
     p.color_or(it, "color", DVec3::ONE)
 }
 
-fn point_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn point_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["position", "color"], a)?;
     let (position, _) = p.vec3(it, "position")?;
     let color = light_color(it, &mut p)?;
@@ -193,7 +194,7 @@ fn point_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn area_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn area_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["corner", "u", "v", "samples", "color"], a)?;
     let (corner, _) = p.vec3(it, "corner")?;
     let (u, _) = p.vec3(it, "u")?;
@@ -263,7 +264,7 @@ fn area_light(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn gooch(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["b", "y", "alpha", "beta"], a)?;
     let d = ir::GoochParams::default();
     let mut g = d;
@@ -283,7 +284,7 @@ fn gooch(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// `flare { ghosts:, dispersal:, halo:, streaks:, threshold:, intensity: }`: lens flare
 /// parameters, each defaulted and range-checked ([`ir::Flare::RANGES`]).
-fn flare(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn flare(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     const NAMES: [&str; 6] = [
         "ghosts",
         "dispersal",
@@ -322,7 +323,7 @@ fn flare(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Flare(f))
 }
 
-fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn adaptive(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["min", "max", "threshold"], a)?;
     let min = match p.get("min") {
         Some((v, sp)) => int_in(it, &v, sp, "min", 1, MAX_PIXEL_SAMPLES_PER_AXIS.into())?,
@@ -341,7 +342,7 @@ fn adaptive(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }))
 }
 
-fn depth(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn depth(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &["near", "far"], a)?;
     let (near, ns) = p.num(it, "near")?;
     let (far, fs) = p.num(it, "far")?;
@@ -359,7 +360,7 @@ fn depth(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     })))
 }
 
-fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let names = &[
         "shading",
         "mode",
@@ -497,7 +498,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }
     if let Some((v, sp)) = p.get("output") {
         let rel = types::string(it, &v, sp)?;
-        st.output = Some(crate::eval::modules::resolve(&it.scope.dir, &rel));
+        st.output = Some(crate::eval::modules::resolve(it.dir(), &rel));
         st.output_span = Some(sp);
     }
     let mut rv = RenderVal {
@@ -515,7 +516,7 @@ fn render(it: &mut Interp, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 fn enum_mismatch(
-    it: &Interp,
+    it: &dyn Host,
     want: &str,
     v: &Value,
     sp: Span,
