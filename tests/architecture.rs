@@ -345,18 +345,9 @@ const WALLS: &[(&str, &[&str])] = &[
     ("eval::methods", EVAL_CORE),
 ];
 
-/// The interpreter proper: its state and the evaluation of statements, calls and modules.
-const EVAL_CORE: &[&str] = &[
-    "eval::interp",
-    "eval::host_impl",
-    "eval::blocks",
-    "eval::call",
-    "eval::program",
-    "eval::param_stmt",
-    "eval::split",
-    "eval::library",
-    "eval::meters",
-];
+/// The interpreter proper (its state and the evaluation of statements, calls and modules, all
+/// under `eval/interp/`) and the library reader that runs it.
+const EVAL_CORE: &[&str] = &["eval::interp", "eval::library"];
 
 /// The sub-rooms of geometry.
 const GEOMETRY_ROOMS: &[&str] = &[

@@ -80,10 +80,9 @@ fn evaluate(path: &Path, text: &str, sources: &mut SourceMap, options: &EvalOpti
         scope: scope.clone(),
     };
     let mut it = interp::Interp::new(options, sources, scope);
-    it.loading
-        .push((path.to_path_buf(), crate::source::Span::default()));
+    it.begin(path.to_path_buf(), Vec::new(), super::parts::Role::Off);
     it.run_module(&ast, None);
-    out.diagnostics.items.extend(std::mem::take(&mut it.diags));
+    out.diagnostics.items.extend(it.take_findings());
     out.exports = module
         .export_names()
         .into_iter()

@@ -2,34 +2,27 @@
 
 pub(crate) mod args;
 pub(crate) mod assets;
-pub(crate) mod blocks;
 pub(crate) mod bounds;
 pub(crate) mod budgets;
 pub(crate) mod builtins;
-pub(crate) mod call;
 pub(crate) mod error;
 pub(crate) mod fxhash;
 pub(crate) mod host;
-pub(crate) mod host_impl;
 pub(crate) mod interp;
 pub mod library;
 pub(crate) mod lower;
 pub(crate) mod members;
-pub(crate) mod meters;
 pub(crate) mod methods;
 pub mod modules;
 pub(crate) mod motion;
 pub(crate) mod operands;
 pub(crate) mod ops;
 pub(crate) mod options;
-pub(crate) mod param_stmt;
 pub(crate) mod params;
 pub(crate) mod parts;
-pub(crate) mod program;
 pub(crate) mod provenance;
 pub mod rng;
 pub(crate) mod shapes;
-pub mod split;
 pub(crate) mod transform;
 pub(crate) mod types;
 pub(crate) mod value;
@@ -138,18 +131,15 @@ fn load_source_here(
     let Some((mut it, lowerer)) = run_root(path, text, sources, options, None, &mut loaded) else {
         return loaded;
     };
-    let unknown = it.unknown_overrides();
-    it.diags.extend(unknown);
-    let had_errors = it.diags.iter().any(Diagnostic::is_error);
-    loaded
-        .diagnostics
-        .items
-        .extend(std::mem::take(&mut it.diags));
+    let mut findings = it.take_findings();
+    findings.extend(it.unknown_overrides());
+    let had_errors = findings.iter().any(Diagnostic::is_error);
+    loaded.diagnostics.items.extend(findings);
     if had_errors {
         return loaded;
     }
     let mut lowerer = lowerer;
-    if let (Some(b), Some(origins)) = (it.prov.take(), lowerer.origins.take()) {
+    if let (Some(b), Some(origins)) = (it.take_provenance(), lowerer.origins.take()) {
         loaded.provenance = Some((*b).finish(origins));
     }
     // What the evaluation charged goes on to the preparation, which charges the textures and
@@ -190,15 +180,13 @@ fn run_root<'a>(
         return None;
     }
     let mut it = interp::Interp::new(options, sources, scope);
-    it.split = match helper {
+    let role = match helper {
         Some(h) => parts::Role::Helper(Box::new(h)),
         None => parts::Role::main(options, file),
     };
-    it.overrides = overrides;
     // Modules are told apart by their canonical file (symlinked folders name one file by many
     // paths), so the scene itself is its canonical path too.
-    it.loading
-        .push((modules::identity(path), crate::source::Span::default()));
+    it.begin(modules::identity(path), overrides, role);
     let mut lowerer = lower::Lowerer::default();
     if options.provenance {
         lowerer.origins = Some(Vec::new());
@@ -217,5 +205,5 @@ fn replay(
 ) -> Option<parts::Part> {
     let mut loaded = Loaded::default();
     let (mut it, _) = run_root(path, text, sources, options, Some(helper), &mut loaded)?;
-    it.split.take_part()
+    it.take_part()
 }

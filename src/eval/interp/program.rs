@@ -8,11 +8,11 @@ use crate::diag::Diagnostic;
 
 use crate::syntax::ast::{ExprKind, File, Import, ImportSource, Name, Stmt};
 
-use super::error::{EvalError, R, error, suggest};
-use super::interp::Interp;
-use super::lower::{Lowerer, emittable};
-use super::modules::{Binding, Module, STDLIB, Scope, identity, resolve, stdlib};
-use super::value::{Closure, Value};
+use super::super::error::{EvalError, R, error, suggest};
+use super::super::lower::{Lowerer, emittable};
+use super::super::modules::{Binding, Module, STDLIB, Scope, identity, resolve, stdlib};
+use super::super::value::{Closure, Value};
+use super::Interp;
 
 impl Interp<'_> {
     /// Records a statement's error (poisoned errors were reported already).
@@ -85,10 +85,10 @@ impl Interp<'_> {
                     let value = match (l.param, scene.is_some()) {
                         (false, _) => self.eval(&l.value),
                         (true, true) => self.param_value(l),
-                        (true, false) => Err(super::params::misplaced(l).into()),
+                        (true, false) => Err(super::super::params::misplaced(l).into()),
                     };
                     let r = value.and_then(|v| match &l.ty {
-                        Some(t) => super::types::check_ann(self, t, v, l.value.span),
+                        Some(t) => super::super::types::check_ann(self, t, v, l.value.span),
                         None => Ok(v),
                     });
                     match r {
@@ -126,7 +126,7 @@ impl Interp<'_> {
                         None if emittable(&v) => {
                             let name = self.scope.name.clone();
                             self.diags.push(
-                                error("rtc::module::emits", e.span, format!("the library module `{name}` emits {}", super::value::a_type(v.type_name())))
+                                error("rtc::module::emits", e.span, format!("the library module `{name}` emits {}", super::super::value::a_type(v.type_name())))
                                     .with_label("imported files may not add to the scene")
                                     .with_help("wrap it in a function, e.g. `pub fn make() { ... }`, and call that from the scene"),
                             );
@@ -164,7 +164,12 @@ impl Interp<'_> {
             return Ok(());
         }
         for n in &im.names {
-            match super::members::member(self, Value::Module(module.clone()), *n, im.source_span) {
+            match super::super::members::member(
+                self,
+                Value::Module(module.clone()),
+                *n,
+                im.source_span,
+            ) {
                 Ok(v) => self.bind_module(*n, v, false, false),
                 Err(e) => {
                     self.record_error(e);

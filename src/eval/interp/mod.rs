@@ -1,5 +1,13 @@
 //! The tree-walking evaluator: its state, names and expressions (blocks and loops are in `blocks.rs`).
 
+mod blocks;
+mod call;
+mod host_impl;
+mod meters;
+mod param_stmt;
+mod program;
+mod split;
+
 use std::collections::{HashMap, HashSet};
 use std::path::PathBuf;
 use std::rc::Rc;
@@ -20,43 +28,55 @@ use super::value::{Closure, Record, Value};
 const PURE_NODES: u32 = 16;
 
 /// Evaluation state for one run (the scene file and everything it imports).
+///
+/// Its fields are private to `eval/interp/` (this file and the files that extend it with
+/// statements, calls, modules, meters and loop splitting); the rest of the evaluator asks
+/// through methods, and built-ins through [`Host`](super::host::Host).
+///
+/// **The replay rule.** A long top-level loop may be evaluated in parts on other threads, each
+/// replaying the file up to the loop (`split.rs`). A replay must reach the loop in the state
+/// the main thread reached it in, so every field here that an iteration can change and that
+/// is not scoped to the iteration (`made`, `loop_iters`, `memory`, `diags`, and what the
+/// lowerer emitted) is recorded in [`Mark`](super::parts::Mark) and compared; a new field of
+/// that kind must be added to `Mark` and to the merge of a helper's `Part`, or splitting
+/// would change what a scene makes.
 pub struct Interp<'a> {
     /// Budgets.
-    pub(super) opts: &'a EvalOptions,
+    opts: &'a EvalOptions,
     /// Every file read so far.
-    pub(super) sources: &'a mut SourceMap,
+    sources: &'a mut SourceMap,
     /// Findings recorded so far (errors recovered at statement boundaries, warnings, prints).
-    pub(super) diags: Vec<Diagnostic>,
-    pub(super) warned: HashSet<(&'static str, Span)>,
+    diags: Vec<Diagnostic>,
+    warned: HashSet<(&'static str, Span)>,
     /// Local bindings of all active frames; the current frame starts at `frame_base`.
-    pub(super) locals: Vec<(Sym, Value)>,
+    locals: Vec<(Sym, Value)>,
     /// First local of the current function frame.
-    pub(super) frame_base: usize,
+    frame_base: usize,
     /// The module whose items are visible.
-    pub(super) scope: Rc<Scope>,
+    scope: Rc<Scope>,
     /// Loop iterations so far (budget).
-    pub(super) loop_iters: u64,
+    loop_iters: u64,
     /// Bytes of strings and lists made so far, charged to the memory budget (`budgets.rs`).
-    pub(super) memory: std::cell::Cell<u64>,
+    memory: std::cell::Cell<u64>,
     /// Nested user calls (budget).
-    pub(super) depth: u32,
+    depth: u32,
     /// Evaluated modules by key (`std.x` or resolved path).
-    pub(super) modules: HashMap<PathBuf, Rc<Module>>,
+    modules: HashMap<PathBuf, Rc<Module>>,
     /// Modules being evaluated, outermost first, with the import that started each (cycles).
-    pub(super) loading: Vec<(PathBuf, Span)>,
+    loading: Vec<(PathBuf, Span)>,
     /// The command line's `--set` values.
-    pub(super) overrides: Vec<super::params::Override>,
+    overrides: Vec<super::params::Override>,
     /// The `param` names the scene file declared so far.
-    pub(super) params: Vec<Sym>,
+    params: Vec<Sym>,
     /// The variables of the `for` loops running over a `Vec3` (their values are Floats), for
     /// the help of a `Float` index.
-    pub(super) vec3_loops: Vec<Sym>,
+    vec3_loops: Vec<Sym>,
     /// Where objects come from, when asked (`EvalOptions::provenance`).
-    pub(super) prov: Option<Box<super::provenance::Builder>>,
+    prov: Option<Box<super::provenance::Builder>>,
     /// Material and texture values made so far ([`Interp::next_made`]).
-    pub(super) made: u64,
+    made: u64,
     /// This thread's part in evaluating long loops on several threads.
-    pub(super) split: super::parts::Role,
+    split: super::parts::Role,
 }
 
 impl Drop for Interp<'_> {
@@ -95,6 +115,34 @@ impl<'a> Interp<'a> {
             made: 0,
             split: super::parts::Role::Off,
         }
+    }
+
+    /// Starts evaluating the file `root` (its canonical path: the first module being loaded)
+    /// with the `--set` values `overrides` and this thread's part in splitting loops.
+    pub(in crate::eval) fn begin(
+        &mut self,
+        root: PathBuf,
+        overrides: Vec<super::params::Override>,
+        split: super::parts::Role,
+    ) {
+        self.loading.push((root, Span::default()));
+        self.overrides = overrides;
+        self.split = split;
+    }
+
+    /// The findings so far, taken out (evaluation is over).
+    pub(in crate::eval) fn take_findings(&mut self) -> Vec<Diagnostic> {
+        std::mem::take(&mut self.diags)
+    }
+
+    /// The provenance recorded, taken out (evaluation is over).
+    pub(in crate::eval) fn take_provenance(&mut self) -> Option<Box<super::provenance::Builder>> {
+        self.prov.take()
+    }
+
+    /// A helper's part of a split loop, once evaluated.
+    pub(in crate::eval) fn take_part(&mut self) -> Option<super::parts::Part> {
+        self.split.take_part()
     }
 
     /// Numbers a new material or texture value: values are told apart by these numbers, which
@@ -244,7 +292,7 @@ impl Interp<'_> {
     /// [`Interp::eval`] with the leaves (numbers, locals) taken here, without a call: the
     /// operands of arithmetic, the elements of `[x, y, z]` and arguments are mostly leaves.
     #[inline(always)]
-    pub(super) fn operand(&mut self, e: &Expr) -> R<Value> {
+    pub(in crate::eval) fn operand(&mut self, e: &Expr) -> R<Value> {
         match &e.kind {
             ExprKind::Int(i) => Ok(Value::Int(*i)),
             ExprKind::Float(f) => Ok(Value::Float(*f)),
@@ -332,7 +380,7 @@ impl Interp<'_> {
     }
 
     /// `for i in 0..5` without its body: what traces and budget errors point at.
-    pub(super) fn header_span(&self, whole: Span, body: Span) -> Span {
+    pub(in crate::eval) fn header_span(&self, whole: Span, body: Span) -> Span {
         let text = self.sources.get(whole.file).text.as_bytes();
         let mut end = body.start.max(whole.start);
         while end > whole.start

@@ -4,9 +4,9 @@
 use crate::diag::{Diagnostic, Severity};
 use crate::syntax::ast::Let;
 
-use super::error::{R, error, suggest};
-use super::interp::Interp;
-use super::value::Value;
+use super::super::error::{R, error, suggest};
+use super::super::value::Value;
+use super::Interp;
 
 impl Interp<'_> {
     /// The value of a top-level `param` statement: its default, or the `--set` value of the same
@@ -50,15 +50,18 @@ impl Interp<'_> {
                 format!(
                     "`--set {}` gives {}, but the parameter is {}",
                     l.name.sym,
-                    super::value::a_type(v.type_name()),
-                    super::value::a_type(d.type_name())
+                    super::super::value::a_type(v.type_name()),
+                    super::super::value::a_type(d.type_name())
                 ),
             )
-            .with_label(format!("{} here", super::value::a_type(v.type_name())))
+            .with_label(format!(
+                "{} here",
+                super::super::value::a_type(v.type_name())
+            ))
             .with_secondary(l.value.span, "the default fixes the type")
             .with_help(format!(
                 "give {} value, like the default `{}`",
-                super::value::a_type(d.type_name()),
+                super::super::value::a_type(d.type_name()),
                 self.snippet(l.value.span)
             ))
             .into()),
@@ -66,7 +69,7 @@ impl Interp<'_> {
     }
 
     /// Errors for `--set` names that no top-level `param` declares.
-    pub(super) fn unknown_overrides(&self) -> Vec<Diagnostic> {
+    pub(in crate::eval) fn unknown_overrides(&self) -> Vec<Diagnostic> {
         let declared: Vec<&str> = self.params.iter().map(|s| s.as_str()).collect();
         self.overrides
             .iter()

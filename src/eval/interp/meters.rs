@@ -5,10 +5,10 @@
 use crate::ir::limits::Memory;
 use crate::source::Span;
 
-use super::budgets;
-use super::error::R;
-use super::interp::Interp;
-use super::value::VALUE_BYTES;
+use super::super::budgets;
+use super::super::error::R;
+use super::super::value::VALUE_BYTES;
+use super::Interp;
 
 impl Interp<'_> {
     /// Checks a string length (bytes) against the budget.

@@ -6,12 +6,12 @@ use std::path::Path;
 use crate::diag::Diagnostic;
 use crate::source::Span;
 
-use super::args::ArgVal;
-use super::budgets::Step;
-use super::error::R;
-use super::host::Host;
-use super::interp::Interp;
-use super::value::Value;
+use super::super::args::ArgVal;
+use super::super::budgets::Step;
+use super::super::error::R;
+use super::super::host::Host;
+use super::super::value::Value;
+use super::Interp;
 
 impl Host for Interp<'_> {
     fn warn(&mut self, d: Diagnostic) {

@@ -5,10 +5,10 @@ use std::rc::Rc;
 use crate::source::Span;
 use crate::syntax::ast::{Arg, Expr, ExprKind};
 
-use super::args::{ArgVal, CallSite, args_vec};
-use super::error::{EvalError, R, error, suggest};
-use super::interp::Interp;
-use super::value::{Closure, Value};
+use super::super::args::{ArgVal, CallSite, args_vec};
+use super::super::error::{EvalError, R, error, suggest};
+use super::super::value::{Closure, Value};
+use super::Interp;
 
 impl Interp<'_> {
     fn eval_args(&mut self, args: &[Arg]) -> R<Vec<ArgVal>> {
@@ -28,15 +28,18 @@ impl Interp<'_> {
         if let ExprKind::Member(obj, name) = &callee.kind {
             let recv = self.eval(obj)?;
             let field = match &recv {
-                Value::Module(_) | Value::Record(_) => {
-                    Some(super::members::member(self, recv.clone(), *name, obj.span)?)
-                }
+                Value::Module(_) | Value::Record(_) => Some(super::super::members::member(
+                    self,
+                    recv.clone(),
+                    *name,
+                    obj.span,
+                )?),
                 _ => None,
             };
             let argv = self.eval_args(args)?;
             return match field {
                 Some(f) => self.call_value(f, argv, span, callee.span),
-                None => super::methods::call_method(self, recv, *name, argv, span),
+                None => super::super::methods::call_method(self, recv, *name, argv, span),
             };
         }
         let f = self.eval(callee)?;
@@ -55,7 +58,7 @@ impl Interp<'_> {
         match f {
             Value::Fn(c) => self.call_closure(&c, args, span),
             Value::Builtin(b) => {
-                let f = super::builtins::function(b.id);
+                let f = super::super::builtins::function(b.id);
                 let mut v = f(self, CallSite { span, name: b.name }, args)?;
                 if let (Some(p), Value::Object(o)) = (&mut self.prov, &mut v) {
                     // An object a built-in just made (`sphere`, `group`, ...) is owned by the
@@ -71,7 +74,7 @@ impl Interp<'_> {
                 callee_span,
                 format!(
                     "{} is not a function",
-                    super::value::a_type(other.type_name())
+                    super::super::value::a_type(other.type_name())
                 ),
             )
             .with_label("called here")
@@ -94,7 +97,7 @@ impl Interp<'_> {
             .with_help("make sure the recursion reaches a base case")
             .into());
         }
-        self.step(span, super::budgets::Step::Call)?;
+        self.step(span, super::super::budgets::Step::Call)?;
         let mut slots: Vec<Option<(crate::syntax::intern::Sym, Value, Span)>> =
             vec![None; def.params.len()];
         let mut next_pos = 0;
@@ -216,7 +219,7 @@ impl Interp<'_> {
                 },
             };
             let v = match &p.ty {
-                Some(t) => super::types::check_ann(self, t, v, vspan)?,
+                Some(t) => super::super::types::check_ann(self, t, v, vspan)?,
                 None => v,
             };
             self.locals.push((p.name.sym, v));
@@ -230,7 +233,7 @@ impl Interp<'_> {
         };
         let v = self.block(&def.body).map_err(frame)?;
         match &def.ret {
-            Some(t) => super::types::check_ann(self, t, v, def.body.span).map_err(frame),
+            Some(t) => super::super::types::check_ann(self, t, v, def.body.span).map_err(frame),
             None => Ok(v),
         }
     }

@@ -32,12 +32,12 @@ use crate::diag::Diagnostic;
 use crate::source::{FileId, SourceMap, Span};
 use crate::syntax::ast::{Block, Expr, Generator};
 
-use super::error::{EvalError, R};
-use super::interp::Interp;
-use super::lower::Lowerer;
-use super::lower::Sink;
-use super::options::{EVAL_STACK_BYTES, EvalOptions};
-use super::parts::{Helper, Mark, Part, Role, ScenePart, cut};
+use super::super::error::{EvalError, R};
+use super::super::lower::Lowerer;
+use super::super::lower::Sink;
+use super::super::options::{EVAL_STACK_BYTES, EvalOptions};
+use super::super::parts::{Helper, Mark, Part, Role, ScenePart, cut};
+use super::Interp;
 
 impl Mark {
     fn of(it: &Interp, l: &Lowerer) -> Mark {
@@ -79,7 +79,7 @@ impl Job {
             warnings: Vec::new(),
             part: None,
         };
-        super::replay(
+        super::super::replay(
             &self.path,
             self.text.as_str().to_owned(),
             &mut sources,
@@ -108,7 +108,7 @@ impl Interp<'_> {
     fn loop_steps(
         &mut self,
         lp: &Loop,
-        it: &super::value::Value,
+        it: &super::super::value::Value,
         steps: Range<u64>,
         lowerer: &mut Lowerer,
     ) -> R<()> {
@@ -167,7 +167,7 @@ impl Interp<'_> {
         lp: &Loop,
         stmt: usize,
         file: FileId,
-        it: &super::value::Value,
+        it: &super::super::value::Value,
         start: &Mark,
         cuts: &[Range<u64>],
         lowerer: &mut Lowerer,

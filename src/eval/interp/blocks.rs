@@ -7,10 +7,10 @@ use crate::diag::Diagnostic;
 use crate::source::Span;
 use crate::syntax::ast::*;
 
-use super::error::{R, error};
-use super::interp::Interp;
-use super::lower::Sink;
-use super::value::{Closure, Value};
+use super::super::error::{R, error};
+use super::super::lower::Sink;
+use super::super::value::{Closure, Value};
+use super::Interp;
 
 impl Interp<'_> {
     /// Evaluates a block in a new scope; its value is its last expression (`Unit` if none).
@@ -28,11 +28,11 @@ impl Interp<'_> {
             match st {
                 Stmt::Let(l) => {
                     if l.param {
-                        return Err(super::params::misplaced(l).into());
+                        return Err(super::super::params::misplaced(l).into());
                     }
                     let v = self.eval(&l.value)?;
                     let v = match &l.ty {
-                        Some(t) => super::types::check_ann(self, t, v, l.value.span)?,
+                        Some(t) => super::super::types::check_ann(self, t, v, l.value.span)?,
                         None => v,
                     };
                     self.bind_local(l.name, v, mark)?;
@@ -61,7 +61,7 @@ impl Interp<'_> {
                         last = v;
                     } else if !matches!(v, Value::Unit) {
                         return Err(error("rtc::value::discarded", e.span, "this value is discarded")
-                            .with_label(format!("{} that goes nowhere", super::value::a_type(v.type_name())))
+                            .with_label(format!("{} that goes nowhere", super::super::value::a_type(v.type_name())))
                             .with_help("only the last expression of a block is its value; collect several values in a list `[a, b]`")
                             .into());
                     }
@@ -155,7 +155,7 @@ impl Interp<'_> {
                     g.iter.span,
                     format!(
                         "cannot loop over {}",
-                        super::value::a_type(other.type_name())
+                        super::super::value::a_type(other.type_name())
                     ),
                 )
                 .with_label("not a range or a list");
@@ -216,7 +216,7 @@ impl Interp<'_> {
                 Value::Vec3(v) => Value::Float(v.to_array()[i as usize]),
                 _ => return Ok(()),
             };
-            self.step(span, super::budgets::Step::Loop)?;
+            self.step(span, super::super::budgets::Step::Loop)?;
             self.locals.push((g.var.sym, v));
             let r = self.for_level(gens, level + 1, filter, body, span, out);
             self.locals.pop();
@@ -253,7 +253,9 @@ impl Interp<'_> {
             match self.eval(f)? {
                 Value::Bool(true) => {}
                 Value::Bool(false) => return Ok(()),
-                other => return Err(super::types::mismatch(self, "Bool", &other, f.span).into()),
+                other => {
+                    return Err(super::super::types::mismatch(self, "Bool", &other, f.span).into());
+                }
             }
         }
         let v = self.block(body)?;
@@ -263,7 +265,7 @@ impl Interp<'_> {
         match out {
             Sink::List(list) => {
                 self.check_list_len(list.len() + 1, span)?;
-                self.charge(super::value::VALUE_BYTES, span, "this loop's list")?;
+                self.charge(super::super::value::VALUE_BYTES, span, "this loop's list")?;
                 list.push(v);
             }
             Sink::Emit(lowerer, stmt) => lowerer.emit(&v, &self.object_budget(), *stmt)?,
@@ -279,7 +281,7 @@ impl Interp<'_> {
         &mut self,
         e: &Expr,
         stmt: usize,
-        lowerer: &mut super::lower::Lowerer,
+        lowerer: &mut super::super::lower::Lowerer,
     ) -> R<bool> {
         let ExprKind::For(gens, filter, body) = &e.kind else {
             return Ok(false);
@@ -296,7 +298,7 @@ impl Interp<'_> {
             self.emit_part(&lp, lowerer);
             return Ok(true);
         }
-        if matches!(self.split, super::parts::Role::Main(_)) {
+        if matches!(self.split, super::super::parts::Role::Main(_)) {
             self.emit_split_for(&lp, stmt, lowerer)?;
             return Ok(true);
         }
