@@ -10,6 +10,8 @@ use glam::DVec3;
 
 use crate::source::Span;
 
+mod call;
+mod camera;
 mod flare;
 pub mod limits;
 mod loaded;
@@ -18,6 +20,8 @@ mod placement;
 pub mod provenance;
 mod settings;
 
+pub use call::{Arg, ShapeCall};
+pub use camera::{Camera, Projection};
 pub use flare::Flare;
 pub use loaded::Loaded;
 pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
@@ -98,66 +102,6 @@ impl Scene {
         self.textures.push(t);
         TextureId((self.textures.len() - 1) as u32)
     }
-}
-
-/// How pixels map to rays.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Camera {
-    /// Eye point (ray origin).
-    pub eye: DVec3,
-    /// The point looked at; the course image plane passes through it.
-    pub center: DVec3,
-    /// Up direction (re-orthogonalised against the view direction by the renderer).
-    pub up: DVec3,
-    /// Image width in pixels.
-    pub width: u32,
-    /// Image height in pixels.
-    pub height: u32,
-    /// How the view is sized.
-    pub projection: Projection,
-    /// Thin-lens aperture radius in world units; 0 is a pinhole.
-    pub aperture: f64,
-    /// Distance from the eye to the plane in focus (used when `aperture > 0`).
-    pub focus_distance: f64,
-    /// When the film is exposed (`None`: an instant, no motion blur).
-    pub shutter: Option<Shutter>,
-    /// How the camera moves while the shutter is open (`None`: it stands still).
-    pub motion: Option<CameraMotion>,
-    /// Where it was defined.
-    pub span: Span,
-}
-
-impl Camera {
-    /// The same view with pixels `factor` times larger (a coarse preview): the image shrinks to
-    /// ⌈width/factor⌉ × ⌈height/factor⌉, and the course camera's pixel size `|up|` grows by
-    /// `factor` so the view keeps its extent (within one coarse pixel).
-    pub fn coarser(&self, factor: u32) -> Camera {
-        let factor = factor.max(1);
-        let up = match self.projection {
-            Projection::Course => self.up * f64::from(factor),
-            Projection::Perspective { .. } => self.up,
-        };
-        Camera {
-            width: self.width.div_ceil(factor),
-            height: self.height.div_ceil(factor),
-            up,
-            ..self.clone()
-        }
-    }
-}
-
-/// View sizing of a [`Camera`].
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Projection {
-    /// The course camera (COURSE.md §2.4): `|up|` is the size of one pixel at the plane through
-    /// `center`; pixel (x, y) with offset (sx, sy) looks through
-    /// `center + (x+sx−w/2)·right + ((h−1−y)+sy−h/2)·up'`.
-    Course,
-    /// A pinhole (or thin lens) with this vertical field of view, in radians.
-    Perspective {
-        /// Vertical field of view in radians, in (0, π).
-        fov_y: f64,
-    },
 }
 
 /// A light source with an RGB intensity.
@@ -424,6 +368,18 @@ pub enum Shape {
         /// Tube radius.
         minor_radius: f64,
     },
+    /// A quadric surface `A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J = 0`,
+    /// inside where the polynomial is negative (POV-Ray's `quadric`; usually unbounded).
+    Quadric {
+        /// `A, B, C`: the coefficients of `x², y², z²`.
+        squares: DVec3,
+        /// `D, E, F`: the coefficients of `xy, xz, yz`.
+        mixed: DVec3,
+        /// `G, H, I`: the coefficients of `x, y, z`.
+        linear: DVec3,
+        /// `J`: the constant.
+        constant: f64,
+    },
     /// Metaballs: the surface where the summed field equals `threshold`.
     Blob {
         /// Field sources.
@@ -464,10 +420,175 @@ impl Shape {
             Shape::Cylinder { .. } => "cylinder",
             Shape::Cone { .. } => "cone",
             Shape::Torus { .. } => "torus",
+            Shape::Quadric { .. } => "quadric",
             Shape::Blob { .. } => "blob",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }
+    }
+
+    /// The constructor call that makes this shape (parameters at their defaults left out), for
+    /// `rtc convert`; `None` for CSG, whose operands are objects the back end writes itself.
+    /// Kept beside the variants so a new shape is one arm here, not one in the back end.
+    pub fn call(&self) -> Option<ShapeCall> {
+        use Arg::{Bool, Direction, List, Number, Point, Record};
+        let (name, args): (&'static str, Vec<(&'static str, Arg)>) = match self {
+            Shape::Sphere { center, radius } => {
+                let mut a = Vec::new();
+                if *center != DVec3::ZERO {
+                    a.push(("center", Point(*center)));
+                }
+                a.push(("radius", Number(*radius)));
+                ("sphere", a)
+            }
+            Shape::Plane { point, normal } => (
+                "plane",
+                vec![("point", Point(*point)), ("normal", Direction(*normal))],
+            ),
+            Shape::Box { min, max } => ("box", vec![("min", Point(*min)), ("max", Point(*max))]),
+            Shape::Triangle {
+                vertices: [a, b, c],
+            } => (
+                "triangle",
+                vec![("a", Point(*a)), ("b", Point(*b)), ("c", Point(*c))],
+            ),
+            Shape::Quad { corner, u, v } => (
+                "quad",
+                vec![
+                    ("corner", Point(*corner)),
+                    ("u", Point(*u)),
+                    ("v", Point(*v)),
+                ],
+            ),
+            Shape::Polygon { points } => (
+                "polygon",
+                vec![("points", List(points.iter().map(|p| Point(*p)).collect()))],
+            ),
+            Shape::Disk {
+                center,
+                normal,
+                radius,
+            } => (
+                "disk",
+                vec![
+                    ("center", Point(*center)),
+                    ("normal", Direction(*normal)),
+                    ("radius", Number(*radius)),
+                ],
+            ),
+            Shape::Ring {
+                center,
+                normal,
+                radius,
+                inner,
+            } => (
+                "ring",
+                vec![
+                    ("center", Point(*center)),
+                    ("normal", Direction(*normal)),
+                    ("radius", Number(*radius)),
+                    ("inner", Number(*inner)),
+                ],
+            ),
+            Shape::Cylinder {
+                base,
+                top,
+                radius,
+                capped,
+            } => {
+                let mut a = vec![
+                    ("base", Point(*base)),
+                    ("top", Point(*top)),
+                    ("radius", Number(*radius)),
+                ];
+                if !*capped {
+                    a.push(("capped", Bool(false)));
+                }
+                ("cylinder", a)
+            }
+            Shape::Cone {
+                base,
+                top,
+                base_radius,
+                top_radius,
+                capped,
+            } => {
+                let mut a = vec![
+                    ("base", Point(*base)),
+                    ("top", Point(*top)),
+                    ("base_radius", Number(*base_radius)),
+                    ("top_radius", Number(*top_radius)),
+                ];
+                if !*capped {
+                    a.push(("capped", Bool(false)));
+                }
+                ("cone", a)
+            }
+            Shape::Torus {
+                center,
+                major_radius,
+                minor_radius,
+            } => (
+                "torus",
+                vec![
+                    ("center", Point(*center)),
+                    ("major_radius", Number(*major_radius)),
+                    ("minor_radius", Number(*minor_radius)),
+                ],
+            ),
+            Shape::Quadric {
+                squares,
+                mixed,
+                linear,
+                constant,
+            } => (
+                "quadric",
+                vec![
+                    ("squares", Point(*squares)),
+                    ("mixed", Point(*mixed)),
+                    ("linear", Point(*linear)),
+                    ("constant", Number(*constant)),
+                ],
+            ),
+            Shape::Blob {
+                components,
+                threshold,
+            } => {
+                let component = |c: &BlobComponent| {
+                    Record(vec![
+                        ("center", Point(c.center)),
+                        ("radius", Number(c.radius)),
+                        ("strength", Number(c.strength)),
+                    ])
+                };
+                (
+                    "blob",
+                    vec![
+                        (
+                            "components",
+                            List(components.iter().map(component).collect()),
+                        ),
+                        ("threshold", Number(*threshold)),
+                    ],
+                )
+            }
+            Shape::Mesh {
+                path,
+                smooth,
+                use_mtl,
+            } => {
+                let mut a = vec![("path", Arg::Path(path.clone()))];
+                if *smooth {
+                    a.push(("smooth", Bool(true)));
+                }
+                if *use_mtl {
+                    a.push(("use_mtl", Bool(true)));
+                }
+                ("mesh", a)
+            }
+            Shape::Csg { .. } => return None,
+        };
+        Some(ShapeCall { name, args })
     }
 }
 

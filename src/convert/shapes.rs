@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 
 use super::placement;
 use super::text::{color, number, string, unit_direction, vector};
-use crate::ir::{CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shape, Texture};
+use crate::ir::{Arg, CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shape, Texture};
 
 /// Longest line before an object's methods go on lines of their own.
 const LINE: usize = 100;
@@ -115,127 +115,20 @@ pub fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -
 }
 
 fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
-    let v = |p: DVec3| vector(p);
+    if let Some(call) = o.shape.call() {
+        let args: Vec<String> = call
+            .args
+            .iter()
+            .enumerate()
+            .map(|(k, (name, a))| match a {
+                // A mesh's path is its first parameter: written positionally.
+                Arg::Path(_) if k == 0 => argument(a, asset),
+                _ => format!("{name}: {}", argument(a, asset)),
+            })
+            .collect();
+        return format!("{}({})", call.name, args.join(", "));
+    }
     match &o.shape {
-        Shape::Sphere { center, radius } if *center == DVec3::ZERO => {
-            format!("sphere(radius: {})", number(*radius))
-        }
-        Shape::Sphere { center, radius } => {
-            format!(
-                "sphere(center: {}, radius: {})",
-                v(*center),
-                number(*radius)
-            )
-        }
-        Shape::Plane { point, normal } => {
-            format!(
-                "plane(point: {}, normal: {})",
-                v(*point),
-                unit_direction(*normal)
-            )
-        }
-        Shape::Box { min, max } => format!("box(min: {}, max: {})", v(*min), v(*max)),
-        Shape::Triangle {
-            vertices: [a, b, c],
-        } => {
-            format!("triangle(a: {}, b: {}, c: {})", v(*a), v(*b), v(*c))
-        }
-        Shape::Quad { corner, u, v: e } => {
-            format!("quad(corner: {}, u: {}, v: {})", v(*corner), v(*u), v(*e))
-        }
-        Shape::Polygon { points } => {
-            let pts: Vec<String> = points.iter().map(|p| v(*p)).collect();
-            format!("polygon(points: [{}])", pts.join(", "))
-        }
-        Shape::Disk {
-            center,
-            normal,
-            radius,
-        } => format!(
-            "disk(center: {}, normal: {}, radius: {})",
-            v(*center),
-            unit_direction(*normal),
-            number(*radius)
-        ),
-        Shape::Ring {
-            center,
-            normal,
-            radius,
-            inner,
-        } => format!(
-            "ring(center: {}, normal: {}, radius: {}, inner: {})",
-            v(*center),
-            unit_direction(*normal),
-            number(*radius),
-            number(*inner)
-        ),
-        Shape::Cylinder {
-            base,
-            top,
-            radius,
-            capped,
-        } => format!(
-            "cylinder(base: {}, top: {}, radius: {}{})",
-            v(*base),
-            v(*top),
-            number(*radius),
-            if *capped { "" } else { ", capped: false" }
-        ),
-        Shape::Cone {
-            base,
-            top,
-            base_radius,
-            top_radius,
-            capped,
-        } => format!(
-            "cone(base: {}, top: {}, base_radius: {}, top_radius: {}{})",
-            v(*base),
-            v(*top),
-            number(*base_radius),
-            number(*top_radius),
-            if *capped { "" } else { ", capped: false" }
-        ),
-        Shape::Torus {
-            center,
-            major_radius,
-            minor_radius,
-        } => format!(
-            "torus(center: {}, major_radius: {}, minor_radius: {})",
-            v(*center),
-            number(*major_radius),
-            number(*minor_radius)
-        ),
-        Shape::Blob {
-            components,
-            threshold,
-        } => {
-            let cs: Vec<String> = components
-                .iter()
-                .map(|c| {
-                    format!(
-                        "{{ center: {}, radius: {}, strength: {} }}",
-                        v(c.center),
-                        number(c.radius),
-                        number(c.strength)
-                    )
-                })
-                .collect();
-            format!(
-                "blob(components: [{}], threshold: {})",
-                cs.join(", "),
-                number(*threshold)
-            )
-        }
-        Shape::Mesh {
-            path,
-            smooth,
-            use_mtl,
-        } => format!(
-            "mesh({}{}{})",
-            string(&asset(path)),
-            if *smooth { ", smooth: true" } else { "" },
-            if *use_mtl { ", use_mtl: true" } else { "" }
-        ),
         Shape::Csg { op, children } => {
             let kids: Vec<String> = children
                 .iter()
@@ -249,6 +142,29 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
                     format!("difference({}, [{}])", kids[0], kids[1..].join(", "))
                 }
             }
+        }
+        other => unreachable!("`Shape::call` writes every shape but CSG, not {other:?}"),
+    }
+}
+
+/// One argument as rtc source.
+fn argument(a: &Arg, asset: AssetPath<'_>) -> String {
+    match a {
+        Arg::Number(v) => number(*v),
+        Arg::Point(p) => vector(*p),
+        Arg::Direction(n) => unit_direction(*n),
+        Arg::Bool(b) => b.to_string(),
+        Arg::Path(p) => string(&asset(p)),
+        Arg::List(items) => {
+            let items: Vec<String> = items.iter().map(|x| argument(x, asset)).collect();
+            format!("[{}]", items.join(", "))
+        }
+        Arg::Record(fields) => {
+            let fields: Vec<String> = fields
+                .iter()
+                .map(|(k, v)| format!("{k}: {}", argument(v, asset)))
+                .collect();
+            format!("{{ {} }}", fields.join(", "))
         }
     }
 }
