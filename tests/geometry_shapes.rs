@@ -423,6 +423,51 @@ fn cases() -> Vec<Case> {
             min_hit_share: 0.3,
         });
     }
+    // Quadrics: the distance is |f| / |∇f| with f and ∇f written out here per surface.
+    {
+        // An ellipsoid with semi-axes 1.5, 0.8, 1.1 centred at (0.2, -0.1, 0.3).
+        let (c, r) = (DVec3::new(0.2, -0.1, 0.3), DVec3::new(1.5, 0.8, 1.1));
+        let f = move |q: DVec3| {
+            let w = (q - c) / r;
+            w.length_squared() - 1.0
+        };
+        let grad = move |q: DVec3| 2.0 * (q - c) / (r * r);
+        let inv = 1.0 / (r * r);
+        v.push(Case {
+            name: "quadric ellipsoid",
+            shape: Shape::Quadric {
+                squares: inv,
+                mixed: DVec3::ZERO,
+                linear: -2.0 * c * inv,
+                constant: (c * c * inv).element_sum() - 1.0,
+            },
+            side: Box::new(f),
+            dist: Box::new(move |q| f(q).abs() / grad(q).norm()),
+            aim: (c - r, c + r),
+            size: 3.0,
+            min_hit_share: 0.3,
+        });
+    }
+    {
+        // A hyperboloid of one sheet around y, tilted by a mixed xy term:
+        // x² + z² − y² + 0.5·xy − 0.25 = 0.
+        let f = |q: DVec3| q.x * q.x + q.z * q.z - q.y * q.y + 0.5 * q.x * q.y - 0.25;
+        let grad = |q: DVec3| DVec3::new(2.0 * q.x + 0.5 * q.y, -2.0 * q.y + 0.5 * q.x, 2.0 * q.z);
+        v.push(Case {
+            name: "quadric hyperboloid",
+            shape: Shape::Quadric {
+                squares: DVec3::new(1.0, -1.0, 1.0),
+                mixed: DVec3::new(0.5, 0.0, 0.0),
+                linear: DVec3::ZERO,
+                constant: -0.25,
+            },
+            side: Box::new(f),
+            dist: Box::new(move |q| f(q).abs() / grad(q).norm()),
+            aim: (DVec3::splat(-1.0), DVec3::splat(1.0)),
+            size: 2.0,
+            min_hit_share: 0.3,
+        });
+    }
     v
 }
 

@@ -21,6 +21,7 @@ pub mod disk;
 pub mod parallelogram;
 pub mod plane;
 pub mod polygon;
+pub mod quadric;
 pub mod quartic;
 pub mod ring;
 pub mod sphere;
@@ -40,6 +41,7 @@ use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::parallelogram::Quad;
 use crate::geometry::shapes::polygon::{Polygon, PolygonError};
+use crate::geometry::shapes::quadric::Quadric;
 use crate::geometry::shapes::ring::Ring;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
@@ -107,6 +109,8 @@ pub enum Leaf {
     Torus(Torus),
     /// Metaballs.
     Blob(Box<Blob>),
+    /// A quadric surface.
+    Quadric(Box<Quadric>),
 }
 
 impl Leaf {
@@ -125,6 +129,7 @@ impl Leaf {
             Leaf::Cone(x) => x.bounds(),
             Leaf::Torus(x) => x.bounds(),
             Leaf::Blob(x) => x.bounds(),
+            Leaf::Quadric(x) => x.bounds(),
         }
     }
 
@@ -144,6 +149,7 @@ impl Leaf {
             Leaf::Cone(x) => x.intersect(r, t_min, t_max),
             Leaf::Torus(x) => x.intersect(r, t_min, t_max),
             Leaf::Blob(x) => x.intersect(r, t_min, t_max),
+            Leaf::Quadric(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -163,6 +169,7 @@ impl Leaf {
             Leaf::Cone(x) => x.point_error(p),
             Leaf::Torus(x) => x.point_error(p),
             Leaf::Blob(x) => x.point_error(p),
+            Leaf::Quadric(x) => x.point_error(p),
         }
     }
 
@@ -185,6 +192,7 @@ impl Leaf {
             Leaf::Cone(x) => x.crossings(r, out),
             Leaf::Torus(x) => x.crossings(r, out),
             Leaf::Blob(x) => x.crossings(r, out),
+            Leaf::Quadric(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -203,6 +211,7 @@ impl Leaf {
             Leaf::Cone(c) => c.is_closed() && c.contains(q),
             Leaf::Torus(t) => t.contains(q),
             Leaf::Blob(b) => b.contains(q),
+            Leaf::Quadric(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -211,13 +220,15 @@ impl Leaf {
         }
     }
 
-    /// Whether the line of `r` starts (at t → −∞) inside (only a half-space can).
+    /// Whether the line of `r` starts (at t → −∞) inside (only a half-space or an unbounded
+    /// quadric can).
     pub fn inside_at_start(&self, r: &Ray) -> bool {
         match self {
             Leaf::Plane { point, normal } => {
                 let dn = normal.dot(r.dir);
                 dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
             }
+            Leaf::Quadric(x) => x.inside_at_start(r),
             _ => false,
         }
     }
@@ -459,6 +470,31 @@ pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 },
             )?))
         }
+        Shape::Quadric {
+            squares,
+            mixed,
+            linear,
+            constant,
+        } => {
+            finite("squares", &[*squares])?;
+            finite("mixed", &[*mixed])?;
+            finite("linear", &[*linear])?;
+            in_range(constant.is_finite(), "constant", "finite", *constant)?;
+            if *squares == DVec3::ZERO && *mixed == DVec3::ZERO && *linear == DVec3::ZERO {
+                return Err(ShapeFlaw::degenerate(
+                    "squares",
+                    "a quadric needs a non-zero coefficient besides the constant",
+                    "every coefficient of x, y and z is 0",
+                    "give `squares`, `mixed` or `linear` a non-zero entry",
+                ));
+            }
+            Leaf::Quadric(Box::new(Quadric {
+                squares: *squares,
+                mixed: *mixed,
+                linear: *linear,
+                constant: *constant,
+            }))
+        }
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
@@ -505,6 +541,7 @@ pub fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool)
         | Shape::Plane { .. }
         | Shape::Box { .. }
         | Shape::Torus { .. }
+        | Shape::Quadric { .. }
         | Shape::Blob { .. } => true,
     }
 }
