@@ -5,8 +5,9 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::Ray;
-use crate::geometry::lanes::{self, Lanes, RayLanes, V3, WIDTH};
+use crate::geometry::lanes::RayLanes;
 use crate::ir::{self, Projection};
+use crate::lanes::{self, Lanes, V3, WIDTH};
 
 /// A camera ready to generate rays for continuous image coordinates.
 #[derive(Clone, Copy, Debug)]

@@ -11,7 +11,7 @@ use super::sampler::Rng;
 
 /// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
 /// (the shading models' and the Whitted integrator's packets).
-pub const BATCH: usize = crate::geometry::lanes::WIDTH;
+pub const BATCH: usize = crate::lanes::WIDTH;
 
 /// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
 pub struct Ctx {

@@ -12,9 +12,9 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::SurfaceHit;
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::rounding::gamma;
+use crate::lanes::{self, Lanes, Mask, V3};
 
 /// A surface point rays can leave from: the point, its per-axis error bound and the surface's
 /// geometric normal (either orientation).
@@ -86,7 +86,7 @@ impl SpawnPoint {
     }
 }
 
-/// The surface points of a packet ([`crate::geometry::lanes`]) rays leave from: a
+/// The surface points of a packet ([`crate::lanes`]) rays leave from: a
 /// [`SpawnPoint`] per lane. Its rays are the ones [`SpawnPoint`] casts, bit for bit.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct SpawnLanes {
@@ -111,7 +111,7 @@ impl SpawnLanes {
     #[inline(always)]
     pub fn origin_towards(&self, dir: &V3) -> V3 {
         let facing = dir.dot(&self.normal);
-        let n = V3::select(simd::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
+        let n = V3::select(lanes::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
         let d = n.abs().dot(&self.error);
         let o = self.point.add(&n.scale(&d));
         V3 {
@@ -128,7 +128,7 @@ impl SpawnLanes {
         let origin = self.origin_towards(&self.point.from(target));
         let d = origin.from(target);
         let dist = d.norm();
-        let valid = simd::gt(&dist, 0.0) & simd::lt(&dist, f64::INFINITY);
+        let valid = lanes::gt(&dist, 0.0) & lanes::lt(&dist, f64::INFINITY);
         let dir = d.div(&dist);
         // shadow_margin, lane by lane.
         let far = origin.abs().max_element();

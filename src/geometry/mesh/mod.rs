@@ -10,10 +10,11 @@ use rayon::prelude::*;
 
 use crate::geometry::bvh::packet::PACKET;
 use crate::geometry::bvh::{BLOCK, Bvh, BvhRay};
-use crate::geometry::lanes::{self, RayLanes, V3};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::shapes::triangle::{ShearedRay, TriBlock};
 use crate::geometry::{aabb::Aabb, ray::Ray};
 use crate::ir::limits::MAX_TRIANGLES;
+use crate::lanes::{self, V3};
 
 const _: () = assert!(MAX_TRIANGLES <= crate::geometry::bvh::MAX_PRIMITIVES);
 

@@ -4,10 +4,11 @@
 //! exactly the answer it gets alone.
 
 use super::{BALL, Ball, SphereHit, World};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::lanes::cull::Among;
 use crate::geometry::lanes::sphere_packet::{NO_SPHERE, PacketHits};
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes};
 use crate::geometry::ray::Ray;
+use crate::lanes::{self, Lanes, Mask};
 
 impl SphereHit {
     /// The nearest loose sphere of a ray from a packet query ([`World::nearest_packet`]):

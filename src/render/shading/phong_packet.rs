@@ -1,4 +1,4 @@
-//! [`super::phong::shade`] of a packet of surface points ([`crate::geometry::lanes`]): the
+//! [`super::phong::shade`] of a packet of surface points ([`crate::lanes`]): the
 //! light directions, shadow rays, occlusion tests and sums of every point of the packet at
 //! once, for point lights without glass shadows. Each lane gets `shade`'s operations in
 //! `shade`'s order, so its colour is the same to the bit.
@@ -11,9 +11,8 @@ use glam::DVec3;
 
 use super::Surface;
 use crate::geometry::lanes::cull::{Among, Bundle};
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{self, Lanes, Mask, V3, WIDTH};
 use crate::ir::{AmbientConvention, LightKind};
+use crate::lanes::{self, Lanes, Mask, V3, WIDTH};
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
 use crate::render::offset::SpawnLanes;
@@ -101,10 +100,10 @@ pub fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
         for _ in 0..count {
             let d = s.p.from(position);
             let dist = d.norm();
-            let l = V3::select(simd::gt(&dist, 0.0), &d.div(&dist), &s.n);
+            let l = V3::select(lanes::gt(&dist, 0.0), &d.div(&dist), &s.n);
             let n_dot_l = s.n.dot(&l);
             // Facing away: neither light nor shadow ray.
-            let lit = s.live & simd::gt(&n_dot_l, 0.0);
+            let lit = s.live & lanes::gt(&n_dot_l, 0.0);
             let open = if shadows && lit != 0 {
                 ctx.stats.shadow_rays += u64::from(lit.count_ones());
                 lit & !blocked(scene, s, position, lit)
