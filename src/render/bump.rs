@@ -12,7 +12,7 @@ use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::opt::TextureMap;
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
-pub fn perturb(
+pub(crate) fn perturb(
     tex: &TextureMap,
     scale: f64,
     hit: &SurfaceHit,

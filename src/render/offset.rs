@@ -21,11 +21,11 @@ use crate::lanes::{self, Lanes, Mask, V3};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpawnPoint {
     /// The point as the object computed it.
-    pub point: DVec3,
+    pub(crate) point: DVec3,
     /// Per-axis bound on its distance from the true surface.
-    pub error: DVec3,
+    pub(crate) error: DVec3,
     /// Unit geometric normal.
-    pub normal: DVec3,
+    pub(crate) normal: DVec3,
 }
 
 /// How far short of its target a shadow ray stops, in units of the coordinates' magnitude: a
@@ -72,7 +72,7 @@ impl SpawnPoint {
     /// origin, with the parameter where it must stop short of the target; `None` when the
     /// target is the origin itself.
     #[inline(always)]
-    pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
+    pub(crate) fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
         let origin = self.origin_towards(target - self.point);
         let d = target - origin;
         let dist = d.norm();
@@ -89,19 +89,19 @@ impl SpawnPoint {
 /// The surface points of a packet ([`crate::lanes`]) rays leave from: a
 /// [`SpawnPoint`] per lane. Its rays are the ones [`SpawnPoint`] casts, bit for bit.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct SpawnLanes {
+pub(crate) struct SpawnLanes {
     /// The points as their objects computed them.
-    pub point: V3,
+    pub(crate) point: V3,
     /// Their per-axis error bounds.
-    pub error: V3,
+    pub(crate) error: V3,
     /// Their unit geometric normals.
-    pub normal: V3,
+    pub(crate) normal: V3,
 }
 
 impl SpawnLanes {
     /// Sets lane `i` to `s`.
     #[inline(always)]
-    pub fn set(&mut self, i: usize, s: &SpawnPoint) {
+    pub(crate) fn set(&mut self, i: usize, s: &SpawnPoint) {
         self.point.set(i, s.point);
         self.error.set(i, s.error);
         self.normal.set(i, s.normal);
@@ -109,7 +109,7 @@ impl SpawnLanes {
 
     /// [`SpawnPoint::origin_towards`] of every lane, each along its own `dir`.
     #[inline(always)]
-    pub fn origin_towards(&self, dir: &V3) -> V3 {
+    pub(crate) fn origin_towards(&self, dir: &V3) -> V3 {
         let facing = dir.dot(&self.normal);
         let n = V3::select(lanes::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
         let d = n.abs().dot(&self.error);
@@ -124,7 +124,7 @@ impl SpawnLanes {
     /// [`SpawnPoint::ray_to`] of every lane towards one `target`: the rays, where each must
     /// stop, and the lanes that have a ray (the others' target is their origin).
     #[inline(always)]
-    pub fn ray_to(&self, target: DVec3) -> (RayLanes, Lanes, Mask) {
+    pub(crate) fn ray_to(&self, target: DVec3) -> (RayLanes, Lanes, Mask) {
         let origin = self.origin_towards(&self.point.from(target));
         let d = origin.from(target);
         let dist = d.norm();
@@ -195,7 +195,7 @@ fn away_rare(x: f64, s: f64) -> f64 {
 
 /// How far short of `target` a visibility ray from `origin` (at distance `dist`) stops, so a
 /// surface through the target does not count as blocking it.
-pub fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
+pub(crate) fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
     gamma(SHADOW_ROUNDING_STEPS) * (origin.abs().max_element() + target.abs().max_element() + dist)
 }
 

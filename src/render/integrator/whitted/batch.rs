@@ -117,7 +117,13 @@ impl Whitted<'_> {
 
     /// [`Whitted::trace_batch`] of the first `n` rays of a packet of camera rays at shutter
     /// time 0 (a pinhole camera's).
-    pub fn trace_lanes(&self, packet: &RayLanes, n: usize, ctx: &mut Ctx, out: &mut [Color]) {
+    pub(crate) fn trace_lanes(
+        &self,
+        packet: &RayLanes,
+        n: usize,
+        ctx: &mut Ctx,
+        out: &mut [Color],
+    ) {
         self.trace_camera_packet(packet, &[0.0; BATCH], n, ctx, out);
     }
 
