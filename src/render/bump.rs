@@ -62,7 +62,7 @@ mod tests {
     use super::*;
     use crate::geometry::SurfaceId;
     use crate::ir::{Mapping, MaterialId};
-    use crate::opt::Picture;
+    use crate::opt::textures::Picture;
 
     const SPHERE: MappingFrame = MappingFrame::Sphere {
         center: DVec3::ZERO,
