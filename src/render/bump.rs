@@ -60,7 +60,7 @@ pub(crate) fn perturb(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::SurfaceId;
+    use crate::geometry::world::primitive::SurfaceId;
     use crate::ir::{Mapping, MaterialId};
     use crate::opt::textures::Picture;
 

@@ -59,7 +59,7 @@ pub(crate) fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVe
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::SurfaceId;
+    use crate::geometry::world::primitive::SurfaceId;
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {

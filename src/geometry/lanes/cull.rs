@@ -146,7 +146,7 @@ impl Bundle {
     /// the bundle [`Bundle::push`] builds ray by ray, but with each bound reduced across the
     /// lanes at once (ray by ray, every comparison waited on the one before).
     #[inline(never)]
-    pub fn of_packet(rays: &RayLanes, t_max: &Lanes, live: Mask) -> Bundle {
+    pub(crate) fn of_packet(rays: &RayLanes, t_max: &Lanes, live: Mask) -> Bundle {
         if live == 0 {
             return Bundle::new();
         }

@@ -5,25 +5,25 @@
 //! [`crate::lanes`].
 
 pub mod cull;
-pub mod sphere_packet;
-pub mod spheres;
+pub(crate) mod sphere_packet;
+pub(crate) mod spheres;
 
 use crate::geometry::ray::Ray;
 use crate::lanes::{Lanes, V3, WIDTH};
 
 /// A packet of rays: origins and directions (world space; the directions unit).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RayLanes {
+pub(crate) struct RayLanes {
     /// Origins.
-    pub origin: V3,
+    pub(crate) origin: V3,
     /// Directions.
-    pub dir: V3,
+    pub(crate) dir: V3,
 }
 
 impl RayLanes {
     /// The packet of `rays` (lanes past them hold zeros).
     #[inline(always)]
-    pub fn of(rays: &[Ray]) -> RayLanes {
+    pub(crate) fn of(rays: &[Ray]) -> RayLanes {
         let mut p = RayLanes::default();
         for (i, r) in rays.iter().enumerate().take(WIDTH) {
             p.origin.set(i, r.origin);
@@ -34,7 +34,7 @@ impl RayLanes {
 
     /// The points at `t` (`Ray::at`: `origin + t·dir`).
     #[inline(always)]
-    pub fn at(&self, t: &Lanes) -> V3 {
+    pub(crate) fn at(&self, t: &Lanes) -> V3 {
         self.origin.add(&self.dir.scale(t))
     }
 }

@@ -15,16 +15,16 @@ use crate::lanes::{self, Lanes, Mask, WIDTH};
 /// For every ray of a packet, the nearest loose sphere found: its position in the lanes'
 /// order ([`NO_SPHERE`] when none) and its `t`.
 #[derive(Clone, Copy, Debug)]
-pub struct PacketHits {
+pub(crate) struct PacketHits {
     /// The sphere's position, or [`NO_SPHERE`].
-    pub sphere: [u32; WIDTH],
+    pub(crate) sphere: [u32; WIDTH],
     /// Its `t` (the interval's end where there is none).
-    pub t: Lanes,
+    pub(crate) t: Lanes,
 }
 
 impl PacketHits {
     /// No sphere on any ray, whose intervals end at `t_max`.
-    pub fn none(t_max: f64) -> PacketHits {
+    pub(crate) fn none(t_max: f64) -> PacketHits {
         PacketHits {
             sphere: [NO_SPHERE; WIDTH],
             t: [t_max; WIDTH],
@@ -33,7 +33,7 @@ impl PacketHits {
 }
 
 /// No sphere in [`PacketHits::sphere`].
-pub const NO_SPHERE: u32 = u32::MAX;
+pub(crate) const NO_SPHERE: u32 = u32::MAX;
 
 /// `|dir|²` of every ray and its reciprocal (`circle_quadratic::DirSquared` per lane).
 #[inline(always)]
@@ -93,7 +93,7 @@ impl SphereLanes {
     /// The nearest sphere of `among` for each ray of `live` in (t_min, t_max): what
     /// [`SphereLanes::nearest_among`] finds for that ray, bit for bit (the spheres in the same
     /// order, each against the nearest hit so far).
-    pub fn nearest_packet(
+    pub(crate) fn nearest_packet(
         &self,
         rays: &RayLanes,
         live: Mask,
@@ -122,7 +122,7 @@ impl SphereLanes {
 
     /// The rays of `live` that meet a sphere of `among` in (t_min, t_max[i]): what
     /// [`SphereLanes::any_among`] answers for each.
-    pub fn any_packet(
+    pub(crate) fn any_packet(
         &self,
         rays: &RayLanes,
         live: Mask,

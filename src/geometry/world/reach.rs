@@ -34,7 +34,7 @@ impl World {
     /// The rays of `live` that may meet something from t = 0 on (all of them when something
     /// is unbounded); the others meet nothing at all.
     #[inline]
-    pub fn may_meet(&self, rays: &RayLanes, live: Mask) -> Mask {
+    pub(crate) fn may_meet(&self, rays: &RayLanes, live: Mask) -> Mask {
         match self.reach {
             None => live,
             Some(reach) => meet_box(reach, rays, live),
