@@ -18,18 +18,19 @@ mod placement;
 pub mod provenance;
 mod settings;
 
-pub use flare::Flare;
+pub(crate) use flare::Flare;
 pub use loaded::Loaded;
-pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
+pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{
-    AmbientConvention, DepthRange, Encoding, GoochParams, LANGUAGE_CUTOFF, LightSampling,
-    RenderMode, RenderSettings, Sampling, ShadingModel,
+    AmbientConvention, DepthRange, Encoding, LightSampling, RenderMode, RenderSettings, Sampling,
+    ShadingModel,
 };
+pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
-pub type Color = DVec3;
+pub(crate) type Color = DVec3;
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -194,7 +195,7 @@ pub enum LightKind {
 
 impl LightKind {
     /// The light's centre (its position for a point light).
-    pub fn center(&self) -> DVec3 {
+    pub(crate) fn center(&self) -> DVec3 {
         match *self {
             LightKind::Point { position } => position,
             LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
