@@ -27,17 +27,17 @@ use glam::DVec3;
 use wide::f64x4;
 
 /// Rays in a packet: a pixel's 4×4 camera samples.
-pub const WIDTH: usize = 16;
+pub(crate) const WIDTH: usize = 16;
 
 /// One number per ray of a packet.
-pub type Lanes = [f64; WIDTH];
+pub(crate) type Lanes = [f64; WIDTH];
 
 /// One bit per ray of a packet (bit `i` for ray `i`).
-pub type Mask = u32;
+pub(crate) type Mask = u32;
 
 /// The mask of the first `n` rays.
 #[inline(always)]
-pub fn first(n: usize) -> Mask {
+pub(crate) fn first(n: usize) -> Mask {
     if n >= WIDTH {
         (1u32 << WIDTH) - 1
     } else {
@@ -47,7 +47,7 @@ pub fn first(n: usize) -> Mask {
 
 /// The rays of `mask`, in increasing order.
 #[inline(always)]
-pub fn each(mask: Mask) -> impl Iterator<Item = usize> {
+pub(crate) fn each(mask: Mask) -> impl Iterator<Item = usize> {
     let mut bits = mask;
     std::iter::from_fn(move || {
         (bits != 0).then(|| {
@@ -60,7 +60,7 @@ pub fn each(mask: Mask) -> impl Iterator<Item = usize> {
 
 /// `f(i)` for every lane.
 #[inline(always)]
-pub fn map(f: impl Fn(usize) -> f64) -> Lanes {
+pub(crate) fn map(f: impl Fn(usize) -> f64) -> Lanes {
     let mut out = [0.0; WIDTH];
     for (i, o) in out.iter_mut().enumerate() {
         *o = f(i);
@@ -70,7 +70,7 @@ pub fn map(f: impl Fn(usize) -> f64) -> Lanes {
 
 /// The lanes where `f(i)` holds.
 #[inline(always)]
-pub fn mask_of(f: impl Fn(usize) -> bool) -> Mask {
+pub(crate) fn mask_of(f: impl Fn(usize) -> bool) -> Mask {
     let mut m = 0;
     for i in 0..WIDTH {
         m |= Mask::from(f(i)) << i;
@@ -103,7 +103,7 @@ const NIBBLES: [[f64; 4]; 16] = {
 
 /// Lanes `4q … 4q + 3` of `v`.
 #[inline(always)]
-pub fn quad(v: &Lanes, q: usize) -> f64x4 {
+pub(crate) fn quad(v: &Lanes, q: usize) -> f64x4 {
     f64x4::new([v[4 * q], v[4 * q + 1], v[4 * q + 2], v[4 * q + 3]])
 }
 
@@ -115,7 +115,7 @@ fn quad_mask(m: Mask, q: usize) -> f64x4 {
 
 /// `a` where `m` has the lane, else `b`.
 #[inline(always)]
-pub fn select(m: Mask, a: &Lanes, b: &Lanes) -> Lanes {
+pub(crate) fn select(m: Mask, a: &Lanes, b: &Lanes) -> Lanes {
     let mut out = [0.0; WIDTH];
     for q in 0..QUADS {
         let r = quad_mask(m, q).select(quad(a, q), quad(b, q));
@@ -138,19 +138,19 @@ fn mask_where(v: &Lanes, x: f64, test: impl Fn(f64x4, f64x4) -> f64x4) -> Mask {
 
 /// The lanes where `v > x` (false for NaN, as `>`).
 #[inline(always)]
-pub fn gt(v: &Lanes, x: f64) -> Mask {
+pub(crate) fn gt(v: &Lanes, x: f64) -> Mask {
     mask_where(v, x, f64x4::simd_gt)
 }
 
 /// The lanes where `v ≥ x` (false for NaN, as `>=`).
 #[inline(always)]
-pub fn ge(v: &Lanes, x: f64) -> Mask {
+pub(crate) fn ge(v: &Lanes, x: f64) -> Mask {
     mask_where(v, x, f64x4::simd_ge)
 }
 
 /// The lanes where `v < x` (false for NaN, as `<`).
 #[inline(always)]
-pub fn lt(v: &Lanes, x: f64) -> Mask {
+pub(crate) fn lt(v: &Lanes, x: f64) -> Mask {
     mask_where(v, x, f64x4::simd_lt)
 }
 
@@ -164,19 +164,19 @@ fn fold(v: &Lanes, f: impl Fn(f64x4, f64x4) -> f64x4, g: impl Fn(f64, f64) -> f6
 
 /// The smallest lane (a NaN lane may or may not win: callers catch NaN apart).
 #[inline(always)]
-pub fn min(v: &Lanes) -> f64 {
+pub(crate) fn min(v: &Lanes) -> f64 {
     fold(v, f64x4::fast_min, |a, b| if b < a { b } else { a })
 }
 
 /// The largest lane (a NaN lane may or may not win: callers catch NaN apart).
 #[inline(always)]
-pub fn max(v: &Lanes) -> f64 {
+pub(crate) fn max(v: &Lanes) -> f64 {
     fold(v, f64x4::fast_max, |a, b| if b > a { b } else { a })
 }
 
 /// The sum of the lanes, in an order of its own: for finiteness tests only.
 #[inline(always)]
-pub fn sum(v: &Lanes) -> f64 {
+pub(crate) fn sum(v: &Lanes) -> f64 {
     fold(v, |a, b| a + b, |a, b| a + b)
 }
 
@@ -184,11 +184,11 @@ pub fn sum(v: &Lanes) -> f64 {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct V3 {
     /// The rays' x.
-    pub x: Lanes,
+    pub(crate) x: Lanes,
     /// The rays' y.
-    pub y: Lanes,
+    pub(crate) y: Lanes,
     /// The rays' z.
-    pub z: Lanes,
+    pub(crate) z: Lanes,
 }
 
 impl Default for V3 {
@@ -199,7 +199,7 @@ impl Default for V3 {
 
 impl V3 {
     /// Zero in every lane.
-    pub const ZERO: V3 = V3 {
+    pub(crate) const ZERO: V3 = V3 {
         x: [0.0; WIDTH],
         y: [0.0; WIDTH],
         z: [0.0; WIDTH],
@@ -207,7 +207,7 @@ impl V3 {
 
     /// `f(i)`'s components for every lane.
     #[inline(always)]
-    pub fn map(f: impl Fn(usize) -> DVec3) -> V3 {
+    pub(crate) fn map(f: impl Fn(usize) -> DVec3) -> V3 {
         let mut v = V3::ZERO;
         for i in 0..WIDTH {
             let d = f(i);
@@ -218,7 +218,7 @@ impl V3 {
 
     /// The same vector in every lane.
     #[inline(always)]
-    pub fn splat(d: DVec3) -> V3 {
+    pub(crate) fn splat(d: DVec3) -> V3 {
         V3 {
             x: [d.x; WIDTH],
             y: [d.y; WIDTH],
@@ -228,13 +228,13 @@ impl V3 {
 
     /// Lane `i` as a `DVec3`.
     #[inline(always)]
-    pub fn get(&self, i: usize) -> DVec3 {
+    pub(crate) fn get(&self, i: usize) -> DVec3 {
         DVec3::new(self.x[i], self.y[i], self.z[i])
     }
 
     /// Sets lane `i`.
     #[inline(always)]
-    pub fn set(&mut self, i: usize, d: DVec3) {
+    pub(crate) fn set(&mut self, i: usize, d: DVec3) {
         (self.x[i], self.y[i], self.z[i]) = (d.x, d.y, d.z);
     }
 
@@ -250,25 +250,25 @@ impl V3 {
 
     /// `self + o`.
     #[inline(always)]
-    pub fn add(&self, o: &V3) -> V3 {
+    pub(crate) fn add(&self, o: &V3) -> V3 {
         self.zip(o, |a, b| a + b)
     }
 
     /// `self − o`.
     #[inline(always)]
-    pub fn sub(&self, o: &V3) -> V3 {
+    pub(crate) fn sub(&self, o: &V3) -> V3 {
         self.zip(o, |a, b| a - b)
     }
 
     /// `self · o` componentwise (glam's `DVec3 * DVec3`).
     #[inline(always)]
-    pub fn mul(&self, o: &V3) -> V3 {
+    pub(crate) fn mul(&self, o: &V3) -> V3 {
         self.zip(o, |a, b| a * b)
     }
 
     /// `d − self` for one vector `d` (a light's position minus the points).
     #[inline(always)]
-    pub fn from(&self, d: DVec3) -> V3 {
+    pub(crate) fn from(&self, d: DVec3) -> V3 {
         V3 {
             x: map(|i| d.x - self.x[i]),
             y: map(|i| d.y - self.y[i]),
@@ -278,7 +278,7 @@ impl V3 {
 
     /// `s · self` per lane (glam's `f64 * DVec3`; the same as `self * s`).
     #[inline(always)]
-    pub fn scale(&self, s: &Lanes) -> V3 {
+    pub(crate) fn scale(&self, s: &Lanes) -> V3 {
         V3 {
             x: map(|i| s[i] * self.x[i]),
             y: map(|i| s[i] * self.y[i]),
@@ -288,7 +288,7 @@ impl V3 {
 
     /// `self / s` per lane (glam's `DVec3 / f64`: three divisions).
     #[inline(always)]
-    pub fn div(&self, s: &Lanes) -> V3 {
+    pub(crate) fn div(&self, s: &Lanes) -> V3 {
         V3 {
             x: map(|i| self.x[i] / s[i]),
             y: map(|i| self.y[i] / s[i]),
@@ -298,7 +298,7 @@ impl V3 {
 
     /// `−self`.
     #[inline(always)]
-    pub fn neg(&self) -> V3 {
+    pub(crate) fn neg(&self) -> V3 {
         V3 {
             x: map(|i| -self.x[i]),
             y: map(|i| -self.y[i]),
@@ -308,7 +308,7 @@ impl V3 {
 
     /// `|self|` componentwise.
     #[inline(always)]
-    pub fn abs(&self) -> V3 {
+    pub(crate) fn abs(&self) -> V3 {
         V3 {
             x: map(|i| self.x[i].abs()),
             y: map(|i| self.y[i].abs()),
@@ -318,20 +318,21 @@ impl V3 {
 
     /// `self · o`, as glam's `dot`: `(x·x' + y·y') + z·z'`.
     #[inline(always)]
-    pub fn dot(&self, o: &V3) -> Lanes {
+    pub(crate) fn dot(&self, o: &V3) -> Lanes {
         map(|i| (self.x[i] * o.x[i]) + (self.y[i] * o.y[i]) + (self.z[i] * o.z[i]))
     }
 
     /// `|self|`, as glam's `length`.
     #[inline(always)]
-    pub fn norm(&self) -> Lanes {
+    pub(crate) fn norm(&self) -> Lanes {
         let d = self.dot(self);
         map(|i| d[i].sqrt())
     }
 
-    /// `self / |self|`, as glam's `normalize`: times `1 / |self|`.
-    #[inline(always)]
-    pub fn unit(&self) -> V3 {
+    /// `self / |self|`, as glam's `normalize`: times `1 / |self|` (the tests': the renderer
+    /// divides by the lengths it already has).
+    #[cfg(test)]
+    fn unit(&self) -> V3 {
         let len = self.norm();
         self.scale(&map(|i| 1.0 / len[i]))
     }
@@ -339,14 +340,14 @@ impl V3 {
     /// The largest component, as glam's `max_element` (`max(x, max(y, z))` with
     /// `max(a, b) = if a > b { a } else { b }`, NaN included).
     #[inline(always)]
-    pub fn max_element(&self) -> Lanes {
+    pub(crate) fn max_element(&self) -> Lanes {
         let max = |a: f64, b: f64| if a > b { a } else { b };
         map(|i| max(self.x[i], max(self.y[i], self.z[i])))
     }
 
     /// `a` in the lanes of `m`, else `b`.
     #[inline(always)]
-    pub fn select(m: Mask, a: &V3, b: &V3) -> V3 {
+    pub(crate) fn select(m: Mask, a: &V3, b: &V3) -> V3 {
         V3 {
             x: select(m, &a.x, &b.x),
             y: select(m, &a.y, &b.y),
