@@ -75,7 +75,11 @@ impl Diagnostic {
     }
 
     /// A warning with a code, title and primary span.
-    pub fn warning(code: &'static str, span: Span, message: impl Into<String>) -> Diagnostic {
+    pub(crate) fn warning(
+        code: &'static str,
+        span: Span,
+        message: impl Into<String>,
+    ) -> Diagnostic {
         Diagnostic::new(Severity::Warning, code, Some(span), message)
     }
 
@@ -143,12 +147,12 @@ pub struct Diagnostics {
     pub items: Vec<Diagnostic>,
     /// Errors [`Diagnostics::push`] counted but did not keep, past [`MAX_ERRORS`] (a file of
     /// garbage makes millions: each costs memory and nobody reads them).
-    pub omitted_errors: usize,
+    pub(crate) omitted_errors: usize,
 }
 
 impl Diagnostics {
     /// Records one finding; an error past the first [`MAX_ERRORS`] is only counted.
-    pub fn push(&mut self, d: Diagnostic) {
+    pub(crate) fn push(&mut self, d: Diagnostic) {
         if d.is_error()
             && (self.omitted_errors > 0
                 || (self.items.len() >= MAX_ERRORS

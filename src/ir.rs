@@ -20,20 +20,21 @@ mod placement;
 pub mod provenance;
 mod settings;
 
-pub use call::{Arg, ShapeCall};
+pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
-pub use flare::Flare;
+pub(crate) use flare::Flare;
 pub use loaded::Loaded;
-pub use motion::{CameraMotion, Motion, Shutter, slerp_from_identity};
+pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{
-    AmbientConvention, DepthRange, Encoding, GoochParams, LANGUAGE_CUTOFF, LightSampling,
-    RenderMode, RenderSettings, Sampling, ShadingModel,
+    AmbientConvention, DepthRange, Encoding, LightSampling, RenderMode, RenderSettings, Sampling,
+    ShadingModel,
 };
+pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
-pub type Color = DVec3;
+pub(crate) type Color = DVec3;
 
 /// Index into [`Scene::materials`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -138,7 +139,7 @@ pub enum LightKind {
 
 impl LightKind {
     /// The light's centre (its position for a point light).
-    pub fn center(&self) -> DVec3 {
+    pub(crate) fn center(&self) -> DVec3 {
         match *self {
             LightKind::Point { position } => position,
             LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
@@ -430,7 +431,7 @@ impl Shape {
     /// The constructor call that makes this shape (parameters at their defaults left out), for
     /// `rtc convert`; `None` for CSG, whose operands are objects the back end writes itself.
     /// Kept beside the variants so a new shape is one arm here, not one in the back end.
-    pub fn call(&self) -> Option<ShapeCall> {
+    pub(crate) fn call(&self) -> Option<ShapeCall> {
         use Arg::{Bool, Direction, List, Number, Point, Record};
         let (name, args): (&'static str, Vec<(&'static str, Arg)>) = match self {
             Shape::Sphere { center, radius } => {

@@ -22,6 +22,7 @@ pub mod diag;
 pub mod eval;
 pub mod geometry;
 pub mod ir;
+pub mod lanes;
 pub mod loader;
 pub mod metrics;
 pub mod num;

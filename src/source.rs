@@ -29,7 +29,7 @@ impl Span {
     }
 
     /// The smallest span covering both `self` and `other` (same file assumed).
-    pub fn join(self, other: Span) -> Span {
+    pub(crate) fn join(self, other: Span) -> Span {
         Span {
             file: self.file,
             start: self.start.min(other.start),
@@ -42,7 +42,7 @@ impl Span {
         (self.end - self.start) as usize
     }
 
-    /// True for an empty range.
+    /// True for an empty range (the pair of `len`, as clippy asks of a public `len`).
     pub fn is_empty(self) -> bool {
         self.end == self.start
     }
@@ -63,7 +63,7 @@ pub struct SourceFile {
 
 impl SourceFile {
     /// Wraps a text.
-    pub fn new(path: PathBuf, text: String) -> SourceFile {
+    fn new(path: PathBuf, text: String) -> SourceFile {
         SourceFile {
             path,
             text: Arc::new(text),
@@ -92,8 +92,9 @@ impl SourceFile {
         (line + 1, col + 1)
     }
 
-    /// Byte offset of a 1-based (line, column) position, clamped to the text.
-    pub fn offset_of(&self, line: usize, col: usize) -> usize {
+    /// Byte offset of a 1-based (line, column) position, clamped to the text (the tests').
+    #[cfg(test)]
+    fn offset_of(&self, line: usize, col: usize) -> usize {
         let Some(&start) = self.line_starts().get(line.saturating_sub(1)) else {
             return self.text.len();
         };
@@ -128,7 +129,7 @@ impl SourceMap {
     }
 
     /// The id of an already loaded path, if any.
-    pub fn find(&self, path: &Path) -> Option<FileId> {
+    pub(crate) fn find(&self, path: &Path) -> Option<FileId> {
         self.files
             .iter()
             .position(|f| f.path == path)
@@ -143,7 +144,7 @@ impl SourceMap {
     }
 
     /// A copy of the map as it was when it held its first `count` files (the texts are shared).
-    pub fn prefix(&self, count: usize) -> SourceMap {
+    pub(crate) fn prefix(&self, count: usize) -> SourceMap {
         SourceMap {
             files: self.files[..count.min(self.files.len())].to_vec(),
         }
@@ -166,7 +167,7 @@ pub const MAX_SOURCE_BYTES: u64 = 1 << 30;
 /// (`/dev/zero`), a FIFO (which would block until a writer came), a socket or a folder is
 /// refused from its metadata before it is opened, and a file above `max` from its size; the
 /// errors say which (`ErrorKind::InvalidInput`, `ErrorKind::FileTooLarge`).
-pub fn open_regular(path: &Path, max: u64) -> std::io::Result<(std::fs::File, u64)> {
+pub(crate) fn open_regular(path: &Path, max: u64) -> std::io::Result<(std::fs::File, u64)> {
     let kind = |meta: &std::fs::Metadata| -> std::io::Result<u64> {
         if !meta.is_file() {
             return Err(std::io::Error::new(

@@ -7,6 +7,7 @@ use rtc::assets::MeshAsset;
 use rtc::geometry::Ray;
 use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::ir::{Object, Shape};
+use rtc::num::Norm;
 
 /// Loads the OBJ at `path` and uses it every way the renderer does.
 pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
@@ -42,7 +43,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
             smooth,
             use_mtl,
         },
-        transform: DAffine3::IDENTITY,
+        transform: DAffine3::IDENTITY.into(),
         material: None,
         motion: None,
         span: Default::default(),

@@ -42,7 +42,7 @@ pub fn exercise(path: &Path) {
                 center: DVec3::ZERO,
                 radius: 1.0,
             },
-            transform: DAffine3::IDENTITY,
+            transform: DAffine3::IDENTITY.into(),
             material: None,
             motion: None,
             span: Default::default(),

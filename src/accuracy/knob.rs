@@ -35,7 +35,7 @@ pub enum Knob {
 
 impl Knob {
     /// Every knob, in report order.
-    pub const ALL: [Knob; 6] = [
+    pub(crate) const ALL: [Knob; 6] = [
         Knob::PixelSamples,
         Knob::AdaptiveThreshold,
         Knob::LightSamples,
@@ -57,7 +57,7 @@ impl Knob {
     }
 
     /// The name in JSON.
-    pub fn key(self) -> &'static str {
+    pub(crate) fn key(self) -> &'static str {
         match self {
             Knob::PixelSamples => "pixel_samples",
             Knob::AdaptiveThreshold => "adaptive_threshold",
@@ -70,7 +70,7 @@ impl Knob {
 
     /// The ladder: `base` (the scene's own setting) with this knob alone stepped from cheap to
     /// dear. Every rung costs less than the reference (see the `REFERENCE_*` constants).
-    pub fn ladder(self, base: &Setting) -> Vec<Setting> {
+    pub(crate) fn ladder(self, base: &Setting) -> Vec<Setting> {
         match self {
             Knob::PixelSamples => PIXEL_LADDER
                 .iter()
@@ -125,13 +125,13 @@ impl Knob {
 /// Pixel grid factors swept (samples per axis); the reference uses [`REFERENCE_PIXEL_SAMPLES`].
 pub const PIXEL_LADDER: [u32; 6] = [1, 2, 3, 4, 6, 8];
 /// Adaptive thresholds swept (the scene's `min` and `max` kept), coarse to fine.
-pub const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
+pub(crate) const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
 /// Area-light samples per edge swept; the reference uses [`REFERENCE_LIGHT_SAMPLES`].
-pub const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
+pub(crate) const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
 /// Bounces swept; the reference uses [`REFERENCE_MAX_DEPTH`].
-pub const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
+pub(crate) const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
 /// Rays per glossy lobe swept; the reference uses [`REFERENCE_GLOSS_SAMPLES`].
-pub const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
+pub(crate) const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
 /// Cut-offs swept, from cheap (large: more rays dropped) to 0 (every ray traced, the
 /// reference's): about three steps per decade, with the language's default
 /// [`LANGUAGE_CUTOFF`] (≈ 3.0e-4, half an sRGB level at black) among them.
@@ -139,27 +139,27 @@ pub const CUTOFF_LADDER: [f64; 7] = [0.1, 0.03, 0.01, 0.003, 0.001, LANGUAGE_CUT
 
 /// The reference's pixel grid: 16×16 = 256 samples per pixel (twice the ladder's top per axis),
 /// or the scene's own if finer.
-pub const REFERENCE_PIXEL_SAMPLES: u32 = 16;
+pub(crate) const REFERENCE_PIXEL_SAMPLES: u32 = 16;
 /// The reference's area-light samples per edge, or the scene's own if more. Every camera sample
 /// draws its own light samples, so with 16×16 pixel samples each reference pixel averages
 /// 256 × 16 = 4096 shadow samples per light: 7× the ladder's dearest rung at the scene's own
 /// 4×4 pixel grid (16 × 36). More costs minutes per reference on a soft-shadow scene.
-pub const REFERENCE_LIGHT_SAMPLES: u32 = 4;
+pub(crate) const REFERENCE_LIGHT_SAMPLES: u32 = 4;
 /// The reference's rays per glossy lobe, or the scene's own if more: the ladder's top. Each of
 /// the reference's 256 camera samples per pixel draws its own lobe, so a reference pixel
 /// averages 256 × 16 = 4096 lobe rays: 16× the top rung at the scene's 4×4 grid.
-pub const REFERENCE_GLOSS_SAMPLES: u32 = 16;
+pub(crate) const REFERENCE_GLOSS_SAMPLES: u32 = 16;
 /// The reference's bounces: twice the ladder's top (a 16th bounce weighs at most the product of
 /// 16 reflect/refract coefficients), or the scene's own if more.
-pub const REFERENCE_MAX_DEPTH: u32 = 16;
+pub(crate) const REFERENCE_MAX_DEPTH: u32 = 16;
 
 /// One point of a sweep: every knob's value.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Setting {
     /// Pixel sampling.
-    pub sampling: Sampling,
+    pub(crate) sampling: Sampling,
     /// Bounces.
-    pub max_depth: u32,
+    pub(crate) max_depth: u32,
     /// Samples per edge of every area light; `None` keeps each light's own.
     pub light_samples: Option<u32>,
     /// Rays per glossy lobe of every material; `None` keeps each material's own.
@@ -170,7 +170,7 @@ pub struct Setting {
 
 impl Setting {
     /// The scene's own setting (as prepared).
-    pub fn of(scene: &Prepared) -> Setting {
+    pub(crate) fn of(scene: &Prepared) -> Setting {
         Setting {
             sampling: scene.settings().sampling,
             max_depth: scene.settings().max_depth,
@@ -182,7 +182,11 @@ impl Setting {
 
     /// Renders `scene` from now on with this setting; `own_lights` holds each light's own
     /// samples per edge (what `light_samples: None` keeps).
-    pub fn apply(&self, scene: &mut Prepared, own_lights: &[[u32; 2]]) -> Result<(), Diagnostic> {
+    pub(crate) fn apply(
+        &self,
+        scene: &mut Prepared,
+        own_lights: &[[u32; 2]],
+    ) -> Result<(), Diagnostic> {
         scene.set_quality(Quality {
             sampling: self.sampling,
             max_depth: self.max_depth,
@@ -263,7 +267,7 @@ impl Setting {
 /// The knobs `effects` says the scene uses: pixel samples and adaptive sampling always (every
 /// image has edges; with a lens they are also the lens samples), light samples with soft shadows, gloss samples with a glossy material, bounces
 /// and the cut-off with reflection or refraction.
-pub fn used_knobs(effects: &Effects) -> Vec<Knob> {
+pub(crate) fn used_knobs(effects: &Effects) -> Vec<Knob> {
     Knob::ALL
         .into_iter()
         .filter(|k| match k {
@@ -279,7 +283,7 @@ pub fn used_knobs(effects: &Effects) -> Vec<Knob> {
 /// The converged setting the sweep is measured against: every used knob set high (the
 /// `REFERENCE_*` constants, or the scene's own where it is higher; the cut-off at 0), the rest
 /// at the scene's. `own_light_samples` and `own_gloss_samples` are the scene's largest.
-pub fn reference_setting(
+pub(crate) fn reference_setting(
     knobs: &[Knob],
     own: &Setting,
     own_light_samples: u32,
@@ -319,7 +323,7 @@ pub fn reference_setting(
 /// ladder, the sampling knobs sharing one dimension; the cut-off and the gloss samples stay at
 /// the scene's own (two more dimensions would make the product nine times longer; their
 /// ladders are measured alone). Its points with the ladders' give the Pareto front.
-pub fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
+pub(crate) fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
     let three = |ladder: Vec<Setting>| -> Vec<Setting> {
         if ladder.len() <= 3 {
             return ladder;

@@ -41,9 +41,9 @@ pub struct Errors {
     /// RMSE in linear light.
     pub rmse: f64,
     /// Relative MSE in linear light.
-    pub rel_mse: f64,
+    pub(crate) rel_mse: f64,
     /// Mean squared error of the worst 1% of pixels.
-    pub squared_error_worst: f64,
+    pub(crate) squared_error_worst: f64,
 }
 
 /// How much the error varies with the seed.
@@ -52,7 +52,7 @@ pub struct Spread {
     /// Standard deviation of mean ꟻLIP over the seeds.
     pub flip_mean: f64,
     /// Standard deviation of RMSE over the seeds.
-    pub rmse: f64,
+    pub(crate) rmse: f64,
 }
 
 /// How to measure.
@@ -79,7 +79,7 @@ pub fn linear_rgb(film: &render::film::Film) -> Vec<f32> {
 
 /// Renders `scene` (or the `options.region` of it) once with its current settings and seed
 /// `seed`: the image, its wall time and its rays.
-pub fn render_once(
+pub(crate) fn render_once(
     scene: &mut Prepared,
     seed: u64,
     options: &MeasureOptions,
@@ -107,7 +107,7 @@ pub fn render_once(
 
 /// Measures `scene` (already set to `setting`) against `reference` (same size, linear RGB).
 /// `after_render` runs after each render (the progress bar's step).
-pub fn measure(
+pub(crate) fn measure(
     scene: &mut Prepared,
     setting: Setting,
     reference: LinearRgb<'_>,
@@ -179,7 +179,7 @@ pub fn measure(
 }
 
 /// The median (the mean of the middle two for an even count); 0 for none.
-pub fn median(values: &[f64]) -> f64 {
+pub(crate) fn median(values: &[f64]) -> f64 {
     let mut v = values.to_vec();
     v.sort_by(f64::total_cmp);
     match v.len() {

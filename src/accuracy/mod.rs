@@ -32,7 +32,7 @@ pub use report::{Metric, Report};
 pub use sweep::SweepProgress;
 
 /// A `--reference` image is not the size the sweep renders.
-pub const REFERENCE_SIZE: &str = "rtc::accuracy::reference_size";
+pub(crate) const REFERENCE_SIZE: &str = "rtc::accuracy::reference_size";
 
 /// The sweep was cancelled before the reference was done: nothing was measured.
 pub const NOTHING_MEASURED: &str = "rtc::accuracy::cancelled";

@@ -37,16 +37,16 @@ pub enum Source {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reference {
     /// Width in pixels.
-    pub width: u32,
+    pub(crate) width: u32,
     /// Height in pixels.
-    pub height: u32,
+    pub(crate) height: u32,
     /// Linear RGB, rows from the top.
     pub data: Vec<f32>,
     /// Where it came from.
     pub source: Source,
     /// The noise of one seed's render (`None` for a given file or a scene without randomness;
     /// the mean of two seeds has this RMSE divided by √2).
-    pub noise: Option<NoiseEstimate>,
+    pub(crate) noise: Option<NoiseEstimate>,
     /// What went wrong with the cache, which never fails the run: an entry that failed its
     /// checksum or held non-finite values (a miss: rendered again), one that could not be
     /// written.
@@ -55,13 +55,13 @@ pub struct Reference {
 
 impl Reference {
     /// The image as a metrics view.
-    pub fn view(&self) -> Result<LinearRgb<'_>, Diagnostic> {
+    pub(crate) fn view(&self) -> Result<LinearRgb<'_>, Diagnostic> {
         LinearRgb::new(self.width, self.height, &self.data)
     }
 
     /// The RMSE the reference has against its own expectation (its noise), 0 when noiseless
     /// or unknown.
-    pub fn noise_rmse(&self) -> f64 {
+    pub(crate) fn noise_rmse(&self) -> f64 {
         self.noise
             .map_or(0.0, |n| n.rmse / std::f64::consts::SQRT_2)
     }
@@ -69,7 +69,7 @@ impl Reference {
 
 /// The content hash naming a cached reference: FNV-1a (64 bits) over the scene's IR with the
 /// reference quality, the resolution, the region, the seeds and rtc's version.
-pub fn content_hash(
+pub(crate) fn content_hash(
     scene: &Scene,
     reference: &Setting,
     seeds: [u64; 2],
@@ -188,7 +188,7 @@ pub fn rendered(
 
 /// Reads a reference image: an EXR is linear light; any other format (PNG...) holds sRGB
 /// bytes, decoded to linear light. It must be `width × height`.
-pub fn from_file(path: &Path, width: u32, height: u32) -> Result<Reference, Diagnostic> {
+pub(crate) fn from_file(path: &Path, width: u32, height: u32) -> Result<Reference, Diagnostic> {
     let is_exr = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("exr"));

@@ -14,7 +14,7 @@ use super::scale::SweepSize;
 use super::sweep::Sweep;
 
 /// The JSON document's `schema` value; bumped when a field changes meaning or goes away.
-pub const SCHEMA: &str = "rtc-accuracy/1";
+pub(crate) const SCHEMA: &str = "rtc-accuracy/1";
 
 /// The error metric recommendations and the plot use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,7 +38,7 @@ impl Metric {
     }
 
     /// The name in JSON.
-    pub fn key(self) -> &'static str {
+    pub(crate) fn key(self) -> &'static str {
         match self {
             Metric::Flip => "flip",
             Metric::Rmse => "rmse",
@@ -68,7 +68,7 @@ pub struct ReferenceInfo {
     /// The mean ꟻLIP between its two seeds' renders (`None` when unknown).
     pub noise_flip: Option<f64>,
     /// The content hash naming the cached files (`None` for a file).
-    pub hash: Option<String>,
+    pub(crate) hash: Option<String>,
     /// Problems with the cache, none fatal ([`super::reference::Reference::notes`]).
     pub cache_notes: Vec<String>,
 }
@@ -108,7 +108,7 @@ pub struct Report {
     /// The swept resolution.
     pub size: SweepSize,
     /// Worker threads (0 = all cores).
-    pub threads: usize,
+    pub(crate) threads: usize,
     /// Renders per seed per point.
     pub repeat: u32,
     /// The seeds of stochastic settings (the first alone for the rest).
@@ -137,7 +137,7 @@ pub const NOISY_REFERENCE_SHARE: f64 = 0.5;
 
 impl Report {
     /// Marks the Pareto front (over every point, by time and the report's metric).
-    pub fn mark_pareto(&mut self) {
+    pub(crate) fn mark_pareto(&mut self) {
         let pairs: Vec<(f64, f64)> = self
             .points
             .iter()
@@ -174,7 +174,7 @@ impl Report {
     }
 
     /// The cheapest measured setting whose error (the report's metric) is at most `error`.
-    pub fn recommend_error(&self, error: f64) -> Recommendation {
+    pub(crate) fn recommend_error(&self, error: f64) -> Recommendation {
         let best = self
             .points
             .iter()
@@ -186,7 +186,7 @@ impl Report {
 
     /// The most accurate measured setting whose predicted full-resolution time is at most
     /// `seconds`.
-    pub fn recommend_time(&self, seconds: f64) -> Recommendation {
+    pub(crate) fn recommend_time(&self, seconds: f64) -> Recommendation {
         let best = self
             .points
             .iter()

@@ -27,7 +27,7 @@ pub struct SweepSize {
 
 impl SweepSize {
     /// The size of the images rendered: the region's, or the swept image's.
-    pub fn rendered(&self) -> (u32, u32) {
+    pub(crate) fn rendered(&self) -> (u32, u32) {
         self.region
             .map_or((self.width, self.height), |r| (r.width, r.height))
     }
@@ -35,14 +35,14 @@ impl SweepSize {
     /// How many times more pixels the full image has than a rendered one (what a measured
     /// time is multiplied by to predict the full render's; for a region this assumes its
     /// pixels cost what the image's do on average).
-    pub fn pixel_ratio(&self) -> f64 {
+    pub(crate) fn pixel_ratio(&self) -> f64 {
         let (w, h) = self.rendered();
         (f64::from(self.full_width) * f64::from(self.full_height)) / (f64::from(w) * f64::from(h))
     }
 }
 
 /// The scale that brings `width × height` under `max_pixels` (1 when it already is).
-pub fn auto_scale(width: u32, height: u32, max_pixels: u64) -> f64 {
+pub(crate) fn auto_scale(width: u32, height: u32, max_pixels: u64) -> f64 {
     let pixels = u64::from(width) * u64::from(height);
     if pixels <= max_pixels {
         1.0
@@ -54,7 +54,7 @@ pub fn auto_scale(width: u32, height: u32, max_pixels: u64) -> f64 {
 /// Scales `scene`'s image by `scale` per side (each side rounded, at least 1 pixel) keeping the
 /// view: a perspective camera keeps its field of view; the course camera's `up`, whose length
 /// is one pixel at the image plane, is divided by the actual ratio of heights.
-pub fn scale_scene(scene: &mut Scene, scale: f64) -> SweepSize {
+pub(crate) fn scale_scene(scene: &mut Scene, scale: f64) -> SweepSize {
     let c = &mut scene.camera;
     let (full_width, full_height) = (c.width, c.height);
     let side = |n: u32| ((f64::from(n) * scale).round() as u32).max(1);

@@ -22,7 +22,7 @@ pub enum Sweep {
 
 impl Sweep {
     /// The name in tables and JSON: `scene`, the knob's key, `joint`.
-    pub fn key(self) -> &'static str {
+    pub(crate) fn key(self) -> &'static str {
         match self {
             Sweep::Scene => "scene",
             Sweep::Ladder(k) => k.key(),
@@ -33,16 +33,16 @@ impl Sweep {
 
 /// A planned setting and the sweeps it belongs to.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Planned {
+pub(crate) struct Planned {
     /// The setting.
-    pub setting: Setting,
+    pub(crate) setting: Setting,
     /// Its sweeps, in plan order.
-    pub sweeps: Vec<Sweep>,
+    pub(crate) sweeps: Vec<Sweep>,
 }
 
 /// The distinct settings to measure, in order: the scene's own, the ladders of `knobs`, then
 /// (with `joint`) the joint product.
-pub fn plan(knobs: &[Knob], own: &Setting, joint: bool) -> Vec<Planned> {
+pub(crate) fn plan(knobs: &[Knob], own: &Setting, joint: bool) -> Vec<Planned> {
     let mut out: Vec<Planned> = Vec::new();
     let mut add =
         |setting: Setting, sweep: Sweep| match out.iter_mut().find(|p| p.setting == setting) {
@@ -84,7 +84,7 @@ pub trait SweepProgress: Sync {
 }
 
 /// The sweep's progress seen as one render's: only cancellation passes through.
-pub struct CancelOnly<'a>(pub &'a dyn SweepProgress);
+pub(crate) struct CancelOnly<'a>(pub(crate) &'a dyn SweepProgress);
 
 impl Progress for CancelOnly<'_> {
     fn cancelled(&self) -> bool {
@@ -94,22 +94,22 @@ impl Progress for CancelOnly<'_> {
 
 /// The measured points, in plan order, and whether the sweep ran to the end.
 #[derive(Clone, Debug)]
-pub struct Measured {
+pub(crate) struct Measured {
     /// Each measured setting with its sweeps.
-    pub points: Vec<(Vec<Sweep>, Measurement)>,
+    pub(crate) points: Vec<(Vec<Sweep>, Measurement)>,
     /// False when the sweep was cancelled (the points are those finished before).
-    pub complete: bool,
+    pub(crate) complete: bool,
 }
 
 /// Renders a setting how many times: `repeat` per seed, two seeds when the scene is random.
-pub fn renders_per_point(random: bool, options: &MeasureOptions) -> u64 {
+pub(crate) fn renders_per_point(random: bool, options: &MeasureOptions) -> u64 {
     u64::from(options.repeat.max(1)) * if random { 2 } else { 1 }
 }
 
 /// Measures every planned setting against `reference`, stopping early when `progress` cancels
 /// (the caller has announced the renders with [`SweepProgress::begin`]).
 /// `own_lights` is each light's own samples per edge.
-pub fn run(
+pub(crate) fn run(
     scene: &mut Prepared,
     own_lights: &[[u32; 2]],
     planned: &[Planned],

@@ -16,7 +16,7 @@ use std::time::SystemTime;
 
 /// A file as it was when loaded, with the loader's variant (a mesh's `smooth`).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct FileKey {
+pub(crate) struct FileKey {
     path: PathBuf,
     variant: bool,
     len: u64,
@@ -25,7 +25,7 @@ pub struct FileKey {
 
 impl FileKey {
     /// The key of `path` as it is now on disk.
-    pub fn of(path: &Path, variant: bool) -> FileKey {
+    pub(crate) fn of(path: &Path, variant: bool) -> FileKey {
         let meta = std::fs::metadata(path).ok();
         FileKey {
             path: path.to_path_buf(),
@@ -60,7 +60,7 @@ impl<T> Entry<T> {
 }
 
 /// A process-wide map from file to loaded value.
-pub struct Cache<T> {
+pub(crate) struct Cache<T> {
     map: OnceLock<Mutex<HashMap<FileKey, Entry<T>>>>,
 }
 
@@ -72,7 +72,7 @@ impl<T> Default for Cache<T> {
 
 impl<T> Cache<T> {
     /// An empty cache (usable in a `static`).
-    pub const fn new() -> Cache<T> {
+    pub(crate) const fn new() -> Cache<T> {
         Cache {
             map: OnceLock::new(),
         }
@@ -87,7 +87,7 @@ impl<T> Cache<T> {
     }
 
     /// The value for `key` if it is loaded and still current.
-    pub fn get(&self, key: &FileKey) -> Option<Arc<T>> {
+    pub(crate) fn get(&self, key: &FileKey) -> Option<Arc<T>> {
         self.map()
             .get(key)
             .filter(|e| e.is_current())
@@ -96,7 +96,7 @@ impl<T> Cache<T> {
 
     /// The value for `key`, loading it with `load` the first time (and again when a file
     /// `also` names for the loaded value, such as a mesh's material library, has changed).
-    pub fn get_or_load<E>(
+    pub(crate) fn get_or_load<E>(
         &self,
         key: FileKey,
         load: impl FnOnce() -> Result<T, E>,
@@ -126,18 +126,18 @@ impl<T> Cache<T> {
 
     /// Drops every version of `path`, and every value that was read from it besides its own
     /// file (they stay alive while others hold them).
-    pub fn forget(&self, path: &Path) {
+    pub(crate) fn forget(&self, path: &Path) {
         self.map()
             .retain(|k, e| k.path != path && e.also.iter().all(|a| a.path != path));
     }
 
     /// How many values are kept for `path` (versions and variants).
-    pub fn count(&self, path: &Path) -> usize {
+    pub(crate) fn count(&self, path: &Path) -> usize {
         self.map().keys().filter(|k| k.path == path).count()
     }
 
     /// Forgets every value (they stay alive while others hold them).
-    pub fn clear(&self) {
+    pub(crate) fn clear(&self) {
         self.map().clear();
     }
 }

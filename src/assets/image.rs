@@ -23,9 +23,9 @@ pub struct ImageError {
     /// What went wrong (the decoder's message).
     pub message: String,
     /// True when the file could not be opened at all.
-    pub missing: bool,
+    missing: bool,
     /// True when the image has more than [`MAX_TEXTURE_PIXELS`] pixels.
-    pub too_large: bool,
+    too_large: bool,
 }
 
 /// Whether `path` is a JPEG (it starts with the SOI marker FF D8) with no end-of-image marker
@@ -64,11 +64,11 @@ fn exr_data_window_pixels(path: &Path) -> Result<u64, ImageError> {
 }
 
 /// Bytes one decoded texel takes (three f64 channels).
-pub const DECODED_BYTES_PER_PIXEL: u64 = std::mem::size_of::<DVec3>() as u64;
+const DECODED_BYTES_PER_PIXEL: u64 = std::mem::size_of::<DVec3>() as u64;
 
 /// Bytes the image at `path` takes once decoded, from its header alone; `None` when it is not
 /// a regular file within the byte budget or its header cannot be read.
-pub fn header_bytes(path: &Path) -> Option<u64> {
+pub(crate) fn header_bytes(path: &Path) -> Option<u64> {
     crate::source::open_regular(path, MAX_TEXTURE_FILE_BYTES).ok()?;
     let (w, h) = image::ImageReader::open(path)
         .ok()?
@@ -79,7 +79,7 @@ pub fn header_bytes(path: &Path) -> Option<u64> {
 
 impl Picture {
     /// Wraps texels stored row by row from the top (`texels.len() == width·height`, both ≥ 1).
-    pub fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
+    pub(crate) fn new(width: u32, height: u32, texels: Vec<DVec3>) -> Option<Picture> {
         let ok = width > 0 && height > 0 && texels.len() == width as usize * height as usize;
         ok.then_some(Picture {
             width,
@@ -165,7 +165,7 @@ impl Picture {
     }
 
     /// The size of one texel in (u, v).
-    pub fn texel_size(&self) -> (f64, f64) {
+    pub(crate) fn texel_size(&self) -> (f64, f64) {
         (1.0 / f64::from(self.width), 1.0 / f64::from(self.height))
     }
 
@@ -180,7 +180,7 @@ impl Picture {
     }
 
     /// Approximate heap bytes.
-    pub fn memory(&self) -> usize {
+    pub(crate) fn memory(&self) -> usize {
         self.texels.len() * std::mem::size_of::<DVec3>()
     }
 }
@@ -188,7 +188,7 @@ impl Picture {
 impl ImageError {
     /// The diagnostic for this error on the image `path` named at `span`:
     /// `rtc::texture::{not_found, too_large, malformed}`.
-    pub fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
+    pub(crate) fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
         if self.too_large {
             return Diagnostic::error(
                 "rtc::texture::too_large",

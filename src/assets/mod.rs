@@ -7,24 +7,23 @@
 //! The service depends only on the IR (materials it creates) and the diagnostic leaves; it knows
 //! nothing of BVHs or rendering: geometry builds its structures from the plain data loaded here.
 
-pub mod cache;
-pub mod image;
-pub mod mtl;
-pub mod obj;
+mod cache;
+mod image;
+mod mtl;
+mod obj;
 pub mod obj_count;
-pub mod obj_error;
+mod obj_error;
 pub mod obj_fast;
-pub mod obj_file;
-pub mod obj_inside;
-pub mod search;
+pub(crate) mod obj_file;
+mod obj_inside;
+pub(crate) mod search;
 
 use std::path::Path;
 use std::sync::Arc;
 
 pub use self::image::{ImageError, Picture};
 pub use obj::MeshAsset;
-pub use obj_error::MeshError;
-pub use search::{ASSET_PATH_VAR, NotFound};
+pub(crate) use obj_error::MeshError;
 
 use cache::{Cache, FileKey};
 
@@ -33,7 +32,7 @@ static PICTURES: Cache<Picture> = Cache::new();
 
 /// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
 /// when it or one of its material libraries changes).
-pub fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
+pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
     MESHES.get_or_load(
         FileKey::of(path, smooth),
         || MeshAsset::load(path, smooth),
@@ -43,7 +42,7 @@ pub fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
 
 /// Bytes the image at `path` takes decoded: from the cache if it is there, else from its
 /// header's size (nothing is decoded). 0 when the header cannot be read: decoding will say why.
-pub fn picture_bytes(path: &Path) -> u64 {
+pub(crate) fn picture_bytes(path: &Path) -> u64 {
     match PICTURES.get(&FileKey::of(path, false)) {
         Some(p) => p.memory() as u64,
         None => image::header_bytes(path).unwrap_or(0),

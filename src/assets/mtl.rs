@@ -5,7 +5,7 @@ use glam::DVec3;
 use crate::ir::Material;
 
 /// Converts an MTL material (Kd colour, Ka/Ks scaled to rtc's scalar coefficients, Ns, d, Ni).
-pub fn convert(m: &tobj::Material) -> Material {
+pub(crate) fn convert(m: &tobj::Material) -> Material {
     let v = |c: [f32; 3]| DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64);
     let mut out = Material::default();
     if let Some(kd) = m.diffuse {

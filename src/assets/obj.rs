@@ -18,13 +18,13 @@ use crate::ir::Material;
 use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
 
 /// Faces meeting at less than this angle share smoothed normals; sharper edges stay creased.
-pub const CREASE_ANGLE_DEG: f64 = 60.0;
+const CREASE_ANGLE_DEG: f64 = 60.0;
 
 /// A loaded OBJ file, shared (`Arc`) through the asset cache.
 #[derive(Debug)]
 pub struct MeshAsset {
     /// The file it came from.
-    pub path: PathBuf,
+    pub(crate) path: PathBuf,
     /// Vertex positions the triangles index (unreferenced ones may be among them).
     pub vertices: Vec<Vec3>,
     /// Triangles in file order (faces with area only), as indices into `vertices`.
@@ -41,13 +41,13 @@ pub struct MeshAsset {
     pub warnings: Vec<String>,
     /// The material libraries its `mtllib` lines name, read or not (the cache reloads the mesh
     /// when one of them changes).
-    pub libraries: Vec<PathBuf>,
+    pub(crate) libraries: Vec<PathBuf>,
     /// Smallest corner of the vertices' bounds (object space).
     pub min: DVec3,
     /// Largest corner of the vertices' bounds.
     pub max: DVec3,
     /// Time `load` took.
-    pub load_time: Duration,
+    pub(crate) load_time: Duration,
     closed: OnceLock<bool>,
 }
 

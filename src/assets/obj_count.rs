@@ -67,7 +67,7 @@ pub enum Counted {
 
 /// The triangles the faces in `text` make: a face line (`f` and its corners, up to a `#`
 /// comment) of n corners makes n − 2. Counted on every core, a chunk of lines each.
-pub fn face_triangles(text: &[u8]) -> u64 {
+fn face_triangles(text: &[u8]) -> u64 {
     let mut bounds = vec![0];
     let mut at = 0;
     while at + CHUNK < text.len() {

@@ -12,16 +12,16 @@ pub struct MeshError {
     /// What went wrong, lower case.
     pub message: String,
     /// 1-based line in the OBJ file, where known.
-    pub line: Option<usize>,
+    pub(crate) line: Option<usize>,
     /// True when the file could not be opened or read at all.
-    pub missing: bool,
+    pub(crate) missing: bool,
     /// True when the file is valid but over the triangle budget.
     pub too_large: bool,
 }
 
 impl MeshError {
     /// An error with an optional line.
-    pub fn new(message: impl Into<String>, line: Option<usize>) -> MeshError {
+    pub(crate) fn new(message: impl Into<String>, line: Option<usize>) -> MeshError {
         MeshError {
             message: message.into(),
             line,
@@ -34,7 +34,7 @@ impl MeshError {
 impl MeshError {
     /// The diagnostic for this error on the mesh `path` placed at `span`:
     /// `rtc::mesh::{not_found, too_large, malformed}`.
-    pub fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
+    pub(crate) fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
         if self.missing {
             return Diagnostic::error(
                 "rtc::mesh::not_found",
@@ -77,7 +77,7 @@ impl MeshError {
 }
 
 /// Turns a tobj error into a message and, where the kind allows, the first offending line.
-pub fn locate(path: &Path, e: tobj::LoadError) -> MeshError {
+pub(crate) fn locate(path: &Path, e: tobj::LoadError) -> MeshError {
     use tobj::LoadError as E;
     if matches!(e, E::OpenFileFailed | E::ReadError) {
         return MeshError {

@@ -20,21 +20,21 @@ use rayon::prelude::*;
 #[derive(Debug, Default, PartialEq)]
 pub struct ObjData {
     /// Every `v` line.
-    pub positions: Vec<Vec3>,
+    pub(crate) positions: Vec<Vec3>,
     /// Every `vt` line (its first two numbers).
-    pub texcoords: Vec<Vec2>,
+    pub(crate) texcoords: Vec<Vec2>,
     /// Every `vn` line.
-    pub normals: Vec<Vec3>,
+    pub(crate) normals: Vec<Vec3>,
     /// Position indices of each triangle, faces in file order, each fanned from its first corner.
-    pub triangles: Vec<[u32; 3]>,
+    pub(crate) triangles: Vec<[u32; 3]>,
     /// Texture coordinate indices per triangle (empty when the file has no `vt`).
-    pub tex_of: Vec<[u32; 3]>,
+    pub(crate) tex_of: Vec<[u32; 3]>,
     /// Normal indices per triangle (empty when the file has no `vn`).
-    pub normal_of: Vec<[u32; 3]>,
+    pub(crate) normal_of: Vec<[u32; 3]>,
     /// Material index per triangle (`None`: none or unknown); empty when the file has no `usemtl`.
-    pub material_of: Vec<Option<usize>>,
+    pub(crate) material_of: Vec<Option<usize>>,
     /// The material current at the end of the file (tobj's last, possibly empty, group has it).
-    pub last_material: Option<usize>,
+    pub(crate) last_material: Option<usize>,
 }
 
 /// A material library line or a material choice, after `triangles` triangles of its chunk.
@@ -51,7 +51,7 @@ const CHUNK_BYTES: usize = 1 << 19;
 /// Reads `text` if it lies in the subset; `library` loads an `mtllib` (as tobj's material
 /// loader: called for every such line in order) and `use_material` maps a `usemtl` name to a
 /// material index with the libraries loaded so far. `None`: leave the file to tobj.
-pub fn read(
+pub(crate) fn read(
     text: &[u8],
     library: &mut dyn FnMut(&str),
     use_material: &mut dyn FnMut(&str) -> Option<usize>,

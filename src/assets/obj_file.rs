@@ -12,21 +12,15 @@ use std::path::{Path, PathBuf};
 use tobj::{LoadError, LoadOptions, Model};
 
 /// Bytes of one MTL material library, checked before reading (docs/language.md §24).
-pub const MAX_MTL_BYTES: u64 = 64 << 20;
+const MAX_MTL_BYTES: u64 = 64 << 20;
 
 /// The materials of an OBJ file, or why its material library could not be used.
-pub type Materials = Result<Vec<tobj::Material>, String>;
+pub(crate) type Materials = Result<Vec<tobj::Material>, String>;
 
-/// The models in the OBJ file at `path` and its materials (`mtllib` paths are relative to it).
-pub fn read(path: &Path, opts: &LoadOptions) -> Result<(Vec<Model>, Materials), LoadError> {
-    let text = crate::source::read_regular(path, crate::ir::limits::MAX_MESH_FILE_BYTES)
-        .map_err(|_| LoadError::OpenFileFailed)?;
-    read_text(&Libraries::new(path), &text, opts)
-}
-
-/// [`read`] of the file's bytes `text`, already read, its libraries loaded through `libs`
-/// (made for the same file), which lists them afterwards.
-pub fn read_text(
+/// The models in the OBJ file's bytes `text` and its materials (`mtllib` paths are relative to
+/// the file), its libraries loaded through `libs` (made for the same file), which lists them
+/// afterwards.
+pub(crate) fn read_text(
     libs: &Libraries,
     text: &[u8],
     opts: &LoadOptions,
@@ -39,7 +33,7 @@ pub fn read_text(
 }
 
 /// Where the library an `mtllib` line names is read from: relative to the OBJ file's folder.
-pub fn library_path(obj: &Path, lib: &Path) -> PathBuf {
+fn library_path(obj: &Path, lib: &Path) -> PathBuf {
     obj.parent()
         .map_or_else(|| lib.to_path_buf(), |dir| dir.join(lib))
 }
@@ -48,7 +42,7 @@ pub fn library_path(obj: &Path, lib: &Path) -> PathBuf {
 /// `mtllib` line (the line's first word; the name is the rest after the first space, trimmed,
 /// so it may hold spaces), without parsing anything else: what a loaded mesh reads besides
 /// its own file (the fingerprint of shards, `rtc watch`).
-pub fn library_paths(obj: &Path, text: &[u8]) -> Vec<PathBuf> {
+pub(crate) fn library_paths(obj: &Path, text: &[u8]) -> Vec<PathBuf> {
     let mut out: Vec<PathBuf> = Vec::new();
     for line in text.split(|&b| b == b'\n') {
         let line = line.strip_suffix(b"\r").unwrap_or(line);
@@ -73,7 +67,7 @@ pub fn library_paths(obj: &Path, text: &[u8]) -> Vec<PathBuf> {
 
 /// The material libraries of one OBJ file, loaded as tobj loads them (its loader callback and
 /// its merging, for the parallel reader of `obj_fast`, which meets the same lines in order).
-pub struct Libraries<'a> {
+pub(crate) struct Libraries<'a> {
     obj: &'a Path,
     /// The first library with a colour line tobj would panic on.
     problem: RefCell<Option<String>>,
@@ -87,7 +81,7 @@ pub struct Libraries<'a> {
 
 impl<'a> Libraries<'a> {
     /// No libraries yet, for the OBJ file `obj`.
-    pub fn new(obj: &'a Path) -> Libraries<'a> {
+    pub(crate) fn new(obj: &'a Path) -> Libraries<'a> {
         Libraries {
             obj,
             problem: RefCell::new(None),
@@ -99,7 +93,7 @@ impl<'a> Libraries<'a> {
     }
 
     /// Reads the library `lib` (relative to the OBJ file) as tobj's material loader.
-    pub fn load(&self, lib: &Path) -> tobj::MTLLoadResult {
+    fn load(&self, lib: &Path) -> tobj::MTLLoadResult {
         let full = library_path(self.obj, lib);
         {
             let mut files = self.files.borrow_mut();
@@ -120,7 +114,7 @@ impl<'a> Libraries<'a> {
     }
 
     /// Loads and merges the library an `mtllib` line names (tobj's `TmpMaterials::merge`).
-    pub fn add(&mut self, lib: &str) {
+    pub(crate) fn add(&mut self, lib: &str) {
         match self.load(Path::new(lib)) {
             Ok((mut mats, map)) => {
                 let offset = self.merged.len();
@@ -134,17 +128,17 @@ impl<'a> Libraries<'a> {
     }
 
     /// The libraries asked for so far (read or not: one that appears later changes the mesh).
-    pub fn files(&self) -> Vec<PathBuf> {
+    pub(crate) fn files(&self) -> Vec<PathBuf> {
         self.files.borrow().clone()
     }
 
     /// The index a `usemtl` line's name selects, among the libraries merged so far.
-    pub fn find(&self, name: &str) -> Option<usize> {
+    pub(crate) fn find(&self, name: &str) -> Option<usize> {
         self.names.get(name).copied()
     }
 
     /// The merged materials as tobj returns them (any material, else the last error).
-    pub fn merged(&mut self) -> Materials {
+    pub(crate) fn merged(&mut self) -> Materials {
         let merged = std::mem::take(&mut self.merged);
         let result = match self.error.take() {
             Some(e) if merged.is_empty() => Err(e),

@@ -21,7 +21,7 @@ const DIRECTIONS: [[f64; 3]; 3] = [
 impl MeshAsset {
     /// Whether `p` (in the file's coordinates) is inside the surface; meaningful for a closed
     /// mesh ([`MeshAsset::is_closed`]).
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         if !(self.min.cmple(p).all() && p.cmple(self.max).all()) {
             return false;
         }

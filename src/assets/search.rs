@@ -19,29 +19,29 @@ use crate::source::Span;
 
 /// Environment variable: directories (separated like `PATH`) searched for assets that are not
 /// found next to the file naming them.
-pub const ASSET_PATH_VAR: &str = "RTC_ASSET_PATH";
+const ASSET_PATH_VAR: &str = "RTC_ASSET_PATH";
 
 /// Diagnostic code of an asset file that is not found.
-pub const MISSING: &str = "rtc::asset::missing";
+const MISSING: &str = "rtc::asset::missing";
 
 /// How many directory levels above the naming file the course folders are looked for.
 const COURSE_LEVELS: usize = 3;
 
 /// An asset that none of the search steps found.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct NotFound {
+pub(crate) struct NotFound {
     /// The name as written.
-    pub name: String,
+    name: String,
     /// Step 2's path: where the name points from the naming file.
-    pub resolved: PathBuf,
+    resolved: PathBuf,
     /// The value of [`ASSET_PATH_VAR`] (empty when unset).
-    pub asset_path: String,
+    asset_path: String,
     /// The naming file's directory, whose course folders were searched (`None` for an absolute
     /// name, which is looked for nowhere else).
-    pub course_dir: Option<PathBuf>,
+    course_dir: Option<PathBuf>,
     /// A file next to where the name points whose name is close (`Teddy.OBJ` for `teddy.obj`:
     /// the same but for case first), for "did you mean".
-    pub near: Option<String>,
+    near: Option<String>,
 }
 
 /// The name of a file in `path`'s directory that is close to its file name: the same but for
@@ -69,7 +69,7 @@ fn near_name(path: &Path) -> Option<String> {
 }
 
 /// `rel` joined to `dir` without touching the file system: `.` is dropped and `x/..` removed.
-pub fn join(dir: &Path, rel: &str) -> PathBuf {
+pub(crate) fn join(dir: &Path, rel: &str) -> PathBuf {
     let mut out = PathBuf::new();
     for c in dir.join(rel).components() {
         match c {
@@ -84,7 +84,7 @@ pub fn join(dir: &Path, rel: &str) -> PathBuf {
 }
 
 /// Finds the file `name` written in a scene whose directory is `dir`, in the order above.
-pub fn find(dir: &Path, name: &str) -> Result<PathBuf, NotFound> {
+pub(crate) fn find(dir: &Path, name: &str) -> Result<PathBuf, NotFound> {
     let given = Path::new(name);
     let resolved = join(dir, name);
     let asset_path = std::env::var_os(ASSET_PATH_VAR).unwrap_or_default();
@@ -124,7 +124,7 @@ pub fn find(dir: &Path, name: &str) -> Result<PathBuf, NotFound> {
 impl NotFound {
     /// The diagnostic for a `kind` file ("mesh", "texture", "image") named at `span` in the
     /// file `naming_file`.
-    pub fn diagnostic(&self, span: Span, kind: &str, naming_file: &Path) -> Diagnostic {
+    pub(crate) fn diagnostic(&self, span: Span, kind: &str, naming_file: &Path) -> Diagnostic {
         let searched = if self.asset_path.is_empty() {
             format!("{ASSET_PATH_VAR} is not set")
         } else {

@@ -8,7 +8,7 @@ use rtc::accuracy::reference::Source;
 use rtc::accuracy::report::Recommendation;
 
 /// The whole report as text: what was swept, one row per point, the recommendations.
-pub fn table(r: &Report) -> String {
+pub(crate) fn table(r: &Report) -> String {
     let mut out = String::new();
     let s = &r.size;
     let size = if (s.width, s.height) == (s.full_width, s.full_height) {

@@ -10,7 +10,7 @@ use rtc::render::output::ImageFormat;
 use rtc::source::{SourceMap, Span};
 
 /// Parses one `--aov` name (clap splits the list at commas).
-pub fn parse(text: &str) -> Result<Channel, String> {
+pub(crate) fn parse(text: &str) -> Result<Channel, String> {
     let name = text.trim();
     let names = Channel::AOVS.map(Channel::name);
     if let Some(c) = Channel::AOVS.into_iter().find(|c| c.name() == name) {
@@ -27,7 +27,7 @@ pub fn parse(text: &str) -> Result<Channel, String> {
 }
 
 /// The layers in the order asked, each once.
-pub fn dedup(aovs: &[Channel]) -> Vec<Channel> {
+pub(crate) fn dedup(aovs: &[Channel]) -> Vec<Channel> {
     let mut out = Vec::new();
     for c in aovs {
         if !out.contains(c) {
@@ -38,7 +38,7 @@ pub fn dedup(aovs: &[Channel]) -> Vec<Channel> {
 }
 
 /// What is wrong with writing AOV layers to `path` (only EXR holds them).
-pub fn check_output(path: &Path) -> Result<(), String> {
+pub(crate) fn check_output(path: &Path) -> Result<(), String> {
     if ImageFormat::of(path) == Some(ImageFormat::Exr) {
         return Ok(());
     }
@@ -50,12 +50,15 @@ pub fn check_output(path: &Path) -> Result<(), String> {
 }
 
 /// The sidecar of an image with an object-id layer: `out.exr` → `out.objects.json`.
-pub fn sidecar_path(image: &Path) -> PathBuf {
+pub(crate) fn sidecar_path(image: &Path) -> PathBuf {
     image.with_extension("objects.json")
 }
 
 /// Writes a sidecar document (atomically) and says so.
-pub fn write_sidecar(json: &serde_json::Value, path: &Path) -> Result<(), rtc::diag::Diagnostic> {
+pub(crate) fn write_sidecar(
+    json: &serde_json::Value,
+    path: &Path,
+) -> Result<(), rtc::diag::Diagnostic> {
     let text = serde_json::to_string_pretty(json).unwrap_or_default() + "\n";
     rtc::render::output::write_atomically(path, text.as_bytes())?;
     eprintln!("wrote {}", path.display());
@@ -64,7 +67,7 @@ pub fn write_sidecar(json: &serde_json::Value, path: &Path) -> Result<(), rtc::d
 
 /// The sidecar's JSON: for each object id of the `object.id` layer, the object's kind and where
 /// the scene defined it (schema `rtc-objects/1`, docs/aov.md).
-pub fn sidecar(scene: &Scene, sources: &SourceMap, image: &Path) -> serde_json::Value {
+pub(crate) fn sidecar(scene: &Scene, sources: &SourceMap, image: &Path) -> serde_json::Value {
     let objects: Vec<serde_json::Value> = scene
         .objects
         .iter()

@@ -25,7 +25,12 @@ struct FileCheck {
 
 /// Checks a file or every `.rtc` file below a directory and prints the findings.
 /// `options` carry the command line's frame, fps and `--set` overrides to every file.
-pub fn run(path: &Path, format: Format, deny_warnings: bool, options: &EvalOptions) -> Outcome {
+pub(crate) fn run(
+    path: &Path,
+    format: Format,
+    deny_warnings: bool,
+    options: &EvalOptions,
+) -> Outcome {
     if path.is_dir() {
         return run_dir(path, format, deny_warnings, options);
     }
@@ -198,7 +203,7 @@ fn json_of(c: &FileCheck, format: Format) -> serde_json::Value {
 }
 
 /// "1 error, 2 warnings".
-pub fn count_line(diags: &Diagnostics) -> String {
+pub(crate) fn count_line(diags: &Diagnostics) -> String {
     counts(diags.error_count(), diags.warning_count())
 }
 

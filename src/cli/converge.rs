@@ -14,20 +14,20 @@ use rtc::render::progressive::{self, Budget, Round, SampleMap};
 
 /// What the user asked of a progressive render.
 #[derive(Clone, Debug, Default)]
-pub struct Request {
+pub(crate) struct Request {
     /// Stop when the error estimate is at most this.
-    pub target_error: Option<f64>,
+    pub(crate) target_error: Option<f64>,
     /// Stop when this much time is spent (the last complete round is written).
-    pub time: Option<Duration>,
+    pub(crate) time: Option<Duration>,
     /// Reproduce the sample counts of this map instead.
-    pub samples_from: Option<PathBuf>,
+    pub(crate) samples_from: Option<PathBuf>,
     /// Where to write the reached sample map (default: the image path with `.samples` added).
-    pub samples_to: Option<PathBuf>,
+    pub(crate) samples_to: Option<PathBuf>,
 }
 
 impl Request {
     /// Whether any progressive option was given.
-    pub fn wanted(&self) -> bool {
+    pub(crate) fn wanted(&self) -> bool {
         self.target_error.is_some() || self.time.is_some() || self.samples_from.is_some()
     }
 }
@@ -43,7 +43,7 @@ impl Progress for Deadline {
 
 /// Renders progressively, prints a line per round and the budget reached, writes the sample
 /// map next to `image`, and returns the film.
-pub fn render(
+pub(crate) fn render(
     prepared: &Prepared,
     threads: usize,
     req: &Request,
@@ -109,7 +109,7 @@ fn round_line(r: &Round, t: f64, target: Option<f64>, history: &[(f64, f64)]) ->
 /// Seconds until the estimate reaches `target`, extrapolated on a log-log line through the
 /// last two rounds (error ∝ time^slope): `None` before two rounds or when the error did not
 /// fall.
-pub fn eta(history: &[(f64, f64)], target: f64) -> Option<f64> {
+pub(crate) fn eta(history: &[(f64, f64)], target: f64) -> Option<f64> {
     let [.., (t0, e0), (t1, e1)] = history else {
         return None;
     };
@@ -145,7 +145,7 @@ fn read_map(file: &Path) -> Result<SampleMap, Diagnostic> {
 }
 
 /// Parses a duration such as `30`, `30s`, `2.5m` or `1h` (seconds without a unit).
-pub fn parse_duration(s: &str) -> Result<Duration, String> {
+pub(crate) fn parse_duration(s: &str) -> Result<Duration, String> {
     let (num, unit) = match s.trim().char_indices().last() {
         Some((i, c)) if c.is_ascii_alphabetic() => (&s.trim()[..i], c),
         _ => (s.trim(), 's'),
@@ -164,7 +164,7 @@ pub fn parse_duration(s: &str) -> Result<Duration, String> {
 }
 
 /// Parses a target error: a finite number > 0.
-pub fn parse_error(s: &str) -> Result<f64, String> {
+pub(crate) fn parse_error(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
         Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
         _ => Err(format!(

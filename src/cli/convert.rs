@@ -12,7 +12,7 @@ use crate::cli::{Outcome, outcome_of};
 
 /// Converts `file`; asset paths are written relative to OUT's directory, or to the working
 /// directory when the text goes to stdout (where `> out.rtc` puts it).
-pub fn run(file: &Path, output: Option<&Path>, format: Format) -> Outcome {
+pub(crate) fn run(file: &Path, output: Option<&Path>, format: Format) -> Outcome {
     let out_dir = match output {
         Some(o) => o
             .parent()

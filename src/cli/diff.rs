@@ -18,7 +18,7 @@ enum Op {
 }
 
 /// The unified diff from `old` to `new` (empty when they are equal); `name` heads it.
-pub fn unified(name: &str, old: &str, new: &str) -> String {
+pub(crate) fn unified(name: &str, old: &str, new: &str) -> String {
     let a: Vec<&str> = old.lines().collect();
     let b: Vec<&str> = new.lines().collect();
     let ops = script(&a, &b);

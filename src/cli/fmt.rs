@@ -26,7 +26,7 @@ enum Done {
 }
 
 /// Formats every path (files, directories of `.rtc` files, or `-` for standard input).
-pub fn run(paths: &[PathBuf], check: bool, format: Format) -> Outcome {
+pub(crate) fn run(paths: &[PathBuf], check: bool, format: Format) -> Outcome {
     let mut files = Vec::new();
     for p in paths {
         if p.as_os_str() == "-" {

@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 /// The frames `--frames` asks for: `A..B` (B excluded) or `A..=B`, optionally `:STEP` (> 0).
-pub fn parse_range(text: &str) -> Result<Vec<i64>, String> {
+pub(crate) fn parse_range(text: &str) -> Result<Vec<i64>, String> {
     let bad = || {
         format!(
             "`--frames {text}` is not a frame range: write `A..B` (B excluded), `A..=B`, or add a step, e.g. `0..=48:2`"
@@ -45,17 +45,17 @@ pub fn parse_range(text: &str) -> Result<Vec<i64>, String> {
 }
 
 /// Frames one `rtc render` may render (a typo such as `0..100000` should not start a day's work).
-pub const MAX_FRAMES: usize = 10_000;
+pub(crate) const MAX_FRAMES: usize = 10_000;
 
 /// True when `path` has a place for the frame number.
-pub fn has_pattern(path: &Path) -> bool {
+pub(crate) fn has_pattern(path: &Path) -> bool {
     let s = path.to_string_lossy();
     s.contains("{frame}") || s.contains('#')
 }
 
 /// `path` with `{frame}` replaced by the frame number and the first run of `#` by the number
 /// zero-padded to the run's length (`shot_####.png`, frame 7 → `shot_0007.png`).
-pub fn numbered(path: &Path, frame: i64) -> PathBuf {
+pub(crate) fn numbered(path: &Path, frame: i64) -> PathBuf {
     let s = path
         .to_string_lossy()
         .replace("{frame}", &frame.to_string());
@@ -72,7 +72,7 @@ pub fn numbered(path: &Path, frame: i64) -> PathBuf {
 }
 
 /// The output name when `--frames` has none with a pattern: the input's name with `_####.png`.
-pub fn default_pattern(file: &Path) -> PathBuf {
+pub(crate) fn default_pattern(file: &Path) -> PathBuf {
     let stem = file
         .file_stem()
         .map_or_else(|| "frame".into(), |s| s.to_string_lossy().into_owned());

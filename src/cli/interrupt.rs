@@ -18,10 +18,10 @@ static GRACEFUL: AtomicBool = AtomicBool::new(false);
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// The exit code of a command ended by a signal.
-pub const EXIT_CODE: i32 = 130;
+pub(crate) const EXIT_CODE: i32 = 130;
 
 /// Installs the handler (once per process; a second call changes nothing).
-pub fn install() {
+pub(crate) fn install() {
     // Without a handler (a platform that refuses one) signals keep their default action.
     let _ = ctrlc::set_handler(|| {
         if GRACEFUL.load(Ordering::SeqCst) && !INTERRUPTED.swap(true, Ordering::SeqCst) {
@@ -32,11 +32,11 @@ pub fn install() {
 }
 
 /// Makes the first signal only set the flag [`interrupted`] reads.
-pub fn graceful() {
+pub(crate) fn graceful() {
     GRACEFUL.store(true, Ordering::SeqCst);
 }
 
 /// Whether a signal came since [`graceful`].
-pub fn interrupted() -> bool {
+pub(crate) fn interrupted() -> bool {
     INTERRUPTED.load(Ordering::Relaxed)
 }

@@ -1,24 +1,24 @@
 //! Binary-only parts of the command line.
 
-pub mod accuracy;
-pub mod accuracy_table;
-pub mod aov;
-pub mod check;
-pub mod converge;
-pub mod convert;
-pub mod diff;
-pub mod fmt;
-pub mod frames;
-pub mod inputs;
-pub mod interrupt;
-pub mod progress;
-pub mod render;
-pub mod report;
-pub mod shard;
-pub mod stats;
-pub mod watch;
-pub mod why;
-pub mod why_json;
+pub(crate) mod accuracy;
+pub(crate) mod accuracy_table;
+pub(crate) mod aov;
+pub(crate) mod check;
+pub(crate) mod converge;
+pub(crate) mod convert;
+pub(crate) mod diff;
+pub(crate) mod fmt;
+pub(crate) mod frames;
+pub(crate) mod inputs;
+pub(crate) mod interrupt;
+pub(crate) mod progress;
+pub(crate) mod render;
+pub(crate) mod report;
+pub(crate) mod shard;
+pub(crate) mod stats;
+pub(crate) mod watch;
+pub(crate) mod why;
+pub(crate) mod why_json;
 
 use std::path::Path;
 

@@ -8,14 +8,14 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 /// A bar over image rows (a no-op when stderr is not a terminal), with an optional deadline.
-pub struct Bar {
+pub(crate) struct Bar {
     bar: Option<ProgressBar>,
     deadline: Option<Instant>,
 }
 
 impl Bar {
     /// A bar on stderr if it is a terminal; past `deadline` the render is cancelled.
-    pub fn on_stderr(deadline: Option<Instant>) -> Bar {
+    pub(crate) fn on_stderr(deadline: Option<Instant>) -> Bar {
         if !std::io::stderr().is_terminal() {
             return Bar {
                 bar: None,

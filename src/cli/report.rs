@@ -9,7 +9,7 @@ use rtc::source::{SourceMap, Span};
 
 /// Output style of diagnostics, chosen with `--format`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Format {
+pub(crate) enum Format {
     /// Source snippets with labels (miette).
     Human,
     /// One compact block per diagnostic; stable, for tests and grep.
@@ -20,7 +20,7 @@ pub enum Format {
 
 /// Renders `diags` in `format`; `color` only affects the human format.
 /// `subject` names the input file, shown for diagnostics that have no span.
-pub fn render(
+pub(crate) fn render(
     diags: &[Diagnostic],
     sources: &SourceMap,
     subject: &str,
@@ -80,7 +80,7 @@ fn capped(diags: &[Diagnostic]) -> std::borrow::Cow<'_, [Diagnostic]> {
 }
 
 /// Errors, and warnings, a report shows at most (docs/language.md §24).
-pub(crate) const MAX_SHOWN: usize = rtc::diag::MAX_ERRORS;
+pub const MAX_SHOWN: usize = rtc::diag::MAX_ERRORS;
 
 /// The code of the note that counts the diagnostics a report leaves out.
 const OMITTED: &str = "rtc::diag::omitted";

@@ -26,7 +26,10 @@ const NEUTRAL_WITH_VALUE: &[&str] = &[
 const NEUTRAL_FLAGS: &[&str] = &["--stats"];
 
 /// The shard of `--shard` (`K/N` or `auto` with `--shards`), if any.
-pub fn resolve(spec: Option<&str>, shards: Option<u32>) -> Result<Option<Shard>, Diagnostic> {
+pub(crate) fn resolve(
+    spec: Option<&str>,
+    shards: Option<u32>,
+) -> Result<Option<Shard>, Diagnostic> {
     match spec {
         None => Ok(None),
         Some("auto") => Shard::from_env(shards, |k| std::env::var(k).ok()).map(Some),
@@ -35,7 +38,7 @@ pub fn resolve(spec: Option<&str>, shards: Option<u32>) -> Result<Option<Shard>,
 }
 
 /// Prints a usage diagnostic (no source spans) and gives the usage exit code.
-pub fn usage_error(d: &Diagnostic) -> Outcome {
+pub(crate) fn usage_error(d: &Diagnostic) -> Outcome {
     let text = report::render(
         std::slice::from_ref(d),
         &SourceMap::new(),
@@ -48,7 +51,7 @@ pub fn usage_error(d: &Diagnostic) -> Outcome {
 }
 
 /// Where shard `s` goes: `-o` as given, else the image's name with `.part-K-of-N.rtcpart`.
-pub fn part_path(output: Option<PathBuf>, image: &Path, s: Shard) -> PathBuf {
+pub(crate) fn part_path(output: Option<PathBuf>, image: &Path, s: Shard) -> PathBuf {
     output
         .unwrap_or_else(|| image.with_extension(format!("part-{}-of-{}.rtcpart", s.index, s.count)))
 }
@@ -60,7 +63,7 @@ const IN_THE_SCENE: &[&str] = &["--set", "--frame", "--fps"];
 
 /// The fingerprint of this process's pixel-changing options ([`settings_of`] of its
 /// arguments after `render`).
-pub fn settings_fingerprint(scene_file: &Path) -> String {
+pub(crate) fn settings_fingerprint(scene_file: &Path) -> String {
     let args: Vec<String> = std::env::args().skip(2).collect();
     settings_of(&args, scene_file)
 }
@@ -69,7 +72,7 @@ pub fn settings_fingerprint(scene_file: &Path) -> String {
 /// each option with the values that follow it is one item, items are sorted, so their order
 /// on the command line does not matter; the scene path (its content is in the scene
 /// fingerprint), the neutral options and those whose effect is in the scene are left out.
-pub fn settings_of(args: &[String], scene_file: &Path) -> String {
+pub(crate) fn settings_of(args: &[String], scene_file: &Path) -> String {
     let mut items: Vec<String> = Vec::new();
     let mut skipping = false;
     let mut seen_file = false;
@@ -103,7 +106,7 @@ pub fn settings_of(args: &[String], scene_file: &Path) -> String {
 
 /// Writes shard `s` of a rendered film to `path` atomically; `scene` is the scene's
 /// fingerprint (`opt::fingerprint::scene`).
-pub fn write_part(
+pub(crate) fn write_part(
     film: &rtc::render::film::Film,
     scene_file: &Path,
     scene: String,
@@ -117,7 +120,7 @@ pub fn write_part(
 }
 
 /// `rtc merge PARTS -o OUTPUT`.
-pub fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
+pub(crate) fn merge(paths: &[PathBuf], output: &Path) -> Outcome {
     let fail = |d: Diagnostic| {
         let io = d.code == IO_ERROR;
         usage_error(&d);

@@ -10,7 +10,12 @@ use rtc::render::film::Film;
 /// A few lines describing the world, the quality knobs and the rays of a finished render:
 /// `load` is the time to read and evaluate the scene, `elapsed` the preparation's and render's
 /// together.
-pub fn describe(film: &Film, prepared: &Prepared, load: Duration, elapsed: Duration) -> String {
+pub(crate) fn describe(
+    film: &Film,
+    prepared: &Prepared,
+    load: Duration,
+    elapsed: Duration,
+) -> String {
     let w = &prepared.stats();
     let s = &film.stats;
     let rays = s.camera_rays + s.secondary_rays + s.shadow_rays;

@@ -13,10 +13,10 @@ use crate::ir::{
 use crate::source::Span;
 
 /// Largest magnitude accepted for any number; beyond it f64 rendering math loses all precision.
-pub const MAX_ABS: f64 = 1e12;
+const MAX_ABS: f64 = 1e12;
 
 /// Reports NaN, infinities and absurd magnitudes; `text` is the number as written.
-pub fn check_number(
+pub(crate) fn check_number(
     text: &str,
     value: f64,
     span: Span,
@@ -50,7 +50,7 @@ pub fn check_number(
 }
 
 /// Reports a value outside its meaningful range with the value shown.
-pub fn out_of_range(span: Span, text: &str, what: &str, rule: &str) -> Diagnostic {
+pub(crate) fn out_of_range(span: Span, text: &str, what: &str, rule: &str) -> Diagnostic {
     Diagnostic::error(
         "rtc::compat::out_of_range",
         span,
@@ -60,7 +60,13 @@ pub fn out_of_range(span: Span, text: &str, what: &str, rule: &str) -> Diagnosti
 }
 
 /// The course camera (COURSE.md §2.4): image plane through `center`, `|up|` = pixel size.
-pub fn course_camera(eye: DVec3, center: DVec3, up: DVec3, size: [u32; 2], span: Span) -> Camera {
+pub(crate) fn course_camera(
+    eye: DVec3,
+    center: DVec3,
+    up: DVec3,
+    size: [u32; 2],
+    span: Span,
+) -> Camera {
     Camera {
         eye,
         center,
@@ -78,7 +84,7 @@ pub fn course_camera(eye: DVec3, center: DVec3, up: DVec3, size: [u32; 2], span:
 
 /// The course's default view for a scene that only gives `Eye`: 400×400 pixels of size 1 on the
 /// plane z = 0 centred on (200, 200), looking down −z.
-pub fn default_camera(eye: DVec3, span: Span) -> Camera {
+fn default_camera(eye: DVec3, span: Span) -> Camera {
     course_camera(
         eye,
         DVec3::new(200.0, 200.0, 0.0),
@@ -91,32 +97,32 @@ pub fn default_camera(eye: DVec3, span: Span) -> Camera {
 /// A course material before it becomes IR: `reflect` is `None` unless the file says it, in which
 /// case the course rule "ks doubles as the mirror weight" applies.
 #[derive(Clone, Debug)]
-pub struct CourseMaterial {
+pub(crate) struct CourseMaterial {
     /// Base colour.
-    pub color: Color,
+    pub(crate) color: Color,
     /// Texture replacing the colour.
-    pub texture: Option<TextureId>,
+    pub(crate) texture: Option<TextureId>,
     /// Ambient coefficient.
-    pub ka: f64,
+    pub(crate) ka: f64,
     /// Diffuse coefficient.
-    pub kd: f64,
+    pub(crate) kd: f64,
     /// Specular coefficient.
-    pub ks: f64,
+    pub(crate) ks: f64,
     /// Phong exponent.
-    pub n: f64,
+    pub(crate) n: f64,
     /// Explicit mirror weight (UOIT, rt2).
-    pub reflect: Option<f64>,
+    pub(crate) reflect: Option<f64>,
     /// Transmission weight.
-    pub refract: f64,
+    pub(crate) refract: f64,
     /// Index of refraction.
-    pub eta: f64,
+    pub(crate) eta: f64,
     /// Where it was written.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 impl CourseMaterial {
     /// The IR material.
-    pub fn to_ir(&self) -> Material {
+    pub(crate) fn to_ir(&self) -> Material {
         Material {
             color: self.color,
             texture: self.texture,
@@ -139,7 +145,7 @@ impl CourseMaterial {
 /// `angle_deg` about +Y (the texture's north pole in object space, see `geometry::ray::equirectangular_uv`),
 /// then rotate +Y onto `pole`, then move to `position`. The renderer helper may flip the spin's
 /// sign here to match the reference renders; nothing else depends on it.
-pub fn sphere_orientation(position: DVec3, pole: DVec3, angle_deg: f64) -> DAffine3 {
+fn sphere_orientation(position: DVec3, pole: DVec3, angle_deg: f64) -> DAffine3 {
     let spin = DQuat::from_rotation_y(angle_deg.to_radians());
     let tilt = DQuat::from_rotation_arc(DVec3::Y, pole.unit_or(DVec3::Y));
     DAffine3::from_rotation_translation(tilt * spin, position)
@@ -147,7 +153,7 @@ pub fn sphere_orientation(position: DVec3, pole: DVec3, angle_deg: f64) -> DAffi
 
 /// A course sphere: a plain sphere, or (when it has a pole, angle or texture) a unit-placed sphere
 /// with [`sphere_orientation`].
-pub fn sphere_object(
+pub(crate) fn sphere_object(
     position: DVec3,
     radius: f64,
     orientation: Option<(DVec3, f64)>,
@@ -180,7 +186,7 @@ pub fn sphere_object(
 
 /// Finds an asset named in a course file at `scene` (the asset service's one search order), or
 /// reports it missing: a `kind` file ("mesh", "texture") named at `span`.
-pub fn find_asset(
+pub(crate) fn find_asset(
     scene: &Path,
     name: &str,
     span: Span,
@@ -199,30 +205,30 @@ pub fn find_asset(
 
 /// Everything a course file defines, collected before the checks that need the whole file.
 #[derive(Debug, Default)]
-pub struct Draft {
+pub(crate) struct Draft {
     /// `Eye` (YAML) or the `Eye` record (`.in`).
-    pub eye: Option<(DVec3, Span)>,
+    pub(crate) eye: Option<(DVec3, Span)>,
     /// A full `Camera` block.
-    pub camera: Option<Camera>,
+    pub(crate) camera: Option<Camera>,
     /// An eye or camera was written (even if it had errors), so "no eye" would be noise.
-    pub camera_written: bool,
+    pub(crate) camera_written: bool,
     /// Lights in order.
-    pub lights: Vec<Light>,
+    pub(crate) lights: Vec<Light>,
     /// The scene under construction (materials, textures, objects, settings).
-    pub scene: SceneParts,
+    pub(crate) scene: SceneParts,
 }
 
 /// The parts of a [`Scene`] other than the camera and lights.
 #[derive(Debug)]
-pub struct SceneParts {
+pub(crate) struct SceneParts {
     /// Materials, one per object.
-    pub materials: Vec<Material>,
+    pub(crate) materials: Vec<Material>,
     /// Textures.
-    pub textures: Vec<crate::ir::Texture>,
+    textures: Vec<crate::ir::Texture>,
     /// Objects.
-    pub objects: Vec<Object>,
+    pub(crate) objects: Vec<Object>,
     /// Settings.
-    pub settings: RenderSettings,
+    pub(crate) settings: RenderSettings,
 }
 
 impl Default for SceneParts {
@@ -238,13 +244,13 @@ impl Default for SceneParts {
 
 impl SceneParts {
     /// Adds a material and returns its id.
-    pub fn add_material(&mut self, m: Material) -> crate::ir::MaterialId {
+    pub(crate) fn add_material(&mut self, m: Material) -> crate::ir::MaterialId {
         self.materials.push(m);
         crate::ir::MaterialId((self.materials.len() - 1) as u32)
     }
 
     /// Adds a texture and returns its id.
-    pub fn add_texture(&mut self, t: crate::ir::Texture) -> TextureId {
+    pub(crate) fn add_texture(&mut self, t: crate::ir::Texture) -> TextureId {
         self.textures.push(t);
         TextureId((self.textures.len() - 1) as u32)
     }
@@ -253,7 +259,12 @@ impl SceneParts {
 impl Draft {
     /// Picks the camera (Camera beats Eye, with a warning; neither is an error) and returns the
     /// scene unless an error was reported. `whole` is the span used when no camera exists.
-    pub fn finish(self, whole: Span, missing_help: &str, diags: &mut Diagnostics) -> Option<Scene> {
+    pub(crate) fn finish(
+        self,
+        whole: Span,
+        missing_help: &str,
+        diags: &mut Diagnostics,
+    ) -> Option<Scene> {
         let camera = match (self.camera, self.eye) {
             (Some(camera), Some((_, eye_span))) => {
                 diags.push(

@@ -31,7 +31,7 @@ const TOP_KEYS: &[&str] = &[
 
 /// Parses a course YAML text into a scene, reporting every problem in `diags`.
 /// The YAML tree's nodes are charged to `memory`, which the scene carries on.
-pub fn parse(
+pub(crate) fn parse(
     text: &str,
     file: FileId,
     path: &Path,

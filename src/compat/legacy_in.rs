@@ -53,7 +53,13 @@ impl Kind {
 }
 
 /// Reads `.in` text into `draft`, reporting every problem found (it recovers at the next record).
-pub fn parse(text: &str, file: FileId, _path: &Path, draft: &mut Draft, diags: &mut Diagnostics) {
+pub(crate) fn parse(
+    text: &str,
+    file: FileId,
+    _path: &Path,
+    draft: &mut Draft,
+    diags: &mut Diagnostics,
+) {
     let mut p = Reader {
         text,
         pos: 0,

@@ -16,13 +16,13 @@
 //! checked by geometry's rules when the scene is prepared (`rtc::param::*`, the codes the scene
 //! language uses), not here: one home for shape validity.
 
-pub mod course;
-pub mod course_yaml;
-pub mod legacy_in;
-pub mod spans;
-pub mod yaml_objects;
-pub mod yaml_tree;
-pub mod yaml_values;
+mod course;
+mod course_yaml;
+mod legacy_in;
+mod spans;
+mod yaml_objects;
+mod yaml_tree;
+mod yaml_values;
 
 use std::path::Path;
 

@@ -21,7 +21,12 @@ const MATERIAL_KEYS: &[&str] = &[
 ];
 
 /// Reads one entry of `Objects` into `parts`; unknown types are skipped with a warning.
-pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub(crate) fn object(
+    node: &YamlNode,
+    scene: &Path,
+    parts: &mut SceneParts,
+    diags: &mut Diagnostics,
+) {
     let Some(mut m) = MapView::new(node, "an object", diags) else {
         return;
     };
@@ -68,7 +73,12 @@ pub fn object(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut
 }
 
 /// Reads one entry of the student `Models` list (a mesh without a `type` key).
-pub fn model(node: &YamlNode, scene: &Path, parts: &mut SceneParts, diags: &mut Diagnostics) {
+pub(crate) fn model(
+    node: &YamlNode,
+    scene: &Path,
+    parts: &mut SceneParts,
+    diags: &mut Diagnostics,
+) {
     if let Some(m) = MapView::new(node, "a model", diags) {
         mesh(m, node, scene, parts, diags, false);
     }

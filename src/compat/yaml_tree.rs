@@ -15,16 +15,16 @@ const MAX_NODES: usize = 1_000_000;
 
 /// One YAML node with its span.
 #[derive(Clone, Debug, PartialEq)]
-pub struct YamlNode {
+pub(crate) struct YamlNode {
     /// What the node holds.
-    pub kind: YamlKind,
+    pub(crate) kind: YamlKind,
     /// Where it was written.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// The three YAML node shapes.
 #[derive(Clone, Debug, PartialEq)]
-pub enum YamlKind {
+pub(crate) enum YamlKind {
     /// A scalar's text after escape processing; `quoted` is false for plain scalars.
     Scalar {
         /// The text.
@@ -41,7 +41,7 @@ pub enum YamlKind {
 
 impl YamlNode {
     /// A short description of the node's shape for messages ("a list", "a map", "`abc`").
-    pub fn describe(&self) -> String {
+    pub(crate) fn describe(&self) -> String {
         match &self.kind {
             YamlKind::Scalar { text, .. } if text.is_empty() => "nothing".to_string(),
             YamlKind::Scalar { text, .. } => format!("`{}`", shorten(text)),
@@ -51,7 +51,7 @@ impl YamlNode {
     }
 
     /// The scalar text, if this is a scalar.
-    pub fn scalar(&self) -> Option<&str> {
+    pub(crate) fn scalar(&self) -> Option<&str> {
         match &self.kind {
             YamlKind::Scalar { text, .. } => Some(text),
             _ => None,
@@ -70,7 +70,7 @@ fn shorten(text: &str) -> String {
 /// The first document of a YAML text, or `None` after a syntax error (reported in `diags`).
 /// A second document is reported as a warning, as the course reader did.
 /// Every node and scalar byte made, aliases' copies included, is charged to `memory`.
-pub fn parse_first_document(
+pub(crate) fn parse_first_document(
     text: &str,
     file: FileId,
     diags: &mut Diagnostics,

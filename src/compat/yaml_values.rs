@@ -9,24 +9,28 @@ use crate::diag::{Diagnostic, Diagnostics, did_you_mean};
 use crate::source::Span;
 
 /// The keys of one YAML map, with the ones already read marked.
-pub struct MapView<'n> {
+pub(crate) struct MapView<'n> {
     entries: &'n [(YamlNode, YamlNode)],
     used: Vec<bool>,
     /// Span of the whole map, for missing-key errors.
-    pub span: Span,
+    span: Span,
 }
 
 /// A key that was found: its span and value.
-pub struct Entry<'n> {
+pub(crate) struct Entry<'n> {
     /// The key as written.
-    pub key: &'n YamlNode,
+    pub(crate) key: &'n YamlNode,
     /// The value.
-    pub value: &'n YamlNode,
+    pub(crate) value: &'n YamlNode,
 }
 
 impl<'n> MapView<'n> {
     /// Views a map node; anything else is reported (`what` names the expected map).
-    pub fn new(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> Option<MapView<'n>> {
+    pub(crate) fn new(
+        node: &'n YamlNode,
+        what: &str,
+        diags: &mut Diagnostics,
+    ) -> Option<MapView<'n>> {
         let YamlKind::Map(entries) = &node.kind else {
             diags.push(
                 Diagnostic::error(
@@ -68,7 +72,7 @@ impl<'n> MapView<'n> {
 
     /// Finds a key by its official spelling `names[0]` or an accepted alternative `names[1..]`.
     /// A case-insensitive match is accepted with a spelling warning.
-    pub fn get(&mut self, names: &[&str], diags: &mut Diagnostics) -> Option<Entry<'n>> {
+    pub(crate) fn get(&mut self, names: &[&str], diags: &mut Diagnostics) -> Option<Entry<'n>> {
         let entries = self.entries;
         for (i, (k, v)) in entries.iter().enumerate() {
             if self.used[i] {
@@ -104,7 +108,7 @@ impl<'n> MapView<'n> {
     }
 
     /// Like [`MapView::get`], but a missing key is an error with `example` as the help.
-    pub fn require(
+    pub(crate) fn require(
         &mut self,
         names: &[&str],
         owner: &str,
@@ -127,7 +131,7 @@ impl<'n> MapView<'n> {
     }
 
     /// The first line of the map (where a missing-key error points).
-    pub fn head(&self) -> Span {
+    pub(crate) fn head(&self) -> Span {
         match self.entries.first() {
             Some((k, _)) => k.span,
             None => self.span,
@@ -135,7 +139,7 @@ impl<'n> MapView<'n> {
     }
 
     /// The span of a key's value (exact spelling), without marking it read.
-    pub fn span_of(&self, name: &str) -> Option<Span> {
+    pub(crate) fn span_of(&self, name: &str) -> Option<Span> {
         self.entries
             .iter()
             .find(|(k, _)| k.scalar() == Some(name))
@@ -143,7 +147,7 @@ impl<'n> MapView<'n> {
     }
 
     /// Marks a key as read without using it.
-    pub fn ignore(&mut self, name: &str) {
+    pub(crate) fn ignore(&mut self, name: &str) {
         for (i, (k, _)) in self.entries.iter().enumerate() {
             if k.scalar().is_some_and(|s| s.eq_ignore_ascii_case(name)) {
                 self.used[i] = true;
@@ -152,7 +156,7 @@ impl<'n> MapView<'n> {
     }
 
     /// Warns about every key that was not read; `known` feeds did-you-mean.
-    pub fn finish(self, owner: &str, known: &[&str], diags: &mut Diagnostics) {
+    pub(crate) fn finish(self, owner: &str, known: &[&str], diags: &mut Diagnostics) {
         for (i, (k, _)) in self.entries.iter().enumerate() {
             if self.used[i] {
                 continue;
@@ -173,7 +177,7 @@ impl<'n> MapView<'n> {
 }
 
 /// A number (any scalar style; the course reader converted quoted text too).
-pub fn number(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub(crate) fn number(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let not_a_number = |diags: &mut Diagnostics| {
         diags.push(
             Diagnostic::error(
@@ -202,7 +206,7 @@ pub fn number(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f6
 }
 
 /// A number that must be 0 or more (coefficients).
-pub fn non_negative(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub(crate) fn non_negative(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let v = number(node, what, diags)?;
     if v < 0.0 {
         diags.push(course::out_of_range(
@@ -217,7 +221,7 @@ pub fn non_negative(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Opt
 }
 
 /// A number that must be greater than 0 (radii, sizes).
-pub fn positive(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
+pub(crate) fn positive(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<f64> {
     let v = number(node, what, diags)?;
     if v <= 0.0 {
         diags.push(course::out_of_range(
@@ -232,7 +236,7 @@ pub fn positive(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<
 }
 
 /// A whole number in `min..=max`.
-pub fn integer(
+pub(crate) fn integer(
     node: &YamlNode,
     what: &str,
     min: u32,
@@ -270,7 +274,7 @@ pub fn integer(
 }
 
 /// `true`/`false` (also `yes`/`no`/`on`/`off`, any case, as YAML 1.1 readers took them).
-pub fn boolean(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<bool> {
+pub(crate) fn boolean(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<bool> {
     let text = node.scalar().map(|t| t.trim().to_ascii_lowercase());
     match text.as_deref() {
         Some("true" | "yes" | "on") => Some(true),
@@ -295,7 +299,7 @@ pub fn boolean(node: &YamlNode, what: &str, diags: &mut Diagnostics) -> Option<b
 
 /// What a triple stands for, which decides the help on a wrong length.
 #[derive(Clone, Copy, PartialEq, Eq)]
-pub enum Triple {
+pub(crate) enum Triple {
     /// `[x, y, z]`.
     Point,
     /// `[r, g, b]`, components 0 or more.
@@ -303,7 +307,12 @@ pub enum Triple {
 }
 
 /// A list of exactly three numbers.
-pub fn triple(node: &YamlNode, what: &str, kind: Triple, diags: &mut Diagnostics) -> Option<DVec3> {
+pub(crate) fn triple(
+    node: &YamlNode,
+    what: &str,
+    kind: Triple,
+    diags: &mut Diagnostics,
+) -> Option<DVec3> {
     let YamlKind::Seq(items) = &node.kind else {
         let example = if kind == Triple::Color {
             "[1, 0.5, 0]"
@@ -357,7 +366,11 @@ pub fn triple(node: &YamlNode, what: &str, kind: Triple, diags: &mut Diagnostics
 }
 
 /// A scalar string.
-pub fn string<'n>(node: &'n YamlNode, what: &str, diags: &mut Diagnostics) -> Option<&'n str> {
+pub(crate) fn string<'n>(
+    node: &'n YamlNode,
+    what: &str,
+    diags: &mut Diagnostics,
+) -> Option<&'n str> {
     match node.scalar() {
         Some(t) if !t.trim().is_empty() => Some(t.trim()),
         _ => {

@@ -4,20 +4,20 @@
 /// One comment: where its marker starts, its text without the marker, and whether it has a line
 /// of its own (else it trails a value on the same line).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Comment {
+pub(crate) struct Comment {
     /// Byte offset of the `#`.
-    pub start: usize,
+    pub(crate) start: usize,
     /// The text after `#`, without the line end.
-    pub text: String,
+    pub(crate) text: String,
     /// Nothing but blanks before it on its line.
-    pub own_line: bool,
+    pub(crate) own_line: bool,
     /// A blank line comes right before it (comments keep their paragraphs).
-    pub after_gap: bool,
+    pub(crate) after_gap: bool,
 }
 
 /// The course formats' comment rules.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Syntax {
+pub(crate) enum Syntax {
     /// `.in`: a `#` anywhere starts a comment (COURSE.md §1).
     In,
     /// YAML: a `#` at the start of a line or after a blank, outside quotes.
@@ -25,7 +25,7 @@ pub enum Syntax {
 }
 
 /// Every comment of `text`, in order.
-pub fn scan(text: &str, syntax: Syntax) -> Vec<Comment> {
+pub(crate) fn scan(text: &str, syntax: Syntax) -> Vec<Comment> {
     let mut out = Vec::new();
     let mut line_start = 0;
     let mut blank_before = false;
@@ -65,7 +65,7 @@ fn marker(line: &str, syntax: Syntax) -> Option<usize> {
 }
 
 /// A decorative comment (a rule of `#`, `-` or `=`) that says nothing once the marker is gone.
-pub fn is_rule(text: &str) -> bool {
+pub(crate) fn is_rule(text: &str) -> bool {
     let t = text.trim();
     !t.is_empty() && t.chars().all(|c| matches!(c, '#' | '-' | '=' | '*'))
 }

@@ -13,7 +13,7 @@ const REACH: i64 = 2;
 
 /// A vector whose unit vector (`v · (1 / |v|)`, as the language normalises a `normal:`) is
 /// exactly `n`; `n` itself when none is found near it.
-pub fn unit_preimage(n: DVec3) -> DVec3 {
+pub(crate) fn unit_preimage(n: DVec3) -> DVec3 {
     if n.unit() == n {
         return n;
     }
@@ -32,7 +32,7 @@ pub fn unit_preimage(n: DVec3) -> DVec3 {
 
 /// A rotation matrix the language turns into exactly `q` (`from_mat3(m).normalize()`); `q`'s
 /// own matrix when none is found near it.
-pub fn rotation_preimage(q: DQuat) -> DMat3 {
+pub(crate) fn rotation_preimage(q: DQuat) -> DMat3 {
     let base = DMat3::from_quat(q);
     around(&base.to_cols_array(), |c| {
         let m = DMat3::from_cols_array(&[c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8]]);
@@ -43,7 +43,7 @@ pub fn rotation_preimage(q: DQuat) -> DMat3 {
 
 /// `spin:` and `axis:` that give back the spin vector `s` (the language keeps
 /// `axis / |axis| · angle`).
-pub fn spin_preimage(s: DVec3) -> (DVec3, f64) {
+pub(crate) fn spin_preimage(s: DVec3) -> (DVec3, f64) {
     let angle = s.norm();
     let rebuilt = |axis: DVec3, a: f64| {
         Motion::new(DVec3::ZERO, DQuat::IDENTITY, DVec3::ONE)

@@ -109,16 +109,16 @@ const OBJECT_WORDS: &[&str] = &[
 
 /// The materials of the rtc file: one per distinct course material, with its name.
 #[derive(Debug)]
-pub struct Palette {
+pub(crate) struct Palette {
     /// Distinct materials in first-use order: a representative id and the chosen name.
-    pub entries: Vec<(MaterialId, String)>,
+    pub(crate) entries: Vec<(MaterialId, String)>,
     /// For every scene material id, its entry.
-    pub entry_of: Vec<usize>,
+    pub(crate) entry_of: Vec<usize>,
 }
 
 /// Groups equal materials and names each group; `hint(id)` is the comment that names material
 /// `id` in the file, if any.
-pub fn palette(scene: &Scene, hint: impl Fn(MaterialId) -> Option<String>) -> Palette {
+pub(crate) fn palette(scene: &Scene, hint: impl Fn(MaterialId) -> Option<String>) -> Palette {
     let mut entries: Vec<(MaterialId, String)> = Vec::new();
     let mut entry_of = Vec::with_capacity(scene.materials.len());
     for i in 0..scene.materials.len() {

@@ -14,10 +14,10 @@ use crate::ir::{Arg, CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shap
 const LINE: usize = 100;
 
 /// How a converted file refers to an asset: by a path relative to the directory it is written to.
-pub type AssetPath<'a> = &'a dyn Fn(&Path) -> String;
+pub(crate) type AssetPath<'a> = &'a dyn Fn(&Path) -> String;
 
 /// The fields of the `material { ... }` record of a course material.
-pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec<String> {
+pub(crate) fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec<String> {
     let defaults = Material::default();
     let mut fields = Vec::new();
     let textured = m.texture.map(|t| &scene.textures[t.0 as usize]);
@@ -50,7 +50,7 @@ pub fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec<String
 }
 
 /// A shading model as the language names it.
-pub fn shading(s: ShadingModel) -> String {
+pub(crate) fn shading(s: ShadingModel) -> String {
     match s {
         ShadingModel::Phong => "phong".into(),
         ShadingModel::Hatching => "hatching".into(),
@@ -92,7 +92,7 @@ fn pattern(name: &str, a: DVec3, b: DVec3, size: f64) -> String {
 /// An object: its constructor, its placement and its material (`names` gives the name of a
 /// scene material id). Long forms put each method on its own line; a rotation written as a
 /// matrix gets a comment saying where it turns the object's +Y (a course texture's north pole).
-pub fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
+pub(crate) fn object(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> String {
     let parts = calls(o, names, asset);
     let m = o.transform.affine().matrix3;
     let note = (m != DMat3::from_diagonal(DVec3::new(m.x_axis.x, m.y_axis.y, m.z_axis.z)))

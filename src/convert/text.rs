@@ -7,7 +7,7 @@ use glam::DVec3;
 /// plain or exponent form (whichever is shorter; the language reads `2e-7` as a `Float`), an
 /// integral value without a point (an `Int` widens to the same `Float`), and `-0.0` kept
 /// negative (`-0` would be the integer 0).
-pub fn number(v: f64) -> String {
+pub(crate) fn number(v: f64) -> String {
     if v == 0.0 {
         return if v.is_sign_negative() { "-0.0" } else { "0" }.to_string();
     }
@@ -25,18 +25,18 @@ pub fn number(v: f64) -> String {
 }
 
 /// `[x, y, z]`.
-pub fn vector(v: DVec3) -> String {
+pub(crate) fn vector(v: DVec3) -> String {
     format!("[{}, {}, {}]", number(v.x), number(v.y), number(v.z))
 }
 
 /// A unit direction the language normalises (`normal:`): the vector whose unit vector is
 /// exactly `n`, with the axis constants where it is one.
-pub fn unit_direction(n: DVec3) -> String {
+pub(crate) fn unit_direction(n: DVec3) -> String {
     direction(super::exact::unit_preimage(n))
 }
 
 /// A direction, using the axis constants `X`, `Y`, `Z` where `v` is one.
-pub fn direction(v: DVec3) -> String {
+pub(crate) fn direction(v: DVec3) -> String {
     match (v.x, v.y, v.z) {
         (1.0, 0.0, 0.0) if no_negative_zero(v) => "X".into(),
         (0.0, 1.0, 0.0) if no_negative_zero(v) => "Y".into(),
@@ -52,7 +52,7 @@ fn no_negative_zero(v: DVec3) -> bool {
 }
 
 /// A linear colour: `rgb(v)` for a grey, else `rgb(r, g, b)`.
-pub fn color(c: DVec3) -> String {
+pub(crate) fn color(c: DVec3) -> String {
     if c.x.to_bits() == c.y.to_bits() && c.y.to_bits() == c.z.to_bits() {
         format!("rgb({})", number(c.x))
     } else {
@@ -61,7 +61,7 @@ pub fn color(c: DVec3) -> String {
 }
 
 /// A string literal: `"` and `\` escaped, and `{` `}` (which would interpolate).
-pub fn string(s: &str) -> String {
+pub(crate) fn string(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
     out.push('"');
     for c in s.chars() {
@@ -81,7 +81,7 @@ pub fn string(s: &str) -> String {
 
 /// A comment line's text as an rtc `//` comment (the course marker `#` and surrounding blanks
 /// removed; an empty text gives a bare `//`).
-pub fn comment(text: &str) -> String {
+pub(crate) fn comment(text: &str) -> String {
     let t = text.trim();
     if t.is_empty() {
         "//".into()

@@ -15,7 +15,7 @@ use crate::ir::{
 /// becomes the field of view that makes a pixel at `center` exactly |up| wide where an angle
 /// does that to the last bit; otherwise it stays `course: true` (the language's course camera).
 /// `up` keeps its length either way.
-pub fn camera(c: &Camera, course_fov: bool) -> String {
+pub(crate) fn camera(c: &Camera, course_fov: bool) -> String {
     let mut out = String::new();
     let view = match c.projection {
         Projection::Perspective { fov_y } => format!("fov: {}rad", number(fov_y)),
@@ -96,7 +96,7 @@ fn course_fov_of(c: &Camera) -> Option<String> {
 }
 
 /// A light as its constructor.
-pub fn light(l: &Light) -> String {
+pub(crate) fn light(l: &Light) -> String {
     match l.kind {
         LightKind::Point { position } => format!(
             "point_light {{ position: {}, color: {} }}",
@@ -121,19 +121,19 @@ pub fn light(l: &Light) -> String {
 }
 
 /// What the `render { ... }` record needs besides the settings.
-pub struct RenderDoc {
+pub(crate) struct RenderDoc {
     /// A course scene: its settings are all written, with a comment on why.
-    pub course: bool,
+    pub(crate) course: bool,
     /// The name of the default material (`render { material: ... }`), if the scene has one.
-    pub material: Option<String>,
+    pub(crate) material: Option<String>,
     /// How the output file is referred to from the rtc file's directory.
-    pub output: Option<String>,
+    pub(crate) output: Option<String>,
 }
 
 /// The `render { ... }` record: every setting that differs from the language's defaults, and
 /// for a course scene those the course gives (shadows, bounces, encoding, cut-off), so the file
 /// says what it renders. An empty record is left out.
-pub fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
+pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
     let lang = RenderSettings::language_defaults();
     let mut fields = Vec::new();
     if doc.course || s.shadows != lang.shadows {

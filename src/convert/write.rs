@@ -13,29 +13,29 @@ use crate::ir::Scene;
 use crate::source::Span;
 
 /// What the writer needs besides the scene.
-pub struct Doc<'a> {
+pub(crate) struct Doc<'a> {
     /// The course file's name and its format ("course YAML" or "course `.in`"), for the header;
     /// `None` for the IR of any front end (no course camera rewritten as a field of view).
-    pub origin: Option<(&'a str, &'a str)>,
+    pub(crate) origin: Option<(&'a str, &'a str)>,
     /// The file's comments.
-    pub comments: &'a [Comment],
+    pub(crate) comments: &'a [Comment],
     /// How an asset is referred to from the output's directory.
-    pub asset: AssetPath<'a>,
+    pub(crate) asset: AssetPath<'a>,
 }
 
 /// Comments sorted to the items of the scene.
 #[derive(Default)]
-pub struct Placed {
+pub(crate) struct Placed {
     /// Before the first item: the file's header.
-    pub header: Vec<usize>,
+    pub(crate) header: Vec<usize>,
     /// Per item (in [`items`] order), the comments before it and inside it.
-    pub before: Vec<Vec<usize>>,
+    pub(crate) before: Vec<Vec<usize>>,
     /// After the last item.
-    pub trailing: Vec<usize>,
+    pub(crate) trailing: Vec<usize>,
 }
 
 /// The spans of the camera, the lights and the objects, in that order.
-pub fn items(scene: &Scene) -> Vec<Span> {
+pub(crate) fn items(scene: &Scene) -> Vec<Span> {
     std::iter::once(scene.camera.span)
         .chain(scene.lights.iter().map(|l| l.span))
         .chain(scene.objects.iter().map(|o| o.span))
@@ -44,7 +44,7 @@ pub fn items(scene: &Scene) -> Vec<Span> {
 
 /// Gives each comment (except those in `skip`) to the item it is inside, else to the first item
 /// after it in the file; those before every item form the header.
-pub fn place(comments: &[Comment], spans: &[Span], skip: &[usize]) -> Placed {
+pub(crate) fn place(comments: &[Comment], spans: &[Span], skip: &[usize]) -> Placed {
     let mut placed = Placed {
         before: vec![Vec::new(); spans.len()],
         ..Placed::default()
@@ -74,7 +74,7 @@ pub fn place(comments: &[Comment], spans: &[Span], skip: &[usize]) -> Placed {
 }
 
 /// The whole rtc text.
-pub fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -> String {
+pub(crate) fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Placed) -> String {
     let mut out = String::new();
     match doc.origin {
         Some((file_name, format)) => {

@@ -15,7 +15,7 @@ pub struct Aabb {
 
 impl Aabb {
     /// The empty box (the identity of `union`).
-    pub const EMPTY: Aabb = Aabb {
+    pub(crate) const EMPTY: Aabb = Aabb {
         min: DVec3::splat(f64::INFINITY),
         max: DVec3::splat(f64::NEG_INFINITY),
     };
@@ -26,12 +26,12 @@ impl Aabb {
     }
 
     /// The smallest box containing both.
-    pub fn union(self, other: Aabb) -> Aabb {
+    pub(crate) fn union(self, other: Aabb) -> Aabb {
         Aabb::new(self.min.min(other.min), self.max.max(other.max))
     }
 
     /// The overlap of both (may be empty).
-    pub fn intersection(self, other: Aabb) -> Aabb {
+    pub(crate) fn intersection(self, other: Aabb) -> Aabb {
         Aabb::new(self.min.max(other.min), self.max.min(other.max))
     }
 
@@ -74,7 +74,7 @@ impl Aabb {
     }
 
     /// Slab test: the parameter interval where the ray is inside the box, if it meets [t_min, t_max].
-    pub fn hit_interval(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
+    pub(crate) fn hit_interval(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(f64, f64)> {
         let inv = ray.dir.recip();
         let t0 = (self.min - ray.origin) * inv;
         let t1 = (self.max - ray.origin) * inv;

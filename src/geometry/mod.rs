@@ -8,19 +8,18 @@
 //! object's affine transform (normals by the inverse transpose). Files import the file that
 //! defines an item, never this façade (tests/architecture.rs counts the circles).
 
-pub mod aabb;
+pub(crate) mod aabb;
 pub mod bvh;
 pub mod lanes;
 pub mod mesh;
-pub mod motion;
-pub mod ray;
+mod motion;
+pub(crate) mod ray;
 pub mod rounding;
-pub mod shapes;
+pub(crate) mod shapes;
 #[cfg(test)]
 pub(crate) mod testing;
 pub mod world;
 
 pub use aabb::Aabb;
 pub use ray::{Crossing, Hit, MappingFrame, Ray};
-pub use world::primitive::{Primitive, SurfaceId};
 pub use world::{SurfaceHit, World, WorldStats};

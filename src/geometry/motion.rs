@@ -15,7 +15,7 @@ const STEPS: u32 = 32;
 /// longest distance any corner can travel between two neighbouring times. A point whose path
 /// between two samples has length L is never farther than L/2 from one of them, so the box is
 /// conservative for rotation as well as for straight motion.
-pub fn swept_bounds(local: Aabb, transform: DAffine3, motion: &Motion) -> Aabb {
+pub(crate) fn swept_bounds(local: Aabb, transform: DAffine3, motion: &Motion) -> Aabb {
     if local.is_empty() || !local.is_finite() {
         return local.transformed(&transform);
     }

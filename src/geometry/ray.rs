@@ -15,7 +15,7 @@ pub struct Ray {
     pub dir: DVec3,
     /// When it travels, as a fraction of the open shutter (0 = open, 1 = close): where moving
     /// objects are for it.
-    pub time: f64,
+    pub(crate) time: f64,
 }
 
 impl Ray {
@@ -29,7 +29,7 @@ impl Ray {
     }
 
     /// The same ray at shutter fraction `time`.
-    pub fn at_time(self, time: f64) -> Ray {
+    pub(crate) fn at_time(self, time: f64) -> Ray {
         Ray { time, ..self }
     }
 
@@ -43,11 +43,11 @@ impl Ray {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Hit {
     /// Ray parameter of the hit.
-    pub t: f64,
+    pub(crate) t: f64,
     /// Unit outward normal at the hit (not flipped towards the ray).
-    pub normal: DVec3,
+    pub(crate) normal: DVec3,
     /// Surface coordinates in [0, 1]².
-    pub uv: DVec2,
+    pub(crate) uv: DVec2,
 }
 
 /// The frame in which texture mappings read a hit's position: a sphere's own centre (and its
@@ -68,7 +68,7 @@ pub enum MappingFrame {
 
 impl MappingFrame {
     /// The object-space point `p` as mappings read it: relative to the frame's centre.
-    pub fn point(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point(&self, p: DVec3) -> DVec3 {
         match *self {
             MappingFrame::Object => p - DVec3::ZERO,
             MappingFrame::Sphere { center, .. } => p - center,
@@ -77,7 +77,7 @@ impl MappingFrame {
 
     /// Equirectangular (u, v) of the object-space point `p` about the frame's centre (+Y is the
     /// north pole): a sphere's own uv, else the direction from the origin.
-    pub fn spherical_uv(&self, p: DVec3) -> DVec2 {
+    pub(crate) fn spherical_uv(&self, p: DVec3) -> DVec2 {
         match *self {
             MappingFrame::Sphere { center, radius } => {
                 equirectangular_uv(((p - center) / radius).unit())
@@ -91,9 +91,9 @@ impl MappingFrame {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Crossing {
     /// The surface hit.
-    pub hit: Hit,
+    pub(crate) hit: Hit,
     /// True when the ray goes from outside to inside here.
-    pub entering: bool,
+    pub(crate) entering: bool,
 }
 
 /// The first of `candidates` with `t` in (t_min, t_max) (candidates need not be sorted).
@@ -113,7 +113,7 @@ pub(crate) fn nearest(
 
 /// Equirectangular coordinates of a unit direction from the centre: +Y is the north pole (v = 0),
 /// u = φ/2π with φ measured from +X towards −Z (counter-clockwise seen from above).
-pub fn equirectangular_uv(n: DVec3) -> DVec2 {
+pub(crate) fn equirectangular_uv(n: DVec3) -> DVec2 {
     let theta = libm::acos(n.y.clamp(-1.0, 1.0));
     let mut phi = libm::atan2(-n.z, n.x);
     if phi < 0.0 {

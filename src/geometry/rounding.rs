@@ -10,7 +10,7 @@
 use glam::{DAffine3, DVec3};
 
 /// Unit roundoff of f64 (half the machine epsilon).
-pub const UNIT_ROUNDOFF: f64 = f64::EPSILON * 0.5;
+const UNIT_ROUNDOFF: f64 = f64::EPSILON * 0.5;
 
 /// `γ(n) = nu / (1 − nu)`: the relative error bound of `n` rounded operations (Higham).
 pub const fn gamma(n: u32) -> f64 {
@@ -21,14 +21,14 @@ pub const fn gamma(n: u32) -> f64 {
 /// A surface point's bound from its residual: `|residual|` (the distance from the computed
 /// point to the surface, as evaluated) plus `γ(ops)·magnitude` (what that evaluation may be off
 /// by, `magnitude` being the largest size that entered it). The same on every axis.
-pub fn from_residual(residual: f64, ops: u32, magnitude: f64) -> DVec3 {
+pub(crate) fn from_residual(residual: f64, ops: u32, magnitude: f64) -> DVec3 {
     DVec3::splat(residual.abs() + gamma(ops) * magnitude)
 }
 
 /// The point `p` (error bound `err`) moved by `m`, and the bound of the result: the rounding of
 /// `m·p + translation` plus the error carried through the matrix (pbrt-v4 `Transform` of a
 /// `Point3fi`).
-pub fn transform_point(m: &DAffine3, p: DVec3, err: DVec3) -> (DVec3, DVec3) {
+pub(crate) fn transform_point(m: &DAffine3, p: DVec3, err: DVec3) -> (DVec3, DVec3) {
     let q = m.transform_point3(p);
     let a = m.matrix3.transpose();
     let (ax, ay, az) = (a.x_axis.abs(), a.y_axis.abs(), a.z_axis.abs());
@@ -42,7 +42,7 @@ pub fn transform_point(m: &DAffine3, p: DVec3, err: DVec3) -> (DVec3, DVec3) {
 /// Whether two crossings of one ray (points `pa`, `pb` with bounds `ea`, `eb` and unit normals
 /// `na`, `nb`) may be the same place: along each normal the points are no farther apart than
 /// their bounds allow. Crossings this close cannot be ordered by their computed `t`.
-pub fn same_event(pa: DVec3, ea: DVec3, na: DVec3, pb: DVec3, eb: DVec3, nb: DVec3) -> bool {
+pub(crate) fn same_event(pa: DVec3, ea: DVec3, na: DVec3, pb: DVec3, eb: DVec3, nb: DVec3) -> bool {
     let d = pb - pa;
     let slack = 1.0 + gamma(4);
     let within = |n: DVec3| {

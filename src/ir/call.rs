@@ -7,11 +7,11 @@ use glam::DVec3;
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ShapeCall {
+pub(crate) struct ShapeCall {
     /// The constructor (`sphere`, `ring`, ...).
-    pub name: &'static str,
+    pub(crate) name: &'static str,
     /// The arguments by parameter name; parameters at their defaults are left out.
-    pub args: Vec<(&'static str, Arg)>,
+    pub(crate) args: Vec<(&'static str, Arg)>,
 }
 
 /// An argument value as the IR holds it.

@@ -5,17 +5,17 @@
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Flare {
     /// Ghost discs along the line from the light's image position through the image centre.
-    pub ghosts: u32,
+    pub(crate) ghosts: u32,
     /// Spacing of the ghosts as a fraction of the light-to-centre vector.
-    pub dispersal: f64,
+    pub(crate) dispersal: f64,
     /// Radius of the halo ring around the light, as a fraction of the image diagonal (0: none).
-    pub halo: f64,
+    pub(crate) halo: f64,
     /// Number of star streaks through the light (0: none).
-    pub streaks: u32,
+    pub(crate) streaks: u32,
     /// Lights whose seen brightness (luminance × visible fraction) is below this flare not.
-    pub threshold: f64,
+    pub(crate) threshold: f64,
     /// Overall strength of the flare.
-    pub intensity: f64,
+    pub(crate) intensity: f64,
 }
 
 impl Default for Flare {
@@ -33,7 +33,7 @@ impl Default for Flare {
 
 impl Flare {
     /// Each parameter's allowed range (inclusive), in declaration order.
-    pub const RANGES: [(&'static str, f64, f64); 6] = [
+    pub(crate) const RANGES: [(&'static str, f64, f64); 6] = [
         ("ghosts", 0.0, 16.0),
         ("dispersal", 0.0, 2.0),
         ("halo", 0.0, 1.0),

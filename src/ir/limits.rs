@@ -10,14 +10,14 @@ pub const MAX_DEPTH: u32 = 64;
 
 /// Most samples per axis of a pixel grid (supersampling, adaptive `min`/`max`): 64×64 = 4096
 /// samples per pixel; beyond this a render never ends anyway.
-pub const MAX_PIXEL_SAMPLES_PER_AXIS: u32 = 64;
+pub(crate) const MAX_PIXEL_SAMPLES_PER_AXIS: u32 = 64;
 
 /// Most samples along one edge of an area light: the Sobol' sampler indexes at most 2^16
 /// samples per decision (256×256).
-pub const MAX_LIGHT_SAMPLES_PER_AXIS: u32 = 256;
+pub(crate) const MAX_LIGHT_SAMPLES_PER_AXIS: u32 = 256;
 
 /// Widest or tallest image, in pixels.
-pub const MAX_IMAGE_SIDE: u32 = 16384;
+pub(crate) const MAX_IMAGE_SIDE: u32 = 16384;
 
 /// Most memory a render's image may take, in bytes: the film and the 8-bit image, as counted
 /// by [`image_bytes`]. A larger image is refused before anything is built (`rtc check` and
@@ -25,10 +25,10 @@ pub const MAX_IMAGE_SIDE: u32 = 16384;
 pub const MAX_IMAGE_BYTES: u64 = 4 << 30;
 
 /// Film bytes per pixel per pass: one f64 RGB colour (the film's one channel).
-pub const FILM_BYTES_PER_PIXEL: u64 = 24;
+const FILM_BYTES_PER_PIXEL: u64 = 24;
 
 /// Bytes per pixel of the 8-bit RGB image the film is quantised to.
-pub const IMAGE_BYTES_PER_PIXEL: u64 = 3;
+const IMAGE_BYTES_PER_PIXEL: u64 = 3;
 
 /// The memory a `width`×`height` render holds at its peak: 24 bytes of film per pixel, twice
 /// under adaptive sampling (the coarse pass is kept while the fine pass runs), plus 3 bytes per
@@ -43,7 +43,7 @@ pub fn image_bytes(width: u32, height: u32, adaptive: bool) -> u64 {
 
 /// Most triangles one mesh file may have (about 7 GB of geometry and BVH; the BVH itself indexes
 /// up to 2²⁶ primitives).
-pub const MAX_TRIANGLES: usize = 50_000_000;
+pub(crate) const MAX_TRIANGLES: usize = 50_000_000;
 
 /// Largest OBJ file rtc reads, in bytes (checked before reading; a file within
 /// [`MAX_TRIANGLES`] is about 2 GB of text).
@@ -55,10 +55,10 @@ pub const MAX_TEXTURE_PIXELS: u64 = 1 << 26;
 
 /// Largest texture image file rtc opens, in bytes (checked before reading): an uncompressed
 /// 8192×8192 float EXR of three channels is 805 MB.
-pub const MAX_TEXTURE_FILE_BYTES: u64 = 1 << 30;
+pub(crate) const MAX_TEXTURE_FILE_BYTES: u64 = 1 << 30;
 /// Most rays per glossy lobe (`gloss_samples`): the lobe's samples are one Sobol' sequence of
 /// at most this many points per camera sample.
-pub const MAX_GLOSS_SAMPLES: u32 = 1024;
+pub(crate) const MAX_GLOSS_SAMPLES: u32 = 1024;
 
 /// Bytes one scene load may hold unless `--memory-budget` says otherwise: the evaluation's
 /// strings, lists and objects, then the textures and meshes the preparation loads. Generous
@@ -77,9 +77,9 @@ pub const MEMORY_BUDGET_CODE: &str = "rtc::budget::memory";
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Memory {
     /// Most bytes the load may charge.
-    pub budget: u64,
+    pub(crate) budget: u64,
     /// Bytes charged so far.
-    pub used: u64,
+    pub(crate) used: u64,
 }
 
 impl Default for Memory {
@@ -90,23 +90,23 @@ impl Default for Memory {
 
 /// A charge that does not fit a [`Memory`] budget.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct MemoryOver {
+pub(crate) struct MemoryOver {
     /// Bytes asked for.
-    pub asked: u64,
+    asked: u64,
     /// Bytes already charged.
-    pub used: u64,
+    pub(crate) used: u64,
     /// The budget.
-    pub budget: u64,
+    pub(crate) budget: u64,
 }
 
 impl Memory {
     /// Nothing charged yet under `budget`.
-    pub fn new(budget: u64) -> Memory {
+    pub(crate) fn new(budget: u64) -> Memory {
         Memory { budget, used: 0 }
     }
 
     /// Charges `bytes` when they fit; otherwise charges nothing and says by how much not.
-    pub fn charge(&mut self, bytes: u64) -> Result<(), MemoryOver> {
+    pub(crate) fn charge(&mut self, bytes: u64) -> Result<(), MemoryOver> {
         match self.used.checked_add(bytes) {
             Some(total) if total <= self.budget => {
                 self.used = total;
@@ -120,15 +120,20 @@ impl Memory {
         }
     }
 
-    /// Bytes still free.
-    pub fn left(&self) -> u64 {
+    /// Bytes still free (the tests').
+    #[cfg(test)]
+    fn left(&self) -> u64 {
         self.budget.saturating_sub(self.used)
     }
 }
 
 impl MemoryOver {
     /// The error at `span`, where `what` (e.g. "this texture") asked for the bytes.
-    pub fn diagnostic(&self, span: crate::source::Span, what: &str) -> crate::diag::Diagnostic {
+    pub(crate) fn diagnostic(
+        &self,
+        span: crate::source::Span,
+        what: &str,
+    ) -> crate::diag::Diagnostic {
         crate::diag::Diagnostic::error(
             MEMORY_BUDGET_CODE,
             span,
@@ -150,7 +155,7 @@ impl MemoryOver {
 }
 
 /// Bytes for people: `512 B`, `1.5 KiB`, `4 GiB`.
-pub fn show_bytes(bytes: u64) -> String {
+fn show_bytes(bytes: u64) -> String {
     const UNITS: [&str; 5] = ["B", "KiB", "MiB", "GiB", "TiB"];
     let mut value = bytes as f64;
     let mut unit = 0;

@@ -1,6 +1,6 @@
 //! What a front end returns: the scene when there were no errors, and every finding either way.
 
-use crate::diag::{Diagnostic, Diagnostics, IO_ERROR, Severity};
+use crate::diag::{Diagnostic, Diagnostics, Severity};
 
 use super::Scene;
 
@@ -18,7 +18,7 @@ pub struct Loaded {
 
 impl Loaded {
     /// A result holding a single error without a source location (I/O, usage).
-    pub fn failure(code: &'static str, message: impl Into<String>, help: &str) -> Loaded {
+    pub(crate) fn failure(code: &'static str, message: impl Into<String>, help: &str) -> Loaded {
         let mut diagnostics = Diagnostics::default();
         diagnostics.push(Diagnostic::new(Severity::Error, code, None, message).with_help(help));
         Loaded {
@@ -26,10 +26,5 @@ impl Loaded {
             diagnostics,
             provenance: None,
         }
-    }
-
-    /// True when any diagnostic is an I/O problem rather than a scene error.
-    pub fn has_io_error(&self) -> bool {
-        self.diagnostics.items.iter().any(|d| d.code == IO_ERROR)
     }
 }

@@ -8,14 +8,14 @@ use crate::num::Norm;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Shutter {
     /// When the shutter opens (0 = the frame's start).
-    pub open: f64,
+    pub(crate) open: f64,
     /// When it closes (≥ `open`; equal means no motion blur).
-    pub close: f64,
+    pub(crate) close: f64,
 }
 
 impl Shutter {
     /// True when the shutter stays open for a while, so moving things blur.
-    pub fn is_open(&self) -> bool {
+    pub(crate) fn is_open(&self) -> bool {
         self.close > self.open
     }
 }
@@ -30,21 +30,21 @@ impl Shutter {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Motion {
     /// Displacement at shutter close.
-    pub translate: DVec3,
+    pub(crate) translate: DVec3,
     /// Rotation at shutter close (unit quaternion; slerp takes the shorter arc, as pbrt does).
-    pub rotate: DQuat,
+    pub(crate) rotate: DQuat,
     /// Scale factors at shutter close.
-    pub scale: DVec3,
+    pub(crate) scale: DVec3,
     /// A spin about an axis through the origin: its direction, its length the angle in
     /// radians turned by shutter close (any size: `2π·n` is n whole turns; zero: none).
-    pub spin: DVec3,
+    pub(crate) spin: DVec3,
     /// The space the motion is expressed in (maps it to world space).
-    pub frame: DAffine3,
+    pub(crate) frame: DAffine3,
 }
 
 impl Motion {
     /// A motion given in the parent space of the object it moves.
-    pub fn new(translate: DVec3, rotate: DQuat, scale: DVec3) -> Motion {
+    pub(crate) fn new(translate: DVec3, rotate: DQuat, scale: DVec3) -> Motion {
         Motion {
             translate,
             rotate,
@@ -55,7 +55,7 @@ impl Motion {
     }
 
     /// The same motion with a spin of `angle` radians about `axis` (not zero) by shutter close.
-    pub fn with_spin(self, axis: DVec3, angle: f64) -> Motion {
+    pub(crate) fn with_spin(self, axis: DVec3, angle: f64) -> Motion {
         let length = axis.norm();
         Motion {
             spin: if length > 0.0 && angle != 0.0 {
@@ -80,7 +80,7 @@ impl Motion {
     }
 
     /// The whole angle the motion turns through, in radians: the slerp's arc, or the spin.
-    pub fn turned(&self) -> f64 {
+    pub(crate) fn turned(&self) -> f64 {
         let q = if self.rotate.w < 0.0 {
             -self.rotate
         } else {
@@ -90,7 +90,7 @@ impl Motion {
     }
 
     /// The motion's own transform `D(s)` at shutter fraction `s`.
-    pub fn delta(&self, s: f64) -> DAffine3 {
+    fn delta(&self, s: f64) -> DAffine3 {
         let q = slerp_from_identity(self.rotate, s) * self.spin_at(s);
         let scale = DVec3::ONE.lerp(self.scale, s);
         DAffine3::from_scale_rotation_translation(scale, q, self.translate * s)
@@ -98,7 +98,7 @@ impl Motion {
 
     /// The object-to-world transform at shutter fraction `s` of an object placed by `transform`
     /// at shutter open.
-    pub fn at(&self, transform: DAffine3, s: f64) -> DAffine3 {
+    pub(crate) fn at(&self, transform: DAffine3, s: f64) -> DAffine3 {
         if s == 0.0 {
             return transform;
         }
@@ -106,7 +106,7 @@ impl Motion {
     }
 
     /// The same motion after the object is transformed by `t` (applied after its placement).
-    pub fn transformed(&self, t: DAffine3) -> Motion {
+    pub(crate) fn transformed(&self, t: DAffine3) -> Motion {
         Motion {
             frame: t * self.frame,
             ..*self
@@ -114,7 +114,7 @@ impl Motion {
     }
 
     /// True when nothing moves.
-    pub fn is_still(&self) -> bool {
+    pub(crate) fn is_still(&self) -> bool {
         self.translate == DVec3::ZERO
             && self.rotate == DQuat::IDENTITY
             && self.scale == DVec3::ONE
@@ -124,7 +124,7 @@ impl Motion {
 
 /// Spherical interpolation from the identity to `q` along the shorter arc (pbrt-v4's `Slerp`),
 /// with `libm` so the result is the same on every machine.
-pub fn slerp_from_identity(q: DQuat, s: f64) -> DQuat {
+fn slerp_from_identity(q: DQuat, s: f64) -> DQuat {
     // The identity is (0, 0, 0, 1): its dot product with q is q.w; −q is the same rotation.
     let q = if q.w < 0.0 { -q } else { q };
     let cos_theta = q.w.clamp(-1.0, 1.0);
@@ -143,9 +143,9 @@ pub fn slerp_from_identity(q: DQuat, s: f64) -> DQuat {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraMotion {
     /// Eye at shutter close.
-    pub eye: DVec3,
+    pub(crate) eye: DVec3,
     /// Point looked at at shutter close.
-    pub center: DVec3,
+    pub(crate) center: DVec3,
 }
 
 #[cfg(test)]

@@ -22,7 +22,7 @@ impl Transform {
 
     /// The compact form of `t`; [`Transform::affine`] gives back exactly `t`, bit for bit (a
     /// matrix part is dropped only when its bits are the identity's, so `-0.0` stays).
-    pub fn new(t: DAffine3) -> Transform {
+    fn new(t: DAffine3) -> Transform {
         let bits = |m: DMat3| m.to_cols_array().map(f64::to_bits);
         if bits(t.matrix3) != bits(DMat3::IDENTITY) {
             return Transform::Affine(Box::new(t));

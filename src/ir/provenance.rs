@@ -30,7 +30,7 @@ pub enum StepKind {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Step {
     /// The enclosing step; [`Provenance::ROOT`] at the top level of the file.
-    pub parent: u32,
+    pub(crate) parent: u32,
     /// What it was.
     pub kind: StepKind,
 }
@@ -39,7 +39,7 @@ pub struct Step {
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Provenance {
     /// Every step recorded; index [`Provenance::ROOT`] is never a real step.
-    pub steps: Vec<Step>,
+    pub(crate) steps: Vec<Step>,
     /// Per scene object, the innermost step of each chain it came from: first where it was made
     /// (the shape's call, or the last transform applied in another context), then the chains
     /// of the groups that placed it, outermost last. Empty: made at the top level.
@@ -48,10 +48,10 @@ pub struct Provenance {
 
 impl Provenance {
     /// The step index meaning "no step": the file's top level.
-    pub const ROOT: u32 = 0;
+    pub(crate) const ROOT: u32 = 0;
 
     /// The chain of steps from `step` outwards (innermost first).
-    pub fn chain(&self, step: u32) -> Vec<&Step> {
+    fn chain(&self, step: u32) -> Vec<&Step> {
         let mut out = Vec::new();
         let mut at = step;
         while at != Self::ROOT {
@@ -65,7 +65,7 @@ impl Provenance {
     }
 
     /// Whether step `outer` is `step` or encloses it.
-    pub fn encloses(&self, outer: u32, step: u32) -> bool {
+    pub(crate) fn encloses(&self, outer: u32, step: u32) -> bool {
         let mut at = step;
         loop {
             if at == outer {

@@ -51,7 +51,7 @@ pub struct RenderSettings {
 /// linear light). A dropped ray of weight below it changes a pixel of radiance ≤ 1 by less than
 /// half a level: at most one level after rounding, usually none. POV-Ray's 1/255 was chosen for
 /// linear output and would drop up to 13 sRGB levels near black.
-pub const LANGUAGE_CUTOFF: f64 = 0.5 / (255.0 * 12.92);
+pub(crate) const LANGUAGE_CUTOFF: f64 = 0.5 / (255.0 * 12.92);
 
 /// How an area light's samples are shared among a pixel's samples.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -88,7 +88,7 @@ impl RenderSettings {
     /// The scene language's defaults (docs/language.md, `render`): shadows on and up to five
     /// bounces, so a glass or mirror material shows without further settings, sRGB output and
     /// the cut-off [`LANGUAGE_CUTOFF`].
-    pub fn language_defaults() -> RenderSettings {
+    pub(crate) fn language_defaults() -> RenderSettings {
         RenderSettings {
             shadows: true,
             max_depth: 5,
@@ -172,7 +172,7 @@ pub enum RenderMode {
 impl RenderMode {
     /// The modes a scene names without parameters, by their names in the language (`depth`
     /// takes a range and is a function of its own).
-    pub const NAMED: &'static [(&'static str, RenderMode)] = &[
+    pub(crate) const NAMED: &'static [(&'static str, RenderMode)] = &[
         ("shaded", RenderMode::Shaded),
         ("normal", RenderMode::Normal),
     ];
@@ -213,7 +213,7 @@ pub enum Sampling {
 
 impl Sampling {
     /// Camera samples a pixel takes at most (adaptive: its `max` grid).
-    pub fn max_per_pixel(&self) -> u32 {
+    pub(crate) fn max_per_pixel(&self) -> u32 {
         match *self {
             Sampling::Grid { factor } => factor * factor,
             Sampling::Adaptive { max, .. } => max * max,

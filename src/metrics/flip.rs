@@ -26,36 +26,26 @@ pub struct FlipMap {
 }
 
 impl FlipMap {
-    /// Width in pixels.
-    pub fn width(&self) -> u32 {
-        self.width
-    }
-
-    /// Height in pixels.
-    pub fn height(&self) -> u32 {
-        self.height
-    }
-
     /// The per-pixel errors, rows from the top.
     pub fn values(&self) -> &[f32] {
         &self.values
     }
 
     /// The mean error over all pixels (the number ꟻLIP's authors recommend reporting).
-    pub fn mean(&self) -> f64 {
+    pub(crate) fn mean(&self) -> f64 {
         let sum: f64 = self.values.iter().map(|&v| f64::from(v)).sum();
         sum / self.values.len() as f64
     }
 
     /// The mean of the worst `fraction` of pixels ([`super::WORST_FRACTION`] is 1%).
-    pub fn mean_of_worst(&self, fraction: f64) -> f64 {
+    pub(crate) fn mean_of_worst(&self, fraction: f64) -> f64 {
         let values: Vec<f64> = self.values.iter().map(|&v| f64::from(v)).collect();
         mean_of_worst(&values, fraction)
     }
 
     /// The map in the magma colour map (black for no error, through purple and orange, to
     /// light yellow for 1), 8-bit RGB rows, as ꟻLIP's own tool shows it.
-    pub fn magma_rgb8(&self) -> Vec<u8> {
+    fn magma_rgb8(&self) -> Vec<u8> {
         let map = nv_flip::FlipImageFloat::with_data(self.width, self.height, &self.values);
         map.apply_color_lut(&nv_flip::magma_lut()).to_vec()
     }

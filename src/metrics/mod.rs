@@ -19,7 +19,7 @@
 
 mod flip;
 mod noise;
-pub mod pareto;
+pub(crate) mod pareto;
 mod pixel_error;
 pub mod plot;
 pub mod srgb;
@@ -32,7 +32,7 @@ pub use flip::{FlipMap, PIXELS_PER_DEGREE, PNG_ENCODE, flip};
 pub use noise::{NoiseEstimate, noise};
 pub use pixel_error::{REL_MSE_EPSILON, rel_mse, rmse, squared_error_map};
 pub use view::{BUFFER_SIZE, EMPTY, LinearRgb, MAX_PIXELS, NOT_FINITE, SIZE_MISMATCH, TOO_LARGE};
-pub use worst::{WORST_FRACTION, mean_of_worst};
+pub(crate) use worst::{WORST_FRACTION, mean_of_worst};
 
 /// Every metric of one test image against its reference.
 #[derive(Clone, Debug, PartialEq)]

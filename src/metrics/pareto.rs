@@ -3,7 +3,7 @@
 /// The indices of the points no other point dominates (another point is at most as slow and
 /// at most as wrong, and better in one), ordered by time. Of equal points the first is kept;
 /// points with a NaN coordinate are never on the front.
-pub fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
+pub(crate) fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..points.len())
         .filter(|&i| !points[i].0.is_nan() && !points[i].1.is_nan())
         .collect();

@@ -13,7 +13,7 @@ use crate::diag::{Diagnostic, Severity};
 use super::pareto::pareto_front;
 
 /// Drawing the plot failed.
-pub const PLOT: &str = "rtc::metrics::plot";
+const PLOT: &str = "rtc::metrics::plot";
 
 /// The time axis' label.
 pub const TIME_LABEL: &str = "wall time (s)";

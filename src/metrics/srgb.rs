@@ -4,7 +4,7 @@
 //! the other metrics stay in linear light.
 
 /// Encodes linear light to an 8-bit sRGB value: clamp to [0, 1], apply the curve, round.
-pub fn encode(linear: f32) -> u8 {
+fn encode(linear: f32) -> u8 {
     let c = f64::from(linear).clamp(0.0, 1.0);
     let v = if c <= 0.003_130_8 {
         12.92 * c
@@ -15,7 +15,7 @@ pub fn encode(linear: f32) -> u8 {
 }
 
 /// Decodes an 8-bit sRGB value to linear light (the exact inverse of [`encode`] on its outputs).
-pub fn decode(value: u8) -> f32 {
+fn decode(value: u8) -> f32 {
     let v = f64::from(value) / 255.0;
     let c = if v <= 0.040_45 {
         v / 12.92
@@ -26,7 +26,7 @@ pub fn decode(value: u8) -> f32 {
 }
 
 /// Encodes every channel of a linear-RGB buffer.
-pub fn encode_all(linear: &[f32]) -> Vec<u8> {
+pub(crate) fn encode_all(linear: &[f32]) -> Vec<u8> {
     linear.iter().map(|&c| encode(c)).collect()
 }
 

@@ -74,33 +74,28 @@ impl<'a> LinearRgb<'a> {
     }
 
     /// Width in pixels.
-    pub fn width(&self) -> u32 {
+    pub(crate) fn width(&self) -> u32 {
         self.width
     }
 
     /// Height in pixels.
-    pub fn height(&self) -> u32 {
+    pub(crate) fn height(&self) -> u32 {
         self.height
     }
 
-    /// Number of pixels.
-    pub fn pixel_count(&self) -> usize {
-        self.data.len() / 3
-    }
-
     /// The channels, three per pixel, rows from the top.
-    pub fn data(&self) -> &'a [f32] {
+    pub(crate) fn data(&self) -> &'a [f32] {
         self.data
     }
 
     /// The pixels as RGB triples.
-    pub fn pixels(&self) -> impl Iterator<Item = [f32; 3]> + 'a {
+    pub(crate) fn pixels(&self) -> impl Iterator<Item = [f32; 3]> + 'a {
         self.data.chunks_exact(3).map(|c| [c[0], c[1], c[2]])
     }
 }
 
 /// Checks that a test image and its reference have the same size.
-pub fn same_size(test: &LinearRgb<'_>, reference: &LinearRgb<'_>) -> Result<(), Diagnostic> {
+pub(crate) fn same_size(test: &LinearRgb<'_>, reference: &LinearRgb<'_>) -> Result<(), Diagnostic> {
     if (test.width, test.height) == (reference.width, reference.height) {
         return Ok(());
     }

@@ -2,12 +2,12 @@
 //! thin object), the worst 1% shows them.
 
 /// The share of pixels the "worst pixels" statistics average: 1%.
-pub const WORST_FRACTION: f64 = 0.01;
+pub(crate) const WORST_FRACTION: f64 = 0.01;
 
 /// The mean of the largest `ceil(fraction · n)` values (at least one value; 0 for no values).
 ///
 /// `fraction` is clamped to [0, 1]. NaN values count as the largest.
-pub fn mean_of_worst(values: &[f64], fraction: f64) -> f64 {
+pub(crate) fn mean_of_worst(values: &[f64], fraction: f64) -> f64 {
     if values.is_empty() {
         return 0.0;
     }

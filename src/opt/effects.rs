@@ -10,29 +10,29 @@ use crate::ir::{
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Effects {
     /// Shadow rays are cast.
-    pub shadows: bool,
+    pub(crate) shadows: bool,
     /// Some material reflects and `max_depth > 0`.
-    pub reflection: bool,
+    pub(crate) reflection: bool,
     /// Some material transmits and `max_depth > 0`.
-    pub refraction: bool,
+    pub(crate) refraction: bool,
     /// Some material has a colour texture.
-    pub textures: bool,
+    pub(crate) textures: bool,
     /// Some material has a bump map.
-    pub bump: bool,
+    pub(crate) bump: bool,
     /// Some light is an area light (soft shadows).
-    pub soft_shadows: bool,
+    pub(crate) soft_shadows: bool,
     /// More than one sample per pixel.
-    pub supersampling: bool,
+    pub(crate) supersampling: bool,
     /// A thin-lens camera (depth of field).
-    pub depth_of_field: bool,
+    pub(crate) depth_of_field: bool,
     /// Gooch shading is used somewhere.
-    pub gooch: bool,
+    pub(crate) gooch: bool,
     /// Hatching is used somewhere.
-    pub hatching: bool,
+    pub(crate) hatching: bool,
     /// The scene has CSG nodes.
-    pub csg: bool,
+    pub(crate) csg: bool,
     /// The scene has meshes.
-    pub meshes: bool,
+    pub(crate) meshes: bool,
     /// The shutter is open and something moves (an object or the camera): rays get times.
     pub motion_blur: bool,
     /// Some reflecting or refracting material is glossy (`gloss > 0`) and rays bounce.
@@ -63,7 +63,7 @@ pub struct Content {
 impl Content {
     /// What `scene` holds (its own materials; a mesh's MTL materials are not counted, so they
     /// reflect or refract only where a scene material does).
-    pub fn of(scene: &Scene) -> Content {
+    fn of(scene: &Scene) -> Content {
         let mut c = Content::without_objects(scene);
         for o in &scene.objects {
             c.visit(o);
@@ -73,7 +73,7 @@ impl Content {
 
     /// What `scene` holds apart from its objects, which [`Content::visit`] then adds one by one
     /// (so a caller that walks the objects anyway needs no pass of its own).
-    pub fn without_objects(scene: &Scene) -> Content {
+    pub(crate) fn without_objects(scene: &Scene) -> Content {
         let mats = &scene.materials;
         let material_model = |want: fn(&ShadingModel) -> bool| {
             mats.iter().any(|m| m.shading.as_ref().is_some_and(want))
@@ -100,7 +100,7 @@ impl Content {
     }
 
     /// Adds what the object `o` (a top-level object or a CSG operand) holds.
-    pub fn visit(&mut self, o: &Object) {
+    pub(crate) fn visit(&mut self, o: &Object) {
         self.moving |= o.motion.as_ref().is_some_and(|m| !m.is_still());
         match &o.shape {
             Shape::Csg { children, .. } => {
@@ -120,7 +120,7 @@ impl Effects {
     }
 
     /// The effects of a scene holding `content`, rendered with `settings` through `camera`.
-    pub fn new(content: &Content, s: &RenderSettings, camera: &Camera) -> Effects {
+    pub(crate) fn new(content: &Content, s: &RenderSettings, camera: &Camera) -> Effects {
         let shaded = s.mode == RenderMode::Shaded;
         let bounces = shaded && s.max_depth > 0;
         let model_used = |want: fn(&ShadingModel) -> bool, in_material: bool| {
@@ -157,7 +157,7 @@ impl Effects {
     }
 
     /// The names of the effects in use, in a fixed order.
-    pub fn names(&self) -> Vec<&'static str> {
+    pub(crate) fn names(&self) -> Vec<&'static str> {
         let all = [
             (self.shadows, "shadows"),
             (self.soft_shadows, "soft shadows"),

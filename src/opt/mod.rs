@@ -8,12 +8,12 @@
 //! renderer reads only the [`Prepared`] scene; `rtc check` runs the same preparation, so a clean
 //! check means the render will start.
 
-pub mod effects;
+mod effects;
 pub mod fingerprint;
-pub mod objects;
-pub mod prepared;
-pub mod textures;
-pub mod validate;
+pub(crate) mod objects;
+mod prepared;
+pub(crate) mod textures;
+mod validate;
 
 use std::time::Instant;
 
@@ -24,7 +24,7 @@ use crate::ir::{LightKind, Material, MaterialId, Object, Scene};
 
 pub use effects::{Content, Effects};
 pub use prepared::{Prepared, PreparedLight, Quality, Stats};
-pub use textures::{Picture, TextureMap};
+pub(crate) use textures::TextureMap;
 
 /// Prepares `scene` for rendering; on failure, every problem found (errors and warnings).
 pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
@@ -164,7 +164,7 @@ pub fn validate(scene: &Scene) -> Diagnostics {
 
 /// [`validate`] fed the scene's objects one at a time, in order (so `rtc check` walks them
 /// once for the lints and this).
-pub struct Validator<'a> {
+pub(crate) struct Validator<'a> {
     scene: &'a Scene,
     diags: Diagnostics,
     fallback: MaterialId,
@@ -173,7 +173,7 @@ pub struct Validator<'a> {
 
 impl<'a> Validator<'a> {
     /// A validator of `scene`, before its objects.
-    pub fn new(scene: &'a Scene) -> Validator<'a> {
+    pub(crate) fn new(scene: &'a Scene) -> Validator<'a> {
         let (materials, fallback) = material_table(scene);
         Validator {
             scene,
@@ -184,13 +184,13 @@ impl<'a> Validator<'a> {
     }
 
     /// Checks the next object of the scene.
-    pub fn object(&mut self, o: &Object) {
+    pub(crate) fn object(&mut self, o: &Object) {
         validate::object(self.scene, o, &mut self.diags);
         self.b.check(o, self.fallback);
     }
 
     /// The findings, once every object was given.
-    pub fn finish(mut self) -> Diagnostics {
+    pub(crate) fn finish(mut self) -> Diagnostics {
         validate::scene(self.scene, &mut self.diags);
         // `prepare` loads the textures even after an object's error, so the check does too.
         let _ = textures::load_all(&self.scene.textures, &mut self.diags, &mut self.b.memory);

@@ -21,40 +21,40 @@ use crate::ir::{Material, MaterialId, Object, Shape};
 
 /// What the meshes placed so far took.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct MeshStats {
+pub(crate) struct MeshStats {
     /// Distinct files (and smoothing) placed.
-    pub meshes: usize,
+    pub(crate) meshes: usize,
     /// Their triangles, each file once.
-    pub unique_triangles: usize,
+    pub(crate) unique_triangles: usize,
     /// Time their BVHs took.
-    pub bvh_build_time: Duration,
+    pub(crate) bvh_build_time: Duration,
     /// Time reading the files and building their BVHs took.
-    pub load_time: Duration,
+    pub(crate) load_time: Duration,
     /// Approximate heap bytes of their triangles and BVHs.
-    pub memory_bytes: usize,
+    pub(crate) memory_bytes: usize,
 }
 
 /// Prepares objects, collecting every problem instead of stopping at the first.
-pub struct Builder {
+pub(crate) struct Builder {
     /// Number of materials in the scene; MTL materials get ids from here on.
     base: u32,
     /// MTL materials added by meshes, in id order after the scene's.
-    pub extra_materials: Vec<Material>,
+    pub(crate) extra_materials: Vec<Material>,
     /// Meshes this world placed already: a file placed N times is asked of the process-wide
     /// cache once, and its load warnings are reported once.
     cache: HashMap<(PathBuf, bool), (Arc<MeshAsset>, Arc<Mesh>)>,
     mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
     /// Findings so far.
-    pub diagnostics: Diagnostics,
+    pub(crate) diagnostics: Diagnostics,
     /// The load's memory budget: each mesh placed is charged once (its file's data, then its
     /// triangles and BVH), and the textures after the objects.
-    pub memory: Memory,
+    pub(crate) memory: Memory,
 }
 
 impl Builder {
     /// A builder for a scene whose loading charged `memory` so far; MTL materials get ids
     /// from `first_extra` on.
-    pub fn new(first_extra: u32, memory: Memory) -> Builder {
+    pub(crate) fn new(first_extra: u32, memory: Memory) -> Builder {
         Builder {
             base: first_extra,
             extra_materials: Vec::new(),
@@ -66,7 +66,7 @@ impl Builder {
     }
 
     /// What the meshes placed so far took.
-    pub fn stats(&self) -> MeshStats {
+    pub(crate) fn stats(&self) -> MeshStats {
         let mut s = MeshStats::default();
         for (asset, m) in self.cache.values() {
             s.meshes += 1;
@@ -87,7 +87,7 @@ impl Builder {
     }
 
     /// Prepares one object (and its CSG children); `None` after recording an error.
-    pub fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Primitive> {
+    pub(crate) fn object(&mut self, o: &Object, inherited: MaterialId) -> Option<Primitive> {
         let material = o.material.unwrap_or(inherited);
         if !self.invertible(o) {
             return None;
@@ -103,7 +103,7 @@ impl Builder {
     /// The compact ball [`Builder::object`]'s primitive for `o` would become in the world
     /// (`Ball::of`): a valid sphere with no transform and no motion, straight into the world's
     /// storage without the primitive. `None` for every other object (nothing recorded).
-    pub fn ball(&self, o: &Object, inherited: MaterialId, object: u32) -> Option<Ball> {
+    pub(crate) fn ball(&self, o: &Object, inherited: MaterialId, object: u32) -> Option<Ball> {
         match o.shape {
             Shape::Sphere { center, radius }
                 if o.motion.is_none()
@@ -124,7 +124,7 @@ impl Builder {
     /// Records what [`Builder::object`] would about `o`, in the same order, but keeps nothing:
     /// a single shape is checked, not made into a primitive (its bounds, inverse transform)
     /// only to be dropped, as `rtc check` of a million spheres did.
-    pub fn check(&mut self, o: &Object, inherited: MaterialId) {
+    pub(crate) fn check(&mut self, o: &Object, inherited: MaterialId) {
         if matches!(o.shape, Shape::Mesh { .. } | Shape::Csg { .. }) {
             drop(self.object(o, inherited));
             return;
@@ -315,7 +315,7 @@ fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
 
 /// The bounds of a mesh file in its own coordinates and whether it is a closed surface (a
 /// solid to the enclosure lints); `None` when it does not load.
-pub fn mesh_bounds(
+pub(crate) fn mesh_bounds(
     path: &std::path::Path,
     smooth: bool,
 ) -> Option<(crate::geometry::aabb::Aabb, bool)> {
@@ -328,7 +328,7 @@ pub fn mesh_bounds(
 
 /// Whether point `p` (in the file's coordinates) is inside the closed mesh file; false when it
 /// does not load or is not closed.
-pub fn inside_mesh(path: &std::path::Path, smooth: bool, p: glam::DVec3) -> bool {
+pub(crate) fn inside_mesh(path: &std::path::Path, smooth: bool, p: glam::DVec3) -> bool {
     assets::mesh(path, smooth).is_ok_and(|m| m.is_closed() && m.contains(p))
 }
 

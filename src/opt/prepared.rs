@@ -17,7 +17,7 @@ pub struct PreparedLight {
     /// The IR geometry.
     pub kind: LightKind,
     /// RGB intensity.
-    pub color: Color,
+    pub(crate) color: Color,
     /// Number of shadow/shading samples (1 for a point light).
     pub samples: u32,
 }
@@ -111,7 +111,7 @@ impl Prepared {
     }
 
     /// Decoded textures by `TextureId`.
-    pub fn textures(&self) -> &[TextureMap] {
+    pub(crate) fn textures(&self) -> &[TextureMap] {
         &self.textures
     }
 
@@ -186,7 +186,7 @@ impl Prepared {
 
 impl Prepared {
     /// Each light's samples per edge (`[1, 1]` for a point light), in light order.
-    pub fn light_samples(&self) -> Vec<[u32; 2]> {
+    pub(crate) fn light_samples(&self) -> Vec<[u32; 2]> {
         self.lights
             .iter()
             .map(|l| match l.kind {
@@ -199,7 +199,7 @@ impl Prepared {
     /// Renders from now on with `samples[i]` samples per edge on area light `i` (point lights
     /// ignore theirs; `rtc accuracy` sweeps this). Errors when past `ir::limits` or when the
     /// list does not have one entry per light.
-    pub fn set_light_samples(&mut self, samples: &[[u32; 2]]) -> Result<(), Diagnostic> {
+    pub(crate) fn set_light_samples(&mut self, samples: &[[u32; 2]]) -> Result<(), Diagnostic> {
         if samples.len() != self.lights.len() {
             return Err(Diagnostic::new(
                 crate::diag::Severity::Error,
@@ -223,7 +223,7 @@ impl Prepared {
     }
 
     /// Renders from now on with another seed (`rtc accuracy` measures noise from two).
-    pub fn set_seed(&mut self, seed: u64) {
+    pub(crate) fn set_seed(&mut self, seed: u64) {
         self.settings.seed = seed;
     }
 }

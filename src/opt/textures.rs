@@ -8,11 +8,11 @@ use crate::diag::Diagnostics;
 use crate::ir::limits::Memory;
 use crate::ir::{Color, Mapping, Texture};
 
-pub use crate::assets::Picture;
+pub(crate) use crate::assets::Picture;
 
 /// A texture ready for lookups (by `TextureId`).
 #[derive(Clone, Debug)]
-pub enum TextureMap {
+pub(crate) enum TextureMap {
     /// A decoded image with its surface mapping.
     Image(Arc<Picture>, Mapping),
     /// A 3-D checkerboard of cubes: two colours and the cube edge.
@@ -23,7 +23,7 @@ pub enum TextureMap {
 
 /// Every texture of a scene, decoded; `None` (with the problems in `out`) when one cannot be.
 /// Each image is charged to `memory` from its header's size before it is decoded.
-pub fn load_all(
+pub(crate) fn load_all(
     textures: &[Texture],
     out: &mut Diagnostics,
     memory: &mut Memory,

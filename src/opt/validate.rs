@@ -14,7 +14,7 @@ use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling,
 /// Every scene-level problem of `scene` but its objects' (see [`object`], which callers run on
 /// each object first, in the pass that prepares it: a million objects make every pass cost),
 /// in a fixed order.
-pub fn scene(scene: &Scene, out: &mut Diagnostics) {
+pub(crate) fn scene(scene: &Scene, out: &mut Diagnostics) {
     for m in &scene.materials {
         let bad_texture = |t: Option<crate::ir::TextureId>| {
             t.is_some_and(|t| t.0 as usize >= scene.textures.len())
@@ -62,7 +62,7 @@ pub fn scene(scene: &Scene, out: &mut Diagnostics) {
 
 /// The scene-level problems of the object `o` of `scene`: it (and its CSG operands) may only
 /// name materials of the scene.
-pub fn object(scene: &Scene, o: &Object, out: &mut Diagnostics) {
+pub(crate) fn object(scene: &Scene, o: &Object, out: &mut Diagnostics) {
     if let Some(id) = o
         .material
         .filter(|id| id.0 as usize >= scene.materials.len())
@@ -84,7 +84,7 @@ pub fn object(scene: &Scene, o: &Object, out: &mut Diagnostics) {
 }
 
 /// A camera that can make rays: an image, a view direction, an `up` across it, a field of view.
-pub fn camera(c: &Camera) -> Result<(), Diagnostic> {
+pub(crate) fn camera(c: &Camera) -> Result<(), Diagnostic> {
     let bad = |what: &str, help: &str| {
         Err(
             Diagnostic::error("rtc::render::camera", c.span, format!("the camera {what}"))
@@ -162,7 +162,7 @@ fn image_size(c: &Camera, sampling: &Sampling) -> Result<(), Diagnostic> {
 }
 
 /// Checks an area light's samples per edge against `ir::limits` (each in 1..=256).
-pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
+pub(crate) fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
     if samples
         .iter()
         .all(|n| (1..=MAX_LIGHT_SAMPLES_PER_AXIS).contains(n))
@@ -184,7 +184,7 @@ pub fn light_samples(samples: [u32; 2]) -> Result<(), Diagnostic> {
 }
 
 /// Checks a glossy lobe's rays against `ir::limits` (1..=[`MAX_GLOSS_SAMPLES`]).
-pub fn gloss_samples(n: u32) -> Result<(), Diagnostic> {
+pub(crate) fn gloss_samples(n: u32) -> Result<(), Diagnostic> {
     if (1..=MAX_GLOSS_SAMPLES).contains(&n) {
         return Ok(());
     }
@@ -198,7 +198,7 @@ pub fn gloss_samples(n: u32) -> Result<(), Diagnostic> {
 }
 
 /// Settings within `ir::limits`: bounces and samples per pixel; a cut-off in [0, 1].
-pub fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
+pub(crate) fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     let too_big = |what: String, help: String| {
         Err(Diagnostic::new(Severity::Error, "rtc::render::limit", None, what).with_help(help))
     };

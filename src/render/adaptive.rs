@@ -32,9 +32,9 @@ const MARGIN: f64 = 2.0;
 
 /// The refinement test of one render.
 #[derive(Clone, Copy, Debug)]
-pub struct Criterion {
+pub(crate) struct Criterion {
     /// The contrast threshold (per channel, linear).
-    pub threshold: f64,
+    threshold: f64,
     /// (s(fine) − s(first)) / 2: the curvature's weight in the predicted fine mean.
     curvature: f64,
     /// How film colours become bytes.
@@ -46,7 +46,7 @@ pub struct Criterion {
 impl Criterion {
     /// The test for a first pass on `first`, a refinement on `fine`, the contrast `threshold`
     /// and the film's `encoding`.
-    pub fn new(first: Grid, fine: Grid, threshold: f64, encoding: Encoding) -> Criterion {
+    pub(crate) fn new(first: Grid, fine: Grid, threshold: f64, encoding: Encoding) -> Criterion {
         let s = |g: Grid| {
             let m = f64::from(g.factor());
             (m * m - 1.0) / (12.0 * m * m)
@@ -61,7 +61,7 @@ impl Criterion {
 
     /// The same test for a scene whose first pass is `noisy` (it draws random numbers): the
     /// threshold alone decides there, against the noise estimate (module doc).
-    pub fn with_noise(self, noisy: bool) -> Criterion {
+    pub(crate) fn with_noise(self, noisy: bool) -> Criterion {
         Criterion {
             levels: !noisy,
             ..self
@@ -69,7 +69,14 @@ impl Criterion {
     }
 
     /// Whether pixel (x, y) of a `w`×`h` first pass (`at` reads its colours) is refined.
-    pub fn refines(&self, at: impl Fn(u32, u32) -> Color, x: u32, y: u32, w: u32, h: u32) -> bool {
+    pub(crate) fn refines(
+        &self,
+        at: impl Fn(u32, u32) -> Color,
+        x: u32,
+        y: u32,
+        w: u32,
+        h: u32,
+    ) -> bool {
         let c = at(x, y);
         // Neighbours outside the image count as the pixel itself (no contrast, no curvature).
         let n = [

@@ -27,9 +27,9 @@ const MAX_VOTES: usize = 256;
 /// The AOV layers asked for, in order, over the `rows` of the image `region`: one value per
 /// pixel and channel, interleaved per pixel like [`tiles::run`]'s output.
 #[allow(clippy::too_many_arguments)]
-pub fn render(
+pub(crate) fn render(
     scene: &Prepared,
-    view: &View<'_>,
+    view: &View,
     grid: Grid,
     aovs: &[Channel],
     region: Region,

@@ -12,7 +12,7 @@ use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::opt::TextureMap;
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`.
-pub fn perturb(
+pub(crate) fn perturb(
     tex: &TextureMap,
     scale: f64,
     hit: &SurfaceHit,
@@ -60,9 +60,9 @@ pub fn perturb(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::SurfaceId;
+    use crate::geometry::world::primitive::SurfaceId;
     use crate::ir::{Mapping, MaterialId};
-    use crate::opt::Picture;
+    use crate::opt::textures::Picture;
 
     const SPHERE: MappingFrame = MappingFrame::Sphere {
         center: DVec3::ZERO,

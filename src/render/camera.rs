@@ -5,8 +5,9 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::Ray;
-use crate::geometry::lanes::{self, Lanes, RayLanes, V3, WIDTH};
+use crate::geometry::lanes::RayLanes;
 use crate::ir::{self, Projection};
+use crate::lanes::{self, Lanes, V3, WIDTH};
 
 /// A camera ready to generate rays for continuous image coordinates.
 #[derive(Clone, Copy, Debug)]
@@ -73,12 +74,12 @@ impl Camera {
     }
 
     /// Image width in pixels.
-    pub fn width(&self) -> u32 {
+    pub(crate) fn width(&self) -> u32 {
         self.width
     }
 
     /// Image height in pixels.
-    pub fn height(&self) -> u32 {
+    pub(crate) fn height(&self) -> u32 {
         self.height
     }
 
@@ -99,12 +100,12 @@ impl Camera {
     }
 
     /// The eye point (the pinhole, the centre of a lens).
-    pub fn eye(&self) -> DVec3 {
+    pub(crate) fn eye(&self) -> DVec3 {
         self.eye
     }
 
     /// True when the camera has a lens (depth of field), so rays need lens samples.
-    pub fn has_lens(&self) -> bool {
+    pub(crate) fn has_lens(&self) -> bool {
         self.aperture > 0.0
     }
 
@@ -130,26 +131,21 @@ impl Camera {
 }
 
 /// The most rays [`Camera::pinhole_rays`] makes in one call.
-pub const PINHOLE_BATCH: usize = 16;
+pub(crate) const PINHOLE_BATCH: usize = 16;
 
 impl Camera {
     /// [`Camera::ray`] of up to [`PINHOLE_BATCH`] samples of pixel (x, y) at sub-pixel
     /// `offsets`, into `out`, for a camera without a lens: bit for bit the same rays, their
     /// square roots and divisions in plain arrays the compiler pairs (`sqrtpd`, `divpd`: the
     /// same correctly rounded results), where one by one they queued on the divider.
-    pub fn pinhole_rays(&self, x: u32, y: u32, offsets: &[(f64, f64)], out: &mut [Ray]) {
+    pub(crate) fn pinhole_rays(&self, x: u32, y: u32, offsets: &[(f64, f64)], out: &mut [Ray]) {
         self.pinhole_samples(y, |j| (x, offsets[j]), out);
     }
 
     /// [`Camera::ray`] of up to [`PINHOLE_BATCH`] samples of row `y`, sample `j` in column
     /// `at(j).0` at sub-pixel offset `at(j).1`, into `out`, for a camera without a lens: bit for
     /// bit the rays of [`Camera::pinhole_rays`] (samples of several pixels in one call).
-    pub fn pinhole_samples(
-        &self,
-        y: u32,
-        at: impl Fn(usize) -> (u32, (f64, f64)),
-        out: &mut [Ray],
-    ) {
+    fn pinhole_samples(&self, y: u32, at: impl Fn(usize) -> (u32, (f64, f64)), out: &mut [Ray]) {
         debug_assert!(out.len() <= PINHOLE_BATCH);
         let p = self.pinhole_packet(y, at, out.len());
         for (j, r) in out.iter_mut().enumerate().take(PINHOLE_BATCH) {
@@ -160,7 +156,7 @@ impl Camera {
     /// [`Camera::pinhole_samples`] as a packet: lane `j < n` holds sample `j`'s ray, bit for
     /// bit (the lanes past `n` hold rays through the image plane's corner).
     #[inline(always)]
-    pub fn pinhole_packet(
+    pub(crate) fn pinhole_packet(
         &self,
         y: u32,
         at: impl Fn(usize) -> (u32, (f64, f64)),
@@ -203,14 +199,14 @@ const _: () = assert!(PINHOLE_BATCH == WIDTH);
 /// A camera that moves while the shutter is open: its eye and the point it looks at move
 /// linearly from their positions at shutter open to those at close.
 #[derive(Clone, Debug)]
-pub struct MovingCamera {
+pub(crate) struct MovingCamera {
     base: ir::Camera,
     motion: ir::CameraMotion,
 }
 
 impl MovingCamera {
     /// The moving camera of `c`, `None` when it stands still.
-    pub fn of(c: &ir::Camera) -> Option<MovingCamera> {
+    pub(crate) fn of(c: &ir::Camera) -> Option<MovingCamera> {
         c.motion.map(|motion| MovingCamera {
             base: c.clone(),
             motion,
@@ -218,7 +214,7 @@ impl MovingCamera {
     }
 
     /// The camera at shutter fraction `time` (0 = open, 1 = close).
-    pub fn at(&self, time: f64) -> Camera {
+    pub(crate) fn at(&self, time: f64) -> Camera {
         let mut c = self.base.clone();
         c.eye = self.base.eye.lerp(self.motion.eye, time);
         c.center = self.base.center.lerp(self.motion.center, time);

@@ -11,18 +11,18 @@ use super::sampler::Rng;
 
 /// The most surface points (and camera samples) shaded side by side: a pixel's 4×4 samples
 /// (the shading models' and the Whitted integrator's packets).
-pub const BATCH: usize = crate::geometry::lanes::WIDTH;
+pub(crate) const BATCH: usize = crate::lanes::WIDTH;
 
 /// Mutable per-tile state threaded through shading: the sample's random numbers and counters.
 pub struct Ctx {
     /// Random numbers of the current camera sample.
-    pub rng: Rng,
+    pub(crate) rng: Rng,
     /// Counters of the current tile.
     pub stats: Stats,
     /// Which cells of each area light the current camera sample takes.
-    pub lights: LightShare,
+    pub(crate) lights: LightShare,
     /// Reused buffers of the packets an integrator traces.
-    pub scratch: Scratch,
+    pub(crate) scratch: Scratch,
 }
 
 impl Ctx {
@@ -47,14 +47,14 @@ impl Default for Ctx {
 /// integrator that fills them: the context does not know the integrators' types, so a tile's
 /// buffers are kept as `Any` and a buffer of another type is never handed out.
 #[derive(Default)]
-pub struct Scratch {
+pub(crate) struct Scratch {
     // Boxed so that taking and giving back moves a pointer, not a kilobytes-large buffer.
     free: Vec<Box<dyn Any + Send>>,
 }
 
 impl Scratch {
     /// A buffer of type `T` (holding whatever the last packet left), or a new one.
-    pub fn take<T: Default + Send + 'static>(&mut self) -> Box<T> {
+    pub(crate) fn take<T: Default + Send + 'static>(&mut self) -> Box<T> {
         match self.free.pop().map(|b| b.downcast::<T>()) {
             Some(Ok(b)) => b,
             Some(Err(other)) => {
@@ -66,7 +66,7 @@ impl Scratch {
     }
 
     /// Gives a buffer back for the next packet.
-    pub fn give<T: Send + 'static>(&mut self, b: Box<T>) {
+    pub(crate) fn give<T: Send + 'static>(&mut self, b: Box<T>) {
         self.free.push(b);
     }
 }

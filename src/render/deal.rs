@@ -17,43 +17,43 @@
 /// `ir::LightSampling::Spread`) its share when the cells are dealt out over the `size` samples
 /// of its pixel (or of its refinement block), this sample being number `slot` among them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LightShare {
+pub(crate) struct LightShare {
     /// The sample's position among the samples sharing the cells.
-    pub slot: u32,
+    pub(crate) slot: u32,
     /// How many samples share the cells; 0: every sample takes every cell.
-    pub size: u32,
+    pub(crate) size: u32,
 }
 
 /// The weight of one light cell's sample, `num / den` of the light: a fraction, so that the
 /// common `1/count` is computed exactly as `color / count`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Weight {
+pub(crate) struct Weight {
     /// Numerator.
-    pub num: u32,
+    pub(crate) num: u32,
     /// Denominator (at least 1).
-    pub den: u32,
+    pub(crate) den: u32,
 }
 
 impl Weight {
     /// `x` times the weight: `x · num / den` (`x / den` to the bit when `num` is 1).
     #[inline]
-    pub fn of(self, x: f64) -> f64 {
+    pub(crate) fn of(self, x: f64) -> f64 {
         x * f64::from(self.num) / f64::from(self.den)
     }
 
     /// The weight as a number.
-    pub fn value(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         self.of(1.0)
     }
 }
 
 impl LightShare {
     /// Every sample takes every cell (the course's rule).
-    pub const ALL: LightShare = LightShare { slot: 0, size: 0 };
+    pub(crate) const ALL: LightShare = LightShare { slot: 0, size: 0 };
 
     /// The first cell and the number of cells of a light with `cells` cells this sample takes:
     /// cells `(first + j) mod cells` for `j < count`, each weighing [`LightShare::weight`].
-    pub fn cells(self, cells: u32) -> (u32, u32) {
+    pub(crate) fn cells(self, cells: u32) -> (u32, u32) {
         if self.size == 0 || cells <= 1 {
             return (0, cells);
         }
@@ -64,7 +64,7 @@ impl LightShare {
     /// The weight of cell `k` (of `cells`) in this sample: `size / (cells · n_k)` with n_k the
     /// number of the pixel's samples that take cell k (module doc), reduced; `1/cells` when
     /// every sample takes every cell.
-    pub fn weight(self, cells: u32, k: u32) -> Weight {
+    pub(crate) fn weight(self, cells: u32, k: u32) -> Weight {
         let cells = cells.max(1);
         if self.size == 0 || cells == 1 {
             return Weight { num: 1, den: cells };

@@ -19,7 +19,7 @@ use crate::diag::{Diagnostic, IO_ERROR, Severity};
 use crate::ir::Color;
 
 /// The EXR channel names of a film channel, one per component it writes.
-pub fn channel_names(c: Channel) -> &'static [&'static str] {
+fn channel_names(c: Channel) -> &'static [&'static str] {
     match c {
         Channel::Color => &["R", "G", "B"],
         Channel::Depth => &["Z"],
@@ -30,7 +30,7 @@ pub fn channel_names(c: Channel) -> &'static [&'static str] {
 }
 
 /// The film as OpenEXR bytes (lossless compression).
-pub fn encode(film: &Film) -> Result<Vec<u8>, Diagnostic> {
+pub(crate) fn encode(film: &Film) -> Result<Vec<u8>, Diagnostic> {
     let mut list: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::new();
     for &c in film.channels() {
         let values = film.channel(c).unwrap_or(&[]);

@@ -8,7 +8,7 @@
 use crate::ir::{Color, Encoding};
 
 /// Most channels one film holds.
-pub const MAX_CHANNELS: usize = 8;
+pub(crate) const MAX_CHANNELS: usize = 8;
 
 /// What a film channel holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -31,7 +31,7 @@ pub enum Channel {
 
 impl Channel {
     /// Every channel, for reading names back.
-    pub const ALL: [Channel; 5] = [
+    const ALL: [Channel; 5] = [
         Channel::Color,
         Channel::Depth,
         Channel::Normal,
@@ -59,7 +59,7 @@ impl Channel {
     }
 
     /// The channel called `name`.
-    pub fn named(name: &str) -> Option<Channel> {
+    pub(crate) fn named(name: &str) -> Option<Channel> {
         Channel::ALL.into_iter().find(|c| c.name() == name)
     }
 }
@@ -89,7 +89,7 @@ pub const CUT_WEIGHT_UNIT: f64 = (1u64 << 32) as f64;
 
 impl Stats {
     /// Adds another tile's counters.
-    pub fn add(&mut self, o: &Stats) {
+    pub(crate) fn add(&mut self, o: &Stats) {
         self.camera_rays += o.camera_rays;
         self.secondary_rays += o.secondary_rays;
         self.shadow_rays += o.shadow_rays;
@@ -115,12 +115,12 @@ pub struct Film {
     /// What it took.
     pub stats: Stats,
     /// How [`Film::to_image`] quantises the colour channel.
-    pub encoding: Encoding,
+    pub(crate) encoding: Encoding,
 }
 
 impl Film {
     /// A film from `values` interleaved per pixel (`channels.len()` values each, row by row).
-    pub fn new(
+    pub(crate) fn new(
         width: u32,
         height: u32,
         channels: &[Channel],
@@ -147,13 +147,13 @@ impl Film {
     }
 
     /// The channels this film holds.
-    pub fn channels(&self) -> &[Channel] {
+    pub(crate) fn channels(&self) -> &[Channel] {
         &self.channels
     }
 
     /// Every channel's values interleaved per pixel (the layout [`Film::new`] takes), for
     /// the rows `rows`.
-    pub fn interleaved(&self, rows: std::ops::Range<u32>) -> Vec<Color> {
+    pub(crate) fn interleaved(&self, rows: std::ops::Range<u32>) -> Vec<Color> {
         let w = self.width as usize;
         let (a, b) = (rows.start as usize * w, rows.end as usize * w);
         (a..b)
@@ -162,13 +162,13 @@ impl Film {
     }
 
     /// A channel's values row by row from the top, if the film holds it.
-    pub fn channel(&self, c: Channel) -> Option<&[Color]> {
+    pub(crate) fn channel(&self, c: Channel) -> Option<&[Color]> {
         let i = self.channels.iter().position(|x| *x == c)?;
         self.layers.get(i).map(Vec::as_slice)
     }
 
     /// Appends a channel computed by a separate pass (an AOV), its values row by row.
-    pub fn push_channel(&mut self, c: Channel, values: Vec<Color>) {
+    pub(crate) fn push_channel(&mut self, c: Channel, values: Vec<Color>) {
         self.channels.push(c);
         self.layers.push(values);
     }
@@ -195,7 +195,7 @@ impl Film {
 }
 
 /// One colour as bytes in `encoding` (NaN becomes 0 in both).
-pub fn encode(c: Color, encoding: Encoding) -> [u8; 3] {
+pub(crate) fn encode(c: Color, encoding: Encoding) -> [u8; 3] {
     match encoding {
         Encoding::Linear => to_bytes(c),
         Encoding::Srgb => {
@@ -206,14 +206,14 @@ pub fn encode(c: Color, encoding: Encoding) -> [u8; 3] {
 }
 
 /// `trunc(255·clamp(c, 0, 1))` per channel (NaN becomes 0): the linear encoding.
-pub fn to_bytes(c: Color) -> [u8; 3] {
+fn to_bytes(c: Color) -> [u8; 3] {
     let q = |v: f64| (255.0 * v.clamp(0.0, 1.0)) as u8;
     [q(c.x), q(c.y), q(c.z)]
 }
 
 /// The sRGB transfer curve (IEC 61966-2-1) for a linear value in [0, 1]. `libm::pow`, not
 /// `f64::powf`, so the bytes are the same on every CPU and C library.
-pub fn linear_to_srgb(c: f64) -> f64 {
+fn linear_to_srgb(c: f64) -> f64 {
     if c <= 0.0031308 {
         12.92 * c
     } else {

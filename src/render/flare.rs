@@ -23,20 +23,15 @@ use crate::opt::{Prepared, PreparedLight};
 
 /// One light's flare as drawn: where the light is on the image and the colour of its flare.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Source {
+pub(crate) struct Source {
     /// The light's image position (pixels, y down).
-    pub at: DVec2,
+    at: DVec2,
     /// Light colour × visible fraction × intensity.
-    pub color: Color,
+    color: Color,
 }
 
 /// The fraction of `light` the eye sees: its samples not hidden behind something.
-pub fn visible_fraction(
-    scene: &Prepared,
-    eye: DVec3,
-    light: &PreparedLight,
-    stats: &mut Stats,
-) -> f64 {
+fn visible_fraction(scene: &Prepared, eye: DVec3, light: &PreparedLight, stats: &mut Stats) -> f64 {
     let points: Vec<DVec3> = match light.kind {
         LightKind::Point { position } => vec![position],
         LightKind::Area {
@@ -83,7 +78,12 @@ fn centre(light: &PreparedLight) -> DVec3 {
 
 /// The flare sources of `scene` through `camera`: the lights in front of the eye, inside the
 /// frame, and bright enough once hidden parts are taken off.
-pub fn sources(scene: &Prepared, camera: &Camera, f: &Flare, stats: &mut Stats) -> Vec<Source> {
+pub(crate) fn sources(
+    scene: &Prepared,
+    camera: &Camera,
+    f: &Flare,
+    stats: &mut Stats,
+) -> Vec<Source> {
     let (w, h) = (f64::from(camera.width()), f64::from(camera.height()));
     let mut out = Vec::new();
     for light in scene.lights() {
@@ -108,7 +108,7 @@ pub fn sources(scene: &Prepared, camera: &Camera, f: &Flare, stats: &mut Stats) 
 
 /// Where ghost `i` (1-based) of a light at `at` lies on an image of size `size`: on the line
 /// from the light through the centre, `i·dispersal` of the way (past the centre beyond 1).
-pub fn ghost_position(at: DVec2, size: DVec2, dispersal: f64, i: u32) -> DVec2 {
+fn ghost_position(at: DVec2, size: DVec2, dispersal: f64, i: u32) -> DVec2 {
     at + (0.5 * size - at) * (f64::from(i) * dispersal)
 }
 
@@ -137,7 +137,7 @@ fn soft_disc(d: f64, r: f64) -> f64 {
 }
 
 /// The flare of `src` at pixel centre `p` on an image of `size` pixels.
-pub fn at_pixel(src: &Source, f: &Flare, p: DVec2, size: DVec2) -> Color {
+fn at_pixel(src: &Source, f: &Flare, p: DVec2, size: DVec2) -> Color {
     let diag = size.norm();
     let mut c = Color::ZERO;
     for i in 1..=f.ghosts {
@@ -181,7 +181,14 @@ pub fn at_pixel(src: &Source, f: &Flare, p: DVec2, size: DVec2) -> Color {
 
 /// Adds the flare of every source to the colour values of a `w`×`h` film (`stride` values per
 /// pixel, the colour first).
-pub fn apply(sources: &[Source], f: &Flare, w: u32, h: u32, stride: usize, values: &mut [Color]) {
+pub(crate) fn apply(
+    sources: &[Source],
+    f: &Flare,
+    w: u32,
+    h: u32,
+    stride: usize,
+    values: &mut [Color],
+) {
     if sources.is_empty() {
         return;
     }

@@ -24,34 +24,34 @@
 //!   bytes do not depend on the thread count, and a pixel's value does not depend on which tile
 //!   computed it (image-wide passes such as the depth range run before the pixels).
 
-pub mod adaptive;
-pub mod aov;
-pub mod bump;
+mod adaptive;
+mod aov;
+mod bump;
 pub mod camera;
 pub mod context;
-pub mod deal;
+mod deal;
 pub mod explain;
-pub mod exr;
+mod exr;
 pub mod film;
-pub mod flare;
+mod flare;
 pub mod integrator;
 pub mod merge;
 pub mod offset;
 pub mod output;
 pub mod part;
 pub mod path;
-pub mod pixel;
+mod pixel;
 pub mod progress;
 pub mod progressive;
 pub mod record;
 pub mod region;
-pub mod sampler;
+mod sampler;
 pub mod scatter;
-pub mod shading;
+mod shading;
 pub mod shard;
-pub mod texture;
-pub mod tiles;
-pub mod view;
+mod texture;
+mod tiles;
+mod view;
 
 use crate::diag::{Diagnostic, Diagnostics, Severity};
 use crate::ir::Scene;
@@ -64,7 +64,7 @@ use shard::{Rows, Shard};
 pub use film::{Channel, Image, Stats};
 pub use progress::{CANCELLED, Progress, Silent};
 pub use region::Region;
-pub use view::View;
+pub(crate) use view::View;
 
 /// Options that are not part of the scene.
 #[derive(Clone, Debug, Default)]
@@ -225,6 +225,6 @@ pub fn render_region(
 /// grid's lens and light points are a whole stratified block of the Sobol' sequence (a block
 /// starting right after the first grid, at 1 for a 1×1 first grid, loses that stratification:
 /// docs/accuracy-study.md measured RMSE 0.0182 against 0.0160 on showcase).
-pub fn refine_start(fine: Grid) -> u32 {
+fn refine_start(fine: Grid) -> u32 {
     fine.len().next_power_of_two()
 }

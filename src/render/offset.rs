@@ -12,20 +12,20 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::SurfaceHit;
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::rounding::gamma;
+use crate::lanes::{self, Lanes, Mask, V3};
 
 /// A surface point rays can leave from: the point, its per-axis error bound and the surface's
 /// geometric normal (either orientation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpawnPoint {
     /// The point as the object computed it.
-    pub point: DVec3,
+    pub(crate) point: DVec3,
     /// Per-axis bound on its distance from the true surface.
-    pub error: DVec3,
+    pub(crate) error: DVec3,
     /// Unit geometric normal.
-    pub normal: DVec3,
+    pub(crate) normal: DVec3,
 }
 
 /// How far short of its target a shadow ray stops, in units of the coordinates' magnitude: a
@@ -72,7 +72,7 @@ impl SpawnPoint {
     /// origin, with the parameter where it must stop short of the target; `None` when the
     /// target is the origin itself.
     #[inline(always)]
-    pub fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
+    pub(crate) fn ray_to(&self, target: DVec3) -> Option<(crate::geometry::Ray, f64)> {
         let origin = self.origin_towards(target - self.point);
         let d = target - origin;
         let dist = d.norm();
@@ -86,22 +86,22 @@ impl SpawnPoint {
     }
 }
 
-/// The surface points of a packet ([`crate::geometry::lanes`]) rays leave from: a
+/// The surface points of a packet ([`crate::lanes`]) rays leave from: a
 /// [`SpawnPoint`] per lane. Its rays are the ones [`SpawnPoint`] casts, bit for bit.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct SpawnLanes {
+pub(crate) struct SpawnLanes {
     /// The points as their objects computed them.
-    pub point: V3,
+    pub(crate) point: V3,
     /// Their per-axis error bounds.
-    pub error: V3,
+    pub(crate) error: V3,
     /// Their unit geometric normals.
-    pub normal: V3,
+    pub(crate) normal: V3,
 }
 
 impl SpawnLanes {
     /// Sets lane `i` to `s`.
     #[inline(always)]
-    pub fn set(&mut self, i: usize, s: &SpawnPoint) {
+    pub(crate) fn set(&mut self, i: usize, s: &SpawnPoint) {
         self.point.set(i, s.point);
         self.error.set(i, s.error);
         self.normal.set(i, s.normal);
@@ -109,9 +109,9 @@ impl SpawnLanes {
 
     /// [`SpawnPoint::origin_towards`] of every lane, each along its own `dir`.
     #[inline(always)]
-    pub fn origin_towards(&self, dir: &V3) -> V3 {
+    pub(crate) fn origin_towards(&self, dir: &V3) -> V3 {
         let facing = dir.dot(&self.normal);
-        let n = V3::select(simd::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
+        let n = V3::select(lanes::lt(&facing, 0.0), &self.normal.neg(), &self.normal);
         let d = n.abs().dot(&self.error);
         let o = self.point.add(&n.scale(&d));
         V3 {
@@ -124,11 +124,11 @@ impl SpawnLanes {
     /// [`SpawnPoint::ray_to`] of every lane towards one `target`: the rays, where each must
     /// stop, and the lanes that have a ray (the others' target is their origin).
     #[inline(always)]
-    pub fn ray_to(&self, target: DVec3) -> (RayLanes, Lanes, Mask) {
+    pub(crate) fn ray_to(&self, target: DVec3) -> (RayLanes, Lanes, Mask) {
         let origin = self.origin_towards(&self.point.from(target));
         let d = origin.from(target);
         let dist = d.norm();
-        let valid = simd::gt(&dist, 0.0) & simd::lt(&dist, f64::INFINITY);
+        let valid = lanes::gt(&dist, 0.0) & lanes::lt(&dist, f64::INFINITY);
         let dir = d.div(&dist);
         // shadow_margin, lane by lane.
         let far = origin.abs().max_element();
@@ -195,7 +195,7 @@ fn away_rare(x: f64, s: f64) -> f64 {
 
 /// How far short of `target` a visibility ray from `origin` (at distance `dist`) stops, so a
 /// surface through the target does not count as blocking it.
-pub fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
+pub(crate) fn shadow_margin(origin: DVec3, target: DVec3, dist: f64) -> f64 {
     gamma(SHADOW_ROUNDING_STEPS) * (origin.abs().max_element() + target.abs().max_element() + dist)
 }
 

@@ -97,7 +97,7 @@ pub fn save_film(film: &super::film::Film, path: &Path) -> Result<(), Diagnostic
 }
 
 /// Writes `image` to `path` atomically (temporary sibling file, then rename).
-pub fn save(image: &Image, path: &Path) -> Result<(), Diagnostic> {
+fn save(image: &Image, path: &Path) -> Result<(), Diagnostic> {
     write_atomically(path, &encode(image, path)?)
 }
 

@@ -22,31 +22,31 @@ use crate::ir::{Color, Encoding};
 use crate::opt::fingerprint;
 
 /// The first line of every part file.
-pub const MAGIC: &str = "rtc-part 1";
+const MAGIC: &str = "rtc-part 1";
 
 /// One shard's share of a render.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Part {
     /// Fingerprint of the scene and the files it reads.
-    pub scene: String,
+    pub(crate) scene: String,
     /// Fingerprint of the command-line settings that change pixels.
-    pub settings: String,
+    pub(crate) settings: String,
     /// Width of the whole image.
-    pub width: u32,
+    pub(crate) width: u32,
     /// Height of the whole image.
-    pub height: u32,
+    pub(crate) height: u32,
     /// The film's channels.
-    pub channels: Vec<Channel>,
+    pub(crate) channels: Vec<Channel>,
     /// How the merged colour is quantised.
-    pub encoding: Encoding,
+    pub(crate) encoding: Encoding,
     /// Which shard this is.
-    pub shard: Shard,
+    pub(crate) shard: Shard,
     /// The rows it holds, from the top (`shard.bands(height)`).
-    pub rows: Vec<Range<u32>>,
+    pub(crate) rows: Vec<Range<u32>>,
     /// What rendering it took.
-    pub stats: Stats,
+    pub(crate) stats: Stats,
     /// The values of its rows, interleaved per pixel as [`Film::new`] takes them.
-    pub values: Vec<Color>,
+    pub(crate) values: Vec<Color>,
     /// A JSON document the merge writes beside its image (the object-id layer's sidecar).
     pub sidecar: Option<serde_json::Value>,
 }

@@ -4,7 +4,7 @@
 
 /// The stack of media a ray is inside (indices of refraction, innermost last); the outside is 1.
 #[derive(Clone, Copy, Debug)]
-pub struct Media {
+pub(crate) struct Media {
     etas: [f64; 8],
     len: usize,
 }
@@ -23,13 +23,13 @@ impl Default for Media {
 
 impl Media {
     /// Not inside anything (index 1).
-    pub const OUTSIDE: Media = Media {
+    pub(crate) const OUTSIDE: Media = Media {
         etas: [1.0; 8],
         len: 0,
     };
 
     /// The index of the innermost medium.
-    pub fn current(&self) -> f64 {
+    pub(crate) fn current(&self) -> f64 {
         if self.len == 0 {
             1.0
         } else {
@@ -38,7 +38,7 @@ impl Media {
     }
 
     /// After entering a medium of index `eta` (a full stack forgets its outermost entry).
-    pub fn enter(mut self, eta: f64) -> Media {
+    fn enter(mut self, eta: f64) -> Media {
         if self.len == self.etas.len() {
             self.etas.copy_within(1.., 0);
             self.len -= 1;
@@ -50,7 +50,7 @@ impl Media {
 
     /// After leaving a medium of index `eta`: its innermost entry is removed (unchanged when the
     /// ray was not known to be inside it, e.g. a camera placed inside glass).
-    pub fn leave(mut self, eta: f64) -> Media {
+    fn leave(mut self, eta: f64) -> Media {
         if let Some(i) = self.etas[..self.len].iter().rposition(|e| *e == eta) {
             self.etas.copy_within(i + 1..self.len, i);
             self.len -= 1;
@@ -60,7 +60,7 @@ impl Media {
 
     /// Crossing the surface of a medium of index `eta`, leaving it when `inside`: the index on
     /// the near side and the media beyond.
-    pub fn cross(self, eta: f64, inside: bool) -> (f64, Media) {
+    pub(crate) fn cross(self, eta: f64, inside: bool) -> (f64, Media) {
         if inside {
             (eta, self.leave(eta))
         } else {
@@ -74,12 +74,12 @@ impl Media {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Path {
     /// Bounces so far (0 for a camera ray).
-    pub depth: u32,
+    pub(crate) depth: u32,
     /// The media the ray travels in.
-    pub media: Media,
+    pub(crate) media: Media,
     /// The product of the scattering weights along the path (1 for a camera ray): what the
     /// insignificance cut-off compares.
-    pub weight: f64,
+    pub(crate) weight: f64,
 }
 
 impl Path {
@@ -91,7 +91,7 @@ impl Path {
     };
 
     /// The path after one more bounce into `media`, scattered with weight `k`.
-    pub fn bounce(self, media: Media, k: f64) -> Path {
+    pub(crate) fn bounce(self, media: Media, k: f64) -> Path {
         Path {
             depth: self.depth + 1,
             media,

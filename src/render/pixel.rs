@@ -21,7 +21,7 @@ const AXIS_OFFSETS: usize = 16;
 /// a packet's worth when a scene the Whitted packets trace has plain pinhole camera rays
 /// (their samples then fill whole packets across pixels: a 3×3 grid's nine samples alone
 /// would leave seven of sixteen lanes idle), else one.
-pub fn span(view: &View<'_>, integrator: &Integrator<'_>, channels: usize) -> usize {
+pub(crate) fn span(view: &View, integrator: &Integrator<'_>, channels: usize) -> usize {
     if channels == 1 && integrator.batch().is_some() && view.pinhole() {
         BATCH
     } else {
@@ -33,8 +33,8 @@ pub fn span(view: &View<'_>, integrator: &Integrator<'_>, channels: usize) -> us
 /// `out`: when [`span`] is more than one, the samples of all of them, pixel after
 /// pixel, traced in packets of [`BATCH`] (each pixel's value bit for bit the one [`average`]
 /// gives it: its samples summed in the same order), else pixel by pixel.
-pub fn average_span(
-    view: &View<'_>,
+pub(crate) fn average_span(
+    view: &View,
     integrator: &Integrator<'_>,
     (grid, channels): (Grid, usize),
     x0: u32,
@@ -99,8 +99,8 @@ pub fn average_span(
 /// The mean of the integrator's (unclamped) values over the samples of `grid`, per channel,
 /// into `out`; sample numbers start at `first_index`.
 #[allow(clippy::too_many_arguments)]
-pub fn average(
-    view: &View<'_>,
+pub(crate) fn average(
+    view: &View,
     integrator: &Integrator<'_>,
     grid: Grid,
     first_index: u32,

@@ -32,10 +32,10 @@ use crate::ir::limits::MAX_PIXEL_SAMPLES_PER_AXIS;
 use crate::opt::Prepared;
 
 /// Samples every pixel starts with.
-pub const FIRST_SAMPLES: u32 = 4;
+const FIRST_SAMPLES: u32 = 4;
 
 /// Most doublings of a pixel: 4·2¹⁰ = 4096 samples, the 64×64 of `ir::limits`.
-pub const MAX_LEVEL: u8 =
+const MAX_LEVEL: u8 =
     (MAX_PIXEL_SAMPLES_PER_AXIS * MAX_PIXEL_SAMPLES_PER_AXIS / FIRST_SAMPLES).ilog2() as u8;
 
 /// The Sobol' stream of sub-pixel positions (distinct from the lens's, 0, and from every
@@ -268,7 +268,7 @@ fn half_error2(a: Color, b: Color, count: u32) -> f64 {
 /// The sums over samples `start..start + len` of pixel (x, y) into `out`, per channel.
 #[allow(clippy::too_many_arguments)]
 fn sample_block(
-    view: &View<'_>,
+    view: &View,
     integrator: &Integrator<'_>,
     x: u32,
     y: u32,

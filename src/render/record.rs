@@ -25,7 +25,7 @@ pub enum Branch {
 
 impl Branch {
     /// The branch of a secondary ray drawn from `lobe`.
-    pub fn of(lobe: &Lobe) -> Branch {
+    pub(crate) fn of(lobe: &Lobe) -> Branch {
         if lobe.transmits() {
             Branch::Refracted
         } else {
@@ -68,12 +68,12 @@ pub struct LightTerm {
     /// Samples that reached the surface through glass (`glass_shadows`), tinted.
     pub tinted: u32,
     /// The first opaque surface found blocking the light, if any sample was blocked.
-    pub occluder: Option<SurfaceHit>,
+    pub(crate) occluder: Option<SurfaceHit>,
 }
 
 impl LightTerm {
     /// An empty term for light `light`.
-    pub fn new(light: usize) -> LightTerm {
+    pub(crate) fn new(light: usize) -> LightTerm {
         LightTerm {
             light,
             ambient: Color::ZERO,
@@ -90,7 +90,7 @@ impl LightTerm {
 
 /// Receives the events of one trace. Every method has an empty default; `ON` tells the
 /// integrator whether to compute what only a recorder reads (it is `false` for [`NoRecord`]).
-pub trait Recorder {
+pub(crate) trait Recorder {
     /// Whether anything is recorded (guards the work that only feeds the recorder).
     const ON: bool;
     /// A ray is about to be traced for a path in state `path`.
@@ -113,7 +113,7 @@ pub trait Recorder {
 }
 
 /// The recorder of ordinary renders: records nothing, costs nothing.
-pub struct NoRecord;
+pub(crate) struct NoRecord;
 
 impl Recorder for NoRecord {
     const ON: bool = false;

@@ -42,7 +42,7 @@ impl Region {
     }
 
     /// Checks that the region is not empty and lies inside a `width × height` image.
-    pub fn check(&self, width: u32, height: u32) -> Result<(), Diagnostic> {
+    pub(crate) fn check(&self, width: u32, height: u32) -> Result<(), Diagnostic> {
         let inside = |start: u32, len: u32, full: u32| {
             len > 0 && start.checked_add(len).is_some_and(|end| end <= full)
         };
@@ -66,7 +66,7 @@ impl Region {
     /// The region scaled with its image by `scale` per side: the corners are rounded, so
     /// neighbouring regions stay neighbours, and each side keeps at least one pixel within the
     /// scaled `width × height`.
-    pub fn scaled(&self, scale: f64, width: u32, height: u32) -> Region {
+    pub(crate) fn scaled(&self, scale: f64, width: u32, height: u32) -> Region {
         let at = |v: u32, full: u32| ((f64::from(v) * scale).round() as u32).min(full);
         let (x0, y0) = (
             at(self.x, width).min(width.saturating_sub(1)),
@@ -80,11 +80,6 @@ impl Region {
             width: x1 - x0,
             height: y1 - y0,
         }
-    }
-
-    /// Pixels in the region.
-    pub fn pixels(&self) -> u64 {
-        u64::from(self.width) * u64::from(self.height)
     }
 
     /// `X,Y,W,H`, as it is written.

@@ -7,35 +7,30 @@ use crate::ir::Sampling;
 
 /// The regular f×f grid of sub-pixel offsets ((i+½)/f, (j+½)/f) of COURSE.md §2.5.
 #[derive(Clone, Copy, Debug)]
-pub struct Grid {
+pub(crate) struct Grid {
     factor: u32,
 }
 
 impl Grid {
     /// A grid with `factor` samples per axis (at least 1).
-    pub fn new(factor: u32) -> Grid {
+    pub(crate) fn new(factor: u32) -> Grid {
         Grid {
             factor: factor.max(1),
         }
     }
 
     /// Samples per axis.
-    pub fn factor(&self) -> u32 {
+    pub(crate) fn factor(&self) -> u32 {
         self.factor
     }
 
     /// Number of samples.
-    pub fn len(&self) -> u32 {
+    pub(crate) fn len(&self) -> u32 {
         self.factor * self.factor
     }
 
-    /// Never empty (at least one sample); present for clippy's `len` convention.
-    pub fn is_empty(&self) -> bool {
-        false
-    }
-
     /// Offset of sample `k` (row-major, `k < len`).
-    pub fn offset(&self, k: u32) -> (f64, f64) {
+    pub(crate) fn offset(&self, k: u32) -> (f64, f64) {
         let f = f64::from(self.factor);
         let (i, j) = (k % self.factor, k / self.factor);
         ((f64::from(i) + 0.5) / f, (f64::from(j) + 0.5) / f)
@@ -44,16 +39,16 @@ impl Grid {
 
 /// The pixel sampling plan: a fixed grid, or a first grid refined to a finer one where needed.
 #[derive(Clone, Copy, Debug)]
-pub struct PixelSampler {
+pub(crate) struct PixelSampler {
     /// The grid every pixel gets.
-    pub first: Grid,
+    pub(crate) first: Grid,
     /// The finer grid and the channel spread that triggers it (adaptive sampling).
-    pub refine: Option<(Grid, f64)>,
+    pub(crate) refine: Option<(Grid, f64)>,
 }
 
 impl PixelSampler {
     /// The plan for a scene's sampling setting.
-    pub fn new(s: Sampling) -> PixelSampler {
+    pub(crate) fn new(s: Sampling) -> PixelSampler {
         match s {
             Sampling::Grid { factor } => PixelSampler {
                 first: Grid::new(factor),
@@ -77,14 +72,14 @@ impl PixelSampler {
 
 /// Deterministic random numbers for one camera sample.
 #[derive(Clone, Copy, Debug)]
-pub struct Rng {
+pub(crate) struct Rng {
     seed: u32,
     sample: u32,
 }
 
 impl Rng {
     /// The generator for sample `sample` of pixel (x, y) under the scene `seed`.
-    pub fn new(x: u32, y: u32, sample: u32, seed: u64) -> Rng {
+    pub(crate) fn new(x: u32, y: u32, sample: u32, seed: u64) -> Rng {
         let s = hash(x ^ hash(y ^ hash((seed as u32) ^ hash((seed >> 32) as u32))));
         Rng {
             seed: s,
@@ -96,7 +91,7 @@ impl Rng {
     /// A 2-D point in [0,1)² for the decision `stream` (lens, a light's cell, a bounce...).
     /// Streams are decorrelated by re-seeding; the dimension pair stays (0, 1) so each stream is a
     /// well-stratified 2-D Sobol' sequence over the pixel's samples.
-    pub fn get2(&self, stream: u32) -> (f64, f64) {
+    pub(crate) fn get2(&self, stream: u32) -> (f64, f64) {
         let seed = hash(self.seed ^ hash(stream.wrapping_add(0x9e37_79b9)));
         let a = sobol_burley::sample(self.sample, 0, seed);
         let b = sobol_burley::sample(self.sample, 1, seed);
@@ -109,7 +104,7 @@ impl Rng {
     /// Point `k` of a 2-D Sobol' sequence of its own for decision `stream` of this camera
     /// sample (Owen-scrambled per sample and stream): `k = 0..n` are stratified over the unit
     /// square, so the rays of one glossy lobe cover it evenly. `k` < 2^16.
-    pub fn point(&self, stream: u32, k: u32) -> (f64, f64) {
+    pub(crate) fn point(&self, stream: u32, k: u32) -> (f64, f64) {
         let seed = hash(self.seed ^ hash(self.sample ^ hash(stream.wrapping_add(0x632b_e5ab))));
         let a = sobol_burley::sample(k & 0xffff, 0, seed);
         let b = sobol_burley::sample(k & 0xffff, 1, seed);

@@ -12,10 +12,10 @@ use std::ops::Range;
 use crate::diag::{Diagnostic, Severity};
 
 /// Rows per band: the unit shards are made of.
-pub const BAND_ROWS: u32 = 16;
+const BAND_ROWS: u32 = 16;
 
 /// Most shards one image may be cut into.
-pub const MAX_SHARDS: u32 = 100_000;
+const MAX_SHARDS: u32 = 100_000;
 
 /// Shard `index` of `count` (indices count from 0).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -113,13 +113,13 @@ impl Shard {
     }
 
     /// Whether row `y` belongs to this shard.
-    pub fn owns(self, y: u32) -> bool {
+    fn owns(self, y: u32) -> bool {
         (y / BAND_ROWS) % self.count == self.index
     }
 
     /// How many bands [`Shard::bands`] gives for an image `height` rows tall, without making
     /// them (`rtc merge` checks a part's header with it before allocating).
-    pub fn band_count(self, height: u32) -> u64 {
+    pub(crate) fn band_count(self, height: u32) -> u64 {
         let bands = u64::from(height.div_ceil(BAND_ROWS));
         let (k, n) = (u64::from(self.index), u64::from(self.count));
         if k < bands {
@@ -130,7 +130,7 @@ impl Shard {
     }
 
     /// The row ranges this shard renders in an image `height` rows tall, from the top.
-    pub fn bands(self, height: u32) -> Vec<Range<u32>> {
+    pub(crate) fn bands(self, height: u32) -> Vec<Range<u32>> {
         let bands = height.div_ceil(BAND_ROWS);
         (self.index..bands)
             .step_by(self.count as usize)
@@ -140,7 +140,7 @@ impl Shard {
 
     /// Whether row `y` is this shard's or next to one of its rows (the halo adaptive
     /// refinement reads).
-    pub fn owns_or_touches(self, y: u32) -> bool {
+    fn owns_or_touches(self, y: u32) -> bool {
         self.owns(y) || (y > 0 && self.owns(y - 1)) || self.owns(y + 1)
     }
 }
@@ -159,7 +159,7 @@ fn no_count(source: &str) -> Diagnostic {
 
 /// Which rows of an image a pass computes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Rows {
+pub(crate) enum Rows {
     /// Every row.
     All,
     /// The rows of a shard.
@@ -170,7 +170,7 @@ pub enum Rows {
 
 impl Rows {
     /// Whether row `y` is computed.
-    pub fn contains(self, y: u32) -> bool {
+    pub(crate) fn contains(self, y: u32) -> bool {
         match self {
             Rows::All => true,
             Rows::Of(s) => s.owns(y),
@@ -179,7 +179,7 @@ impl Rows {
     }
 
     /// How many of `height` rows are computed.
-    pub fn count(self, height: u32) -> u64 {
+    pub(crate) fn count(self, height: u32) -> u64 {
         (0..height).filter(|&y| self.contains(y)).count() as u64
     }
 }

@@ -10,13 +10,13 @@ use crate::ir::{Color, Mapping};
 use crate::opt::TextureMap;
 
 /// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
-pub fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Color {
+pub(crate) fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Color {
     solid(tex, hit, frame, hit.local_point)
 }
 
 /// The colour of `tex` at `hit`, with solid textures read at object-space point `p` (bump
 /// mapping reads them at points near the hit).
-pub fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
+pub(crate) fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
     match tex {
         TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, frame)),
         TextureMap::Checker(a, b, size) => {
@@ -43,7 +43,7 @@ pub fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) 
 
 /// Surface coordinates of a hit under a mapping, in its surface's mapping `frame` (+Y is the
 /// north pole).
-pub fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
+pub(crate) fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
     let p = frame.point(hit.local_point);
     match mapping {
         Mapping::Uv => hit.uv,
@@ -59,7 +59,7 @@ pub fn uv(mapping: Mapping, hit: &SurfaceHit, frame: MappingFrame) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::SurfaceId;
+    use crate::geometry::world::primitive::SurfaceId;
 
     fn hit_at(p: DVec3) -> SurfaceHit {
         SurfaceHit {

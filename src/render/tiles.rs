@@ -20,7 +20,7 @@ const BAND: usize = 4;
 const STACK_BYTES: usize = 64 << 20;
 
 /// A thread pool with `threads` workers (0 = one per core).
-pub fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
+pub(crate) fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .stack_size(STACK_BYTES)
@@ -40,7 +40,7 @@ pub fn pool(threads: usize) -> Result<rayon::ThreadPool, Diagnostic> {
 /// per-pixel state such as a progressive render's sums). Values come back interleaved per
 /// pixel for the whole image (zero in rows not computed). Before each band the callback is asked whether to stop: a cancelled render is the
 /// error `rtc::render::cancelled`.
-pub fn run<T, F>(
+pub(crate) fn run<T, F>(
     pool: &rayon::ThreadPool,
     width: u32,
     height: u32,
@@ -59,7 +59,7 @@ where
 /// [`run`] for runs of up to `span` pixels of a row at once: `f(x0, y, ctx, out)` computes
 /// the pixels from column `x0` on, `out.len() / channels` of them (fewer than `span` at the
 /// row's end), so neighbouring pixels can be traced as one packet.
-pub fn run_spans<T, F>(
+pub(crate) fn run_spans<T, F>(
     pool: &rayon::ThreadPool,
     (width, height): (u32, u32),
     channels: usize,

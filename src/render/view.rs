@@ -13,41 +13,38 @@ use super::sampler::{Grid, Rng};
 
 /// The camera rays of an image's first samples, as an image-wide pass traces them before any
 /// pixel: what an integrator needs of the view, and no more.
-pub struct FirstRays<'v> {
+pub(crate) struct FirstRays<'v> {
     /// The image's width and height in pixels.
-    pub size: (u32, u32),
+    pub(crate) size: (u32, u32),
     /// Samples per pixel.
-    pub samples: u32,
+    pub(crate) samples: u32,
     /// The camera ray of sample `k` at pixel (x, y) (a pure function of its arguments).
-    pub ray: &'v (dyn Fn(u32, u32, u32) -> Ray + Sync),
+    pub(crate) ray: &'v (dyn Fn(u32, u32, u32) -> Ray + Sync),
 }
 
 /// What turns a pixel sample into a camera ray.
-pub struct View<'a> {
-    /// The scene.
-    pub scene: &'a Prepared,
+pub(crate) struct View {
     /// Primary rays.
-    pub camera: Camera,
+    pub(crate) camera: Camera,
     /// Whether anything draws random numbers (a lens or an area light).
-    pub random: bool,
+    pub(crate) random: bool,
     /// The scene's seed.
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// Whether camera samples spread over the open shutter (something moves while it is open).
-    pub motion_blur: bool,
+    motion_blur: bool,
     /// The camera's motion while the shutter is open, if it moves.
-    pub moving_camera: Option<MovingCamera>,
+    moving_camera: Option<MovingCamera>,
     /// Whether area-light cells are dealt out over a pixel's samples.
-    pub spread_lights: bool,
+    pub(crate) spread_lights: bool,
 }
 
 /// The random stream of a camera sample's time (apart from the lens's 0 and the lights').
 const TIME_STREAM: u32 = 0xffff_fffe;
 
-impl View<'_> {
+impl View {
     /// The view of a prepared scene.
-    pub fn new(scene: &Prepared) -> View<'_> {
+    pub(crate) fn new(scene: &Prepared) -> View {
         View {
-            scene,
             camera: Camera::new(scene.camera()),
             random: scene.random(),
             seed: scene.settings().seed,
@@ -58,7 +55,7 @@ impl View<'_> {
     }
 
     /// The lens sample of camera sample `index` of pixel (x, y), (½, ½) without a lens.
-    pub fn lens(&self, x: u32, y: u32, index: u32) -> (f64, f64) {
+    fn lens(&self, x: u32, y: u32, index: u32) -> (f64, f64) {
         if self.camera.has_lens() {
             Rng::new(x, y, index, self.seed).get2(0)
         } else {
@@ -69,7 +66,7 @@ impl View<'_> {
     /// The camera ray of one sample: at shutter open, or with motion blur at a time drawn from
     /// the sample's own stream (Owen-scrambled Sobol' over the pixel's samples, so the times
     /// are stratified across the shutter and decorrelated from the sub-pixel positions).
-    pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64, lens: (f64, f64), rng: &Rng) -> Ray {
+    fn ray(&self, x: u32, y: u32, sx: f64, sy: f64, lens: (f64, f64), rng: &Rng) -> Ray {
         if !self.motion_blur {
             return self.camera.ray(x, y, sx, sy, lens);
         }
@@ -84,7 +81,7 @@ impl View<'_> {
     /// Sets `ctx` up for camera sample number `index` of pixel (x, y), the `slot.0`-th of
     /// `slot.1` samples of its grid, at sub-pixel `offset`, and returns its ray.
     #[inline]
-    pub fn camera_sample(
+    pub(crate) fn camera_sample(
         &self,
         x: u32,
         y: u32,
@@ -114,7 +111,7 @@ impl View<'_> {
     }
 
     /// Whether camera rays are plain pinhole rays, nothing set up per sample.
-    pub fn pinhole(&self) -> bool {
+    pub(crate) fn pinhole(&self) -> bool {
         !self.random
             && !self.spread_lights
             && !self.motion_blur
@@ -124,14 +121,14 @@ impl View<'_> {
 
     /// The camera ray of sample `k` of `grid` at pixel (x, y), keyed by the pixel, the sample
     /// and the seed alone (no per-tile state): what image-wide passes trace before the pixels.
-    pub fn sample_ray(&self, x: u32, y: u32, k: u32, grid: Grid) -> Ray {
+    pub(crate) fn sample_ray(&self, x: u32, y: u32, k: u32, grid: Grid) -> Ray {
         let (sx, sy) = grid.offset(k);
         let rng = Rng::new(x, y, k, self.seed);
         self.ray(x, y, sx, sy, self.lens(x, y, k), &rng)
     }
 
     /// The rays of the first `grid` of every pixel, for an integrator's image-wide pass.
-    pub fn first_rays<'v>(
+    pub(crate) fn first_rays<'v>(
         &self,
         grid: Grid,
         ray: &'v (dyn Fn(u32, u32, u32) -> Ray + Sync),

@@ -9,9 +9,9 @@ use crate::syntax::intern::Sym;
 #[derive(Clone, Copy, Debug)]
 pub struct Name {
     /// The interned name.
-    pub sym: Sym,
+    pub(crate) sym: Sym,
     /// Where it was written.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// A parsed file: its header and statements, borrowing the text it was parsed from.
@@ -23,7 +23,7 @@ pub struct Name {
 #[derive(Clone)]
 pub struct File<'t> {
     /// The `rtc N` version as written (`1`, `1.1`), if the header was present.
-    pub version: Option<(String, Span)>,
+    pub(crate) version: Option<(String, Span)>,
     /// The statements in order.
     pub(super) items: Vec<Item>,
     /// The statements pest read, which `Item::Built` indexes.
@@ -51,7 +51,7 @@ pub(super) enum Item {
 
 /// A statement.
 #[derive(Clone, Debug)]
-pub enum Stmt {
+pub(crate) enum Stmt {
     /// `import std.x as y`, `import "./f.rtc" { a, b }` (boxed: rare, and the largest).
     Import(Box<Import>),
     /// `let name = value`.
@@ -64,7 +64,7 @@ pub enum Stmt {
 
 /// Where an import comes from.
 #[derive(Clone, Debug)]
-pub enum ImportSource {
+pub(crate) enum ImportSource {
     /// `std.name`: an embedded standard-library module.
     Std(String),
     /// A file path relative to the importing file.
@@ -73,98 +73,94 @@ pub enum ImportSource {
 
 /// An `import` statement.
 #[derive(Clone, Debug)]
-pub struct Import {
+pub(crate) struct Import {
     /// The module.
-    pub source: ImportSource,
+    pub(crate) source: ImportSource,
     /// Span of the module path.
-    pub source_span: Span,
+    pub(crate) source_span: Span,
     /// `as alias`.
-    pub alias: Option<Name>,
+    pub(crate) alias: Option<Name>,
     /// `{ a, b }`.
-    pub names: Vec<Name>,
+    pub(crate) names: Vec<Name>,
     /// The whole statement.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// A `let` binding.
 #[derive(Clone, Debug)]
-pub struct Let {
+pub(crate) struct Let {
     /// Exported with `pub`.
-    pub public: bool,
+    pub(crate) public: bool,
     /// Declared with `param`: the command line may override its value (`--set name=value`).
-    pub param: bool,
+    pub(crate) param: bool,
     /// The bound name.
-    pub name: Name,
+    pub(crate) name: Name,
     /// Optional type annotation (boxed: rare, and it would double a statement's size).
-    pub ty: Option<Box<TypeAnn>>,
+    pub(crate) ty: Option<Box<TypeAnn>>,
     /// The value.
-    pub value: Expr,
+    pub(crate) value: Expr,
     /// The whole statement.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// A type annotation such as `Float`, `List<Object>` or `Angle?`.
 #[derive(Clone, Debug)]
-pub struct TypeAnn {
+pub(crate) struct TypeAnn {
     /// The type's name.
-    pub name: Name,
+    pub(crate) name: Name,
     /// Element type of `List<T>`.
-    pub arg: Option<Box<TypeAnn>>,
-    /// Marked optional with `?`.
-    pub optional: bool,
+    pub(crate) arg: Option<Box<TypeAnn>>,
     /// The whole annotation.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// A function definition (named item or `fn(x) expr` literal).
 #[derive(Clone, Debug)]
 pub struct FnDef {
     /// Exported with `pub`.
-    pub public: bool,
+    pub(crate) public: bool,
     /// Its name (`fn` literals are named `<fn>` at their span).
-    pub name: Name,
+    pub(crate) name: Name,
     /// Parameters in order.
-    pub params: Vec<Param>,
+    pub(crate) params: Vec<Param>,
     /// Declared return type.
-    pub ret: Option<TypeAnn>,
+    pub(crate) ret: Option<TypeAnn>,
     /// The body; its last expression is the result.
-    pub body: Block,
-    /// The whole definition.
-    pub span: Span,
+    pub(crate) body: Block,
 }
 
 /// One parameter.
 #[derive(Clone, Debug)]
-pub struct Param {
+pub(crate) struct Param {
     /// Its name.
-    pub name: Name,
+    pub(crate) name: Name,
     /// Its type, if annotated.
-    pub ty: Option<TypeAnn>,
+    pub(crate) ty: Option<TypeAnn>,
     /// Default value, evaluated at call time in the function's scope.
-    pub default: Option<Expr>,
+    pub(crate) default: Option<Expr>,
 }
 
 /// A `{ ... }` block: statements, the last expression is its value.
 #[derive(Clone, Debug)]
 pub struct Block {
     /// The statements.
-    pub stmts: Vec<Stmt>,
+    pub(crate) stmts: Vec<Stmt>,
     /// From `{` to `}`.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// An expression node.
 #[derive(Clone, Debug)]
 pub struct Expr {
     /// What it is.
-    pub kind: ExprKind,
+    pub(crate) kind: ExprKind,
     /// Where it is.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// Binary operators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BinOp {
+pub(crate) enum BinOp {
     /// `||`
     Or,
     /// `&&`
@@ -205,7 +201,7 @@ pub enum BinOp {
 
 impl BinOp {
     /// The operator as written.
-    pub fn as_str(self) -> &'static str {
+    pub(crate) fn as_str(self) -> &'static str {
         match self {
             BinOp::Or => "||",
             BinOp::And => "&&",
@@ -231,7 +227,7 @@ impl BinOp {
 
 /// Unary operators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum UnOp {
+pub(crate) enum UnOp {
     /// `-x`
     Neg,
     /// `!x`
@@ -240,7 +236,7 @@ pub enum UnOp {
 
 /// A piece of a string literal.
 #[derive(Clone, Debug)]
-pub enum StrPart {
+pub(crate) enum StrPart {
     /// Literal text (escapes resolved).
     Text(String),
     /// `{expr}` or `{expr:.2}` (digits after the point).
@@ -249,34 +245,34 @@ pub enum StrPart {
 
 /// A record field `name: value`.
 #[derive(Clone, Debug)]
-pub struct Field {
+pub(crate) struct Field {
     /// The field name.
-    pub name: Name,
+    pub(crate) name: Name,
     /// Its value.
-    pub value: Expr,
+    pub(crate) value: Expr,
 }
 
 /// A call argument, positional or named.
 #[derive(Clone, Debug)]
 pub struct Arg {
     /// `name:` for a named argument.
-    pub name: Option<Name>,
+    pub(crate) name: Option<Name>,
     /// The value.
-    pub value: Expr,
+    pub(crate) value: Expr,
 }
 
 /// One `name in iterable` of a `for`.
 #[derive(Clone, Debug)]
 pub struct Generator {
     /// The loop variable.
-    pub var: Name,
+    pub(crate) var: Name,
     /// What it ranges over.
-    pub iter: Expr,
+    pub(crate) iter: Expr,
 }
 
 /// Expression kinds.
 #[derive(Clone, Debug)]
-pub enum ExprKind {
+pub(crate) enum ExprKind {
     /// `3`
     Int(i64),
     /// `0.5`

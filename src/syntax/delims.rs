@@ -7,15 +7,15 @@ use crate::source::{FileId, Span};
 
 /// What the scan learned.
 #[derive(Debug, PartialEq)]
-pub struct Scan {
+pub(crate) struct Scan {
     /// Delimiter and string errors (at most one: later ones usually cascade).
-    pub errors: Vec<Diagnostic>,
+    pub(crate) errors: Vec<Diagnostic>,
     /// Lexical warnings (`n // 2`, where `//` starts a comment).
-    pub warnings: Vec<Diagnostic>,
+    pub(crate) warnings: Vec<Diagnostic>,
     /// Byte offsets of line starts whose bracket depth is zero.
-    pub top_level_lines: Vec<usize>,
+    pub(crate) top_level_lines: Vec<usize>,
     /// The deepest bracket nesting scanned (outside strings and comments).
-    pub max_depth: usize,
+    pub(crate) max_depth: usize,
 }
 
 fn closer_of(open: u8) -> u8 {
@@ -41,7 +41,7 @@ const SPECIAL: [bool; 256] = {
 const PARALLEL_BYTES: usize = 1 << 20;
 
 /// Scans `text` for delimiter balance.
-pub fn scan(file: FileId, text: &str) -> Scan {
+pub(crate) fn scan(file: FileId, text: &str) -> Scan {
     if text.len() < PARALLEL_BYTES {
         return scan_range(file, text, 0, text.len());
     }

@@ -37,7 +37,7 @@ fn rule_words(rule: Rule) -> Option<&'static str> {
 const PRIORITY: &[&str] = &[",", ")", "]", "}", ":", "=", "{", "("];
 
 /// Converts a pest error at byte `base` of the file into a diagnostic.
-pub fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diagnostic {
+pub(crate) fn convert(file: FileId, text: &str, base: usize, err: &Error<Rule>) -> Diagnostic {
     let pos = match err.location {
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
@@ -248,7 +248,7 @@ fn join_or(words: &[String]) -> String {
 }
 
 /// Whether `word` cannot be a name (the grammar's `keyword` rule).
-pub fn is_keyword(word: &str) -> bool {
+pub(crate) fn is_keyword(word: &str) -> bool {
     matches!(
         word,
         "rtc"

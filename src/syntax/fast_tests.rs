@@ -262,7 +262,7 @@ const EDGE_CASES: &[&str] = {
 mod near_misses {
     use proptest::prelude::*;
 
-    pub fn space() -> impl Strategy<Value = &'static str> {
+    fn space() -> impl Strategy<Value = &'static str> {
         prop_oneof![
             6 => Just(""),
             3 => Just(" "),
@@ -272,7 +272,7 @@ mod near_misses {
         ]
     }
 
-    pub fn name() -> impl Strategy<Value = &'static str> {
+    fn name() -> impl Strategy<Value = &'static str> {
         prop_oneof![
             8 => prop::sample::select(vec![
                 "a", "x1", "_t", "sphere", "material", "m", "center", "radius", "translate",
@@ -285,7 +285,7 @@ mod near_misses {
         ]
     }
 
-    pub fn number() -> impl Strategy<Value = String> {
+    fn number() -> impl Strategy<Value = String> {
         let int = prop_oneof![
             5 => (0u32..1000).prop_map(|v| v.to_string()),
             1 => Just("007".to_owned()),
@@ -316,7 +316,7 @@ mod near_misses {
         (int, frac, exp, unit).prop_map(|(i, f, e, u)| format!("{i}{f}{e}{u}"))
     }
 
-    pub fn vec_lit() -> impl Strategy<Value = String> {
+    fn vec_lit() -> impl Strategy<Value = String> {
         let signed = (prop::bool::weighted(0.3), number())
             .prop_map(|(neg, n)| format!("{}{n}", if neg { "-" } else { "" }));
         let pad = || prop::sample::select(vec!["", " ", "  ", "\t"]);
@@ -326,7 +326,7 @@ mod near_misses {
         })
     }
 
-    pub fn leaf() -> impl Strategy<Value = String> {
+    fn leaf() -> impl Strategy<Value = String> {
         prop_oneof![
             4 => name().prop_map(str::to_owned),
             3 => number(),
@@ -337,7 +337,7 @@ mod near_misses {
         ]
     }
 
-    pub fn arg(operand: BoxedStrategy<String>) -> impl Strategy<Value = String> {
+    fn arg(operand: BoxedStrategy<String>) -> impl Strategy<Value = String> {
         let sep = prop::sample::select(vec![":", " :", ": ", " = ", "="]);
         prop_oneof![
             2 => operand.clone(),
@@ -346,7 +346,7 @@ mod near_misses {
         ]
     }
 
-    pub fn operand() -> impl Strategy<Value = String> {
+    fn operand() -> impl Strategy<Value = String> {
         leaf().prop_recursive(4, 24, 4, |inner| {
             let inner = inner.boxed();
             prop_oneof![
@@ -369,7 +369,7 @@ mod near_misses {
         })
     }
 
-    pub fn line() -> impl Strategy<Value = String> {
+    pub(crate) fn line() -> impl Strategy<Value = String> {
         let stmt = prop_oneof![
             6 => operand(),
             2 => (name(), space(), space(), operand())
@@ -432,7 +432,7 @@ mod fast_forms {
     }
 
     /// A name, number, negated number, vector or boolean.
-    pub fn leaf() -> BoxedStrategy<String> {
+    pub(crate) fn leaf() -> BoxedStrategy<String> {
         let vec = prop::collection::vec((any::<bool>(), number()), 3).prop_map(|v| {
             let parts: Vec<String> = v
                 .iter()
@@ -479,7 +479,7 @@ mod fast_forms {
         })
     }
 
-    pub fn line() -> impl Strategy<Value = String> {
+    pub(crate) fn line() -> impl Strategy<Value = String> {
         prop_oneof![
             3 => operand().prop_filter("not a negative statement", |s| !s.starts_with('-')),
             1 => (name(), operand()).prop_map(|(n, v)| format!("let {n} = {v}")),

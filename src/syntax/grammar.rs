@@ -4,4 +4,4 @@
 /// The generated pest parser.
 #[derive(pest_derive::Parser)]
 #[grammar = "../grammar/rtc.pest"]
-pub struct RtcParser;
+pub(crate) struct RtcParser;

@@ -20,12 +20,8 @@ thread_local! {
 }
 
 impl Sym {
-    /// A name that was never interned: the fast path's check-only pass writes it where it reads
-    /// a name, since the nodes that pass builds are dropped unread (`as_str` would panic on it).
-    pub const UNREAD: Sym = Sym(u32::MAX);
-
     /// Interns `name` (numbered per thread; its text is stored once per process).
-    pub fn new(name: &str) -> Sym {
+    pub(crate) fn new(name: &str) -> Sym {
         INTERNER.with(|i| {
             let mut i = i.borrow_mut();
             if let Some(&s) = i.ids.get(name) {
@@ -40,7 +36,7 @@ impl Sym {
     }
 
     /// The name's text.
-    pub fn as_str(self) -> &'static str {
+    pub(crate) fn as_str(self) -> &'static str {
         INTERNER.with(|i| i.borrow().names[self.0 as usize])
     }
 }

@@ -1,38 +1,40 @@
 //! Syntax: the pest grammar (`grammar/rtc.pest`), the AST, and a statement-by-statement driver
 //! that recovers at top-level line starts so several syntax errors show in one run.
 
-pub mod ast;
+pub(crate) mod ast;
 mod build;
 mod delims;
 mod errors;
 mod fast;
 pub mod format;
 mod grammar;
-pub mod intern;
+pub(crate) mod intern;
 mod numbers;
 mod pratt;
 mod stmts;
 
-pub use build::srgb_to_linear;
-pub use stmts::Stmts;
+pub(crate) use build::srgb_to_linear;
 
 use pest::Parser;
 
 use crate::diag::Diagnostic;
 use crate::source::{FileId, Span};
 
-pub use grammar::{RtcParser, Rule};
+pub(crate) use grammar::{RtcParser, Rule};
 
 /// The language versions this build understands: `rtc 1` and `rtc 1.1` name the same language
 /// (1.1 is a compatible extension of 1; docs/language.md §2).
-pub const SUPPORTED_VERSIONS: &[&str] = &["1", "1.0", "1.1"];
+const SUPPORTED_VERSIONS: &[&str] = &["1", "1.0", "1.1"];
 
 /// Deepest bracket nesting accepted; deeper input is rejected before pest or the evaluator
 /// could exhaust the stack.
 const MAX_NESTING: usize = 200;
 
 /// Parses a whole file. Returns the AST (only when there were no syntax errors) and diagnostics.
-pub fn parse(file: FileId, text: &str) -> (Option<ast::File<'_>>, Vec<crate::diag::Diagnostic>) {
+pub(crate) fn parse(
+    file: FileId,
+    text: &str,
+) -> (Option<ast::File<'_>>, Vec<crate::diag::Diagnostic>) {
     let parsed = parse_with(file, text, Path::FastFirst);
     (parsed.ast, parsed.diags)
 }

@@ -5,7 +5,7 @@ use crate::syntax::ast::ExprKind;
 
 /// Why a literal has no value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum NumberError {
+pub(crate) enum NumberError {
     /// An integer literal past `i64::MAX`.
     IntTooLarge,
     /// A float literal that overflows to infinity.
@@ -15,7 +15,7 @@ pub enum NumberError {
 /// A number literal's value: the number leaves of [`ExprKind`], without its drop glue (the fast
 /// path converts four numbers a line).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Number {
+pub(crate) enum Number {
     /// An integer.
     Int(i64),
     /// A float.
@@ -36,7 +36,7 @@ impl From<Number> for ExprKind {
 
 /// A plain number `3`, `0.5`, `2e6` (no unit, no sign except the one a vector literal carries):
 /// `Int` without `.`, `e` or `E`, `Float` otherwise.
-pub fn plain(text: &str) -> Result<Number, NumberError> {
+pub(crate) fn plain(text: &str) -> Result<Number, NumberError> {
     match quick(text) {
         Quick::Int(i) => return Ok(Number::Int(i)),
         Quick::Float(v) => return Ok(Number::Float(v)),
@@ -81,7 +81,7 @@ fn quick(text: &str) -> Quick {
 
 /// The grammar's number without its unit, with an optional `-` (a vector literal's component),
 /// at the start of `bytes`: see [`unsigned`].
-pub fn signed(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
+pub(crate) fn signed(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
     let Some(rest) = bytes.strip_prefix(b"-") else {
         return unsigned(bytes);
     };
@@ -104,7 +104,7 @@ pub fn signed(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
 /// `m` and `10^k` are exact doubles and one IEEE division rounds their quotient correctly
 /// (Clinger's fast path), otherwise [`quotient_rounded`] divides exactly. The same bits as
 /// `str::parse` for a fraction of its cost (a generated file is mostly such numbers).
-pub fn unsigned(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
+pub(crate) fn unsigned(bytes: &[u8]) -> Option<(usize, Option<Number>)> {
     // Wrapping: the mantissa is used only when at most 19 digits were read, which fit.
     let mut mantissa: u64 = 0;
     let digits = |from: usize, m: &mut u64| {
@@ -178,7 +178,7 @@ fn quotient_rounded(m: u64, d: u64) -> f64 {
 }
 
 /// A unit's conversion to radians.
-pub type ToRadians = fn(f64) -> f64;
+type ToRadians = fn(f64) -> f64;
 
 /// The units a number may carry and their conversions to radians.
 const UNITS: [(&str, ToRadians); 4] = [
@@ -190,7 +190,7 @@ const UNITS: [(&str, ToRadians); 4] = [
 
 /// Splits a `number` token into its digits and the conversion of its unit to radians
 /// (`None` for a plain number).
-pub fn split_unit(text: &str) -> (&str, Option<ToRadians>) {
+pub(crate) fn split_unit(text: &str) -> (&str, Option<ToRadians>) {
     UNITS
         .iter()
         .find_map(|&(u, f)| Some((text.strip_suffix(u)?, Some(f))))
@@ -199,7 +199,7 @@ pub fn split_unit(text: &str) -> (&str, Option<ToRadians>) {
 
 /// The unit that `rest` (the text after a number's digits) starts with: its length in bytes and
 /// its conversion to radians.
-pub fn unit_at(rest: &[u8]) -> Option<(usize, ToRadians)> {
+pub(crate) fn unit_at(rest: &[u8]) -> Option<(usize, ToRadians)> {
     UNITS
         .iter()
         .find(|(u, _)| rest.starts_with(u.as_bytes()))
@@ -207,7 +207,7 @@ pub fn unit_at(rest: &[u8]) -> Option<(usize, ToRadians)> {
 }
 
 /// The value of a plain number read by [`plain`] with the unit [`split_unit`] found.
-pub fn apply_unit(plain: Number, unit: Option<ToRadians>) -> Number {
+pub(crate) fn apply_unit(plain: Number, unit: Option<ToRadians>) -> Number {
     match (unit, plain) {
         (Some(to_radians), Number::Int(i)) => Number::Angle(to_radians(i as f64)),
         (Some(to_radians), Number::Float(f)) => Number::Angle(to_radians(f)),
@@ -216,7 +216,7 @@ pub fn apply_unit(plain: Number, unit: Option<ToRadians>) -> Number {
 }
 
 /// A component of a vector literal `[x, y, z]` as the vector stores it.
-pub fn component(plain: Number) -> f64 {
+pub(crate) fn component(plain: Number) -> f64 {
     match plain {
         Number::Int(i) => i as f64,
         Number::Float(f) | Number::Angle(f) => f,

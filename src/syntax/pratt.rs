@@ -12,7 +12,7 @@ use crate::syntax::ast::BinOp;
 use crate::syntax::grammar::Rule;
 
 /// The precedence table.
-pub static PRATT: ConstPrattParser<Rule, 19> = ConstPrattParser::new_const([
+pub(crate) static PRATT: ConstPrattParser<Rule, 19> = ConstPrattParser::new_const([
     (Op::infix(Rule::or_op, Assoc::Left), true),
     (Op::infix(Rule::and_op, Assoc::Left), true),
     (Op::infix(Rule::cmp_op, Assoc::Left), true),
@@ -35,7 +35,7 @@ pub static PRATT: ConstPrattParser<Rule, 19> = ConstPrattParser::new_const([
 ]);
 
 /// True for the rules of suffixes: calls, indexing, members, record arguments, `with`.
-pub fn is_suffix(rule: Rule) -> bool {
+pub(crate) fn is_suffix(rule: Rule) -> bool {
     matches!(
         rule,
         Rule::call_args
@@ -48,7 +48,7 @@ pub fn is_suffix(rule: Rule) -> bool {
 }
 
 /// True for the rules of binary operators.
-pub fn is_infix(rule: Rule) -> bool {
+pub(crate) fn is_infix(rule: Rule) -> bool {
     matches!(
         rule,
         Rule::or_op
@@ -67,7 +67,7 @@ pub fn is_infix(rule: Rule) -> bool {
 }
 
 /// The binary operator written as `text` (`step` and ranges are not `BinOp`s).
-pub fn bin_op(text: &str) -> Option<BinOp> {
+pub(crate) fn bin_op(text: &str) -> Option<BinOp> {
     Some(match text {
         "||" => BinOp::Or,
         "&&" => BinOp::And,

@@ -10,7 +10,7 @@ use crate::syntax::fast;
 impl<'t> File<'t> {
     /// The statements in file order. A fast-path statement is built afresh (and owned) from
     /// its tape at each visit.
-    pub fn stmts(&self) -> Stmts<'_, 't> {
+    pub(crate) fn stmts(&self) -> Stmts<'_, 't> {
         Stmts {
             file: self,
             next: 0,
@@ -21,28 +21,24 @@ impl<'t> File<'t> {
 
     /// The statements pest read, in file order: every `fn` item is one of them (the fast path
     /// reads only `let` and expression lines), so hoisting needs no rebuilding.
-    pub fn built_stmts(&self) -> &[Stmt] {
+    pub(crate) fn built_stmts(&self) -> &[Stmt] {
         &self.built
     }
 
-    /// How many statements the file has.
-    pub fn len(&self) -> usize {
+    /// How many statements the file has (the tests').
+    #[cfg(test)]
+    pub(crate) fn len(&self) -> usize {
         self.items.len()
     }
 
-    /// True when the file has no statement.
-    pub fn is_empty(&self) -> bool {
-        self.items.is_empty()
-    }
-
     /// Every statement, built.
-    pub fn into_stmts(self) -> Vec<Stmt> {
+    pub(crate) fn into_stmts(self) -> Vec<Stmt> {
         self.stmts().map(Cow::into_owned).collect()
     }
 }
 
 /// The iterator of [`File::stmts`].
-pub struct Stmts<'f, 't> {
+pub(crate) struct Stmts<'f, 't> {
     file: &'f File<'t>,
     next: usize,
     memo: fast::Memo<'t>,
@@ -54,7 +50,7 @@ impl<'f> Stmts<'f, '_> {
     /// The next statement, borrowed: a fast-path statement is built into the nodes of the
     /// previous one when the two have the same shape, so visiting a generated file's lines
     /// allocates nothing (`next` builds each afresh).
-    pub fn next_ref(&mut self) -> Option<&Stmt> {
+    pub(crate) fn next_ref(&mut self) -> Option<&Stmt> {
         let item = *self.file.items.get(self.next)?;
         self.next += 1;
         Some(match item {

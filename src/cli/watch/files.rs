@@ -11,10 +11,10 @@ use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
 /// A path's content hash; `None` when it cannot be read (missing, being replaced).
-pub type ContentHash = Option<u64>;
+pub(crate) type ContentHash = Option<u64>;
 
 /// Hashes a file's bytes (SipHash from std: no collision matters here, only change).
-pub fn hash_file(path: &Path) -> ContentHash {
+pub(crate) fn hash_file(path: &Path) -> ContentHash {
     let bytes = rtc::source::read_regular(path, rtc::ir::limits::MAX_MESH_FILE_BYTES).ok()?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     bytes.hash(&mut h);
@@ -24,7 +24,7 @@ pub fn hash_file(path: &Path) -> ContentHash {
 /// Every file an evaluation read or a render will read: the scene, the source files in
 /// `sources` that exist on disk (the built-in `std.*` modules do not), meshes, their MTL
 /// files and texture images.
-pub fn dependencies(
+pub(crate) fn dependencies(
     scene_file: &Path,
     sources: &SourceMap,
     scene: Option<&Scene>,
@@ -45,7 +45,7 @@ pub fn dependencies(
 /// The folder to watch for a file: its parent, `.` for a bare name. Editors save by writing a
 /// new file and renaming it over the old one, which replaces the watched inode; watching the
 /// folder sees the rename.
-pub fn folder_of(path: &Path) -> PathBuf {
+pub(crate) fn folder_of(path: &Path) -> PathBuf {
     match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
@@ -54,13 +54,13 @@ pub fn folder_of(path: &Path) -> PathBuf {
 
 /// The last seen content of every dependency.
 #[derive(Debug, Default)]
-pub struct Snapshot {
+pub(crate) struct Snapshot {
     hashes: BTreeMap<PathBuf, ContentHash>,
 }
 
 impl Snapshot {
     /// Hashes every file in `files` now.
-    pub fn take(files: &BTreeSet<PathBuf>) -> Snapshot {
+    pub(crate) fn take(files: &BTreeSet<PathBuf>) -> Snapshot {
         Snapshot {
             hashes: files.iter().map(|p| (p.clone(), hash_file(p))).collect(),
         }
@@ -68,7 +68,7 @@ impl Snapshot {
 
     /// The files whose content differs between this snapshot and `now` (added, removed or
     /// changed), in path order.
-    pub fn changed(&self, now: &Snapshot) -> Vec<PathBuf> {
+    pub(crate) fn changed(&self, now: &Snapshot) -> Vec<PathBuf> {
         let mut out: BTreeSet<PathBuf> = BTreeSet::new();
         for (path, hash) in &self.hashes {
             if now.hashes.get(path) != Some(hash) {
@@ -84,7 +84,7 @@ impl Snapshot {
     }
 
     /// The files recorded.
-    pub fn files(&self) -> BTreeSet<PathBuf> {
+    pub(crate) fn files(&self) -> BTreeSet<PathBuf> {
         self.hashes.keys().cloned().collect()
     }
 }

@@ -5,7 +5,7 @@ use rtc::diag::{Diagnostic, Severity};
 use rtc::source::{SourceMap, Span};
 
 /// Escapes text for HTML element content and attribute values.
-pub fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
@@ -21,7 +21,7 @@ pub fn escape(text: &str) -> String {
 }
 
 /// Every diagnostic as one `<div class="diag">` block each.
-pub fn diagnostics(diags: &[Diagnostic], sources: &SourceMap) -> String {
+pub(crate) fn diagnostics(diags: &[Diagnostic], sources: &SourceMap) -> String {
     diags.iter().map(|d| one(d, sources)).collect()
 }
 

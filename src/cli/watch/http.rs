@@ -21,7 +21,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 /// Environment variable, for tests: the idle limit in milliseconds instead of 10 s.
-pub const IDLE_VAR: &str = "RTC_WATCH_IDLE_MS";
+pub(crate) const IDLE_VAR: &str = "RTC_WATCH_IDLE_MS";
 
 /// How long a refused client's remaining bytes are read and dropped before the socket closes,
 /// so it sees the answer rather than a connection reset.
@@ -35,13 +35,13 @@ const STACK: usize = 256 << 10;
 
 /// The server's bounds.
 #[derive(Clone, Copy, Debug)]
-pub struct Limits {
+pub(crate) struct Limits {
     /// Connections served at once; more are answered 503.
-    pub connections: usize,
+    pub(crate) connections: usize,
     /// Time for the whole request head to arrive, and for each write of an answer.
-    pub idle: Duration,
+    pub(crate) idle: Duration,
     /// Bytes of the request line and headers together.
-    pub head_bytes: usize,
+    pub(crate) head_bytes: usize,
 }
 
 impl Default for Limits {
@@ -57,7 +57,7 @@ impl Default for Limits {
 impl Limits {
     /// The defaults, with the idle limit from [`IDLE_VAR`] when it holds a whole number of
     /// milliseconds (tests lower it so idle connections end quickly).
-    pub fn from_env() -> Limits {
+    pub(crate) fn from_env() -> Limits {
         let mut limits = Limits::default();
         if let Some(ms) = std::env::var(IDLE_VAR)
             .ok()
@@ -71,17 +71,17 @@ impl Limits {
 
 /// A request's head: method, target and headers (names as sent).
 #[derive(Debug)]
-pub struct Request {
+pub(crate) struct Request {
     /// `GET`.
-    pub method: String,
+    pub(crate) method: String,
     /// The request target as sent (`/frame/3.png?x`).
-    pub target: String,
+    pub(crate) target: String,
     headers: Vec<(String, String)>,
 }
 
 impl Request {
     /// The value of the first header named `name` (any case), trimmed.
-    pub fn header(&self, name: &str) -> Option<&str> {
+    pub(crate) fn header(&self, name: &str) -> Option<&str> {
         self.headers
             .iter()
             .find(|(n, _)| n.eq_ignore_ascii_case(name))
@@ -89,14 +89,14 @@ impl Request {
     }
 
     /// The target's path, without the query.
-    pub fn path(&self) -> &str {
+    pub(crate) fn path(&self) -> &str {
         self.target.split('?').next().unwrap_or("")
     }
 }
 
 /// Why no request was read from a connection.
 #[derive(Debug, PartialEq, Eq)]
-pub enum Refusal {
+pub(crate) enum Refusal {
     /// The client closed the connection (or it failed) before a whole head came.
     Closed,
     /// The head did not arrive within the idle limit; `partial` when some of it did.
@@ -126,7 +126,7 @@ impl Refusal {
 }
 
 /// Reads one request head from `stream` within `limits`; bytes after it are left unread.
-pub fn read_head(stream: &mut TcpStream, limits: &Limits) -> Result<Request, Refusal> {
+pub(crate) fn read_head(stream: &mut TcpStream, limits: &Limits) -> Result<Request, Refusal> {
     let deadline = Instant::now() + limits.idle;
     let mut head: Vec<u8> = Vec::with_capacity(1024);
     let mut chunk = [0u8; 4096];
@@ -230,7 +230,7 @@ fn parse_head(bytes: &[u8]) -> Result<Request, Refusal> {
 
 /// Writes a whole answer: status line, `Content-Length`, `Connection: close`, the given
 /// headers, and `body`.
-pub fn respond(
+pub(crate) fn respond(
     stream: &mut TcpStream,
     status: u16,
     reason: &str,
@@ -251,7 +251,7 @@ pub fn respond(
 }
 
 /// A plain-text answer `status` with `text` as its body.
-pub fn respond_text(stream: &mut TcpStream, status: u16, reason: &str, text: &str) {
+pub(crate) fn respond_text(stream: &mut TcpStream, status: u16, reason: &str, text: &str) {
     // A failed write means the client went away; there is nobody to tell.
     let _ = respond(
         stream,
@@ -295,7 +295,7 @@ impl Drop for Slot {
 /// Accepts connections on `listener` on a thread of its own until the process ends, and calls
 /// `handle` with each well-formed request on the connection's thread; `handle` writes the whole
 /// answer (an event stream returns only when its page has gone).
-pub fn serve<H>(listener: TcpListener, limits: Limits, handle: H) -> std::io::Result<()>
+pub(crate) fn serve<H>(listener: TcpListener, limits: Limits, handle: H) -> std::io::Result<()>
 where
     H: Fn(Request, &mut TcpStream) + Send + Sync + 'static,
 {

@@ -35,19 +35,19 @@ use server::Hub;
 const DEBOUNCE: Duration = Duration::from_millis(60);
 
 /// What `rtc watch` was asked to do.
-pub struct Options {
+pub(crate) struct Options {
     /// The scene file.
-    pub file: PathBuf,
+    pub(crate) file: PathBuf,
     /// Port on 127.0.0.1 (0: any free port).
-    pub port: u16,
+    pub(crate) port: u16,
     /// Open the page in the default browser.
-    pub open: bool,
+    pub(crate) open: bool,
     /// Worker threads (0 = all cores).
-    pub threads: usize,
+    pub(crate) threads: usize,
 }
 
 /// Serves the page and re-renders on every change until the process is stopped.
-pub fn run(options: &Options) -> Outcome {
+pub(crate) fn run(options: &Options) -> Outcome {
     let file = &options.file;
     if !file.is_file() {
         eprintln!(

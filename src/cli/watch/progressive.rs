@@ -24,17 +24,17 @@ const PREVIEW_SIZE: u32 = 128;
 const PROGRESS_EVERY: Duration = Duration::from_millis(100);
 
 /// What a render job shares with the watch loop.
-pub struct Job<'a> {
+pub(crate) struct Job<'a> {
     /// The page.
-    pub hub: &'a Hub,
+    pub(crate) hub: &'a Hub,
     /// The latest generation; the job is stale once it differs from `generation`.
-    pub current: &'a AtomicU64,
+    pub(crate) current: &'a AtomicU64,
     /// This job's generation.
-    pub generation: u64,
+    pub(crate) generation: u64,
     /// Numbers the frames shown on the page.
-    pub frames: &'a AtomicU64,
+    pub(crate) frames: &'a AtomicU64,
     /// Worker threads (0 = all cores).
-    pub threads: usize,
+    pub(crate) threads: usize,
 }
 
 /// One pass of the progressive render.
@@ -51,7 +51,7 @@ impl Job<'_> {
 
     /// Prepares and renders `scene` in stages, publishing diagnostics, progress and frames.
     /// `warnings` are the evaluation's, shown with the preparation's.
-    pub fn run(&self, scene: &Scene, sources: &SourceMap, warnings: Vec<Diagnostic>) {
+    pub(crate) fn run(&self, scene: &Scene, sources: &SourceMap, warnings: Vec<Diagnostic>) {
         let mut prepared = match rtc::opt::prepare(scene) {
             Ok(p) => p,
             Err(diags) => {
@@ -144,7 +144,7 @@ impl Job<'_> {
     }
 
     /// Publishes the current findings (empty when the scene is clean: the page clears them).
-    pub fn diagnostics(&self, diags: &[Diagnostic], sources: &SourceMap) {
+    pub(crate) fn diagnostics(&self, diags: &[Diagnostic], sources: &SourceMap) {
         if self.stale() {
             return;
         }

@@ -25,7 +25,7 @@ const CLOSED_CHECK: Duration = Duration::from_secs(1);
 
 /// The latest image and the events announced so far, shared by the renderer and every client.
 #[derive(Default)]
-pub struct Hub {
+pub(crate) struct Hub {
     state: Mutex<HubState>,
     changed: Condvar,
 }
@@ -49,7 +49,7 @@ impl Hub {
     }
 
     /// Announces an event `kind` with a JSON payload to every open page.
-    pub fn publish(&self, kind: &'static str, data: &serde_json::Value) {
+    pub(crate) fn publish(&self, kind: &'static str, data: &serde_json::Value) {
         let text = format!("event: {kind}\ndata: {data}\n\n");
         let mut s = self.lock();
         s.seq += 1;
@@ -64,7 +64,7 @@ impl Hub {
     }
 
     /// Stores frame `n` (PNG bytes) for `/frame/N.png`; announce it with [`Hub::publish`] after.
-    pub fn set_frame(&self, n: u64, png: Vec<u8>) {
+    pub(crate) fn set_frame(&self, n: u64, png: Vec<u8>) {
         self.lock().frame = Some((n, Arc::new(png)));
     }
 
@@ -96,7 +96,7 @@ impl Hub {
 }
 
 /// Binds 127.0.0.1:`port` (0: any free port). A busy port is an error naming a free one.
-pub fn bind(port: u16) -> Result<TcpListener, String> {
+pub(crate) fn bind(port: u16) -> Result<TcpListener, String> {
     match TcpListener::bind((Ipv4Addr::LOCALHOST, port)) {
         Ok(l) => Ok(l),
         Err(e) if e.kind() == std::io::ErrorKind::AddrInUse => {
@@ -119,7 +119,7 @@ pub fn bind(port: u16) -> Result<TcpListener, String> {
 
 /// Serves requests on a thread of its own until the process ends, within `limits`
 /// ([`http`](super::http): a connection cap, an idle limit, a bounded request head).
-pub fn serve(listener: TcpListener, hub: Arc<Hub>, limits: Limits) -> Result<(), String> {
+pub(crate) fn serve(listener: TcpListener, hub: Arc<Hub>, limits: Limits) -> Result<(), String> {
     let port = listener.local_addr().map_or(0, |a| a.port());
     http::serve(listener, limits, move |request, stream| {
         answer(&request, stream, &hub, port)
@@ -130,7 +130,7 @@ pub fn serve(listener: TcpListener, hub: Arc<Hub>, limits: Limits) -> Result<(),
 /// Whether a request's `Host` header names this server by a loopback name and its port:
 /// `127.0.0.1`, `localhost` or `[::1]`, with `:port`. A request without one is refused too
 /// (every browser sends it).
-pub fn loopback_host(host: Option<&str>, port: u16) -> bool {
+pub(crate) fn loopback_host(host: Option<&str>, port: u16) -> bool {
     let Some(host) = host.map(|h| h.trim().to_ascii_lowercase()) else {
         return false;
     };

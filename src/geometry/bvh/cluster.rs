@@ -36,7 +36,7 @@ impl Bvh {
     /// the Morton order of their boxes' centres (the last run may be shorter). `params` is the
     /// build over the runs' boxes (its leaf size is ignored: one run a leaf). Deterministic:
     /// ties in the order fall to the lower index, whatever the thread count.
-    pub fn build_clustered(
+    pub(crate) fn build_clustered(
         count: usize,
         box_of: impl Fn(usize) -> BAabb + Sync,
         ids: &[u32],

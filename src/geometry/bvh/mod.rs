@@ -6,10 +6,10 @@
 //! linear in the node count, far cheaper than obvhs's own compressed-wide conversion, and the
 //! uncompressed boxes need no decoding during traversal.
 
-pub(crate) mod cluster;
+mod cluster;
 pub mod packet;
 mod ties;
-pub(crate) mod traverse;
+mod traverse;
 
 use std::time::{Duration, Instant};
 
@@ -24,27 +24,27 @@ use obvhs::ploc::PlocBuilder;
 use crate::geometry::aabb::Aabb;
 
 /// Children per node.
-pub const WIDTH: usize = 8;
+const WIDTH: usize = 8;
 
 /// Child slot flag: a leaf (a range of primitive slots) rather than an inner node.
-pub(crate) const LEAF: u32 = 1 << 31;
+const LEAF: u32 = 1 << 31;
 /// A child slot with nothing in it (its box is empty, so no ray enters it).
-pub(crate) const EMPTY: u32 = u32::MAX;
+const EMPTY: u32 = u32::MAX;
 /// Bits of a leaf's first primitive slot; the count (minus one) sits above them.
 const LEAF_START_BITS: u32 = 26;
 /// Most primitives a leaf can hold (the count field has five bits).
-pub(crate) const MAX_LEAF: u32 = 32;
+const MAX_LEAF: u32 = 32;
 /// Most primitives one BVH can index (the leaf start field's range).
-pub const MAX_PRIMITIVES: usize = 1 << LEAF_START_BITS;
+pub(crate) const MAX_PRIMITIVES: usize = 1 << LEAF_START_BITS;
 
 /// One node: eight child boxes as structure-of-arrays and eight child references.
 #[derive(Clone, Debug)]
-pub(crate) struct WideNode {
+struct WideNode {
     /// Child box planes: `planes[axis]` the minima and `planes[3 + axis]` the maxima, each as
     /// two 4-lane vectors (lanes 0–3 and 4–7), so the node test is plain SSE.
-    pub planes: [[Vec4; 2]; 6],
+    planes: [[Vec4; 2]; 6],
     /// Inner node index, `LEAF | (count − 1) << 26 | first slot`, or [`EMPTY`].
-    pub child: [u32; WIDTH],
+    child: [u32; WIDTH],
 }
 
 impl WideNode {
@@ -73,27 +73,27 @@ fn leaf(start: u32, count: u32) -> u32 {
 /// A leaf child's start field (its first slot, or its first block after [`Bvh::into_blocks`])
 /// and its primitive count.
 #[inline(always)]
-pub(crate) fn leaf_parts(child: u32) -> (usize, usize) {
+fn leaf_parts(child: u32) -> (usize, usize) {
     let start = (child & ((1 << LEAF_START_BITS) - 1)) as usize;
     let count = ((child & !LEAF) >> LEAF_START_BITS) as usize + 1;
     (start, count)
 }
 
 /// Slots per block after [`Bvh::into_blocks`] (the lanes of one 4-wide triangle test).
-pub const BLOCK: usize = 4;
+pub(crate) const BLOCK: usize = 4;
 
 /// A wide BVH over a list of boxes; primitive slots in callbacks index [`Bvh::order`].
 #[derive(Clone, Debug)]
-pub struct Bvh {
-    pub(crate) nodes: Vec<WideNode>,
+pub(crate) struct Bvh {
+    nodes: Vec<WideNode>,
     /// The caller's primitive index for each BVH slot (leaves hold contiguous slot ranges).
-    pub order: Vec<u32>,
+    pub(crate) order: Vec<u32>,
     /// Time spent building.
-    pub build_time: Duration,
+    pub(crate) build_time: Duration,
 }
 
 /// An f32 box that contains the f64 box (rounded outward), or `None` if it does not fit in f32.
-pub fn to_f32_box(b: &Aabb) -> Option<BAabb> {
+pub(crate) fn to_f32_box(b: &Aabb) -> Option<BAabb> {
     let lo = b.min.as_vec3a();
     let hi = b.max.as_vec3a();
     let down = |v: Vec3A| Vec3A::new(v.x.next_down(), v.y.next_down(), v.z.next_down());
@@ -104,28 +104,28 @@ pub fn to_f32_box(b: &Aabb) -> Option<BAabb> {
 
 /// A ray prepared for traversal in f32: origin, safe reciprocal direction and a `t` range.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct BvhRay {
+pub(crate) struct BvhRay {
     /// Origin, one axis splatted per vector.
-    pub(crate) origin: [Vec4; 3],
+    origin: [Vec4; 3],
     /// Safe reciprocal direction, splatted likewise.
-    pub(crate) inv: [Vec4; 3],
+    inv: [Vec4; 3],
     /// Per axis, the index into [`WideNode::planes`] of the slab the ray enters by (the minimum
     /// for a forward axis, the maximum for a backward one); the exit slab is the other.
-    pub(crate) entry_plane: [usize; 3],
-    pub(crate) t_min: f32,
+    entry_plane: [usize; 3],
+    t_min: f32,
     pub(crate) t_max: f32,
 }
 
 impl BvhRay {
     /// The f32 ray for `origin + t·dir`, `t` in `[t_min, t_max]`, or `None` when it cannot be
     /// represented (non-finite or zero direction).
-    pub fn new(origin: DVec3, dir: DVec3, t_min: f64, t_max: f64) -> Option<BvhRay> {
+    pub(crate) fn new(origin: DVec3, dir: DVec3, t_min: f64, t_max: f64) -> Option<BvhRay> {
         Self::with_inverse(origin, dir, dir.recip(), t_min, t_max)
     }
 
     /// Like [`BvhRay::new`] with the f64 reciprocal direction already known.
     #[inline]
-    pub fn with_inverse(
+    pub(crate) fn with_inverse(
         origin: DVec3,
         dir: DVec3,
         inv: DVec3,
@@ -174,7 +174,7 @@ impl Bvh {
     /// Builds over `boxes`; `ids[i]` is reported for `boxes[i]`. Leaves hold up to
     /// `quality.max_prims_per_leaf` primitives. Callers keep `boxes` within [`MAX_PRIMITIVES`]
     /// (mesh and object budgets); beyond it the tree is left empty rather than corrupt.
-    pub fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams) -> Bvh {
+    pub(crate) fn build(boxes: &[BAabb], ids: Vec<u32>, quality: BvhBuildParams) -> Bvh {
         Self::build_grouped(boxes, ids, quality, 1)
     }
 
@@ -184,7 +184,7 @@ impl Bvh {
     /// about fourfold. The leaves hold the same primitives the subtrees held, so the boxes a
     /// ray passes and the primitives it is tested against do not depend on `group` beyond the
     /// order of the tests within a leaf.
-    pub fn build_grouped(
+    pub(crate) fn build_grouped(
         boxes: &[BAabb],
         ids: Vec<u32>,
         quality: BvhBuildParams,
@@ -215,7 +215,7 @@ impl Bvh {
     }
 
     /// Approximate heap bytes.
-    pub fn memory(&self) -> usize {
+    pub(crate) fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<WideNode>() + self.order.len() * 4
     }
 
@@ -225,7 +225,7 @@ impl Bvh {
     /// already hold their members, so nothing else changes. A leaf must not grow past
     /// [`MAX_LEAF`] members ([`Bvh::build_clustered`]: one cluster of at most that many a
     /// leaf).
-    pub(crate) fn expand_clusters<'a>(mut self, members: impl Fn(u32) -> &'a [u32]) -> Bvh {
+    fn expand_clusters<'a>(mut self, members: impl Fn(u32) -> &'a [u32]) -> Bvh {
         let start = Instant::now();
         // Where each cluster slot's members begin in the new order, and one past the last.
         let mut first = Vec::with_capacity(self.order.len() + 1);

@@ -25,7 +25,7 @@ pub(super) const TIE_GROUP: usize = 64;
 /// The large groups of identical boxes in a list, and what the builder sees instead.
 pub(super) struct Ties {
     /// For each box the builder sees, the index of the original box it stands for.
-    pub kept: Vec<u32>,
+    kept: Vec<u32>,
     /// The members of each large group (all with the same box, the first its
     /// representative), by representative.
     groups: HashMap<u32, Vec<u32>>,
@@ -75,7 +75,7 @@ pub(super) fn find(boxes: &[BAabb]) -> Option<Ties> {
 
 impl Ties {
     /// The boxes the builder sees: one per kept index.
-    pub fn builder_boxes(&self, boxes: &[BAabb]) -> Vec<BAabb> {
+    pub(crate) fn builder_boxes(&self, boxes: &[BAabb]) -> Vec<BAabb> {
         self.kept.iter().map(|&i| boxes[i as usize]).collect()
     }
 
@@ -83,7 +83,7 @@ impl Ties {
     /// primitive indices become original indices, and a leaf holding a representative holds
     /// its whole group, split into a balanced subtree of leaves of at most `max_leaf` when it
     /// no longer fits one.
-    pub fn splice(&self, bvh2: &mut Bvh2, boxes: &[BAabb], max_leaf: u32) {
+    pub(crate) fn splice(&self, bvh2: &mut Bvh2, boxes: &[BAabb], max_leaf: u32) {
         let max_leaf = max_leaf.max(1) as usize;
         let mut prims: Vec<u32> = Vec::with_capacity(boxes.len());
         let mut members: Vec<u32> = Vec::new();

@@ -89,7 +89,7 @@ impl Bvh {
     /// Closest-hit traversal: `f(slot, t_max)` returns the hit distance (or `f32::INFINITY`);
     /// children are visited nearest first and anything beyond the best hit is skipped.
     #[inline]
-    pub fn closest(&self, ray: &BvhRay, mut f: impl FnMut(usize, f32) -> f32) {
+    pub(crate) fn closest(&self, ray: &BvhRay, mut f: impl FnMut(usize, f32) -> f32) {
         self.closest_leaves(ray, |start, count, mut t_max| {
             for slot in start..start + count {
                 let t = f(slot, t_max);
@@ -162,7 +162,7 @@ impl Bvh {
 
     /// Any-hit traversal: stops at the first slot for which `f` returns true.
     #[inline]
-    pub fn any(&self, ray: &BvhRay, mut f: impl FnMut(usize) -> bool) -> bool {
+    pub(crate) fn any(&self, ray: &BvhRay, mut f: impl FnMut(usize) -> bool) -> bool {
         self.any_leaves(ray, |start, count| (start..start + count).any(&mut f))
     }
 
@@ -201,9 +201,10 @@ impl Bvh {
         }
     }
 
-    /// Visits every slot whose box the ray meets (an any-hit traversal that never stops).
-    #[inline]
-    pub fn all(&self, ray: &BvhRay, mut f: impl FnMut(usize)) {
+    /// Visits every slot whose box the ray meets (an any-hit traversal that never stops; the
+    /// tests').
+    #[cfg(test)]
+    pub(crate) fn all(&self, ray: &BvhRay, mut f: impl FnMut(usize)) {
         self.any(ray, |slot| {
             f(slot);
             false

@@ -21,9 +21,9 @@ use std::cmp::Ordering;
 
 use glam::DVec3;
 
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3, WIDTH};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::ray::Ray;
+use crate::lanes::{self, Lanes, Mask, V3, WIDTH};
 
 /// How far outside the capsule (relative to the magnitude of the coordinates involved) a
 /// sphere must lie to be skipped; see the module documentation.
@@ -146,21 +146,21 @@ impl Bundle {
     /// the bundle [`Bundle::push`] builds ray by ray, but with each bound reduced across the
     /// lanes at once (ray by ray, every comparison waited on the one before).
     #[inline(never)]
-    pub fn of_packet(rays: &RayLanes, t_max: &Lanes, live: Mask) -> Bundle {
+    pub(crate) fn of_packet(rays: &RayLanes, t_max: &Lanes, live: Mask) -> Bundle {
         if live == 0 {
             return Bundle::new();
         }
         // The other lanes become copies of a live one, which leave every bound as it is, so
         // the reductions need no masks.
         let f = live.trailing_zeros() as usize;
-        let fill = |v: &Lanes| simd::select(live, v, &[v[f]; WIDTH]);
+        let fill = |v: &Lanes| lanes::select(live, v, &[v[f]; WIDTH]);
         let fill3 = |v: &V3| V3 {
             x: fill(&v.x),
             y: fill(&v.y),
             z: fill(&v.z),
         };
         let (o, d, t) = (fill3(&rays.origin), fill3(&rays.dir), fill(t_max));
-        let ended = simd::lt(&t, f64::INFINITY);
+        let ended = lanes::lt(&t, f64::INFINITY);
         if ended != 0 && ended != lanes::first(WIDTH) {
             // Finite and infinite segments mixed (no packet the renderer casts): ray by ray.
             let mut b = Bundle::new();
@@ -181,11 +181,11 @@ impl Bundle {
             let e = o.add(&d.scale(&t));
             let se = sum(&e);
             b.ends = bounds(&e);
-            b.probe = simd::sum(&lanes::map(|i| (so[i] + sd[i]) + se[i]));
+            b.probe = lanes::sum(&lanes::map(|i| (so[i] + sd[i]) + se[i]));
         } else {
             b.dirs = bounds(&d);
-            b.unit = simd::min(&d.dot(&d));
-            b.probe = simd::sum(&lanes::map(|i| so[i] + sd[i]));
+            b.unit = lanes::min(&d.dot(&d));
+            b.probe = lanes::sum(&lanes::map(|i| so[i] + sd[i]));
             b.infinite = true;
         }
         b
@@ -196,8 +196,8 @@ impl Bundle {
 #[inline(always)]
 fn bounds(v: &V3) -> (DVec3, DVec3) {
     (
-        DVec3::new(simd::min(&v.x), simd::min(&v.y), simd::min(&v.z)),
-        DVec3::new(simd::max(&v.x), simd::max(&v.y), simd::max(&v.z)),
+        DVec3::new(lanes::min(&v.x), lanes::min(&v.y), lanes::min(&v.z)),
+        DVec3::new(lanes::max(&v.x), lanes::max(&v.y), lanes::max(&v.z)),
     )
 }
 

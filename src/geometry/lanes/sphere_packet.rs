@@ -1,5 +1,5 @@
 //! The world's loose spheres against a packet of rays: each sphere is tested on every ray of
-//! the packet at once ([`crate::geometry::lanes`]), with the operations of the one-ray test
+//! the packet at once ([`crate::lanes`]), with the operations of the one-ray test
 //! ([`crate::geometry::shapes::sphere::hit_t_with`]: [`crate::geometry::shapes::circle_quadratic::roots`], then the nearer root in the
 //! interval) in the same order, so every lane's `t` is the one-ray test's to the bit.
 //!
@@ -7,24 +7,24 @@
 //! spheres; tested together, their square roots and divisions run two (or four) to an
 //! instruction, where ray by ray each waited on the last.
 
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::lanes::cull::Among;
-use crate::geometry::lanes::simd;
 use crate::geometry::lanes::spheres::SphereLanes;
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, WIDTH};
+use crate::lanes::{self, Lanes, Mask, WIDTH};
 
 /// For every ray of a packet, the nearest loose sphere found: its position in the lanes'
 /// order ([`NO_SPHERE`] when none) and its `t`.
 #[derive(Clone, Copy, Debug)]
-pub struct PacketHits {
+pub(crate) struct PacketHits {
     /// The sphere's position, or [`NO_SPHERE`].
-    pub sphere: [u32; WIDTH],
+    pub(crate) sphere: [u32; WIDTH],
     /// Its `t` (the interval's end where there is none).
-    pub t: Lanes,
+    pub(crate) t: Lanes,
 }
 
 impl PacketHits {
     /// No sphere on any ray, whose intervals end at `t_max`.
-    pub fn none(t_max: f64) -> PacketHits {
+    pub(crate) fn none(t_max: f64) -> PacketHits {
         PacketHits {
             sphere: [NO_SPHERE; WIDTH],
             t: [t_max; WIDTH],
@@ -33,7 +33,7 @@ impl PacketHits {
 }
 
 /// No sphere in [`PacketHits::sphere`].
-pub const NO_SPHERE: u32 = u32::MAX;
+pub(crate) const NO_SPHERE: u32 = u32::MAX;
 
 /// `|dir|²` of every ray and its reciprocal (`circle_quadratic::DirSquared` per lane).
 #[inline(always)]
@@ -64,7 +64,7 @@ impl SphereLanes {
         let cc = closest.dot(&closest);
         let gap = lanes::map(|i| rr - cc[i]);
         // `gap ≥ 0` is false for NaN, as `roots`' `gap < 0 || gap.is_nan()` miss test.
-        let meets = simd::ge(&gap, 0.0);
+        let meets = lanes::ge(&gap, 0.0);
         // roots_past_gap: q = −half_b − √(a·gap)·sign(half_b); t0 = q·inv, t1 = (|p|² − r²)/q.
         let root = lanes::map(|i| (a[i] * gap[i]).sqrt());
         let q = lanes::map(|i| -half_b[i] - root[i].copysign(half_b[i]));
@@ -93,7 +93,7 @@ impl SphereLanes {
     /// The nearest sphere of `among` for each ray of `live` in (t_min, t_max): what
     /// [`SphereLanes::nearest_among`] finds for that ray, bit for bit (the spheres in the same
     /// order, each against the nearest hit so far).
-    pub fn nearest_packet(
+    pub(crate) fn nearest_packet(
         &self,
         rays: &RayLanes,
         live: Mask,
@@ -122,7 +122,7 @@ impl SphereLanes {
 
     /// The rays of `live` that meet a sphere of `among` in (t_min, t_max[i]): what
     /// [`SphereLanes::any_among`] answers for each.
-    pub fn any_packet(
+    pub(crate) fn any_packet(
         &self,
         rays: &RayLanes,
         live: Mask,

@@ -19,13 +19,13 @@ use crate::geometry::shapes::circle_quadratic::{DirSquared, roots_past_gap};
 use crate::geometry::shapes::sphere::{hit_t_with, nearer_root};
 
 /// Spheres per lane group.
-pub const LANES: usize = 4;
+const LANES: usize = 4;
 
 type Lane = [f64; LANES];
 
 /// Loose spheres in lane groups of [`LANES`], padded with spheres no ray hits.
 #[derive(Clone, Debug, Default)]
-pub struct SphereLanes {
+pub(crate) struct SphereLanes {
     x: Vec<Lane>,
     y: Vec<Lane>,
     z: Vec<Lane>,
@@ -51,7 +51,7 @@ struct Gaps {
 
 impl SphereLanes {
     /// The lanes of spheres `(centre, radius)`, in order (an index below is a position here).
-    pub fn new(spheres: impl IntoIterator<Item = (DVec3, f64)>) -> SphereLanes {
+    pub(crate) fn new(spheres: impl IntoIterator<Item = (DVec3, f64)>) -> SphereLanes {
         let mut s = SphereLanes::default();
         for (c, r) in spheres {
             let (g, l) = (s.len / LANES, s.len % LANES);
@@ -72,7 +72,7 @@ impl SphereLanes {
 
     /// The spheres any segment of `bundle` may meet ([`sphere_cull`]); queries with it ask
     /// for sub-intervals of those segments.
-    pub fn among(&self, bundle: &Bundle) -> Among {
+    pub(crate) fn among(&self, bundle: &Bundle) -> Among {
         cull::among(&self.each, self.reach, bundle)
     }
 
@@ -80,7 +80,7 @@ impl SphereLanes {
     /// not tested. The spheres are tested one by one in order, with the scalar test the lanes
     /// compute bit for bit, so the result is the same.
     #[inline]
-    pub fn nearest_among(
+    pub(crate) fn nearest_among(
         &self,
         ray: &Ray,
         t_min: f64,
@@ -104,7 +104,7 @@ impl SphereLanes {
 
     /// [`SphereLanes::any`] when only the spheres of `among` can be hit.
     #[inline]
-    pub fn any_among(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> bool {
+    pub(crate) fn any_among(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> bool {
         let d = DirSquared::of(ray.dir);
         for k in among.positions() {
             let Some(&(c, r)) = self.each.get(k) else {
@@ -117,13 +117,14 @@ impl SphereLanes {
         false
     }
 
-    /// Number of spheres.
-    pub fn len(&self) -> usize {
+    /// Number of spheres (the tests').
+    #[cfg(test)]
+    fn len(&self) -> usize {
         self.len
     }
 
     /// True when there are no spheres.
-    pub fn is_empty(&self) -> bool {
+    pub(crate) fn is_empty(&self) -> bool {
         self.len == 0
     }
 
@@ -177,7 +178,7 @@ impl SphereLanes {
     /// The nearest sphere in (t_min, t_max) and its `t`: exactly what testing the spheres one
     /// by one with `sphere::hit_t_with`, each against the nearest hit so far, finds.
     #[inline]
-    pub fn nearest(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(usize, f64)> {
+    pub(crate) fn nearest(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<(usize, f64)> {
         let d = DirSquared::of(ray.dir);
         let mut best = None;
         let mut far = t_max;
@@ -198,7 +199,7 @@ impl SphereLanes {
 
     /// True when any sphere lies in (t_min, t_max) along the ray.
     #[inline]
-    pub fn any(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+    pub(crate) fn any(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         let d = DirSquared::of(ray.dir);
         (0..self.x.len()).any(|g| {
             let l = self.gaps(g, ray, d);

@@ -18,7 +18,7 @@ use crate::geometry::mesh::MeshParts;
 /// (a quarter of the boxes) instead of one box per triangle, because there the build dominates
 /// the time to first ray and the process's peak memory (bunny-x16, 1.1M triangles: BVH
 /// 0.28 → 0.10 s, peak RSS 325 → 132 MB, tracing 19% slower).
-pub const LARGE_MESH: usize = 300_000;
+const LARGE_MESH: usize = 300_000;
 
 /// Most triangles in one BVH leaf (one 4-wide test).
 const LEAF_TRIANGLES: u32 = BLOCK as u32;

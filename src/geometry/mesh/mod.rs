@@ -2,7 +2,7 @@
 //! the order of their own BVH, four to a block for the 4-wide test, with per-corner normals and
 //! uvs and per-triangle material slots (in file order, read once per hit).
 
-pub(crate) mod bvh;
+mod bvh;
 
 use crate::num::Norm;
 use glam::{DVec2, DVec3, Vec2, Vec3, Vec3A};
@@ -10,10 +10,11 @@ use rayon::prelude::*;
 
 use crate::geometry::bvh::packet::PACKET;
 use crate::geometry::bvh::{BLOCK, Bvh, BvhRay};
-use crate::geometry::lanes::{self, RayLanes, V3};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::shapes::triangle::{ShearedRay, TriBlock};
 use crate::geometry::{aabb::Aabb, ray::Ray};
 use crate::ir::limits::MAX_TRIANGLES;
+use crate::lanes::{self, V3};
 
 const _: () = assert!(MAX_TRIANGLES <= crate::geometry::bvh::MAX_PRIMITIVES);
 
@@ -68,11 +69,11 @@ pub struct MeshHit {
     /// Unit shading normal.
     pub shading: DVec3,
     /// Texture coordinates.
-    pub uv: DVec2,
+    pub(crate) uv: DVec2,
     /// The face's material slot (an index into the file's MTL materials), if it has one.
-    pub material: Option<u32>,
+    pub(crate) material: Option<u32>,
     /// Per-axis bound on how far the object-space hit point lies off the triangle's plane.
-    pub error: DVec3,
+    pub(crate) error: DVec3,
 }
 
 impl Mesh {
@@ -145,7 +146,7 @@ impl Mesh {
     }
 
     /// BVH build time.
-    pub fn build_time(&self) -> std::time::Duration {
+    pub(crate) fn build_time(&self) -> std::time::Duration {
         self.bvh.build_time
     }
 
@@ -297,7 +298,7 @@ impl Mesh {
     /// and the rays then walk the tree as a packet. Each finds the nearest `t` it would find
     /// alone; only which of two triangles at exactly that `t` wins depends on the visiting
     /// order, so a ray that met such a tie is traced again alone.
-    pub fn intersect_packet(
+    pub(crate) fn intersect_packet(
         &self,
         rays: &[Ray],
         t_min: &[f64],
@@ -361,7 +362,13 @@ impl Mesh {
 
     /// [`Mesh::occluded`] of the rays of `active` (bits, up to [`PACKET`] rays) at once: the
     /// rays it holds for, as a mask.
-    pub fn occluded_packet(&self, rays: &[Ray], t_min: &[f64], t_max: &[f64], active: u32) -> u32 {
+    pub(crate) fn occluded_packet(
+        &self,
+        rays: &[Ray],
+        t_min: &[f64],
+        t_max: &[f64],
+        active: u32,
+    ) -> u32 {
         assert!(rays.len() <= PACKET, "a packet holds at most {PACKET} rays");
         let n = rays.len();
         let mut sheared = [ShearedRay::default(); PACKET];

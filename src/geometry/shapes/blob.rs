@@ -16,7 +16,7 @@ use crate::ir::BlobComponent;
 
 /// Metaballs in object space.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Blob {
+pub(crate) struct Blob {
     parts: Vec<BlobComponent>,
     threshold: f64,
     bounds: Aabb,
@@ -25,7 +25,7 @@ pub struct Blob {
 impl Blob {
     /// A blob; `None` unless the threshold is positive, every radius positive, and some
     /// component positive (else the surface is empty or unbounded).
-    pub fn new(parts: &[BlobComponent], threshold: f64) -> Option<Blob> {
+    pub(crate) fn new(parts: &[BlobComponent], threshold: f64) -> Option<Blob> {
         let ok = threshold > 0.0
             && threshold.is_finite()
             && parts
@@ -48,7 +48,7 @@ impl Blob {
     }
 
     /// The field value at `p`.
-    pub fn field(&self, p: DVec3) -> f64 {
+    fn field(&self, p: DVec3) -> f64 {
         self.parts
             .iter()
             .map(|c| {
@@ -58,20 +58,15 @@ impl Blob {
             .sum()
     }
 
-    /// The threshold the surface sits at.
-    pub fn threshold(&self) -> f64 {
-        self.threshold
-    }
-
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         self.bounds
     }
 
     /// Error bound of a computed point `p` on the surface: the field's residual over its
     /// gradient (the first-order distance; doubled for the curvature it ignores) plus the
     /// rounding of evaluating the field, in distance the same way.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let slope = self.gradient(p).norm();
         let mut size = self.threshold;
         for c in &self.parts {
@@ -89,7 +84,7 @@ impl Blob {
     }
 
     /// True when `p` is inside or on the surface.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         self.field(p) >= self.threshold
     }
 
@@ -189,7 +184,7 @@ impl Blob {
     /// blob's size (worst seen in tests/numerics_invariants.rs: 9·10⁻¹³), far less exactly than
     /// the hit point: roots that close to `t_min` are the surface a spawned ray just left
     /// (seen as speckles in the gallery), not hits.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let roots = rounding::gamma(1 << 14) * (self.bounds.max - self.bounds.min).norm();
         let t_min = t_min + roots / ray.dir.norm();
         crate::geometry::shapes::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
@@ -197,7 +192,7 @@ impl Blob {
     }
 
     /// Boundary crossings along the whole line.
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         self.roots(ray, |t, rising| {
             out.push(Crossing {
                 hit: self.hit(ray, t),

@@ -14,17 +14,17 @@ use glam::DVec3;
 /// `|v|²` of a ray direction and its reciprocal, which hot callers compute once per ray (the
 /// reciprocal turns two divisions per test into multiplications).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DirSquared {
+pub(crate) struct DirSquared {
     /// `|v|²`.
-    pub a: f64,
+    a: f64,
     /// `1 / |v|²`.
-    pub inv: f64,
+    pub(crate) inv: f64,
 }
 
 impl DirSquared {
     /// The squared length of `v` and its reciprocal.
     #[inline]
-    pub fn of(v: DVec3) -> DirSquared {
+    pub(crate) fn of(v: DVec3) -> DirSquared {
         let a = v.length_squared();
         DirSquared { a, inv: 1.0 / a }
     }
@@ -37,7 +37,7 @@ impl DirSquared {
 /// `p` and `v` may be projections onto a plane (a cylinder's cross-section): only dot products
 /// are used.
 #[inline]
-pub fn roots(p: DVec3, v: DVec3, d: DirSquared, r: f64) -> Option<(f64, f64)> {
+pub(crate) fn roots(p: DVec3, v: DVec3, d: DirSquared, r: f64) -> Option<(f64, f64)> {
     let half_b = p.dot(v);
     let closest = p - (half_b * d.inv) * v;
     let rr = r * r;
@@ -53,7 +53,13 @@ pub fn roots(p: DVec3, v: DVec3, d: DirSquared, r: f64) -> Option<(f64, f64)> {
 /// intermediate values `half_b = p·v`, `gap` and `rr = r·r` (shared with the sphere lanes of
 /// `crate::geometry::lanes::spheres`, which compute the gap of several spheres at once).
 #[inline]
-pub fn roots_past_gap(p: DVec3, half_b: f64, gap: f64, d: DirSquared, rr: f64) -> (f64, f64) {
+pub(crate) fn roots_past_gap(
+    p: DVec3,
+    half_b: f64,
+    gap: f64,
+    d: DirSquared,
+    rr: f64,
+) -> (f64, f64) {
     // The root whose two terms add (no cancellation) gives the other through the product c/a.
     let q = -half_b - (d.a * gap).sqrt().copysign(half_b);
     if q == 0.0 {

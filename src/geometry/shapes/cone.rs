@@ -9,7 +9,7 @@ use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 
 /// A cone or frustum in object space: the radius goes linearly from `r0` at the base to `r1`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cone {
+pub(crate) struct Cone {
     frame: AxisFrame,
     r0: f64,
     r1: f64,
@@ -20,7 +20,7 @@ pub struct Cone {
 
 impl Cone {
     /// A cone; `None` for coincident ends, a negative radius or both radii zero.
-    pub fn new(base: DVec3, top: DVec3, r0: f64, r1: f64, capped: bool) -> Option<Cone> {
+    pub(crate) fn new(base: DVec3, top: DVec3, r0: f64, r1: f64, capped: bool) -> Option<Cone> {
         let frame = AxisFrame::new(base, top)?;
         let ok = r0 >= 0.0 && r1 >= 0.0 && r0.max(r1) > 0.0 && r0.is_finite() && r1.is_finite();
         ok.then_some(Cone {
@@ -33,7 +33,7 @@ impl Cone {
     }
 
     /// Whether the ends are closed (a solid).
-    pub fn is_closed(&self) -> bool {
+    pub(crate) fn is_closed(&self) -> bool {
         self.capped
     }
 
@@ -95,18 +95,18 @@ impl Cone {
     }
 
     /// Nearest hit in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         crate::geometry::ray::nearest(self.candidates(ray).into_iter().flatten(), t_min, t_max)
     }
 
     /// Entry and exit along the whole line (capped cones are convex).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         convex_crossings(self.candidates(ray).into_iter().flatten(), out);
     }
 
     /// Error bound of a computed point `p` on the cone: the residual of the part it lies on
     /// (the side's distance in the plane through the axis, or a cap's) plus its rounding.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let f = &self.frame;
         let (y, rho, size) = f.height_and_radius(p);
         let side = (rho - (self.r0 + self.k * y)) / (1.0 + self.k * self.k).sqrt();
@@ -121,7 +121,7 @@ impl Cone {
     }
 
     /// True when `p` is inside or on the solid.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         let f = &self.frame;
         let w = p - f.base;
         let y = w.dot(f.axis);
@@ -130,7 +130,7 @@ impl Cone {
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         let f = &self.frame;
         f.disk_bounds(0.0, self.r0)
             .union(f.disk_bounds(f.height, self.r1))

@@ -14,7 +14,7 @@ use crate::geometry::aabb::Aabb;
 use crate::ir::CsgOp;
 
 /// Combines operand memberships under `op` (for `Difference` the first is the base).
-pub fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
+pub(crate) fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
     match op {
         CsgOp::Union | CsgOp::Merge => states.any(|s| s),
         CsgOp::Intersection => states.all(|s| s),
@@ -33,7 +33,7 @@ pub fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool {
 /// one at a time, in whatever order rounding sorted them, they would flip the result twice and
 /// leave a zero-thickness lid (or, in glass, an inner interface). The event's hit is one whose
 /// own operand moved the result the way it went (its surface is the one that shows).
-pub fn boundary<H: Copy>(
+pub(crate) fn boundary<H: Copy>(
     op: CsgOp,
     mut states: Vec<bool>,
     crossings: &[(usize, H, bool)],
@@ -76,14 +76,14 @@ fn drives(op: CsgOp, i: usize, entering: bool, now: bool) -> bool {
 
 /// Whether a boundary crossing on operand `i` shows that operand's surface turned inside out
 /// (a subtracted operand's surface faces the other way on the result).
-pub fn flips_normal(op: CsgOp, i: usize) -> bool {
+pub(crate) fn flips_normal(op: CsgOp, i: usize) -> bool {
     op == CsgOp::Difference && i > 0
 }
 
 /// Bounds of a CSG node from its operands' bounds (all in the node's space): an intersection is
 /// bounded by the overlap of its operands, a difference by its base, a union or merge by all
 /// operands. An empty intersection gives [`Aabb::EMPTY`], which no ray meets.
-pub fn bounds(op: CsgOp, children: &[Aabb]) -> Aabb {
+pub(crate) fn bounds(op: CsgOp, children: &[Aabb]) -> Aabb {
     let infinite = Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY);
     match op {
         CsgOp::Union | CsgOp::Merge => children.iter().fold(Aabb::EMPTY, |b, c| b.union(*c)),

@@ -7,11 +7,11 @@ use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 
 /// An axis-aligned box in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cuboid {
+pub(crate) struct Cuboid {
     /// Minimum corner.
-    pub min: DVec3,
+    min: DVec3,
     /// Maximum corner.
-    pub max: DVec3,
+    max: DVec3,
 }
 
 /// Where a ray enters and leaves the box: parameters and outward normals.
@@ -24,7 +24,7 @@ struct Span2 {
 
 impl Cuboid {
     /// A box from any two opposite corners.
-    pub fn new(a: DVec3, b: DVec3) -> Cuboid {
+    pub(crate) fn new(a: DVec3, b: DVec3) -> Cuboid {
         Cuboid {
             min: a.min(b),
             max: a.max(b),
@@ -77,7 +77,7 @@ impl Cuboid {
     }
 
     /// Nearest hit in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let s = self.slabs(ray)?;
         if s.t0 > t_min && s.t0 < t_max {
             Some(self.hit(ray, s.t0, s.n0))
@@ -89,7 +89,7 @@ impl Cuboid {
     }
 
     /// Entry and exit along the whole line.
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         if let Some(s) = self.slabs(ray) {
             out.push(Crossing {
                 hit: self.hit(ray, s.t0, s.n0),
@@ -104,7 +104,7 @@ impl Cuboid {
 
     /// Error bound of a computed point `p` on the box: its signed distance to the box (exact
     /// up to the rounding of a few operations on the distances themselves).
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let q = (self.min - p).max(p - self.max);
         let outside = q.max(DVec3::ZERO).norm();
         let inside = q.max_element().min(0.0);
@@ -113,12 +113,12 @@ impl Cuboid {
     }
 
     /// True when `p` is inside or on the box.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         p.cmpge(self.min).all() && p.cmple(self.max).all()
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         Aabb::new(self.min, self.max)
     }
 }

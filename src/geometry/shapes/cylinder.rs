@@ -11,20 +11,20 @@ use crate::geometry::{
 
 /// An orthonormal frame along a segment: `base`, unit `axis`, length `height`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AxisFrame {
+pub(crate) struct AxisFrame {
     /// Start of the axis.
-    pub base: DVec3,
+    pub(crate) base: DVec3,
     /// Unit axis direction.
-    pub axis: DVec3,
+    pub(crate) axis: DVec3,
     /// Length of the axis.
-    pub height: f64,
+    pub(crate) height: f64,
     e1: DVec3,
     e2: DVec3,
 }
 
 impl AxisFrame {
     /// A frame from `base` to `top`; `None` when they coincide.
-    pub fn new(base: DVec3, top: DVec3) -> Option<AxisFrame> {
+    pub(crate) fn new(base: DVec3, top: DVec3) -> Option<AxisFrame> {
         let d = top - base;
         let height = d.norm();
         let axis = d.try_unit()?;
@@ -39,7 +39,7 @@ impl AxisFrame {
     }
 
     /// (angle / 2π, height fraction) of a point.
-    pub fn uv(&self, p: DVec3) -> DVec2 {
+    pub(crate) fn uv(&self, p: DVec3) -> DVec2 {
         let w = p - self.base;
         let angle = libm::atan2(w.dot(self.e2), w.dot(self.e1)).rem_euclid(TAU);
         DVec2::new(
@@ -50,7 +50,7 @@ impl AxisFrame {
 
     /// A point's height along the axis, its distance from the axis, and the size of the
     /// numbers that gave them (for error bounds).
-    pub fn height_and_radius(&self, p: DVec3) -> (f64, f64, f64) {
+    pub(crate) fn height_and_radius(&self, p: DVec3) -> (f64, f64, f64) {
         let w = p - self.base;
         let y = w.dot(self.axis);
         let rho = (w - y * self.axis).norm();
@@ -71,7 +71,7 @@ impl AxisFrame {
     }
 
     /// Bounds of a disk of `radius` centred on the axis at height `y`.
-    pub fn disk_bounds(&self, y: f64, radius: f64) -> Aabb {
+    pub(crate) fn disk_bounds(&self, y: f64, radius: f64) -> Aabb {
         let c = self.base + y * self.axis;
         let ext = radius
             * (DVec3::ONE - self.axis * self.axis)
@@ -81,7 +81,7 @@ impl AxisFrame {
     }
 
     /// Hit on the cap at height `y` with radius `radius`, whose outward normal is `normal`.
-    pub fn cap(&self, ray: &Ray, y: f64, radius: f64, normal: DVec3) -> Option<Hit> {
+    pub(crate) fn cap(&self, ray: &Ray, y: f64, radius: f64, normal: DVec3) -> Option<Hit> {
         let da = ray.dir.dot(self.axis);
         if da == 0.0 {
             return None;
@@ -99,7 +99,7 @@ impl AxisFrame {
 
 /// A cylinder in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cylinder {
+pub(crate) struct Cylinder {
     frame: AxisFrame,
     radius: f64,
     capped: bool,
@@ -107,7 +107,7 @@ pub struct Cylinder {
 
 impl Cylinder {
     /// A cylinder; `None` for coincident ends or a non-positive radius.
-    pub fn new(base: DVec3, top: DVec3, radius: f64, capped: bool) -> Option<Cylinder> {
+    pub(crate) fn new(base: DVec3, top: DVec3, radius: f64, capped: bool) -> Option<Cylinder> {
         let frame = AxisFrame::new(base, top)?;
         (radius > 0.0 && radius.is_finite()).then_some(Cylinder {
             frame,
@@ -117,7 +117,7 @@ impl Cylinder {
     }
 
     /// Whether the ends are closed (a solid).
-    pub fn is_closed(&self) -> bool {
+    pub(crate) fn is_closed(&self) -> bool {
         self.capped
     }
 
@@ -154,20 +154,20 @@ impl Cylinder {
     }
 
     /// Nearest hit in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (c, n) = self.candidates(ray);
         crate::geometry::ray::nearest(c[..n].iter().flatten().copied(), t_min, t_max)
     }
 
     /// Entry and exit along the whole line (capped cylinders are convex).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         let (c, n) = self.candidates(ray);
         convex_crossings(c[..n].iter().flatten().copied(), out);
     }
 
     /// Error bound of a computed point `p` on the cylinder: the residual of the part it lies
     /// on (side or cap) plus the rounding of evaluating it.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let f = &self.frame;
         let (y, rho, size) = f.height_and_radius(p);
         let residual = f.nearest_part(y, rho - self.radius, self.capped, self.capped);
@@ -175,7 +175,7 @@ impl Cylinder {
     }
 
     /// True when `p` is inside or on the solid.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         let f = &self.frame;
         let w = p - f.base;
         let y = w.dot(f.axis);
@@ -184,7 +184,7 @@ impl Cylinder {
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         let f = &self.frame;
         f.disk_bounds(0.0, self.radius)
             .union(f.disk_bounds(f.height, self.radius))
@@ -193,7 +193,7 @@ impl Cylinder {
 
 /// For a convex solid, the first hit enters and the last leaves, whatever duplicates a rim
 /// hit produced in between.
-pub fn convex_crossings(hits: impl Iterator<Item = Hit>, out: &mut Vec<Crossing>) {
+pub(crate) fn convex_crossings(hits: impl Iterator<Item = Hit>, out: &mut Vec<Crossing>) {
     let mut first: Option<Hit> = None;
     let mut last: Option<Hit> = None;
     for h in hits {

@@ -9,7 +9,7 @@ use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
 /// A disk in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Disk {
+pub(crate) struct Disk {
     center: DVec3,
     normal: DVec3,
     radius: f64,
@@ -20,7 +20,7 @@ pub struct Disk {
 
 impl Disk {
     /// A disk; `None` for a zero normal or a non-positive radius.
-    pub fn new(center: DVec3, normal: DVec3, radius: f64) -> Option<Disk> {
+    pub(crate) fn new(center: DVec3, normal: DVec3, radius: f64) -> Option<Disk> {
         let normal = normal.try_unit()?;
         if !(radius > 0.0 && radius.is_finite()) {
             return None;
@@ -36,7 +36,7 @@ impl Disk {
     }
 
     /// Nearest hit in (t_min, t_max); uv = (angle / 2π, distance / radius).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (t, x, y, r2) = self.plane_hit(ray, t_min, t_max)?;
         if r2 > self.radius * self.radius {
             return None;
@@ -73,22 +73,22 @@ impl Disk {
     }
 
     /// The disk's radius.
-    pub fn radius(&self) -> f64 {
+    pub(crate) fn radius(&self) -> f64 {
         self.radius
     }
 
     /// The disk's unit normal.
-    pub fn normal(&self) -> DVec3 {
+    pub(crate) fn normal(&self) -> DVec3 {
         self.normal
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         crate::geometry::shapes::plane::point_error(self.center, self.normal, p)
     }
 
     /// Object-space bounds (tight per axis: radius·√(1 − n_i²)).
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         let ext = self.radius
             * (DVec3::ONE - self.normal * self.normal)
                 .max(DVec3::ZERO)

@@ -7,26 +7,26 @@ use crate::diag::{Diagnostic, number};
 use crate::source::Span;
 
 /// Code of a shape number outside its range.
-pub const OUT_OF_RANGE: &str = "rtc::param::out_of_range";
+pub(crate) const OUT_OF_RANGE: &str = "rtc::param::out_of_range";
 /// Code of a shape with no surface.
-pub const DEGENERATE: &str = "rtc::param::degenerate";
+pub(crate) const DEGENERATE: &str = "rtc::param::degenerate";
 /// Code of a polygon whose points are not in one plane.
-pub const NOT_PLANAR: &str = "rtc::param::not_planar";
+pub(crate) const NOT_PLANAR: &str = "rtc::param::not_planar";
 /// Code of a CSG node with fewer than two operands.
-pub const CSG_OPERANDS: &str = "rtc::csg::operands";
+pub(crate) const CSG_OPERANDS: &str = "rtc::csg::operands";
 
 /// Why a shape cannot be drawn, and which of its parameters to blame.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ShapeFlaw {
+pub(crate) struct ShapeFlaw {
     /// The parameter at fault, by its name in the language (`radius`, `max`, `points`...).
-    pub param: &'static str,
+    pub(crate) param: &'static str,
     /// What is wrong with it.
-    pub kind: FlawKind,
+    kind: FlawKind,
 }
 
 /// The two kinds of flaw: a number outside its range, or anything else.
 #[derive(Clone, Debug, PartialEq)]
-pub enum FlawKind {
+enum FlawKind {
     /// `param` must be `rule` (such as `> 0`) but is `value` (code [`OUT_OF_RANGE`]).
     Range {
         /// The rule, written after "must be".
@@ -85,16 +85,8 @@ impl ShapeFlaw {
         ShapeFlaw::other(param, DEGENERATE, message, label, help)
     }
 
-    /// The diagnostic code.
-    pub fn code(&self) -> &'static str {
-        match &self.kind {
-            FlawKind::Range { .. } => OUT_OF_RANGE,
-            FlawKind::Other { code, .. } => code,
-        }
-    }
-
     /// The diagnostic, with its primary span on `span` (the parameter's, where known).
-    pub fn diagnostic(&self, span: Span) -> Diagnostic {
+    pub(crate) fn diagnostic(&self, span: Span) -> Diagnostic {
         match &self.kind {
             FlawKind::Range { rule, value } => {
                 let shown = number(*value);

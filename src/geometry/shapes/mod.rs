@@ -11,22 +11,22 @@
 //! `rtc::param::not_planar` (a polygon off its plane), `rtc::csg::operands` (a CSG node with
 //! fewer than two operands).
 
-pub mod blob;
-pub mod circle_quadratic;
-pub mod cone;
-pub mod csg;
-pub mod cuboid;
-pub mod cylinder;
-pub mod disk;
-pub mod parallelogram;
-pub mod plane;
-pub mod polygon;
-pub mod quadric;
-pub mod quartic;
-pub mod ring;
-pub mod sphere;
-pub mod torus;
-pub mod triangle;
+mod blob;
+pub(crate) mod circle_quadratic;
+mod cone;
+pub(crate) mod csg;
+mod cuboid;
+mod cylinder;
+mod disk;
+mod parallelogram;
+pub(crate) mod plane;
+mod polygon;
+mod quadric;
+mod quartic;
+mod ring;
+pub(crate) mod sphere;
+mod torus;
+pub(crate) mod triangle;
 
 use crate::num::Norm;
 use std::path::Path;
@@ -50,13 +50,13 @@ use crate::ir::Shape;
 
 mod flaw;
 
-pub use flaw::{CSG_OPERANDS, DEGENERATE, FlawKind, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
+pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 use flaw::{finite, in_range, positive, vec3};
 
 /// Whether `shape` can be drawn: `Ok` for every valid shape, a mesh (its file is checked when
 /// it is loaded) and a CSG node with at least two operands (its operands are checked as shapes
 /// of their own).
-pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
+pub(crate) fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
     match shape {
         Shape::Mesh { .. } => Ok(()),
         Shape::Csg { children, .. } => csg_operands(children.len()),
@@ -74,7 +74,7 @@ pub fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
 /// A single shape's geometry in object space: every shape but meshes and CSG nodes. Shapes
 /// larger than a box are boxed, so a million spheres do not each take a polygon's room.
 #[derive(Clone, Debug)]
-pub enum Leaf {
+pub(crate) enum Leaf {
     /// A sphere.
     Sphere {
         /// Centre.
@@ -115,7 +115,7 @@ pub enum Leaf {
 
 impl Leaf {
     /// Object-space bounds (infinite for a plane).
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         match self {
             Leaf::Sphere { center, radius } => sphere::bounds(*center, *radius),
             Leaf::Plane { .. } => Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY),
@@ -135,7 +135,7 @@ impl Leaf {
 
     /// Nearest hit in (t_min, t_max), in object space.
     #[inline]
-    pub fn intersect(&self, r: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, r: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         match self {
             Leaf::Sphere { center, radius } => sphere::intersect(*center, *radius, r, t_min, t_max),
             Leaf::Plane { point, normal } => plane::intersect(*point, *normal, r, t_min, t_max),
@@ -155,7 +155,7 @@ impl Leaf {
 
     /// A per-axis bound on how far the computed object-space point `p` of a hit may lie from
     /// the surface (see [`crate::geometry::rounding`]).
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         match self {
             Leaf::Sphere { center, radius } => sphere::point_error(*center, *radius, p),
             Leaf::Plane { point, normal } => plane::point_error(*point, *normal, p),
@@ -174,7 +174,7 @@ impl Leaf {
     }
 
     /// Every boundary crossing along the whole line of `r` (solids; surfaces have none).
-    pub fn crossings(&self, r: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, r: &Ray, out: &mut Vec<Crossing>) {
         match self {
             Leaf::Sphere { center, radius } => sphere::crossings(*center, *radius, r, out),
             Leaf::Plane { point, normal } => {
@@ -202,7 +202,7 @@ impl Leaf {
     }
 
     /// Point membership in object space (closed solids; surfaces contain nothing).
-    pub fn contains(&self, q: DVec3) -> bool {
+    pub(crate) fn contains(&self, q: DVec3) -> bool {
         match self {
             Leaf::Sphere { center, radius } => sphere::contains(*center, *radius, q),
             Leaf::Plane { point, normal } => (q - *point).dot(*normal) <= 0.0,
@@ -222,7 +222,7 @@ impl Leaf {
 
     /// Whether the line of `r` starts (at t → −∞) inside (only a half-space or an unbounded
     /// quadric can).
-    pub fn inside_at_start(&self, r: &Ray) -> bool {
+    pub(crate) fn inside_at_start(&self, r: &Ray) -> bool {
         match self {
             Leaf::Plane { point, normal } => {
                 let dn = normal.dot(r.dir);
@@ -234,7 +234,7 @@ impl Leaf {
     }
 
     /// The frame texture mappings read this shape's hits in.
-    pub fn frame(&self) -> MappingFrame {
+    pub(crate) fn frame(&self) -> MappingFrame {
         match *self {
             Leaf::Sphere { center, radius } => MappingFrame::Sphere { center, radius },
             _ => MappingFrame::Object,
@@ -243,7 +243,7 @@ impl Leaf {
 }
 
 /// Whether a CSG node with `count` operands can be built (it needs two or more).
-pub fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
+pub(crate) fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
     if count >= 2 {
         return Ok(());
     }
@@ -258,7 +258,7 @@ pub fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
 
 /// The intersectable form of a shape other than a mesh or a CSG node (which the preparation
 /// stage assembles from loaded files and prepared operands), or its flaw.
-pub fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
+pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
     Ok(match shape {
         Shape::Sphere { center, radius } => {
             positive("radius", *radius)?;
@@ -518,14 +518,14 @@ fn ends_coincide() -> ShapeFlaw {
 
 /// Object-space bounds of a valid shape other than a mesh or CSG node (infinite for a plane);
 /// `None` for those and for an invalid shape.
-pub fn bounds(shape: &Shape) -> Option<Aabb> {
+pub(crate) fn bounds(shape: &Shape) -> Option<Aabb> {
     leaf(shape).ok().map(|g| g.bounds())
 }
 
 /// Whether a shape encloses a volume CSG can classify against: surfaces (triangle, quad,
 /// polygon, disk) and open cylinders and cones do not; a mesh does when `closed_mesh` says its
 /// file is closed; a CSG node when all its operands do.
-pub fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
+pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
     match shape {
         Shape::Triangle { .. }
         | Shape::Quad { .. }

@@ -7,7 +7,7 @@ use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
 /// A parallelogram in object space; its front normal is `u × v`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Quad {
+pub(crate) struct Quad {
     corner: DVec3,
     u: DVec3,
     v: DVec3,
@@ -18,7 +18,7 @@ pub struct Quad {
 
 impl Quad {
     /// A quad from a corner and two edges; `None` when the edges are parallel.
-    pub fn new(corner: DVec3, u: DVec3, v: DVec3) -> Option<Quad> {
+    pub(crate) fn new(corner: DVec3, u: DVec3, v: DVec3) -> Option<Quad> {
         let n = u.cross(v);
         let normal = n.try_unit()?;
         Some(Quad {
@@ -31,7 +31,7 @@ impl Quad {
     }
 
     /// Nearest hit in (t_min, t_max); uv = (s, t).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let denom = self.n.dot(ray.dir);
         if denom == 0.0 {
             return None;
@@ -52,12 +52,12 @@ impl Quad {
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         crate::geometry::shapes::plane::point_error(self.corner, self.normal, p)
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         let c = self.corner;
         [c + self.u, c + self.v, c + self.u + self.v]
             .into_iter()

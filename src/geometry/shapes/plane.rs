@@ -5,7 +5,13 @@ use glam::{DVec2, DVec3};
 use crate::geometry::{ray::Hit, ray::Ray, rounding};
 
 /// Intersection of `ray` with the plane through `point` with unit `normal`, in (t_min, t_max).
-pub fn intersect(point: DVec3, normal: DVec3, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+pub(crate) fn intersect(
+    point: DVec3,
+    normal: DVec3,
+    ray: &Ray,
+    t_min: f64,
+    t_max: f64,
+) -> Option<Hit> {
     let denom = normal.dot(ray.dir);
     if denom == 0.0 {
         return None;
@@ -28,7 +34,7 @@ pub fn intersect(point: DVec3, normal: DVec3, ray: &Ray, t_min: f64, t_max: f64)
 
 /// Error bound of a computed point `p` on the plane through `point` with unit `normal` (also
 /// every flat shape's): the residual `(p − point)·n` plus its rounding.
-pub fn point_error(point: DVec3, normal: DVec3, p: DVec3) -> DVec3 {
+pub(crate) fn point_error(point: DVec3, normal: DVec3, p: DVec3) -> DVec3 {
     let w = p - point;
     rounding::from_residual(w.dot(normal), 5, w.abs().dot(normal.abs()))
 }

@@ -7,7 +7,7 @@ use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
 /// A planar polygon in object space; its front normal follows the winding (Newell's method).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Polygon {
+pub(crate) struct Polygon {
     origin: DVec3,
     normal: DVec3,
     e1: DVec3,
@@ -21,7 +21,7 @@ pub struct Polygon {
 
 /// Why a polygon cannot be built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PolygonError {
+pub(crate) enum PolygonError {
     /// Fewer than three vertices.
     TooFew,
     /// The vertices enclose no area.
@@ -32,7 +32,7 @@ pub enum PolygonError {
 
 impl Polygon {
     /// Builds a polygon, checking it has area and is planar (to 1e-9 of its size).
-    pub fn new(points: &[DVec3]) -> Result<Polygon, PolygonError> {
+    pub(crate) fn new(points: &[DVec3]) -> Result<Polygon, PolygonError> {
         if points.len() < 3 {
             return Err(PolygonError::TooFew);
         }
@@ -101,7 +101,7 @@ impl Polygon {
     }
 
     /// Nearest hit in (t_min, t_max); uv spans the polygon's extent in its plane.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let denom = self.normal.dot(ray.dir);
         if denom == 0.0 {
             return None;
@@ -120,12 +120,12 @@ impl Polygon {
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         crate::geometry::shapes::plane::point_error(self.origin, self.normal, p)
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         self.bounds
     }
 }

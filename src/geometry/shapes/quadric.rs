@@ -17,20 +17,20 @@ use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 
 /// A quadric `f(p) = pᵀ·Q·p + L·p + J = 0`, stored as POV-Ray writes it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Quadric {
+pub(crate) struct Quadric {
     /// `A, B, C`: the coefficients of `x², y², z²`.
-    pub squares: DVec3,
+    pub(crate) squares: DVec3,
     /// `D, E, F`: the coefficients of `xy, xz, yz`.
-    pub mixed: DVec3,
+    pub(crate) mixed: DVec3,
     /// `G, H, I`: the coefficients of `x, y, z`.
-    pub linear: DVec3,
+    pub(crate) linear: DVec3,
     /// `J`: the constant.
-    pub constant: f64,
+    pub(crate) constant: f64,
 }
 
 impl Quadric {
     /// The polynomial at `p` (negative inside).
-    pub fn value(&self, p: DVec3) -> f64 {
+    pub(crate) fn value(&self, p: DVec3) -> f64 {
         let (s, m, l) = (self.squares, self.mixed, self.linear);
         s.x * p.x * p.x
             + s.y * p.y * p.y
@@ -43,7 +43,7 @@ impl Quadric {
     }
 
     /// The polynomial's gradient at `p` (points outside; zero at a cone's apex).
-    pub fn gradient(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn gradient(&self, p: DVec3) -> DVec3 {
         let (s, m, l) = (self.squares, self.mixed, self.linear);
         DVec3::new(
             2.0 * s.x * p.x + m.x * p.y + m.y * p.z + l.x,
@@ -109,7 +109,7 @@ impl Quadric {
     }
 
     /// Nearest intersection of `ray` in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (ts, n) = self.roots(ray);
         let t = ts[..n].iter().copied().find(|t| *t > t_min && *t < t_max)?;
         Some(self.hit(ray, t))
@@ -117,7 +117,7 @@ impl Quadric {
 
     /// Every crossing along the whole line of `ray`: entering where the polynomial falls
     /// through zero (the gradient against the ray).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         let (ts, n) = self.roots(ray);
         for &t in &ts[..n] {
             let hit = self.hit(ray, t);
@@ -133,7 +133,7 @@ impl Quadric {
 
     /// Whether the line of `ray` starts inside (at t → −∞): the sign of the polynomial there,
     /// from its leading term.
-    pub fn inside_at_start(&self, ray: &Ray) -> bool {
+    pub(crate) fn inside_at_start(&self, ray: &Ray) -> bool {
         let (a, b, c) = self.along(ray);
         let scale = b.abs().max(c.abs()).max(f64::MIN_POSITIVE);
         if a.abs() > 1e-12 * scale {
@@ -146,19 +146,19 @@ impl Quadric {
     }
 
     /// True when `p` is inside or on the surface.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         self.value(p) <= 0.0
     }
 
     /// Object-space bounds: unbounded (a quadric is bounded only when it is an ellipsoid, and
     /// scenes bound theirs with CSG, as POV-Ray's do).
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY)
     }
 
     /// Error bound of a computed point `p` on the surface: the residual `f(p)/|∇f(p)|` (a
     /// first-order distance) plus the rounding of evaluating the polynomial.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let g = self.gradient(p).norm().max(f64::MIN_POSITIVE);
         let size = self.squares.abs().max_element() * p.length_squared()
             + self.mixed.abs().max_element() * p.length_squared()

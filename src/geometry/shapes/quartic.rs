@@ -7,20 +7,20 @@
 //! root, which safeguarded Newton steps then polish to full precision.
 
 /// Maximum degree handled.
-pub const MAX_DEGREE: usize = 4;
+const MAX_DEGREE: usize = 4;
 
 /// A root where the polynomial changes sign; `rising` is true when it goes from − to +.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Root {
+pub(crate) struct Root {
     /// Location.
-    pub t: f64,
+    pub(crate) t: f64,
     /// Sign of the polynomial just after the root is positive.
-    pub rising: bool,
+    pub(crate) rising: bool,
 }
 
 /// A small fixed-capacity list of roots (at most `MAX_DEGREE`).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Roots {
+pub(crate) struct Roots {
     items: [f64; MAX_DEGREE],
     rising: [bool; MAX_DEGREE],
     len: usize,
@@ -35,18 +35,14 @@ impl Roots {
         }
     }
 
-    /// Number of roots.
-    pub fn len(&self) -> usize {
+    /// Number of roots (the tests').
+    #[cfg(test)]
+    fn len(&self) -> usize {
         self.len
     }
 
-    /// True when there are none.
-    pub fn is_empty(&self) -> bool {
-        self.len == 0
-    }
-
     /// The roots in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = Root> + '_ {
+    pub(crate) fn iter(&self) -> impl Iterator<Item = Root> + '_ {
         (0..self.len).map(|i| Root {
             t: self.items[i],
             rising: self.rising[i],
@@ -55,7 +51,7 @@ impl Roots {
 }
 
 /// Evaluates `c[0] + c[1]·x + … + c[deg]·x^deg` (Horner).
-pub fn eval(c: &[f64], x: f64) -> f64 {
+pub(crate) fn eval(c: &[f64], x: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &k| acc * x + k)
 }
 
@@ -73,7 +69,7 @@ fn eval_d(c: &[f64], x: f64) -> (f64, f64) {
 /// The sign-changing real roots of the polynomial with coefficients `c` (lowest degree first,
 /// at most degree 4) strictly inside `(a, b)`, in increasing order. Roots of even multiplicity
 /// (a ray touching a surface) do not change the sign and are not reported.
-pub fn roots_in(c: &[f64], a: f64, b: f64) -> Roots {
+pub(crate) fn roots_in(c: &[f64], a: f64, b: f64) -> Roots {
     let mut deg = c.len().min(MAX_DEGREE + 1);
     while deg > 0 && c[deg - 1] == 0.0 {
         deg -= 1;
@@ -167,7 +163,7 @@ fn polish(c: &[f64], mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
 
 /// Both real roots of `a·t² + b·t + c` in increasing order (equal for a double root), using the
 /// cancellation-free form; a linear equation gives its one root twice.
-pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
+pub(crate) fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
     if a == 0.0 {
         if b == 0.0 {
             return None;
@@ -185,7 +181,7 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
 }
 
 /// The smallest root in (t_min, t_max) among those `roots` reports (torus and blob hits).
-pub fn nearest_root(
+pub(crate) fn nearest_root(
     t_min: f64,
     t_max: f64,
     roots: impl FnOnce(&mut dyn FnMut(f64, bool)),

@@ -9,7 +9,7 @@ use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
 /// A ring in object space: the points of a disk at least `inner` from its centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ring {
+pub(crate) struct Ring {
     disk: Disk,
     inner: f64,
 }
@@ -17,14 +17,14 @@ pub struct Ring {
 impl Ring {
     /// A ring; `None` for a zero normal, a non-positive radius or a hole that is negative or
     /// not smaller than the radius.
-    pub fn new(center: DVec3, normal: DVec3, radius: f64, inner: f64) -> Option<Ring> {
+    pub(crate) fn new(center: DVec3, normal: DVec3, radius: f64, inner: f64) -> Option<Ring> {
         let disk = Disk::new(center, normal, radius)?;
         (inner >= 0.0 && inner < radius).then_some(Ring { disk, inner })
     }
 
     /// Nearest hit in (t_min, t_max); uv = (angle / 2π, (distance − inner) / (radius − inner)):
     /// v runs across the band from the hole's edge to the rim.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (t, x, y, r2) = self.disk.plane_hit(ray, t_min, t_max)?;
         let radius = self.disk.radius();
         if r2 > radius * radius || r2 < self.inner * self.inner {
@@ -42,12 +42,12 @@ impl Ring {
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane (the disk's).
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         self.disk.point_error(p)
     }
 
     /// Object-space bounds: the whole disk's (the hole does not shrink the box).
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         self.disk.bounds()
     }
 }

@@ -11,7 +11,7 @@ use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 
 /// A torus in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Torus {
+pub(crate) struct Torus {
     center: DVec3,
     major: f64,
     minor: f64,
@@ -19,7 +19,7 @@ pub struct Torus {
 
 impl Torus {
     /// A torus; `None` unless both radii are positive and finite.
-    pub fn new(center: DVec3, major: f64, minor: f64) -> Option<Torus> {
+    pub(crate) fn new(center: DVec3, major: f64, minor: f64) -> Option<Torus> {
         let ok = major > 0.0 && minor > 0.0 && major.is_finite() && minor.is_finite();
         ok.then_some(Torus {
             center,
@@ -28,16 +28,8 @@ impl Torus {
         })
     }
 
-    /// The implicit function, negative inside: `(|p|² + R² − r²)² − 4R²(x² + z²)`.
-    pub fn implicit(&self, p: DVec3) -> f64 {
-        let p = p - self.center;
-        let (r2, s2) = (self.major * self.major, self.minor * self.minor);
-        let k = p.length_squared() + r2 - s2;
-        k * k - 4.0 * r2 * (p.x * p.x + p.z * p.z)
-    }
-
     /// Signed distance to the surface (exact for a torus), negative inside.
-    pub fn distance(&self, p: DVec3) -> f64 {
+    fn distance(&self, p: DVec3) -> f64 {
         let p = p - self.center;
         let ring = DVec2::new(p.x, p.z).norm() - self.major;
         DVec2::new(ring, p.y).norm() - self.minor
@@ -45,13 +37,13 @@ impl Torus {
 
     /// Error bound of a computed point `p` on the torus: its exact signed distance as evaluated,
     /// plus the rounding of that evaluation.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let size = (p - self.center).abs().element_sum() + self.major + self.minor;
         rounding::from_residual(self.distance(p), 10, size)
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         let e = DVec3::new(self.major + self.minor, self.minor, self.major + self.minor);
         Aabb::new(self.center - e, self.center + e)
     }
@@ -112,13 +104,13 @@ impl Torus {
     }
 
     /// Nearest hit in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         crate::geometry::shapes::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
             .map(|t| self.hit(ray, t))
     }
 
     /// Boundary crossings along the whole line.
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
+    pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
         self.roots(ray, |t, rising| {
             out.push(Crossing {
                 hit: self.hit(ray, t),
@@ -128,7 +120,7 @@ impl Torus {
     }
 
     /// True when `p` is inside or on the solid.
-    pub fn contains(&self, p: DVec3) -> bool {
+    pub(crate) fn contains(&self, p: DVec3) -> bool {
         self.distance(p) <= 0.0
     }
 }

@@ -12,23 +12,23 @@ use crate::geometry::{aabb::Aabb, ray::Hit, ray::Ray};
 
 /// A single triangle in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Triangle {
+pub(crate) struct Triangle {
     /// Corners, counter-clockwise seen from the front.
-    pub v: [DVec3; 3],
+    v: [DVec3; 3],
     /// Unit front normal.
-    pub normal: DVec3,
+    normal: DVec3,
 }
 
 impl Triangle {
     /// A triangle from its corners; `None` when it has no area.
-    pub fn new(v: [DVec3; 3]) -> Option<Triangle> {
+    pub(crate) fn new(v: [DVec3; 3]) -> Option<Triangle> {
         let n = (v[1] - v[0]).cross(v[2] - v[0]);
         let normal = n.try_unit()?;
         Some(Triangle { v, normal })
     }
 
     /// Nearest hit in (t_min, t_max); uv are the barycentric weights of v1 and v2.
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         let (t, b) = watertight_f64(&self.v, ray.origin, ray.dir)?;
         (t > t_min && t < t_max).then_some(Hit {
             t,
@@ -38,12 +38,12 @@ impl Triangle {
     }
 
     /// Error bound of a computed point `p` on it: its residual off its plane.
-    pub fn point_error(&self, p: DVec3) -> DVec3 {
+    pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         crate::geometry::shapes::plane::point_error(self.v[0], self.normal, p)
     }
 
     /// Object-space bounds.
-    pub fn bounds(&self) -> Aabb {
+    pub(crate) fn bounds(&self) -> Aabb {
         Aabb::new(
             self.v[0].min(self.v[1]).min(self.v[2]),
             self.v[0].max(self.v[1]).max(self.v[2]),
@@ -85,7 +85,7 @@ fn pick(v: DVec3, k: usize) -> f64 {
 }
 
 /// Watertight test in f64 over the whole line: `(t, barycentrics)` or `None`.
-pub fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
+fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
     let (kx, ky, kz) = shear_axes(dir);
     let d = dir.to_array();
     if d[kz] == 0.0 {
@@ -124,7 +124,7 @@ fn finish(u: f64, v: f64, w: f64, az: f64, bz: f64, cz: f64) -> Option<(f64, [f6
 /// for it (what watertightness needs), in 8 operations per corner where a general 3×3 shear
 /// matrix took 18 (its ones and zeros change no value, only perhaps the sign of a zero).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct ShearedRay {
+pub(crate) struct ShearedRay {
     /// The axes (kx, ky, kz): kz the direction's dominant one.
     axes: [usize; 3],
     /// The origin's coordinates on those axes.
@@ -134,14 +134,18 @@ pub struct ShearedRay {
 }
 
 impl ShearedRay {
-    /// Prepares `origin + t·dir` (in the mesh's space); `None` for a zero direction.
-    pub fn new(origin: DVec3, dir: DVec3) -> Option<ShearedRay> {
+    /// Prepares `origin + t·dir` (in the mesh's space); `None` for a zero direction. With
+    /// `sheared` and `intersect`, the one-triangle reference the tests hold
+    /// [`ShearedRay::intersect4`] to (meshes test whole blocks).
+    #[cfg(test)]
+    fn new(origin: DVec3, dir: DVec3) -> Option<ShearedRay> {
         Self::with_inverse(origin, dir, dir.recip())
     }
 
-    /// Like [`ShearedRay::new`] with `dir.recip()` already known (saves a division).
+    /// Prepares `origin + t·dir` (in the mesh's space) with `dir.recip()` already known;
+    /// `None` for a zero direction.
     #[inline(always)]
-    pub fn with_inverse(origin: DVec3, dir: DVec3, recip: DVec3) -> Option<ShearedRay> {
+    pub(crate) fn with_inverse(origin: DVec3, dir: DVec3, recip: DVec3) -> Option<ShearedRay> {
         let (kx, ky, kz) = shear_axes(dir);
         if pick(dir, kz) == 0.0 {
             return None;
@@ -160,7 +164,7 @@ impl ShearedRay {
     }
 
     /// The sheared coordinates of the vertex `v`.
-    #[inline(always)]
+    #[cfg(test)]
     fn sheared(&self, v: Vec3A) -> Vec3A {
         let [kx, ky, kz] = self.axes;
         let [ox, oy, oz] = self.origin;
@@ -173,8 +177,8 @@ impl ShearedRay {
     ///
     /// Edge functions are evaluated in f32; when one is exactly zero (the ray passes through
     /// an edge or vertex) they are recomputed exactly in f64, as the paper prescribes.
-    #[inline]
-    pub fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
+    #[cfg(test)]
+    fn intersect(&self, v: &[Vec3A; 3]) -> Option<(f32, [f32; 3])> {
         let [a, b, c] = v.map(|v| self.sheared(v));
         let (ax, ay, bx, by, cx, cy) = (a.x, a.y, b.x, b.y, c.x, c.y);
         let mut u = cx * by - cy * bx;
@@ -202,14 +206,15 @@ impl ShearedRay {
         Some((t, [u * inv, vv * inv, w * inv]))
     }
 
-    /// [`ShearedRay::intersect`] on the first `lanes` triangles of a block at once.
+    /// `ShearedRay::intersect` (the tests' one-triangle reference) on the first `lanes`
+    /// triangles of a block at once.
     ///
     /// Every lane goes through the same f32 operations in the same order as the one-triangle
     /// test (the same shear and the same f64 recomputation of a zero edge function), so each
     /// lane's edge functions, and the `t` and barycentrics of [`Edges4::hit`], are
     /// bit-identical to it.
     #[inline(always)]
-    pub fn intersect4(&self, block: &TriBlock, lanes: usize) -> Edges4 {
+    pub(crate) fn intersect4(&self, block: &TriBlock, lanes: usize) -> Edges4 {
         let [kx, ky, kz] = self.axes;
         let [ox, oy, oz] = self.origin.map(Vec4::splat);
         let [sx, sy, sz] = self.shear.map(Vec4::splat);
@@ -252,19 +257,19 @@ impl ShearedRay {
 /// Four triangles' corners side by side for [`ShearedRay::intersect4`]: `v[corner][axis]`
 /// holds that coordinate of the four triangles, one per lane.
 #[derive(Clone, Copy, Debug)]
-pub struct TriBlock {
+pub(crate) struct TriBlock {
     /// Corner coordinates, one triangle per lane.
-    pub v: [[Vec4; 3]; 3],
+    v: [[Vec4; 3]; 3],
 }
 
 impl TriBlock {
     /// A block with no triangles (NaN corners: unused lanes are masked, never tested).
-    pub const EMPTY: TriBlock = TriBlock {
+    pub(crate) const EMPTY: TriBlock = TriBlock {
         v: [[Vec4::NAN; 3]; 3],
     };
 
     /// Stores a triangle's corners in `lane`.
-    pub fn set(&mut self, lane: usize, corners: [Vec3; 3]) {
+    pub(crate) fn set(&mut self, lane: usize, corners: [Vec3; 3]) {
         for (k, p) in corners.iter().enumerate() {
             for axis in 0..3 {
                 self.v[k][axis][lane] = p[axis];
@@ -274,7 +279,7 @@ impl TriBlock {
 
     /// The corners of the triangle in `lane`.
     #[inline]
-    pub fn corners(&self, lane: usize) -> [Vec3A; 3] {
+    pub(crate) fn corners(&self, lane: usize) -> [Vec3A; 3] {
         self.v
             .map(|c| Vec3A::new(c[0][lane], c[1][lane], c[2][lane]))
     }
@@ -282,20 +287,20 @@ impl TriBlock {
 
 /// The edge functions of a block's triangles against one ray, and the lanes the ray meets.
 #[derive(Clone, Copy, Debug)]
-pub struct Edges4 {
+pub(crate) struct Edges4 {
     u: Vec4,
     v: Vec4,
     w: Vec4,
     /// The sheared corners' z, per corner.
     z: [Vec4; 3],
     /// Bit `l` set: the line meets the triangle in lane `l`.
-    pub mask: u32,
+    pub(crate) mask: u32,
 }
 
 impl Edges4 {
     /// `(t, barycentrics)` of a lane in [`Edges4::mask`], as [`ShearedRay::intersect`] gives them.
     #[inline(always)]
-    pub fn hit(&self, lane: usize) -> (f32, [f32; 3]) {
+    pub(crate) fn hit(&self, lane: usize) -> (f32, [f32; 3]) {
         let (u, vv, w) = (self.u[lane], self.v[lane], self.w[lane]);
         let det = u + vv + w;
         let t = (u * self.z[0][lane] + vv * self.z[1][lane] + w * self.z[2][lane]) / det;

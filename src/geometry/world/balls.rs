@@ -19,21 +19,21 @@ pub(crate) const BALL: u32 = 1 << 31;
 
 /// An untransformed, unmoving sphere of the world.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ball {
+pub(crate) struct Ball {
     /// Centre (world space).
-    pub center: DVec3,
+    pub(crate) center: DVec3,
     /// Radius.
-    pub radius: f64,
+    pub(crate) radius: f64,
     /// The material to shade with.
-    pub material: MaterialId,
+    pub(crate) material: MaterialId,
     /// The top-level scene object it is.
-    pub object: u32,
+    pub(crate) object: u32,
 }
 
 impl Ball {
     /// The ball a prepared top-level object is, when it is a plain sphere (no transform, no
     /// motion); `object` is its index among the scene's objects.
-    pub fn of(p: &Primitive, object: u32) -> Option<Ball> {
+    fn of(p: &Primitive, object: u32) -> Option<Ball> {
         match (&p.geom, &p.placement, &p.moving) {
             (Geom::Leaf(Leaf::Sphere { center, radius }), None, None) => Some(Ball {
                 center: *center,
@@ -46,7 +46,7 @@ impl Ball {
     }
 
     /// The surface id of ball number `index`.
-    pub(crate) fn surface(index: u32) -> SurfaceId {
+    fn surface(index: u32) -> SurfaceId {
         SurfaceId(BALL | index)
     }
 
@@ -106,17 +106,12 @@ impl Ball {
     pub(crate) fn bounds(&self) -> Aabb {
         sphere::bounds(self.center, self.radius)
     }
-
-    /// Whether the point is inside the ball.
-    pub(crate) fn contains(&self, p: DVec3) -> bool {
-        sphere::contains(self.center, self.radius, p)
-    }
 }
 
 /// The prepared top-level objects of a world, as the preparation stage hands them over: plain
 /// spheres go straight into compact storage, everything else stays a [`Primitive`].
 #[derive(Debug, Default)]
-pub struct WorldParts {
+pub(crate) struct WorldParts {
     pub(crate) nodes: Vec<Primitive>,
     /// Scene object index of each node (increasing).
     pub(crate) object_of: Vec<u32>,
@@ -126,7 +121,7 @@ pub struct WorldParts {
 impl WorldParts {
     /// Adds the prepared top-level object `p`, scene object number `object` (objects are added
     /// in increasing order).
-    pub fn push(&mut self, p: Primitive, object: u32) {
+    pub(crate) fn push(&mut self, p: Primitive, object: u32) {
         match Ball::of(&p, object) {
             Some(b) => self.balls.push(b),
             None => {
@@ -138,18 +133,8 @@ impl WorldParts {
 
     /// Adds a ball made without its primitive (what [`WorldParts::push`] would make of it),
     /// scene object number `b.object` (objects are added in increasing order).
-    pub fn push_ball(&mut self, b: Ball) {
+    pub(crate) fn push_ball(&mut self, b: Ball) {
         self.balls.push(b);
-    }
-
-    /// The objects added so far.
-    pub fn len(&self) -> usize {
-        self.nodes.len() + self.balls.len()
-    }
-
-    /// True when nothing was added.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
     }
 }
 

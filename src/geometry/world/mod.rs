@@ -1,9 +1,9 @@
 //! The world the renderer queries: every object prepared for intersection in world space,
 //! bounded ones under one top-level BVH, unbounded ones (planes) tested beside it.
 
-pub mod balls;
+pub(crate) mod balls;
 mod packet;
-pub mod primitive;
+pub(crate) mod primitive;
 mod reach;
 
 use std::time::Duration;
@@ -36,7 +36,7 @@ pub struct SurfaceHit {
     /// Surface coordinates.
     pub uv: DVec2,
     /// Hit point in the leaf object's own space (for solid textures).
-    pub local_point: DVec3,
+    pub(crate) local_point: DVec3,
     /// The hit point as the object computed it and moved it out to world space (equal to
     /// `point` up to rounding); `error` bounds its distance from the surface per axis. Spawned
     /// rays leave from here (`render::offset`).
@@ -69,13 +69,13 @@ struct SurfaceInfo {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct WorldStats {
     /// Top-level objects.
-    pub objects: usize,
+    pub(crate) objects: usize,
     /// Objects outside the BVH (unbounded).
-    pub unbounded: usize,
+    pub(crate) unbounded: usize,
     /// Time spent building the top-level BVH.
-    pub bvh_build_time: Duration,
+    pub(crate) bvh_build_time: Duration,
     /// Approximate heap bytes of the objects and the top-level BVH (meshes not included).
-    pub memory_bytes: usize,
+    pub(crate) memory_bytes: usize,
 }
 
 /// All objects of a scene, ready for ray queries.
@@ -85,8 +85,6 @@ pub struct World {
     need_uv: bool,
     /// Every object but the plain spheres. Object ids index it, or `balls` when tagged [`BALL`].
     nodes: Vec<Primitive>,
-    /// Scene object index of each node.
-    object_of: Vec<u32>,
     /// The untransformed, unmoving spheres (compact: most objects of a large scene).
     balls: Vec<Ball>,
     /// Every leaf and mesh node by its [`SurfaceId`].
@@ -113,7 +111,7 @@ const MIN_BVH_OBJECTS: usize = 12;
 /// over Morton runs of [`LARGE_LEAF`] objects (`Bvh::build_clustered`, as for large meshes):
 /// for a million spheres the medium build's reinsertion passes alone took longer than
 /// evaluating the scene, and a render of such a scene is dominated by its time to first ray.
-pub const LARGE_WORLD: usize = 300_000;
+const LARGE_WORLD: usize = 300_000;
 
 /// Most objects in a leaf of a large world's BVH.
 const LARGE_LEAF: u32 = 4;
@@ -124,12 +122,12 @@ const LARGE_LEAF: u32 = 4;
 /// took 15% less CPU for the whole render, and still 6% less at 16 samples a pixel (~100 rays
 /// an object); on 20k scattered spheres of mixed sizes with reflections (~120 rays an
 /// object) the medium build was 6% faster, and on 100k of them (~24) the two tied.
-pub const QUALITY_RAYS_PER_OBJECT: u64 = 32;
+const QUALITY_RAYS_PER_OBJECT: u64 = 32;
 
 impl World {
     /// The world of the prepared top-level objects, for a frame expected to trace about
     /// `expected_rays` rays (which decides how much effort its BVH's build is worth).
-    pub fn new(parts: WorldParts, expected_rays: u64) -> World {
+    pub(crate) fn new(parts: WorldParts, expected_rays: u64) -> World {
         let WorldParts {
             mut nodes,
             object_of,
@@ -211,7 +209,6 @@ impl World {
         };
         drop(boxes);
         stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>()
-            + object_of.len() * 4
             + balls.len() * std::mem::size_of::<Ball>()
             + surfaces.len() * std::mem::size_of::<SurfaceInfo>();
         let (spheres, loose): (Vec<u32>, Vec<u32>) =
@@ -226,7 +223,6 @@ impl World {
             spheres,
             sphere_ids,
             nodes,
-            object_of,
             balls,
             surfaces,
             bvh,
@@ -259,24 +255,14 @@ impl World {
         }
     }
 
-    /// Number of top-level objects.
-    pub fn len(&self) -> usize {
-        self.nodes.len() + self.balls.len()
-    }
-
-    /// True when there is nothing to hit.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
     /// Build counters.
-    pub fn stats(&self) -> WorldStats {
+    pub(crate) fn stats(&self) -> WorldStats {
         self.stats
     }
 
     /// Tells the world whether hits must carry uv; renderers that use no textures, bump maps or
     /// hatching switch it off, which saves an `acos` and an `atan2` per sphere hit.
-    pub fn need_uv(&mut self, needed: bool) {
+    pub(crate) fn need_uv(&mut self, needed: bool) {
         self.need_uv = needed;
     }
 
@@ -308,7 +294,7 @@ impl World {
     }
 
     /// The loose spheres a bundle of ray segments may meet at all, for
-    /// [`World::intersect_among`] and [`World::occluded_among`] (`geometry::lanes::cull`).
+    /// [`World::nearest_sphere`] and [`World::occluded_among`] (`geometry::lanes::cull`).
     pub fn among(&self, bundle: &Bundle) -> Among {
         if self.spheres.is_empty() {
             return Among::ALL;
@@ -316,24 +302,11 @@ impl World {
         self.spheres.among(bundle)
     }
 
-    /// [`World::intersect`] of a ray of the bundle `among` was made of, in a sub-interval of
-    /// its segment: the same hit, without testing the loose spheres the bundle cannot meet
-    /// ([`Among::ALL`]: all of them, in lanes).
-    #[inline(always)]
-    pub fn intersect_among(
-        &self,
-        ray: &Ray,
-        t_min: f64,
-        t_max: f64,
-        among: Among,
-    ) -> Option<SurfaceHit> {
-        let first = self.nearest_sphere(ray, t_min, t_max, among);
-        self.intersect_after(ray, t_min, t_max, first)
-    }
-
-    /// The first half of [`World::intersect_among`]: the nearest loose sphere's `t` only, so a
-    /// batch of rays can find theirs before any of them builds its hit (their chains of square
-    /// roots and divisions overlap).
+    /// The first half of [`World::intersect`] for a ray of the bundle `among` was made of, in a
+    /// sub-interval of its segment: the nearest loose sphere's `t` only, without testing the
+    /// loose spheres the bundle cannot meet ([`Among::ALL`]: all of them, in lanes), so a batch
+    /// of rays can find theirs before any of them builds its hit (their chains of square roots
+    /// and divisions overlap).
     #[inline(always)]
     pub fn nearest_sphere(&self, ray: &Ray, t_min: f64, t_max: f64, among: Among) -> SphereHit {
         SphereHit(if among == Among::ALL {
@@ -343,7 +316,8 @@ impl World {
         })
     }
 
-    /// The second half of [`World::intersect_among`]: everything else, and the hit. Always
+    /// The second half, after [`World::nearest_sphere`]: everything else, and the same hit as
+    /// [`World::intersect`]. Always
     /// inlined: returned through memory, the 176-byte hit was reloaded in wider pieces than it
     /// was stored in, which stalled on store forwarding (~5% of scene A's time).
     #[inline(always)]
@@ -521,7 +495,7 @@ impl World {
 
     /// The frame texture mappings read a hit's `local_point` in: its leaf shape's (a sphere's
     /// own centre, even inside CSG), else the object-space origin.
-    pub fn frame(&self, hit: &SurfaceHit) -> MappingFrame {
+    pub(crate) fn frame(&self, hit: &SurfaceHit) -> MappingFrame {
         if let Some(b) = self.ball(hit) {
             return b.frame();
         }
@@ -536,17 +510,6 @@ impl World {
         (id & BALL != 0)
             .then(|| self.balls.get((id & !BALL) as usize))
             .flatten()
-    }
-
-    /// Whether a world point is inside the solid object `object` (CSG checks and tests).
-    pub fn contains(&self, object: u32, p: DVec3) -> bool {
-        if let Some(b) = self.balls.iter().find(|b| b.object == object) {
-            return b.contains(p);
-        }
-        self.object_of
-            .iter()
-            .position(|&o| o == object)
-            .is_some_and(|i| self.nodes[i].contains(p))
     }
 }
 
@@ -568,7 +531,7 @@ fn number_surfaces(n: &mut Primitive, object: u32, surfaces: &mut Vec<SurfaceInf
 }
 
 /// Triangles a prepared object places, counting every instance.
-pub fn instanced_triangles(n: &Primitive) -> usize {
+pub(crate) fn instanced_triangles(n: &Primitive) -> usize {
     match &n.geom {
         Geom::Mesh(m) => m.data.triangle_count(),
         Geom::Csg { children, .. } => children.iter().map(instanced_triangles).sum(),

@@ -1,18 +1,19 @@
 //! The world's queries for a packet of rays ([`crate::geometry::lanes`]): the loose spheres
-//! are tested on all rays at once ([`crate::geometry::lanes::sphere_packet`]); everything else ray by
-//! ray, as [`World::intersect_among`] and [`World::occluded_among`] test it. Each ray gets
-//! exactly the answer it gets alone.
+//! are tested on all rays at once ([`crate::geometry::lanes::sphere_packet`]); everything else
+//! ray by ray, as [`World::intersect_after`] and [`World::occluded_among`] test it. Each ray
+//! gets exactly the answer it gets alone.
 
 use super::{BALL, Ball, SphereHit, World};
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::lanes::cull::Among;
 use crate::geometry::lanes::sphere_packet::{NO_SPHERE, PacketHits};
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes};
 use crate::geometry::ray::Ray;
+use crate::lanes::{self, Lanes, Mask};
 
 impl SphereHit {
     /// The nearest loose sphere of a ray from a packet query ([`World::nearest_packet`]):
     /// lane `i` of `hits`.
-    pub fn of_lane(hits: &PacketHits, i: usize) -> SphereHit {
+    pub(crate) fn of_lane(hits: &PacketHits, i: usize) -> SphereHit {
         SphereHit((hits.sphere[i] != NO_SPHERE).then(|| (hits.sphere[i] as usize, hits.t[i])))
     }
 }
@@ -20,18 +21,18 @@ impl SphereHit {
 impl World {
     /// Whether every object is a loose sphere (no BVH, nothing unbounded or of another
     /// kind): then a packet's loose-sphere answers are the whole answers.
-    pub fn balls_only(&self) -> bool {
+    pub(crate) fn balls_only(&self) -> bool {
         self.loose.is_empty() && self.bvh.is_none()
     }
 
     /// Whether the world has loose spheres (the packet queries' fast part).
-    pub fn has_loose_spheres(&self) -> bool {
+    pub(crate) fn has_loose_spheres(&self) -> bool {
         !self.spheres.is_empty()
     }
 
     /// [`World::nearest_sphere`] of every ray of `live` (the loose spheres of `among` only).
     #[inline]
-    pub fn nearest_packet(
+    pub(crate) fn nearest_packet(
         &self,
         rays: &RayLanes,
         live: Mask,
@@ -43,13 +44,13 @@ impl World {
     }
 
     /// The loose sphere at lane position `k` of a packet query.
-    pub fn loose_ball(&self, k: u32) -> &Ball {
+    pub(crate) fn loose_ball(&self, k: u32) -> &Ball {
         &self.balls[(self.sphere_ids[k as usize] & !BALL) as usize]
     }
 
     /// [`World::occluded_among`] of every ray of `live` (at times `time`), each in
     /// (t_min, t_max[i]): the rays something blocks.
-    pub fn occluded_packet(
+    pub(crate) fn occluded_packet(
         &self,
         rays: &RayLanes,
         time: &Lanes,

@@ -16,50 +16,50 @@ use crate::ir::{CsgOp, MaterialId, Motion};
 
 /// A hit with everything shading needs, in the space of the ray that was given.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct GeoHit {
+pub(crate) struct GeoHit {
     /// Ray parameter.
-    pub t: f64,
+    pub(crate) t: f64,
     /// Unit shading normal (interpolated on smooth meshes), outward.
-    pub normal: DVec3,
+    pub(crate) normal: DVec3,
     /// Unit geometric normal, outward.
-    pub geometric_normal: DVec3,
+    pub(crate) geometric_normal: DVec3,
     /// Surface coordinates.
-    pub uv: DVec2,
+    pub(crate) uv: DVec2,
     /// The hit point in the leaf object's own space.
-    pub local_point: DVec3,
+    pub(crate) local_point: DVec3,
     /// The hit point in the space of the ray that was given, moved out from `local_point`
     /// through every transform on the way (so `error` bounds it).
-    pub point: DVec3,
+    pub(crate) point: DVec3,
     /// Per-axis bound on how far `point` may lie from the true surface (see
     /// [`crate::geometry::rounding`]).
-    pub error: DVec3,
+    pub(crate) error: DVec3,
     /// The surface hit (see [`SurfaceId`]).
-    pub surface: SurfaceId,
+    pub(crate) surface: SurfaceId,
     /// The material to shade with.
-    pub material: MaterialId,
+    pub(crate) material: MaterialId,
 }
 
 /// A boundary crossing of a solid node (for CSG).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PrimitiveCrossing {
+struct PrimitiveCrossing {
     /// The hit.
-    pub hit: GeoHit,
+    hit: GeoHit,
     /// Outside → inside.
-    pub entering: bool,
+    entering: bool,
 }
 
 /// A mesh placed by an object.
 #[derive(Clone, Debug)]
-pub struct MeshRef {
+pub(crate) struct MeshRef {
     /// The shared data (instanced by path and smoothing).
-    pub data: Arc<Mesh>,
+    pub(crate) data: Arc<Mesh>,
     /// Material id of each of the file's MTL materials, when the object uses them.
-    pub mtl: Option<Vec<MaterialId>>,
+    pub(crate) mtl: Option<Vec<MaterialId>>,
 }
 
 /// Geometry of one node, in object space.
 #[derive(Clone, Debug)]
-pub enum Geom {
+pub(crate) enum Geom {
     /// A single shape (see [`Leaf`]).
     Leaf(Leaf),
     /// A triangle mesh.
@@ -75,18 +75,18 @@ pub enum Geom {
 
 /// Object-to-parent placement.
 #[derive(Clone, Debug)]
-pub struct Placement {
+pub(crate) struct Placement {
     /// Parent → object.
-    pub to_object: DAffine3,
+    to_object: DAffine3,
     /// Object → parent.
-    pub to_parent: DAffine3,
+    to_parent: DAffine3,
     /// Normal matrix (inverse transpose of the linear part of `to_parent`).
-    pub normal_matrix: DMat3,
+    normal_matrix: DMat3,
 }
 
 impl Placement {
     /// The placement by `transform` (which must be invertible).
-    pub fn of(transform: DAffine3) -> Placement {
+    fn of(transform: DAffine3) -> Placement {
         Placement {
             to_object: transform.inverse(),
             to_parent: transform,
@@ -97,29 +97,29 @@ impl Placement {
 
 /// A node that moves while the shutter is open: its placement at shutter open and its motion.
 #[derive(Clone, Debug)]
-pub struct Moving {
+pub(crate) struct Moving {
     /// Object → parent at shutter open.
-    pub transform: DAffine3,
+    transform: DAffine3,
     /// How that placement changes up to shutter close.
-    pub motion: Motion,
+    motion: Motion,
 }
 
 /// A prepared object.
 #[derive(Clone, Debug)]
-pub struct Primitive {
+pub(crate) struct Primitive {
     /// Geometry in object space.
-    pub geom: Geom,
+    pub(crate) geom: Geom,
     /// `None` for the identity (boxed: most objects of a large scene are untransformed, and
     /// the placement's three matrices would triple an untransformed sphere's size).
-    pub placement: Option<Box<Placement>>,
+    pub(crate) placement: Option<Box<Placement>>,
     /// Material of this node (inherited by CSG children that name none).
-    pub material: MaterialId,
+    pub(crate) material: MaterialId,
     /// Bounds in the parent's space (infinite for unbounded geometry).
-    pub bounds: Aabb,
+    pub(crate) bounds: Aabb,
     /// The surface a leaf or mesh node is, once the world has numbered them.
-    pub surface: SurfaceId,
+    pub(crate) surface: SurfaceId,
     /// `None` for a node that stands still; `placement` is then its placement at every time.
-    pub moving: Option<Box<Moving>>,
+    pub(crate) moving: Option<Box<Moving>>,
 }
 
 /// A surface of the world: one leaf shape or mesh, wherever it sits (a top-level object or an
@@ -129,7 +129,7 @@ pub struct SurfaceId(pub u32);
 
 impl Primitive {
     /// Wraps geometry with a transform (which must be invertible) and a material.
-    pub fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
+    pub(crate) fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();
         let placement =
             (transform != DAffine3::IDENTITY).then(|| Box::new(Placement::of(transform)));
@@ -149,7 +149,7 @@ impl Primitive {
 
     /// Like [`Primitive::new`] for a node placed by `transform` at shutter open that moves by
     /// `motion` until shutter close; its bounds cover the whole motion.
-    pub fn moving(
+    pub(crate) fn moving(
         geom: Geom,
         transform: DAffine3,
         motion: Motion,
@@ -238,7 +238,7 @@ impl Primitive {
     }
 
     /// Nearest hit in (t_min, t_max).
-    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+    pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
         // Spheres: the quadratic is cheaper than a slab test, and uv waits for `finish`.
         if let Geom::Leaf(Leaf::Sphere { center, radius }) = &self.geom {
             let place = self.placement_at(ray);
@@ -281,14 +281,14 @@ impl Primitive {
     }
 
     /// Completes what `intersect` leaves out for speed (a sphere's uv) on the hit that wins.
-    pub fn finish(&self, h: &mut GeoHit) {
+    pub(crate) fn finish(&self, h: &mut GeoHit) {
         if let Geom::Leaf(l @ Leaf::Sphere { .. }) = &self.geom {
             h.uv = l.frame().spherical_uv(h.local_point);
         }
     }
 
     /// True when anything of this node lies in (t_min, t_max).
-    pub fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+    pub(crate) fn occluded(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
         match &self.geom {
             Geom::Leaf(Leaf::Sphere { center, radius }) => {
                 let place = self.placement_at(ray);
@@ -309,14 +309,14 @@ impl Primitive {
 
     /// Whether [`Primitive::intersect_packet`] and [`Primitive::occluded_packet`] trace rays
     /// together here (a mesh fixed in place) rather than one by one.
-    pub fn packets(&self) -> bool {
+    pub(crate) fn packets(&self) -> bool {
         matches!(self.geom, Geom::Mesh(_)) && self.moving.is_none()
     }
 
     /// [`Primitive::intersect`] of up to [`PACKET`] rays with their own `t_max`: `hit(i, h)`
     /// for each ray `i` that has a hit, `h` bit for bit `intersect(&rays[i], t_min, t_max[i])`.
     /// A mesh traces them as a packet.
-    pub fn intersect_packet(
+    pub(crate) fn intersect_packet(
         &self,
         rays: &[Ray],
         t_min: f64,
@@ -349,7 +349,13 @@ impl Primitive {
 
     /// [`Primitive::occluded`] of the rays of `active` (bits) with their own `t_max`: the
     /// rays it holds for. A mesh traces them as a packet.
-    pub fn occluded_packet(&self, rays: &[Ray], t_min: f64, t_max: &[f64], active: u32) -> u32 {
+    pub(crate) fn occluded_packet(
+        &self,
+        rays: &[Ray],
+        t_min: f64,
+        t_max: &[f64],
+        active: u32,
+    ) -> u32 {
         let n = rays.len();
         let each = |i: usize| active >> i & 1 == 1;
         let (Geom::Mesh(m), true) = (&self.geom, self.packets()) else {
@@ -395,7 +401,7 @@ impl Primitive {
     }
 
     /// Whether the ray's line starts (at t → −∞) inside this solid.
-    pub fn inside_at_start(&self, ray: &Ray) -> bool {
+    fn inside_at_start(&self, ray: &Ray) -> bool {
         let place = self.placement_at(ray);
         let r = Self::local(place.as_deref(), ray);
         match &self.geom {
@@ -408,7 +414,7 @@ impl Primitive {
     }
 
     /// Every boundary crossing along the whole line of `ray`, sorted by `t` (solids only).
-    pub fn crossings(&self, ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
+    fn crossings(&self, ray: &Ray, out: &mut Vec<PrimitiveCrossing>) {
         if self.bounds.is_empty()
             || (self.bounds.is_finite()
                 && self
@@ -453,20 +459,6 @@ impl Primitive {
             }
         }
         out[start..].sort_by(|a, b| a.hit.t.total_cmp(&b.hit.t));
-    }
-
-    /// Point membership (closed solids; surfaces contain nothing), in the parent's space (a
-    /// moving node at its shutter-open placement).
-    pub fn contains(&self, p: DVec3) -> bool {
-        let q = match &self.placement {
-            None => p,
-            Some(pl) => pl.to_object.transform_point3(p),
-        };
-        match &self.geom {
-            Geom::Leaf(l) => l.contains(q),
-            Geom::Mesh(m) => mesh_contains(&m.data, q),
-            Geom::Csg { op, children } => csg::combine(*op, children.iter().map(|c| c.contains(q))),
-        }
     }
 }
 
@@ -570,17 +562,9 @@ fn csg_intersect(
         .find(|h| h.t > t_min && h.t < t_max)
 }
 
-/// Parity of crossings of a ray from `p` along a fixed odd direction (closed meshes).
-fn mesh_contains(m: &Mesh, p: DVec3) -> bool {
-    let dir = DVec3::new(0.5773, 0.5774, 0.5771);
-    let mut hits = Vec::new();
-    m.all_hits(&Ray::new(p, dir), &mut hits);
-    hits.iter().filter(|(h, _)| h.t > 0.0).count() % 2 == 1
-}
-
 impl Geom {
     /// Object-space bounds (infinite for planes; CSG per its operation).
-    pub fn bounds(&self) -> Aabb {
+    fn bounds(&self) -> Aabb {
         match self {
             Geom::Leaf(l) => l.bounds(),
             Geom::Mesh(m) => m.data.bounds(),

@@ -11,8 +11,8 @@ use wide::f64x4;
 
 use super::World;
 use crate::geometry::aabb::Aabb;
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{Lanes, Mask, RayLanes, WIDTH};
+use crate::geometry::lanes::RayLanes;
+use crate::lanes::{self, Lanes, Mask, WIDTH};
 
 /// Relative padding of the world's box and relative slack of the slab test: far above the
 /// test's rounding (a few ulps, ~1e-15) and far below anything a scene can resolve.
@@ -34,7 +34,7 @@ impl World {
     /// The rays of `live` that may meet something from t = 0 on (all of them when something
     /// is unbounded); the others meet nothing at all.
     #[inline]
-    pub fn may_meet(&self, rays: &RayLanes, live: Mask) -> Mask {
+    pub(crate) fn may_meet(&self, rays: &RayLanes, live: Mask) -> Mask {
         match self.reach {
             None => live,
             Some(reach) => meet_box(reach, rays, live),
@@ -52,7 +52,7 @@ fn meet_box(reach: Aabb, rays: &RayLanes, live: Mask) -> Mask {
     let (o, d) = (&rays.origin, &rays.dir);
     let mut open = 0;
     for q in 0..WIDTH / 4 {
-        let at = |v: &Lanes| simd::quad(v, q);
+        let at = |v: &Lanes| lanes::quad(v, q);
         let (ox, oy, oz) = (at(&o.x), at(&o.y), at(&o.z));
         let (dx, dy, dz) = (at(&d.x), at(&d.y), at(&d.z));
         let (nx, fx) = slab(reach.min.x, reach.max.x, ox, dx);
@@ -94,12 +94,13 @@ mod tests {
     use glam::{DAffine3, DVec3};
 
     use super::*;
+    use crate::geometry::ray::Ray;
     use crate::geometry::shapes::Leaf;
     use crate::geometry::world::balls::WorldParts;
     use crate::geometry::world::primitive::Geom;
     use crate::geometry::world::primitive::Primitive;
-    use crate::geometry::{lanes, ray::Ray};
     use crate::ir::MaterialId;
+    use crate::lanes;
     use crate::num::Norm;
 
     fn sphere(center: DVec3, radius: f64, stretch: DVec3) -> Primitive {

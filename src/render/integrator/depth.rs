@@ -16,7 +16,7 @@ use crate::render::tiles;
 use crate::render::view::FirstRays;
 
 /// The depth-image integrator with its distance range.
-pub struct DepthImage<'a> {
+pub(crate) struct DepthImage<'a> {
     scene: &'a Prepared,
     near: f64,
     far: f64,
@@ -24,12 +24,12 @@ pub struct DepthImage<'a> {
 
 impl<'a> DepthImage<'a> {
     /// The scene it images.
-    pub fn scene(&self) -> &'a Prepared {
+    pub(crate) fn scene(&self) -> &'a Prepared {
         self.scene
     }
 
     /// The integrator for `range`; an automatic range is measured over the rays of `first`.
-    pub fn new(
+    pub(crate) fn new(
         scene: &'a Prepared,
         range: DepthRange,
         first: &FirstRays<'_>,
@@ -43,7 +43,7 @@ impl<'a> DepthImage<'a> {
     }
 
     /// The grey of the first hit along `ray`.
-    pub fn color(&self, ray: &Ray) -> Color {
+    pub(crate) fn color(&self, ray: &Ray) -> Color {
         self.scene
             .world()
             .intersect(ray, 0.0, f64::INFINITY)
@@ -52,7 +52,7 @@ impl<'a> DepthImage<'a> {
 }
 
 /// The grey of a hit at distance `t` for the range `near..far`.
-pub fn grey(t: f64, near: f64, far: f64) -> Color {
+fn grey(t: f64, near: f64, far: f64) -> Color {
     let g = if far == near {
         if t <= near { 1.0 } else { 0.0 }
     } else {

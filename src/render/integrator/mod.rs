@@ -2,8 +2,8 @@
 //! with its own state. Adding a mode is a variant of `ir::RenderMode`, a file here and a line
 //! in [`Integrator::new`], [`Integrator::channels`] and [`Integrator::sample`].
 
-pub mod depth;
-pub mod normal;
+pub(crate) mod depth;
+mod normal;
 pub mod whitted;
 
 use crate::diag::Diagnostic;
@@ -21,7 +21,7 @@ use normal::NormalImage;
 use whitted::Whitted;
 
 /// The integrator of a render (a closed set, dispatched by `match`).
-pub enum Integrator<'a> {
+pub(crate) enum Integrator<'a> {
     /// Shaded colour: Whitted recursion with a shading model.
     Whitted(Whitted<'a>),
     /// The first hit's normal as a colour.
@@ -33,7 +33,7 @@ pub enum Integrator<'a> {
 impl<'a> Integrator<'a> {
     /// The integrator for `scene`'s mode. Image-wide passes run here, before any pixel (the
     /// depth range of an automatic depth image, over the camera samples of `first`).
-    pub fn new(
+    pub(crate) fn new(
         scene: &'a Prepared,
         first: &FirstRays<'_>,
         pool: &rayon::ThreadPool,
@@ -48,7 +48,7 @@ impl<'a> Integrator<'a> {
     }
 
     /// The film channels it fills, in the order of [`Integrator::sample`]'s output.
-    pub fn channels(&self) -> &'static [Channel] {
+    pub(crate) fn channels(&self) -> &'static [Channel] {
         match self {
             Integrator::Whitted(_) | Integrator::Normal(_) | Integrator::Depth(_) => {
                 &[Channel::Color]
@@ -58,7 +58,7 @@ impl<'a> Integrator<'a> {
 
     /// The Whitted integrator when it can trace a pixel's samples side by side
     /// ([`Whitted::trace_batch`]).
-    pub fn batch(&self) -> Option<&Whitted<'a>> {
+    pub(crate) fn batch(&self) -> Option<&Whitted<'a>> {
         match self {
             Integrator::Whitted(w) if w.batches() => Some(w),
             _ => None,
@@ -66,13 +66,13 @@ impl<'a> Integrator<'a> {
     }
 
     /// One camera ray's value for each channel, into `out`.
-    pub fn sample(&self, ray: &Ray, ctx: &mut Ctx, out: &mut [Color]) {
+    pub(crate) fn sample(&self, ray: &Ray, ctx: &mut Ctx, out: &mut [Color]) {
         self.sample_with(ray, ctx, out, &mut NoRecord);
     }
 
     /// [`Integrator::sample`], telling `rec` what the ray meets (`rtc why`). The first-hit
     /// images report their camera ray and its hit.
-    pub fn sample_with<R: Recorder>(
+    pub(crate) fn sample_with<R: Recorder>(
         &self,
         ray: &Ray,
         ctx: &mut Ctx,

@@ -8,23 +8,23 @@ use crate::ir::Color;
 use crate::opt::Prepared;
 
 /// The normal-image integrator.
-pub struct NormalImage<'a> {
+pub(crate) struct NormalImage<'a> {
     scene: &'a Prepared,
 }
 
 impl<'a> NormalImage<'a> {
     /// The scene it images.
-    pub fn scene(&self) -> &'a Prepared {
+    pub(crate) fn scene(&self) -> &'a Prepared {
         self.scene
     }
 
     /// The integrator for `scene`.
-    pub fn new(scene: &'a Prepared) -> NormalImage<'a> {
+    pub(crate) fn new(scene: &'a Prepared) -> NormalImage<'a> {
         NormalImage { scene }
     }
 
     /// The colour of the first hit along `ray`.
-    pub fn color(&self, ray: &Ray) -> Color {
+    pub(crate) fn color(&self, ray: &Ray) -> Color {
         self.scene
             .world()
             .intersect(ray, 0.0, f64::INFINITY)
@@ -33,6 +33,6 @@ impl<'a> NormalImage<'a> {
 }
 
 /// The colour that encodes a unit normal.
-pub fn encode(n: DVec3) -> Color {
+fn encode(n: DVec3) -> Color {
     (n + DVec3::ONE) * 0.5
 }

@@ -85,7 +85,7 @@ impl<'a> Whitted<'a> {
     }
 
     /// [`Whitted::trace`], telling `rec` what the ray meets (`rtc why`).
-    pub fn trace_with<R: Recorder>(
+    pub(crate) fn trace_with<R: Recorder>(
         &self,
         ray: &Ray,
         path: Path,

@@ -17,7 +17,7 @@ fn cos_max(gloss: f64) -> f64 {
 /// A direction in the cone of half-angle `gloss·90°` around unit `axis`, for the point `(a, b)`
 /// of the unit square (uniform in solid angle), on the side of unit `side` (the surface normal
 /// the ray leaves through).
-pub fn direction(axis: DVec3, side: DVec3, gloss: f64, (a, b): (f64, f64)) -> DVec3 {
+pub(crate) fn direction(axis: DVec3, side: DVec3, gloss: f64, (a, b): (f64, f64)) -> DVec3 {
     let cos_max = cos_max(gloss);
     let cos_t = 1.0 - a * (1.0 - cos_max);
     let sin_t = (1.0 - cos_t * cos_t).max(0.0).sqrt();
@@ -35,8 +35,9 @@ pub fn direction(axis: DVec3, side: DVec3, gloss: f64, (a, b): (f64, f64)) -> DV
 /// The density per unit solid angle of [`direction`]'s rays at unit `wi`: the cone's uniform
 /// density where `wi` is in the cone, plus the same again where its mirror image about the
 /// surface plane is (the rays folded back). Zero below the surface and for `gloss` 0 (a delta
-/// has no density).
-pub fn pdf(axis: DVec3, side: DVec3, gloss: f64, wi: DVec3) -> f64 {
+/// has no density). The tests' only: Whitted weighs a glossy lobe's directions alike.
+#[cfg(test)]
+pub(crate) fn pdf(axis: DVec3, side: DVec3, gloss: f64, wi: DVec3) -> f64 {
     let cos_max = cos_max(gloss);
     let solid_angle = 2.0 * std::f64::consts::PI * (1.0 - cos_max);
     let above = wi.dot(side);

@@ -21,7 +21,7 @@ pub use specular::{reflect, reflect_lanes, refract};
 
 /// The ideal direction a lobe scatters about.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Ideal {
+enum Ideal {
     /// The mirror direction.
     Mirror,
     /// Snell's refraction from index `n1` (the near side) into `n2`.
@@ -35,7 +35,7 @@ pub enum Ideal {
 
 /// How a lobe's directions spread about its ideal direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Spread {
+enum Spread {
     /// Exactly the ideal direction (a delta lobe).
     Delta,
     /// Uniform over the cone of half-angle `gloss·90°`, folded back above the surface
@@ -48,49 +48,51 @@ pub enum Spread {
 
 /// One lobe of a surface's scattering: an ideal direction, a spread and a weight.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lobe {
+pub(crate) struct Lobe {
     /// The direction it scatters about.
-    pub ideal: Ideal,
+    ideal: Ideal,
     /// How its rays spread.
-    pub spread: Spread,
+    spread: Spread,
     /// The share of the light arriving along its rays it passes on.
-    pub weight: f64,
+    weight: f64,
 }
 
-/// A direction drawn from a lobe.
+/// A direction drawn from a lobe (the tests check the lobes' densities through it; Whitted's
+/// constant weights need only [`Lobe::direction_about`]).
+#[cfg(test)]
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sample {
+struct Sample {
     /// The unit direction the light arrives from (the ray to trace).
-    pub dir: DVec3,
+    dir: DVec3,
     /// `eval / pdf` for a lobe with a density; the lobe's weight for a delta.
-    pub weight: f64,
+    weight: f64,
     /// The density of `dir` per unit solid angle (1 for a delta).
-    pub pdf: f64,
+    pdf: f64,
     /// Whether the lobe is a delta (its one direction has no density).
-    pub delta: bool,
+    delta: bool,
 }
 
 impl Lobe {
     /// Whether the lobe is a delta (one direction, no density).
-    pub fn is_delta(&self) -> bool {
+    pub(crate) fn is_delta(&self) -> bool {
         self.spread == Spread::Delta
     }
 
     /// Whether its rays pass through the surface.
-    pub fn transmits(&self) -> bool {
+    pub(crate) fn transmits(&self) -> bool {
         matches!(self.ideal, Ideal::Refraction { .. })
     }
 
     /// The unit normal of the side the lobe's rays leave through, for the unit normal `n`
     /// facing the incoming ray.
-    pub fn side(&self, n: DVec3) -> DVec3 {
+    fn side(&self, n: DVec3) -> DVec3 {
         if self.transmits() { -n } else { n }
     }
 
     /// The ideal direction for unit incoming direction `d` at a surface whose unit normal `n`
     /// faces it; `None` under total internal reflection.
     #[inline(always)]
-    pub fn axis(&self, d: DVec3, n: DVec3) -> Option<DVec3> {
+    pub(crate) fn axis(&self, d: DVec3, n: DVec3) -> Option<DVec3> {
         match self.ideal {
             Ideal::Mirror => Some(reflect(d, n)),
             Ideal::Refraction { n1, n2 } => refract(d, n, n1, n2),
@@ -99,12 +101,14 @@ impl Lobe {
 
     /// A direction of the lobe for the point `u` of the unit square (ignored by a delta);
     /// `None` under total internal reflection.
-    pub fn sample(&self, d: DVec3, n: DVec3, u: (f64, f64)) -> Option<Sample> {
+    #[cfg(test)]
+    fn sample(&self, d: DVec3, n: DVec3, u: (f64, f64)) -> Option<Sample> {
         Some(self.sample_about(self.axis(d, n)?, n, u))
     }
 
     /// [`Lobe::sample`] for an integrator that already has the lobe's [`Lobe::axis`].
-    pub fn sample_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> Sample {
+    #[cfg(test)]
+    fn sample_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> Sample {
         let dir = self.direction_about(axis, n, u);
         match self.spread {
             Spread::Delta => Sample {
@@ -125,7 +129,7 @@ impl Lobe {
     /// The direction of [`Lobe::sample_about`] alone, for an integrator that weighs every
     /// direction of the lobe alike (Whitted's constant weights need no density).
     #[inline(always)]
-    pub fn direction_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> DVec3 {
+    pub(crate) fn direction_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> DVec3 {
         match self.spread {
             Spread::Delta => axis,
             Spread::Cone { gloss } => glossy::direction(axis, self.side(n), gloss, u),
@@ -134,7 +138,8 @@ impl Lobe {
 
     /// The density of the lobe's rays at unit `wi`, for incoming `d` at facing normal `n`
     /// (0 for a delta, and under total internal reflection).
-    pub fn pdf(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
+    #[cfg(test)]
+    fn pdf(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
         match (self.spread, self.axis(d, n)) {
             (Spread::Cone { gloss }, Some(axis)) => glossy::pdf(axis, self.side(n), gloss, wi),
             _ => 0.0,
@@ -143,7 +148,8 @@ impl Lobe {
 
     /// The lobe's scattering density (weight per unit solid angle) for the pair (`d`, `wi`):
     /// `weight · pdf` (0 for a delta).
-    pub fn eval(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
+    #[cfg(test)]
+    fn eval(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
         self.weight * self.pdf(d, n, wi)
     }
 }
@@ -152,21 +158,21 @@ impl Lobe {
 /// refraction lobes and how glossy they are. Built per hit; the lobes follow once the media on
 /// both sides are known.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Scattering {
+pub(crate) struct Scattering {
     /// The mirror lobe's weight (0 without reflection).
-    pub reflect: f64,
+    pub(crate) reflect: f64,
     /// The refraction lobe's weight (0 without refraction).
-    pub refract: f64,
+    pub(crate) refract: f64,
     /// The material's index of refraction.
-    pub eta: f64,
+    pub(crate) eta: f64,
     /// How the lobes spread.
-    pub spread: Spread,
+    spread: Spread,
 }
 
 impl Scattering {
     /// The scattering of `mat` in a scene with `effects`.
     #[inline(always)]
-    pub fn of(mat: &Material, effects: &Effects) -> Scattering {
+    pub(crate) fn of(mat: &Material, effects: &Effects) -> Scattering {
         Scattering {
             reflect: if effects.reflection { mat.reflect } else { 0.0 },
             refract: if effects.refraction { mat.refract } else { 0.0 },
@@ -180,13 +186,13 @@ impl Scattering {
     }
 
     /// Whether light passes through the surface (a refraction lobe of positive weight).
-    pub fn transmits(&self) -> bool {
+    pub(crate) fn transmits(&self) -> bool {
         self.refract > 0.0
     }
 
     /// The mirror lobe, weighing `weight` (the reflectance, plus the refracted share under
     /// total internal reflection).
-    pub fn mirror(&self, weight: f64) -> Lobe {
+    pub(crate) fn mirror(&self, weight: f64) -> Lobe {
         Lobe {
             ideal: Ideal::Mirror,
             spread: self.spread,
@@ -195,7 +201,7 @@ impl Scattering {
     }
 
     /// The refraction lobe from index `n1` into `n2`.
-    pub fn refraction(&self, n1: f64, n2: f64) -> Lobe {
+    pub(crate) fn refraction(&self, n1: f64, n2: f64) -> Lobe {
         Lobe {
             ideal: Ideal::Refraction { n1, n2 },
             spread: self.spread,
@@ -207,7 +213,7 @@ impl Scattering {
 /// What a surface of `mat` lets through along a straight line, per channel (glass shadows):
 /// `refract · colour`, or `None` for an opaque surface.
 #[inline(always)]
-pub fn straight_through(mat: &Material) -> Option<Color> {
+pub(crate) fn straight_through(mat: &Material) -> Option<Color> {
     (mat.refract > 0.0).then(|| mat.refract * mat.color)
 }
 

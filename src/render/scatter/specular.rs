@@ -1,7 +1,7 @@
 //! The ideal directions of smooth surfaces: the mirror direction and Snell's refraction, for one
 //! ray and for a packet's lanes.
 
-use crate::geometry::lanes::{self, V3};
+use crate::lanes::{self, V3};
 use crate::num::Norm;
 use glam::DVec3;
 

@@ -16,11 +16,11 @@ use crate::render::scatter::straight_through;
 
 /// Most surfaces one shadow ray passes through before it counts as blocked (a stack of glass
 /// panes deeper than this passes next to nothing anyway).
-pub const MAX_CROSSINGS: u32 = 32;
+pub(crate) const MAX_CROSSINGS: u32 = 32;
 
 /// The share of light sample `ls` that reaches surface point `s` through the glass in between,
 /// per channel; `None` when an opaque surface blocks it.
-pub fn transmission(
+pub(crate) fn transmission(
     scene: &Prepared,
     s: &Surface<'_>,
     ls: &LightSample,

@@ -13,7 +13,7 @@ use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// The Gooch colour of a surface point; `rec` hears each light's tone and highlight.
-pub fn shade<R: Recorder>(
+pub(crate) fn shade<R: Recorder>(
     scene: &Prepared,
     s: &Surface<'_>,
     g: &GoochParams,

@@ -31,11 +31,11 @@ use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// Distance between neighbouring strokes of one family on screen, in pixels.
-pub const SPACING_PX: f64 = 6.0;
+const SPACING_PX: f64 = 6.0;
 /// Darkness the first layer covers alone.
-pub const FIRST_LAYER: f64 = 0.4;
+const FIRST_LAYER: f64 = 0.4;
 /// Darkness the first two layers cover before the third joins.
-pub const SECOND_LAYER: f64 = 0.7;
+const SECOND_LAYER: f64 = 0.7;
 /// Lines per unit of surface coordinate at level 0 (a power of two, so that the levels down
 /// to −log2(F) keep whole lines per unit and u's seam on closed surfaces stays seamless).
 const BASE_FREQUENCY: f64 = 64.0;
@@ -43,7 +43,12 @@ const BASE_FREQUENCY: f64 = 64.0;
 const LEVELS: (f64, f64) = (-6.0, 30.0);
 
 /// The hatched colour of a surface point; `rec` hears each light's tone inputs (grey).
-pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec: &mut R) -> Color {
+pub(crate) fn shade<R: Recorder>(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ctx: &mut Ctx,
+    rec: &mut R,
+) -> Color {
     let mut tone = 0.0;
     for (i, light) in scene.lights().iter().enumerate() {
         let mut term = LightTerm::new(i);
@@ -108,7 +113,7 @@ pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec:
 }
 
 /// Each layer's coverage for darkness `dark`, so that `1 − Π(1 − cᵢ) = dark` (up to 0.99).
-pub fn layer_coverages(dark: f64) -> [f64; 3] {
+fn layer_coverages(dark: f64) -> [f64; 3] {
     let d = dark.clamp(0.0, 0.99);
     let first = d.min(FIRST_LAYER);
     let second = if d > FIRST_LAYER {
@@ -126,7 +131,7 @@ pub fn layer_coverages(dark: f64) -> [f64; 3] {
 
 /// The share of a pixel that strokes of family `family` cover, where its coordinate is `x`,
 /// changing by `per_px` per pixel on screen, for a layer covering `c` of the paper.
-pub fn stroke_coverage(family: u64, x: f64, per_px: f64, c: f64) -> f64 {
+fn stroke_coverage(family: u64, x: f64, per_px: f64, c: f64) -> f64 {
     if c <= 0.0 || !per_px.is_finite() || per_px <= 0.0 || !x.is_finite() {
         return c.max(0.0);
     }

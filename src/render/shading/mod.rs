@@ -1,14 +1,14 @@
 //! Shading models: what a surface point looks like under the lights, before the scattering
 //! layer's reflection and refraction are added by the Whitted integrator.
 
-pub mod glass_shadow;
-pub mod gooch;
-pub mod hatching;
-pub mod phong;
-pub mod phong_packet;
+mod glass_shadow;
+pub(crate) mod gooch;
+pub(crate) mod hatching;
+pub(crate) mod phong;
+pub(crate) mod phong_packet;
 mod surface;
 
-pub use surface::{LightSample, Surface, highlight, light_sample, shadow_ray, visible};
+pub(crate) use surface::{LightSample, Surface, highlight, light_sample, visible};
 
 use crate::geometry::SurfaceHit;
 use crate::ir::Color;
@@ -20,7 +20,7 @@ use crate::render::scatter::straight_through;
 /// The first opaque surface between `s` and light sample `ls` (for explanations: the shadow
 /// test itself only asks whether there is one). With glass shadows, glass on the way is
 /// passed as [`glass_shadow`] passes it.
-pub fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<SurfaceHit> {
+fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<SurfaceHit> {
     let (mut ray, mut left) = s.spawn.ray_to(ls.position)?;
     for _ in 0..glass_shadow::MAX_CROSSINGS {
         let hit = scene.world().intersect(&ray.at_time(s.time), 0.0, left)?;
@@ -37,7 +37,7 @@ pub fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<S
 /// The share of light sample `ls` reaching `s`, per channel: `Some(ONE)` when nothing blocks
 /// it, `None` when something opaque does, and with light through glass the tint of the glass
 /// in between ([`glass_shadow`]).
-pub fn transmission(
+fn transmission(
     scene: &Prepared,
     s: &Surface<'_>,
     ls: &LightSample,

@@ -10,7 +10,12 @@ use crate::render::context::Ctx;
 use crate::render::record::{LightTerm, Recorder};
 
 /// The Phong colour of a surface point; `rec` hears each light's terms.
-pub fn shade<R: Recorder>(scene: &Prepared, s: &Surface<'_>, ctx: &mut Ctx, rec: &mut R) -> Color {
+pub(crate) fn shade<R: Recorder>(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ctx: &mut Ctx,
+    rec: &mut R,
+) -> Color {
     let m = s.mat;
     let mut c = Color::ZERO;
     if scene.settings().ambient == AmbientConvention::Once {

@@ -1,4 +1,4 @@
-//! [`super::phong::shade`] of a packet of surface points ([`crate::geometry::lanes`]): the
+//! [`super::phong::shade`] of a packet of surface points ([`crate::lanes`]): the
 //! light directions, shadow rays, occlusion tests and sums of every point of the packet at
 //! once, for point lights without glass shadows. Each lane gets `shade`'s operations in
 //! `shade`'s order, so its colour is the same to the bit.
@@ -11,9 +11,8 @@ use glam::DVec3;
 
 use super::Surface;
 use crate::geometry::lanes::cull::{Among, Bundle};
-use crate::geometry::lanes::simd;
-use crate::geometry::lanes::{self, Lanes, Mask, V3, WIDTH};
 use crate::ir::{AmbientConvention, LightKind};
+use crate::lanes::{self, Lanes, Mask, V3, WIDTH};
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
 use crate::render::offset::SpawnLanes;
@@ -21,35 +20,35 @@ use crate::render::offset::SpawnLanes;
 /// The surface points of a packet: [`Surface`] lane by lane, with the Phong coefficients of
 /// each point's material.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct SurfaceLanes {
+pub(crate) struct SurfaceLanes {
     /// The lanes that hold a point.
-    pub live: Mask,
+    pub(crate) live: Mask,
     /// Hit points.
-    pub p: V3,
+    pub(crate) p: V3,
     /// Where shadow rays leave.
-    pub spawn: SpawnLanes,
+    pub(crate) spawn: SpawnLanes,
     /// Unit normals facing the incoming rays (after any bump map).
-    pub n: V3,
+    pub(crate) n: V3,
     /// Unit vectors towards the viewer.
-    pub v: V3,
+    pub(crate) v: V3,
     /// Base colours.
-    pub color: V3,
+    pub(crate) color: V3,
     /// Ambient coefficients.
-    pub ka: Lanes,
+    pub(crate) ka: Lanes,
     /// Diffuse coefficients.
-    pub kd: Lanes,
+    pub(crate) kd: Lanes,
     /// Specular coefficients.
-    pub ks: Lanes,
+    pub(crate) ks: Lanes,
     /// Phong exponents.
-    pub shininess: Lanes,
+    pub(crate) shininess: Lanes,
     /// Shutter fractions of the rays that hit (shadow rays see moving objects then).
-    pub time: Lanes,
+    pub(crate) time: Lanes,
 }
 
 impl SurfaceLanes {
     /// Sets lane `i` to `s` (and marks it live).
     #[inline(always)]
-    pub fn set(&mut self, i: usize, s: &Surface<'_>) {
+    pub(crate) fn set(&mut self, i: usize, s: &Surface<'_>) {
         self.live |= 1 << i;
         self.p.set(i, s.p);
         self.spawn.set(i, &s.spawn);
@@ -62,13 +61,13 @@ impl SurfaceLanes {
 
     /// Sets lane `i`'s coefficients to `m`'s.
     #[inline(always)]
-    pub fn set_material(&mut self, i: usize, m: &crate::ir::Material) {
+    fn set_material(&mut self, i: usize, m: &crate::ir::Material) {
         (self.ka[i], self.kd[i], self.ks[i], self.shininess[i]) = (m.ka, m.kd, m.ks, m.n);
     }
 }
 
 /// Whether [`shade`] can shade this scene's points: every light is a point light.
-pub fn applies(scene: &Prepared) -> bool {
+pub(crate) fn applies(scene: &Prepared) -> bool {
     scene
         .lights()
         .iter()
@@ -78,7 +77,7 @@ pub fn applies(scene: &Prepared) -> bool {
 /// The Phong colours of the live lanes of `s` (other lanes are left zero), counted in
 /// `ctx.stats`; only for scenes where [`applies`] holds, without glass shadows.
 #[inline(always)]
-pub fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
+pub(crate) fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
     let ambient = scene.settings().ambient;
     let shadows = scene.effects().shadows;
     // `Color::ZERO` plus each term, in `shade`'s order.
@@ -101,10 +100,10 @@ pub fn shade(scene: &Prepared, s: &SurfaceLanes, ctx: &mut Ctx) -> V3 {
         for _ in 0..count {
             let d = s.p.from(position);
             let dist = d.norm();
-            let l = V3::select(simd::gt(&dist, 0.0), &d.div(&dist), &s.n);
+            let l = V3::select(lanes::gt(&dist, 0.0), &d.div(&dist), &s.n);
             let n_dot_l = s.n.dot(&l);
             // Facing away: neither light nor shadow ray.
-            let lit = s.live & simd::gt(&n_dot_l, 0.0);
+            let lit = s.live & lanes::gt(&n_dot_l, 0.0);
             let open = if shadows && lit != 0 {
                 ctx.stats.shadow_rays += u64::from(lit.count_ones());
                 lit & !blocked(scene, s, position, lit)

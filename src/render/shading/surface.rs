@@ -15,43 +15,41 @@ use crate::render::sampler::Rng;
 
 /// A surface point to shade.
 #[derive(Clone, Copy)]
-pub struct Surface<'m> {
+pub(crate) struct Surface<'m> {
     /// The hit point.
-    pub p: DVec3,
+    pub(crate) p: DVec3,
     /// Where shadow rays leave the surface (the point with its error bound).
-    pub spawn: SpawnPoint,
+    pub(crate) spawn: SpawnPoint,
     /// Unit normal facing the incoming ray (flipped for hits from inside).
-    pub n: DVec3,
+    pub(crate) n: DVec3,
     /// Unit vector towards the viewer (−ray direction).
-    pub v: DVec3,
+    pub(crate) v: DVec3,
     /// Base colour (material or texture).
-    pub color: Color,
+    pub(crate) color: Color,
     /// Surface coefficients.
-    pub mat: &'m Material,
+    pub(crate) mat: &'m Material,
     /// Surface coordinates (for hatching).
-    pub uv: glam::DVec2,
+    pub(crate) uv: glam::DVec2,
     /// Recursion depth of the ray that hit it (decorrelates light samples between bounces).
-    pub depth: u32,
+    pub(crate) depth: u32,
     /// The shutter fraction of the ray that hit it (shadow rays see moving objects then).
-    pub time: f64,
+    pub(crate) time: f64,
 }
 
 /// One sample of one light as seen from a surface point.
 #[derive(Clone, Copy)]
-pub struct LightSample {
+pub(crate) struct LightSample {
     /// Unit vector from the surface to the sample.
-    pub l: DVec3,
-    /// Distance to the sample.
-    pub dist: f64,
+    pub(crate) l: DVec3,
     /// The sample's position (shadow rays aim at it).
-    pub position: DVec3,
+    pub(crate) position: DVec3,
     /// The light's colour times the sample's share (1/samples).
-    pub color: Color,
+    pub(crate) color: Color,
 }
 
 /// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
 /// lights), weighing `weight` of the light ([`crate::render::deal::LightShare::weight`]).
-pub fn light_sample(
+pub(crate) fn light_sample(
     light: &PreparedLight,
     index: usize,
     k: u32,
@@ -81,7 +79,6 @@ pub fn light_sample(
     let dist = d.norm();
     LightSample {
         l: if dist > 0.0 { d / dist } else { s.n },
-        dist,
         position: pos,
         color: light.color * f64::from(weight.num) / f64::from(weight.den),
     }
@@ -90,7 +87,12 @@ pub fn light_sample(
 /// True when nothing blocks the way from the surface to the light sample (always true without
 /// shadows). The shadow ray leaves the surface's error box towards the light and is aimed at the
 /// sample from there ([`SpawnPoint::ray_to`]), so a light lying on a surface is not shadowed by it.
-pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut Stats) -> bool {
+pub(crate) fn visible(
+    scene: &Prepared,
+    s: &Surface<'_>,
+    ls: &LightSample,
+    stats: &mut Stats,
+) -> bool {
     match shadow_ray(scene, s, ls, stats) {
         Some((ray, t_max)) => !scene.world().occluded(&ray, 0.0, t_max),
         None => true,
@@ -102,7 +104,7 @@ pub fn visible(scene: &Prepared, s: &Surface<'_>, ls: &LightSample, stats: &mut 
 /// Always inlined: called out of line, its result went through memory, where the batch's
 /// wider reloads of the scalar stores stalled on store forwarding (~15% of `shade_batch`).
 #[inline(always)]
-pub fn shadow_ray(
+fn shadow_ray(
     scene: &Prepared,
     s: &Surface<'_>,
     ls: &LightSample,
@@ -117,7 +119,7 @@ pub fn shadow_ray(
 }
 
 /// The Phong highlight `ks·max(0, R·V)^n` with `R = 2(N·L)N − L`.
-pub fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
+pub(crate) fn highlight(s: &Surface<'_>, l: DVec3, n_dot_l: f64) -> f64 {
     if s.mat.ks == 0.0 {
         return 0.0;
     }

@@ -35,7 +35,7 @@ enum Top {
 
 impl Builder {
     /// Any expression-level pair.
-    pub fn expr(&self, p: P) -> Expr {
+    pub(crate) fn expr(&self, p: P) -> Expr {
         match p.as_rule() {
             Rule::expr | Rule::head_expr => self.flat(p),
             Rule::paren => {
@@ -494,7 +494,6 @@ impl Builder {
                     params,
                     ret: None,
                     body: body.expect("grammar: fn body"),
-                    span,
                 }))
             }
             other => unreachable!("grammar: unexpected primary {other:?}"),

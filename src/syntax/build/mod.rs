@@ -18,7 +18,7 @@ pub(crate) use expr::MAX_CHAIN;
 
 /// Converts sRGB-encoded [0, 1] to linear light (the IEC 61966-2-1 curve; `libm::pow` so the
 /// value is the same on every machine).
-pub fn srgb_to_linear(c: f64) -> f64 {
+pub(crate) fn srgb_to_linear(c: f64) -> f64 {
     if c <= 0.04045 {
         c / 12.92
     } else {
@@ -27,11 +27,11 @@ pub fn srgb_to_linear(c: f64) -> f64 {
 }
 
 /// Tree builder for one statement parsed at byte `base` of `file`.
-pub struct Builder {
+pub(crate) struct Builder {
     /// The file being parsed.
-    pub file: FileId,
+    file: FileId,
     /// Offset of the parsed slice in the file.
-    pub base: usize,
+    base: usize,
     /// Slips and warnings found while building (a `RefCell` because the Pratt parser's
     /// callbacks share the builder).
     diags: RefCell<Vec<Diagnostic>>,
@@ -41,7 +41,7 @@ type P<'i> = Pair<'i, Rule>;
 
 impl Builder {
     /// A builder for the statement at `base`.
-    pub fn new(file: FileId, base: usize) -> Builder {
+    pub(crate) fn new(file: FileId, base: usize) -> Builder {
         Builder {
             file,
             base,
@@ -50,7 +50,7 @@ impl Builder {
     }
 
     /// The diagnostics found while building.
-    pub fn finish(self) -> Vec<Diagnostic> {
+    pub(crate) fn finish(self) -> Vec<Diagnostic> {
         self.diags.into_inner()
     }
 
@@ -71,7 +71,7 @@ impl Builder {
     }
 
     /// A statement pair (`import_stmt`, `let_stmt`, `fn_def` or `expr`).
-    pub fn stmt(&self, p: P) -> Stmt {
+    pub(crate) fn stmt(&self, p: P) -> Stmt {
         match p.as_rule() {
             Rule::import_stmt => Stmt::Import(Box::new(self.import(p))),
             Rule::let_stmt => Stmt::Let(self.let_stmt(p)),
@@ -83,7 +83,7 @@ impl Builder {
     /// Warns when a statement that starts with `-` follows an expression or `let` that it could
     /// have continued: `-y` on its own line is a new statement (`- y` would subtract).
     /// `after_continuable`: whether the statement before is one ([`continuable`]).
-    pub fn check_minus_line(&self, after_continuable: bool, p: &P) {
+    pub(crate) fn check_minus_line(&self, after_continuable: bool, p: &P) {
         if !p.as_str().starts_with('-') || !after_continuable {
             return;
         }
@@ -180,24 +180,14 @@ impl Builder {
         let span = self.span(&p);
         let mut it = p.into_inner();
         let name = self.name(&it.next().expect("grammar: type name"));
-        let mut arg = None;
-        let mut optional = false;
-        for q in it {
-            match q.as_rule() {
-                Rule::type_ann => arg = Some(Box::new(self.type_ann(q))),
-                _ => optional = true,
-            }
-        }
-        TypeAnn {
-            name,
-            arg,
-            optional,
-            span,
-        }
+        // A `?` after the type (optional) is accepted and not recorded: nothing reads it.
+        let arg = it
+            .find(|q| q.as_rule() == Rule::type_ann)
+            .map(|q| Box::new(self.type_ann(q)));
+        TypeAnn { name, arg, span }
     }
 
     fn fn_def(&self, p: P) -> FnDef {
-        let span = self.span(&p);
         let mut public = false;
         let mut name = None;
         let mut params = Vec::new();
@@ -218,7 +208,6 @@ impl Builder {
             params,
             ret,
             body: body.expect("grammar: fn body"),
-            span,
         }
     }
 
@@ -253,7 +242,7 @@ impl Builder {
 
 /// Whether a line starting with `-` after `stmt` could have continued it: after an expression or
 /// a `let`, not after an `import` or a `fn`.
-pub fn continuable(stmt: &Stmt) -> bool {
+pub(crate) fn continuable(stmt: &Stmt) -> bool {
     matches!(stmt, Stmt::Expr(_) | Stmt::Let(_))
 }
 

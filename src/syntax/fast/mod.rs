@@ -31,7 +31,7 @@
 
 mod tape;
 
-pub use tape::{Mark, Memo, Tape, build as statement, build_into as statement_into};
+pub(crate) use tape::{Mark, Memo, Tape, build as statement, build_into as statement_into};
 use tape::{Op, Step};
 
 use crate::syntax::errors::is_keyword;
@@ -41,7 +41,7 @@ use crate::syntax::numbers::{self, Number};
 /// and appends what it read to `tape` (see [`tape`]). Returns the offset after its line (where
 /// pest's `stmt_line` would end), or `None` (and `tape` unchanged) when the line is not of the
 /// fast forms. Pure: the same text and position give the same steps on any thread.
-pub fn read(text: &str, pos: usize, end: usize, tape: &mut Tape) -> Option<usize> {
+pub(crate) fn read(text: &str, pos: usize, end: usize, tape: &mut Tape) -> Option<usize> {
     let mark = tape.mark();
     let next = Reader {
         text,

@@ -54,7 +54,7 @@ pub(super) enum Step {
 
 /// One step: a token at `start..start + len` (except where [`Step`] says otherwise).
 #[derive(Clone, Copy, Debug)]
-pub struct Op {
+pub(crate) struct Op {
     pub(super) start: u32,
     pub(super) len: u16,
     pub(super) step: Step,
@@ -86,7 +86,7 @@ impl Op {
 /// What the fast path read from some lines: their steps, the values of their numbers, and
 /// their distinct names.
 #[derive(Clone, Default, Debug)]
-pub struct Tape {
+pub(crate) struct Tape {
     pub(super) ops: Vec<Op>,
     pub(super) values: Vec<u64>,
     pub(super) names: Names,
@@ -144,17 +144,17 @@ impl Names {
 
 /// Where a statement starts on its tape.
 #[derive(Clone, Copy, Debug)]
-pub struct Mark {
+pub(crate) struct Mark {
     /// Its first step.
-    pub op: u32,
+    op: u32,
     /// Its first value.
-    pub value: u32,
+    value: u32,
 }
 
 impl Tape {
     /// An empty tape with room for what reading `bytes` of generated lines writes (a sphere
     /// line of ~60 bytes writes ~10 steps and 4 values), so it is not copied as it grows.
-    pub fn for_bytes(bytes: usize) -> Tape {
+    pub(crate) fn for_bytes(bytes: usize) -> Tape {
         Tape {
             ops: Vec::with_capacity(bytes / 5),
             values: Vec::with_capacity(bytes / 12),
@@ -163,7 +163,7 @@ impl Tape {
     }
 
     /// Where the next statement written starts.
-    pub fn mark(&self) -> Mark {
+    pub(crate) fn mark(&self) -> Mark {
         Mark {
             op: self.ops.len() as u32,
             value: self.values.len() as u32,
@@ -227,7 +227,7 @@ impl<'a> Cursor<'a> {
 }
 
 /// What building keeps between the statements of one file.
-pub struct Memo<'t> {
+pub(crate) struct Memo<'t> {
     /// The interned names of the tape being built from, by number, and which tape that is.
     numbered: Vec<Sym>,
     tape: Option<u32>,
@@ -290,7 +290,7 @@ impl<'t> Memo<'t> {
 /// Builds the statement the reader wrote at `at` (up to its `End`), reading only its names
 /// from `text`: exactly the AST pest and the tree builder build for its line, spans included.
 /// `id` is the tape's number in its file (names are looked up by it).
-pub fn build<'t>(
+pub(crate) fn build<'t>(
     file: FileId,
     text: &'t str,
     (id, tape): (u32, &Tape),
@@ -305,7 +305,7 @@ pub fn build<'t>(
 /// same calls, members and argument names in the same places; leaves may differ) it is
 /// rewritten in place: the nodes of a generated file's previous line are reused, without
 /// allocating or freeing any. Otherwise it is built afresh.
-pub fn build_into<'t>(
+pub(crate) fn build_into<'t>(
     stmt: &mut Stmt,
     file: FileId,
     text: &'t str,

@@ -6,7 +6,7 @@ use super::print::print;
 use super::tokens::{Br, Group, Kind, Tokens, Trivia};
 
 /// Lines longer than this (in characters) get their bracket groups broken one item per line.
-pub const MAX_WIDTH: usize = 100;
+const MAX_WIDTH: usize = 100;
 
 /// What the gap before a token must be.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,12 +22,12 @@ pub(super) enum Brk {
 /// The decisions for every token.
 pub(super) struct Plan {
     /// The gap before each token.
-    pub brk: Vec<Brk>,
+    pub(crate) brk: Vec<Brk>,
     /// Tokens left out (a trailing comma on one line, commas between a record's fields when
     /// they stand one per line); their comments stay.
-    pub skip: Vec<bool>,
+    pub(crate) skip: Vec<bool>,
     /// Tokens after which a comma is added (the last item of a broken list).
-    pub comma_after: Vec<bool>,
+    pub(crate) comma_after: Vec<bool>,
 }
 
 /// Formats the tokens: groups written over several lines stay so (one item per line), chains

@@ -9,8 +9,6 @@ mod layout;
 mod print;
 mod tokens;
 
-pub use layout::MAX_WIDTH;
-
 use crate::diag::{Diagnostic, Severity};
 use crate::source::FileId;
 

@@ -11,9 +11,9 @@ const INDENT: &str = "    ";
 /// The printed text and the output line of every token (for the width check).
 pub(super) struct Printed {
     /// The formatted file.
-    pub text: String,
+    pub(crate) text: String,
     /// 0-based output line of each token.
-    pub tok_line: Vec<usize>,
+    pub(crate) tok_line: Vec<usize>,
 }
 
 /// Prints the tokens as `plan` says.

@@ -85,27 +85,27 @@ pub(super) enum Trivia {
 #[derive(Clone, Debug)]
 pub(super) struct Tok {
     /// The text to print (as written, except the spacing inside `[x, y, z]` vectors).
-    pub text: String,
+    pub(crate) text: String,
     /// Its role.
-    pub kind: Kind,
+    pub(crate) kind: Kind,
     /// Comments and line breaks between the previous token and this one.
-    pub before: Vec<Trivia>,
+    pub(crate) before: Vec<Trivia>,
 }
 
 /// A bracket group: its opener and closer token indices and its items' token ranges.
 #[derive(Clone, Debug)]
 pub(super) struct Group {
     /// What the brackets hold.
-    pub br: Br,
+    pub(crate) br: Br,
     /// Index of the opening token.
-    pub open: usize,
+    pub(crate) open: usize,
     /// Index of the closing token.
-    pub close: usize,
+    pub(crate) close: usize,
     /// First and last token of each item (argument, element, field, statement).
-    pub items: Vec<(usize, usize)>,
+    pub(crate) items: Vec<(usize, usize)>,
     /// A list of three plain numbers that is not a vector token: its trailing comma keeps it a
     /// list (without it, `[1, 2, 3]` would read as a `Vec3`).
-    pub keep_trailing_comma: bool,
+    pub(crate) keep_trailing_comma: bool,
 }
 
 /// A chain that may be broken over lines: the binary operators of lowest precedence in one
@@ -113,24 +113,24 @@ pub(super) struct Group {
 #[derive(Clone, Debug)]
 pub(super) struct Chain {
     /// The tokens that start a line when the chain is broken (operators or `.`).
-    pub breaks: Vec<usize>,
+    pub(crate) breaks: Vec<usize>,
     /// First token of the expression or operand.
-    pub first: usize,
+    pub(crate) first: usize,
     /// Last token of the expression or operand.
-    pub last: usize,
+    pub(crate) last: usize,
 }
 
 /// The whole file as tokens and groups, plus the trivia after the last token.
 #[derive(Debug, Default)]
 pub(super) struct Tokens {
     /// Every token in order.
-    pub toks: Vec<Tok>,
+    pub(crate) toks: Vec<Tok>,
     /// Every bracket group, in order of their openers.
-    pub groups: Vec<Group>,
+    pub(crate) groups: Vec<Group>,
     /// Every operator and method chain.
-    pub chains: Vec<Chain>,
+    pub(crate) chains: Vec<Chain>,
     /// Comments and line breaks after the last token.
-    pub tail: Vec<Trivia>,
+    pub(crate) tail: Vec<Trivia>,
 }
 
 /// Reads the (syntax-error-free) `text` into tokens; `Err` names what could not be read, which

@@ -16,13 +16,13 @@ use glam::DVec3;
 
 use super::Whitted;
 use crate::geometry::Ray;
+use crate::geometry::lanes::RayLanes;
 use crate::geometry::lanes::cull::Bundle;
-use crate::geometry::lanes::simd;
 use crate::geometry::lanes::sphere_packet::{NO_SPHERE, PacketHits};
-use crate::geometry::lanes::{self, Lanes, Mask, RayLanes, V3};
 use crate::geometry::rounding::gamma;
 use crate::geometry::world::SphereHit;
 use crate::ir::{Color, LightSampling, Material, ShadingModel};
+use crate::lanes::{self, Lanes, Mask, V3};
 use crate::render::context::{BATCH, Ctx};
 use crate::render::offset::SpawnLanes;
 use crate::render::path::{Media, Path};
@@ -117,7 +117,13 @@ impl Whitted<'_> {
 
     /// [`Whitted::trace_batch`] of the first `n` rays of a packet of camera rays at shutter
     /// time 0 (a pinhole camera's).
-    pub fn trace_lanes(&self, packet: &RayLanes, n: usize, ctx: &mut Ctx, out: &mut [Color]) {
+    pub(crate) fn trace_lanes(
+        &self,
+        packet: &RayLanes,
+        n: usize,
+        ctx: &mut Ctx,
+        out: &mut [Color],
+    ) {
         self.trace_camera_packet(packet, &[0.0; BATCH], n, ctx, out);
     }
 
@@ -246,7 +252,7 @@ impl Whitted<'_> {
         let e = lanes::map(|i| (len[i] - radius[i]).abs() + gamma(6) * (len[i] + radius[i]));
         // Whitted::surface: the normal facing the ray, the viewer, the material.
         let cos = normal.dot(&rays.dir);
-        let facing = V3::select(simd::gt(&cos, 0.0), &normal.neg(), &normal);
+        let facing = V3::select(lanes::gt(&cos, 0.0), &normal.neg(), &normal);
         let s = &mut sh.s;
         s.live = hit;
         s.p = point;
