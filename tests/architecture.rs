@@ -235,6 +235,9 @@ fn a_wrong_import_is_a_violation() {
     let math = module("eval::builtins::math");
     assert!(wall(&math, &at("crate::eval::interp::Interp")).is_some());
     assert!(wall(&math, &at("crate::eval::host::Host")).is_none());
+    let schema = module("eval::schema");
+    assert!(wall(&schema, &at("crate::eval::value::Value")).is_some());
+    assert!(wall(&schema, &at("crate::diag::number")).is_none());
     let scatter = module("render::scatter::glossy");
     assert!(wall(&scatter, &at("crate::render::path::Media")).is_some());
     assert!(wall(&scatter, &at("crate::render::scatter::specular::reflect")).is_none());
@@ -320,8 +323,10 @@ const WALLS: &[(&str, &[&str])] = &[
         &["render::integrator", "render::pixel", "render::view"],
     ),
     ("render::integrator", &["render::pixel"]),
-    // eval: values, types and arguments know no interpreter; built-ins, operators, members,
-    // methods and constructors reach it only through `eval::host::Host`.
+    // eval: the schemas of the built-ins are a leaf (data, no values); values, types and
+    // arguments know no interpreter; built-ins, operators, members, methods and constructors
+    // reach it only through `eval::host::Host`.
+    ("eval::schema", &["eval"]),
     ("eval::value", EVAL_CORE),
     ("eval::types", EVAL_CORE),
     ("eval::error", EVAL_CORE),

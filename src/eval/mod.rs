@@ -28,6 +28,7 @@ pub(crate) mod parts;
 pub(crate) mod program;
 pub(crate) mod provenance;
 pub mod rng;
+pub(crate) mod schema;
 pub(crate) mod shapes;
 pub mod split;
 pub(crate) mod transform;
