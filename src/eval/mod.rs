@@ -44,6 +44,7 @@ use crate::diag::{Diagnostic, Severity};
 use crate::ir::Loaded;
 use crate::source::SourceMap;
 
+pub use builtins::reserved_names;
 pub(crate) use options::on_eval_stack;
 pub use options::{DEFAULT_FPS, EvalOptions, LoopParts};
 pub use value::SHOW_LIMIT;

@@ -14,6 +14,7 @@ mod pratt;
 mod stmts;
 
 pub use build::srgb_to_linear;
+pub use errors::KEYWORDS;
 pub use stmts::Stmts;
 
 use pest::Parser;

@@ -1,6 +1,6 @@
 //! The built-in functions and constants: their table by name and id (the functions themselves
 //! are in this folder's files and in the shape, transform and random-stream files), each with
-//! its schema (`eval::schema`).
+//! its schema (`eval::schema`), and the names a scene should not rebind.
 
 pub mod lists;
 mod looks;
@@ -69,4 +69,17 @@ pub fn global(sym: Sym) -> Option<Value> {
 /// Every built-in name (for did-you-mean).
 pub fn global_names() -> Vec<&'static str> {
     GLOBALS.with(|g| g.keys().map(|k| k.as_str()).collect())
+}
+
+/// Every name a scene should not bind at the top level (what `rtc convert` must not name a
+/// material): the language's keywords, `param` (it starts a declaration), every built-in
+/// function and constant, and the frame's `frame`, `time` and `fps`. Sorted.
+pub fn reserved_names() -> Vec<&'static str> {
+    let mut names: Vec<&'static str> = crate::syntax::KEYWORDS.to_vec();
+    names.push("param");
+    names.extend(table().into_iter().map(|(name, _)| name));
+    names.extend(super::params::FRAME_BUILTINS);
+    names.sort_unstable();
+    names.dedup();
+    names
 }
