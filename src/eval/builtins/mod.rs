@@ -2,6 +2,8 @@
 //! are in this folder's files and in the shape, transform and random-stream files), each with
 //! its schema (`eval::schema`), and the names a scene should not rebind.
 
+#[cfg(test)]
+mod doc_tables;
 pub mod lists;
 mod looks;
 mod math;
