@@ -1,4 +1,5 @@
-//! Object constructors with schema-checked parameters, groups, and the CSG list forms.
+//! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
+//! in `mesh`).
 
 use crate::num::Norm;
 use std::rc::Rc;
@@ -7,7 +8,7 @@ use glam::{DAffine3, DVec3};
 
 use super::args::Params;
 use super::args::{ArgVal, CallSite};
-use super::error::{R, error};
+use super::error::R;
 use super::host::BuiltinFn;
 use super::host::Host;
 use super::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
@@ -17,6 +18,7 @@ use crate::ir::{BlobComponent, Shape};
 use crate::source::Span;
 
 mod compound;
+mod mesh;
 
 pub use compound::{FNS as COMPOUND_FNS, require_closed};
 
@@ -36,7 +38,7 @@ pub static FNS: &[(&Sig, BuiltinFn)] = &[
     (&CONE, cone),
     (&TORUS, torus),
     (&BLOB, blob),
-    (&MESH, mesh),
+    (&mesh::MESH, mesh::mesh),
 ];
 
 /// A point, `[0, 0, 0]` unless given.
@@ -109,6 +111,7 @@ fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
     Ok(prim(shape, s.span))
 }
 
+/// An object of `shape` made at `span`, untransformed and without a material.
 fn prim(shape: Shape, span: Span) -> Value {
     Value::Object(Rc::new(Obj {
         shape: ObjShape::Prim(shape),
@@ -565,69 +568,4 @@ fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             ("threshold", ts),
         ],
     )
-}
-
-/// `mesh(path, smooth, use_mtl)`.
-static MESH: Sig = Sig::new(
-    "mesh",
-    Group::Shape,
-    "A Wavefront OBJ mesh (triangulated).",
-    &[
-        Param::new(
-            "path",
-            Ty::String,
-            "the file, relative to the calling file (it must exist)",
-        ),
-        Param::new("smooth", Ty::Bool, "interpolate vertex normals").or(Lit::Bool(false)),
-        Param::new(
-            "use_mtl",
-            Ty::Bool,
-            "use the file's `.mtl` materials where present",
-        )
-        .or(Lit::Bool(false)),
-    ],
-    "Object",
-)
-.examples(&["mesh(path: \"../tests/data/course/models/cube.obj\", smooth: true, use_mtl: false)"]);
-fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &MESH, a)?;
-    let (rel, ps) = p.string(it, "path")?;
-    let path = super::assets::existing(it, &rel, ps, "mesh")?;
-    only_obj(&path, ps)?;
-    let smooth = p.bool(it, "smooth")?;
-    let use_mtl = p.bool(it, "use_mtl")?;
-    Ok(prim(
-        Shape::Mesh {
-            path,
-            smooth,
-            use_mtl,
-        },
-        s.span,
-    ))
-}
-
-/// Meshes are Wavefront OBJ: another format (STL, PLY, glTF...) is refused by its extension
-/// before anyone tries to read it as OBJ.
-fn only_obj(path: &std::path::Path, span: Span) -> R<()> {
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
-    if ext == "obj" {
-        return Ok(());
-    }
-    Err(error(
-        "rtc::asset::format",
-        span,
-        format!("`{}` is not a Wavefront OBJ file", path.display()),
-    )
-    .with_label(if ext.is_empty() {
-        "no `.obj` extension".to_owned()
-    } else {
-        format!("a `.{ext}` file")
-    })
-    .with_help(
-        "only OBJ meshes are read; convert the model to `.obj` (e.g. with Blender or MeshLab)",
-    )
-    .into())
 }
