@@ -25,7 +25,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("assets", &["ir"]),
     ("eval", &["syntax", "ir", "assets", "geometry"]),
     ("compat", &["ir", "assets"]),
-    ("convert", &["ir", "compat"]),
+    ("convert", &["ir", "compat", "eval"]),
     ("geometry", &["ir"]),
     ("opt", &["ir", "geometry", "assets"]),
     ("render", &["opt", "geometry", "ir"]),
@@ -37,8 +37,12 @@ const ALLOWED: &[(&str, &[&str])] = &[
 
 /// Narrower rules inside an allowed edge: `(module, target, the only paths under target it may
 /// use)`. Evaluation asks geometry what a shape is (its validity and bounds), never anything
-/// that builds or traces.
-const ONLY: &[(&str, &str, &[&str])] = &[("eval", "geometry", &["shapes", "aabb", "Aabb"])];
+/// that builds or traces. The rtc back end asks the language only which names a scene must
+/// not bind (its keywords and built-ins, from the built-ins' schemas).
+const ONLY: &[(&str, &str, &[&str])] = &[
+    ("eval", "geometry", &["shapes", "aabb", "Aabb"]),
+    ("convert", "eval", &["reserved_names"]),
+];
 
 /// Items a module may not name although it may use their module: `(module, path)`. The
 /// renderer reads the prepared scene, never the IR's shapes.
@@ -221,6 +225,8 @@ fn a_wrong_import_is_a_violation() {
     // The rtc back end reads the IR (and a course file through its front end); no front end
     // uses it.
     assert!(violation("convert", &at("crate::ir::Scene")).is_none());
+    assert!(violation("convert", &at("crate::eval::reserved_names")).is_none());
+    assert!(violation("convert", &at("crate::eval::load_file")).is_some());
     assert!(violation("compat", &at("crate::convert::to_source")).is_some());
     assert!(violation("eval", &at("crate::convert::to_source")).is_some());
     assert!(violation("ir", &at("crate::diag::Diagnostic")).is_none());
@@ -239,6 +245,9 @@ fn a_wrong_import_is_a_violation() {
     let math = module("eval::builtins::math");
     assert!(wall(&math, &at("crate::eval::interp::Interp")).is_some());
     assert!(wall(&math, &at("crate::eval::host::Host")).is_none());
+    let schema = module("eval::schema");
+    assert!(wall(&schema, &at("crate::eval::value::Value")).is_some());
+    assert!(wall(&schema, &at("crate::diag::number")).is_none());
     let scatter = module("render::scatter::glossy");
     assert!(wall(&scatter, &at("crate::render::path::Media")).is_some());
     assert!(wall(&scatter, &at("crate::render::scatter::specular::reflect")).is_none());
@@ -324,8 +333,10 @@ const WALLS: &[(&str, &[&str])] = &[
         &["render::integrator", "render::pixel", "render::view"],
     ),
     ("render::integrator", &["render::pixel"]),
-    // eval: values, types and arguments know no interpreter; built-ins, operators, members,
-    // methods and constructors reach it only through `eval::host::Host`.
+    // eval: the schemas of the built-ins are a leaf (data, no values); values, types and
+    // arguments know no interpreter; built-ins, operators, members, methods and constructors
+    // reach it only through `eval::host::Host`.
+    ("eval::schema", &["eval"]),
     ("eval::value", EVAL_CORE),
     ("eval::types", EVAL_CORE),
     ("eval::error", EVAL_CORE),

@@ -4,102 +4,9 @@
 
 use std::path::Path;
 
+use crate::eval::reserved_names;
 use crate::ir::{Material, MaterialId, Scene, Texture};
 use crate::source::Span;
-
-/// Words a name must not be: the language's keywords and the built-in names a top-level `let`
-/// would hide from the rest of the file.
-const RESERVED: &[&str] = &[
-    "rtc",
-    "let",
-    "fn",
-    "for",
-    "in",
-    "if",
-    "else",
-    "import",
-    "as",
-    "pub",
-    "with",
-    "true",
-    "false",
-    "step",
-    "div",
-    "X",
-    "Y",
-    "Z",
-    "pi",
-    "tau",
-    "frame",
-    "time",
-    "fps",
-    "sphere",
-    "plane",
-    "box",
-    "triangle",
-    "quad",
-    "polygon",
-    "disk",
-    "ring",
-    "cylinder",
-    "cone",
-    "torus",
-    "blob",
-    "mesh",
-    "group",
-    "union",
-    "intersection",
-    "difference",
-    "material",
-    "checker",
-    "stripes",
-    "image",
-    "point_light",
-    "area_light",
-    "camera",
-    "render",
-    "rgb",
-    "srgb",
-    "hsv",
-    "flare",
-    "translate",
-    "scale",
-    "rotate",
-    "matrix",
-    "around",
-    "identity",
-    "look_at",
-    "phong",
-    "gooch",
-    "hatching",
-    "shaded",
-    "normal",
-    "depth",
-    "adaptive",
-    "uv",
-    "planar",
-    "spherical",
-    "cylindrical",
-    "per_light",
-    "once",
-    "linear",
-    "random",
-    "param",
-    "print",
-    "assert",
-    "min",
-    "max",
-    "sum",
-    "len",
-    "length",
-    "color",
-    "size",
-    "abs",
-    "int",
-    "float",
-    "str",
-    "round",
-];
 
 /// Words that name the object rather than its material (`#Blue sphere` names the colour).
 const OBJECT_WORDS: &[&str] = &[
@@ -176,13 +83,14 @@ fn from_comment(text: &str) -> Option<String> {
     (name.len() <= 24).then(|| identifier(&name))
 }
 
-/// A valid, unreserved identifier from lower-case words.
+/// A valid, unreserved identifier from lower-case words: not a keyword, nor a built-in name a
+/// top-level `let` would hide from the rest of the file (the language's list of them).
 fn identifier(name: &str) -> String {
     let mut n = name.to_string();
     if n.starts_with(|c: char| c.is_ascii_digit()) {
         n.insert_str(0, "m_");
     }
-    if RESERVED.contains(&n.as_str()) {
+    if reserved_names().binary_search(&n.as_str()).is_ok() {
         n.push_str("_material");
     }
     n

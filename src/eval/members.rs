@@ -17,7 +17,7 @@ fn members_of(v: &Value) -> Vec<&'static str> {
         Value::Angle(_) => vec!["deg", "rad", "turn"],
         Value::Object(_) => [&["bounds"][..], &super::methods::object_methods()].concat(),
         Value::Camera(_) => vec!["eye", "center", "up"],
-        Value::Material(_) => super::builtins::MAT_FIELDS.to_vec(),
+        Value::Material(_) => super::builtins::material_fields(),
         _ => Vec::new(),
     }
 }

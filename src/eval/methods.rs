@@ -6,11 +6,64 @@ use std::rc::Rc;
 use crate::source::Span;
 use crate::syntax::ast::Name;
 
-use super::args::{ArgVal, CallSite};
+use super::args::{ArgVal, CallSite, Params};
+use super::builtins as b;
 use super::error::R;
 use super::host::Host;
+use super::motion::{LOOK_AT_METHOD, MOVING};
+use super::schema::{Group, Param, Sig, Ty};
+use super::transform::is_method as is_transform;
 use super::types;
 use super::value::{Obj, Value};
+
+/// The methods of each receiver type with their schemas, in the order messages list them. A
+/// list or vector method that is also a function (`l.sum()` is `sum(l)`) has the function's
+/// schema, its receiver the first parameter.
+pub static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
+    (
+        "Object",
+        &[TRANSFORMS, &[&MATERIAL, &MOVING, &LOOK_AT_METHOD]],
+    ),
+    ("Transform", &[TRANSFORMS, &[&POINT, &VECTOR]]),
+    ("Rng", &[super::rng::METHODS]),
+    ("List", &[&[&MAP, &FILTER], LIST_FUNCTIONS]),
+    (
+        "Vec3",
+        &[&[&MAP, &FILTER], LIST_FUNCTIONS, VEC_FUNCTIONS, TRANSFORMS],
+    ),
+];
+
+/// The transform methods of objects, transforms and vectors.
+const TRANSFORMS: &[&Sig] = super::transform::METHODS;
+
+/// List functions that are also methods of lists and vectors (`l.sum()` is `sum(l)`).
+const LIST_FUNCTIONS: &[&Sig] = &[
+    &b::lists::LEN,
+    &b::lists::SUM,
+    &b::MIN,
+    &b::MAX,
+    &b::lists::FLATTEN,
+    &b::lists::REVERSE,
+    &b::lists::ZIP,
+    &b::lists::ENUMERATE,
+    &b::lists::ANY,
+    &b::lists::ALL,
+    &b::lists::REDUCE,
+];
+
+/// The names of the methods of values of type `receiver`, in order.
+fn names(receiver: &str) -> Vec<&'static str> {
+    RECEIVERS
+        .iter()
+        .filter(|(r, _)| *r == receiver)
+        .flat_map(|(_, tables)| tables.iter().flat_map(|t| t.iter().map(|m| m.name)))
+        .collect()
+}
+
+/// Whether `n` is in a method table.
+fn has(table: &[&Sig], n: &str) -> bool {
+    table.iter().any(|m| m.name == n)
+}
 
 /// `recv.name(args)`.
 pub fn call_method(
@@ -28,7 +81,7 @@ pub fn call_method(
         Value::Object(o) if n == "material" => return set_material(it, o, site, args),
         other => other,
     };
-    let is_t = super::transform::METHODS.contains(&n);
+    let is_t = is_transform(n);
     // The receiver is owned: a temporary object (`sphere(..).translate(..)`) is updated in
     // place, and only a shared one is copied.
     let recv = match recv {
@@ -59,13 +112,13 @@ pub fn call_method(
             let t = super::transform::method_transform(it, n, site, args)?;
             return Ok(Value::Transform(Rc::new(t * **a)));
         }
-        Value::Rng(seed) if super::rng::METHODS.contains(&n) => {
+        Value::Rng(seed) if has(super::rng::METHODS, n) => {
             return super::rng::method(it, *seed, n, site, args);
         }
         Value::List(_) | Value::Vec3(_) if n == "map" || n == "filter" => {
             return map_filter(it, &recv, n == "map", site, args);
         }
-        Value::List(_) | Value::Vec3(_) if LIST_METHODS.contains(&n) => {
+        Value::List(_) | Value::Vec3(_) if has(LIST_FUNCTIONS, n) => {
             return with_receiver(it, recv, name, args, span);
         }
         Value::Vec3(v) if is_t => {
@@ -73,11 +126,11 @@ pub fn call_method(
             let t = super::transform::method_transform(it, n, site, args)?;
             return Ok(Value::Vec3(t.transform_point3(*v)));
         }
-        Value::Vec3(_) if VEC_METHODS.contains(&n) => {
+        Value::Vec3(_) if has(VEC_FUNCTIONS, n) => {
             return with_receiver(it, recv, name, args, span);
         }
         Value::Transform(t) if n == "point" || n == "vector" => {
-            let mut p = super::args::Params::new(site, &["v"], args)?;
+            let mut p = Params::new(site, if n == "point" { &POINT } else { &VECTOR }, args)?;
             let (v, _) = p.vec3(it, "v")?;
             return Ok(Value::Vec3(if n == "point" {
                 t.transform_point3(v)
@@ -98,23 +151,27 @@ pub fn call_method(
         .into());
     }
     let known: Vec<&str> = match &recv {
-        Value::Object(_) => object_methods(),
-        Value::Transform(_) => [super::transform::METHODS, &["point", "vector"]].concat(),
-        Value::Rng(_) => super::rng::METHODS.to_vec(),
-        Value::List(_) => [&["map", "filter"], LIST_METHODS].concat(),
-        Value::Vec3(_) => [
-            &["map", "filter"],
-            LIST_METHODS,
-            VEC_METHODS,
-            super::transform::METHODS,
-        ]
-        .concat(),
+        Value::Object(_)
+        | Value::Transform(_)
+        | Value::Rng(_)
+        | Value::List(_)
+        | Value::Vec3(_) => names(recv.type_name()),
         _ => Vec::new(),
     };
     Err(super::members::unknown(
         "method", &recv, n, name.span, &known,
     ))
 }
+
+/// `.material(m)`'s parameter.
+static MATERIAL: Sig = Sig::new(
+    "material",
+    Group::Method,
+    "The object with its own material (a group's members without one take it).",
+    &[Param::new("material", Ty::Material, "the material")],
+    "Object",
+)
+.examples(&["sphere().material(material { color: rgb(0.8, 0.1, 0.1) })"]);
 
 /// `obj.material(m)`: the object with its own material.
 fn set_material(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
@@ -133,7 +190,7 @@ fn set_material(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<Arg
             m
         }
         _ => {
-            let mut p = super::args::Params::new(site, &["material"], args)?;
+            let mut p = Params::new(site, &MATERIAL, args)?;
             let (m, ms) = p.req("material")?;
             let Value::Material(m) = m else {
                 return Err(types::mismatch(it, "Material", &m, ms).into());
@@ -147,23 +204,28 @@ fn set_material(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<Arg
     Ok(Value::Object(o))
 }
 
-/// List functions that are also methods of lists and vectors (`l.sum()` is `sum(l)`).
-const LIST_METHODS: &[&str] = &[
-    "len",
-    "sum",
-    "min",
-    "max",
-    "flatten",
-    "reverse",
-    "zip",
-    "enumerate",
-    "any",
-    "all",
-    "reduce",
-];
-
 /// Vector functions that are also methods of vectors (`v.dot(w)` is `dot(v, w)`).
-const VEC_METHODS: &[&str] = &["length", "normalize", "dot", "cross", "distance"];
+const VEC_FUNCTIONS: &[&Sig] = &[&b::LENGTH, &b::NORMALIZE, &b::DOT, &b::CROSS, &b::DISTANCE];
+
+/// `t.point(p)`.
+static POINT: Sig = Sig::new(
+    "point",
+    Group::Method,
+    "Where the transform takes the point `v`.",
+    &[Param::new("v", Ty::Vec3, "a point")],
+    "Vec3",
+)
+.examples(&["rotate(y: 90deg).point(v: [1, 0, 0])"]);
+
+/// `t.vector(v)`.
+static VECTOR: Sig = Sig::new(
+    "vector",
+    Group::Method,
+    "The direction `v` mapped by the transform (without its translation).",
+    &[Param::new("v", Ty::Vec3, "a direction")],
+    "Vec3",
+)
+.examples(&["translate([1, 2, 3]).vector(v: [1, 0, 0])"]);
 
 /// `recv.f(args)` as the built-in `f(recv, args)`.
 fn with_receiver(
@@ -194,7 +256,7 @@ fn map_filter(
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<Value> {
-    let mut p = super::args::Params::new(site, &["f"], args)?;
+    let mut p = Params::new(site, if map { &MAP } else { &FILTER }, args)?;
     let (f, fs) = p.req("f")?;
     if !matches!(f, Value::Fn(_) | Value::Builtin(_)) {
         return Err(types::mismatch(it, "Fn", &f, fs).into());
@@ -217,11 +279,27 @@ fn map_filter(
     Ok(Value::List(Rc::new(out)))
 }
 
-/// Methods of objects: every transform method, plus `material`.
+/// `l.map(f)`.
+static MAP: Sig = Sig::new(
+    "map",
+    Group::Method,
+    "`f` of each element (of a vector mapped to numbers, a vector).",
+    &[Param::new("f", Ty::Fn, "what to make of an element")],
+    "List or Vec3",
+)
+.examples(&["[1, 2, 3].map(f: fn(x) x * 2)"]);
+
+/// `l.filter(f)`.
+static FILTER: Sig = Sig::new(
+    "filter",
+    Group::Method,
+    "The elements for which `f` is true.",
+    &[Param::new("f", Ty::Fn, "whether to keep an element")],
+    "List",
+)
+.examples(&["[1, 2, 3].filter(f: fn(x) x > 1)"]);
+
+/// Methods of objects: every transform method, plus `material`, `moving` and `look_at`.
 pub fn object_methods() -> Vec<&'static str> {
-    [
-        super::transform::METHODS,
-        &["material", "moving", "look_at"],
-    ]
-    .concat()
+    names("Object")
 }

@@ -22,6 +22,7 @@ pub(crate) mod params;
 pub(crate) mod parts;
 pub(crate) mod provenance;
 pub mod rng;
+pub(crate) mod schema;
 pub(crate) mod shapes;
 pub(crate) mod transform;
 pub(crate) mod types;
@@ -36,6 +37,7 @@ use crate::diag::{Diagnostic, Severity};
 use crate::ir::Loaded;
 use crate::source::SourceMap;
 
+pub use builtins::reserved_names;
 pub(crate) use options::on_eval_stack;
 pub use options::{DEFAULT_FPS, EvalOptions, LoopParts};
 pub use value::SHOW_LIMIT;

@@ -10,22 +10,65 @@ use super::args::{ArgVal, CallSite};
 use super::args::{Params, check_shown};
 use super::error::{R, error};
 use super::host::Host;
+use super::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use super::types;
 use super::value::{Obj, ObjShape, Value};
 use crate::diag::Diagnostic;
 use crate::ir::{self, Motion};
 use crate::source::Span;
 
+/// `.moving(..)`'s parameters.
+pub static MOVING: Sig = Sig::new(
+    "moving",
+    Group::Method,
+    "The object moving while the shutter is open, to where these changes put it at close.",
+    &[
+        Param::new("translate", Ty::Vec3, "the move")
+            .unit(Unit::Length)
+            .or(Lit::Vec3([0.0, 0.0, 0.0])),
+        Param::new(
+            "rotate",
+            Ty::Transform,
+            "a rotation about the origin (the shorter arc)",
+        )
+        .optional(),
+        Param::new(
+            "scale",
+            Ty::OneOf(&[Ty::Float, Ty::Vec3]),
+            "factors (> 0 in every axis)",
+        )
+        .range(Range::Positive)
+        .checked_by_builtin()
+        .or(Lit::Float(1.0)),
+        Param::new(
+            "spin",
+            Ty::Angle,
+            "a turn about `axis` by any angle (needs `axis`)",
+        )
+        .unit(Unit::Angle)
+        .optional(),
+        Param::new(
+            "axis",
+            Ty::Vec3,
+            "the axis of `spin`, through the origin (needs `spin`)",
+        )
+        .range(Range::NonZero)
+        .checked_by_builtin()
+        .optional(),
+    ],
+    "Object",
+)
+.examples(&[
+    "sphere().moving(translate: [1, 0, 0], rotate: rotate(y: 45deg), scale: 1.2)",
+    "box().moving(spin: 720deg, axis: Y)",
+]);
+
 /// `obj.moving(translate:, rotate:, scale:, spin:, axis:)`: the change of the object's
 /// placement from shutter open to shutter close, applied after its placement (as a
 /// `.translate(...)` would be); `spin:` turns it about `axis:` by any angle, whole turns too.
 pub fn moving(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(
-        site,
-        &["translate", "rotate", "scale", "spin", "axis"],
-        args,
-    )?;
-    let translate = p.vec3_or(it, "translate", DVec3::ZERO)?;
+    let mut p = Params::new(site, &MOVING, args)?;
+    let (translate, _) = p.vec3(it, "translate")?;
     let rotate = match p.get("rotate") {
         None => DQuat::IDENTITY,
         Some((v, sp)) => {
@@ -251,19 +294,15 @@ pub fn camera_motion(
     center: DVec3,
     up: DVec3,
 ) -> R<Option<ir::CameraMotion>> {
-    let eye_arg = p.get("eye_close");
-    let center_arg = p.get("center_close");
-    let span = eye_arg.as_ref().or(center_arg.as_ref()).map(|(_, s)| *s);
+    let eye_arg = p.vec3_opt(it, "eye_close")?;
+    let center_arg = p.vec3_opt(it, "center_close")?;
+    let span = eye_arg.or(center_arg).map(|(_, s)| s);
     let Some(span) = span else {
         return Ok(None);
     };
-    let end = |a: Option<(Value, Span)>, d: DVec3| match a {
-        Some((v, s)) => types::vec3(it, &v, s),
-        None => Ok(d),
-    };
     let m = ir::CameraMotion {
-        eye: end(eye_arg, eye)?,
-        center: end(center_arg, center)?,
+        eye: eye_arg.map_or(eye, |(v, _)| v),
+        center: center_arg.map_or(center, |(v, _)| v),
     };
     let view = m.center - m.eye;
     if view.length_squared() == 0.0
@@ -281,18 +320,48 @@ pub fn camera_motion(
     Ok((m.eye != eye || m.center != center).then_some(m))
 }
 
+/// `look_at(from:, to:, up:)`'s parameters.
+pub static LOOK_AT: Sig = Sig::new(
+    "look_at",
+    Group::Transform,
+    "Places an object made at the origin at `from`, its +Z axis towards `to`, +Y towards `up`.",
+    &[
+        Param::new("from", Ty::Vec3, "where the origin goes")
+            .unit(Unit::Length)
+            .or(Lit::Vec3([0.0, 0.0, 0.0])),
+        TO,
+        UP,
+    ],
+    "Transform",
+)
+.examples(&["look_at(from: [2, 0, 0], to: [2, 3, 0], up: Z)"]);
+/// The point `look_at` turns +Z towards.
+const TO: Param = Param::new("to", Ty::Vec3, "the point +Z turns towards").unit(Unit::Length);
+/// Where `look_at` turns +Y.
+const UP: Param =
+    Param::new("up", Ty::Vec3, "+Y turns as close to it as it can").or(Lit::Vec3([0.0, 1.0, 0.0]));
 /// `look_at(from:, to:, up:)`: places an object made at the origin at `from`, its +Z axis
 /// turned towards `to` and its +Y axis towards `up`.
 pub fn look_at_fn(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["from", "to", "up"], a)?;
-    let from = p.vec3_or(it, "from", DVec3::ZERO)?;
+    let mut p = Params::new(s, &LOOK_AT, a)?;
+    let (from, _) = p.vec3(it, "from")?;
     let (to, ts) = p.vec3(it, "to")?;
-    let up = p.vec3_or(it, "up", DVec3::Y)?;
+    let (up, _) = p.vec3(it, "up")?;
     let r = aim(to - from, up, ts)?;
     Ok(Value::Transform(Rc::new(
         DAffine3::from_translation(from) * r,
     )))
 }
+
+/// `.look_at(to, up)`'s parameters.
+pub static LOOK_AT_METHOD: Sig = Sig::new(
+    "look_at",
+    Group::Method,
+    "The object turned about its own origin so that its +Z axis points at `to`.",
+    &[TO, UP],
+    "Object",
+)
+.examples(&["cone(base_radius: 0.2).look_at(to: [0, 0, 10], up: Y)"]);
 
 /// `obj.look_at(to, up:)`: turns the object about its own origin so that what was its +Z axis
 /// points at `to` (and +Y towards `up`).
@@ -301,9 +370,9 @@ pub fn look_at_method(
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<(DVec3, DVec3, Span)> {
-    let mut p = Params::new(site, &["to", "up"], args)?;
+    let mut p = Params::new(site, &LOOK_AT_METHOD, args)?;
     let (to, ts) = p.vec3(it, "to")?;
-    let up = p.vec3_or(it, "up", DVec3::Y)?;
+    let (up, _) = p.vec3(it, "up")?;
     Ok((to, up, ts))
 }
 

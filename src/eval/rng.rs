@@ -22,11 +22,11 @@ use super::args::{ArgVal, CallSite};
 use super::error::R;
 use super::host::BuiltinFn;
 use super::host::Host;
-use super::types;
+use super::schema::{Group, Lit, Param, Sig, Ty};
 use super::value::Value;
 
-/// `random(seed:)`.
-pub const FNS: &[(&str, BuiltinFn)] = &[("random", random)];
+/// `random(seed:)` with its schema.
+pub static FNS: &[(&Sig, BuiltinFn)] = &[(&RANDOM, random)];
 
 /// SplitMix64's finaliser.
 pub fn mix(mut z: u64) -> u64 {
@@ -77,10 +77,18 @@ pub fn sphere_point(seed: u64, key: &str, i: i64, solid: bool) -> DVec3 {
     r * DVec3::new(s * libm::cos(phi), s * libm::sin(phi), z)
 }
 
+/// `random(seed)`.
+static RANDOM: Sig = Sig::new(
+    "random",
+    Group::Random,
+    "A keyed, counter-based random stream: every draw a pure function of (seed, key, index).",
+    &[Param::new("seed", Ty::Int, "the stream's seed")],
+    "Rng",
+)
+.examples(&["random(seed: 7)"]);
 fn random(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["seed"], a)?;
-    let (v, sp) = p.req("seed")?;
-    let seed = types::int(it, &v, sp)?;
+    let mut p = Params::new(s, &RANDOM, a)?;
+    let (seed, _) = p.int(it, "seed")?;
     Ok(Value::Rng(seed as u64))
 }
 
@@ -93,30 +101,91 @@ pub fn method(
     site: CallSite,
     args: Vec<ArgVal>,
 ) -> R<Value> {
-    let names: &'static [&'static str] = if name == "range" {
-        &["key", "index", "lo", "hi"]
-    } else {
-        &["key", "index"]
-    };
-    let mut p = Params::new(site, names, args)?;
-    let (kv, ks) = p.req("key")?;
-    let key = types::string(it, &kv, ks)?;
-    let i = match p.get("index") {
-        Some((v, sp)) => types::int(it, &v, sp)?,
-        None => 0,
-    };
+    let sig = METHODS
+        .iter()
+        .find(|m| m.name == name)
+        .expect("an `Rng` method");
+    let mut p = Params::new(site, sig, args)?;
+    let (key, _) = p.string(it, "key")?;
+    let (i, _) = p.int(it, "index")?;
     Ok(match name {
         "uniform" => Value::Float(unit(seed, &key, i, 0)),
         "normal" => Value::Float(normal(seed, &key, i)),
         "in_sphere" => Value::Vec3(sphere_point(seed, &key, i, true)),
         "on_sphere" => Value::Vec3(sphere_point(seed, &key, i, false)),
         _ => {
-            let (lo, _) = p.num(it, "lo")?;
-            let (hi, _) = p.num(it, "hi")?;
+            let (lo, _) = p.float(it, "lo")?;
+            let (hi, _) = p.float(it, "hi")?;
             Value::Float(lo + (hi - lo) * unit(seed, &key, i, 0))
         }
     })
 }
 
-/// Method names of `Rng` values.
-pub const METHODS: &[&str] = &["uniform", "normal", "in_sphere", "on_sphere", "range"];
+/// The methods of `Rng` values with their schemas.
+pub static METHODS: &[&Sig] = &[&UNIFORM, &NORMAL, &IN_SPHERE, &ON_SPHERE, &RANGE];
+
+/// What a draw is keyed by: a purpose and an index.
+const KEY: [Param; 2] = [
+    Param::new(
+        "key",
+        Ty::String,
+        "the purpose of the draw (\"size\", \"place\")",
+    ),
+    Param::new(
+        "index",
+        Ty::Int,
+        "which draw of that purpose (the loop counter)",
+    )
+    .or(Lit::Int(0)),
+];
+
+/// `rng.uniform(key, index)`.
+static UNIFORM: Sig = Sig::new(
+    "uniform",
+    Group::Method,
+    "A `Float` in [0, 1).",
+    &KEY,
+    "Float",
+)
+.examples(&["random(seed: 7).uniform(key: \"x\", index: 3)"]);
+/// `rng.normal(key, index)`.
+static NORMAL: Sig = Sig::new(
+    "normal",
+    Group::Method,
+    "A standard normal `Float`.",
+    &KEY,
+    "Float",
+)
+.examples(&["random(seed: 7).normal(\"x\", 3)"]);
+/// `rng.in_sphere(key, index)`.
+static IN_SPHERE: Sig = Sig::new(
+    "in_sphere",
+    Group::Method,
+    "A point uniformly inside the unit ball.",
+    &KEY,
+    "Vec3",
+)
+.examples(&["random(seed: 7).in_sphere(\"place\", 3) * 2"]);
+/// `rng.on_sphere(key, index)`.
+static ON_SPHERE: Sig = Sig::new(
+    "on_sphere",
+    Group::Method,
+    "A point uniformly on the unit sphere.",
+    &KEY,
+    "Vec3",
+)
+.examples(&["random(seed: 7).on_sphere(\"dir\")"]);
+/// `rng.range(key, index, lo, hi)`.
+static RANGE: Sig = Sig::new(
+    "range",
+    Group::Method,
+    "A `Float` in [lo, hi).",
+    &[
+        KEY[0],
+        KEY[1],
+        Param::new("lo", Ty::Float, "the lowest value"),
+        Param::new("hi", Ty::Float, "the bound above the values"),
+    ],
+    "Float",
+)
+.examples(&["random(seed: 7).range(key: \"size\", index: 3, lo: 0.1, hi: 0.3)"]);

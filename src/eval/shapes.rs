@@ -1,39 +1,100 @@
-//! Object constructors with schema-checked parameters, groups, and the CSG list forms.
+//! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
+//! in `mesh`).
 
 use crate::num::Norm;
 use std::rc::Rc;
 
 use glam::{DAffine3, DVec3};
 
+use super::args::Params;
 use super::args::{ArgVal, CallSite};
-use super::args::{Params, positive};
-use super::error::{R, error};
+use super::error::R;
 use super::host::BuiltinFn;
 use super::host::Host;
+use super::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use super::types;
-use super::value::{Obj, ObjShape, Value, obj_kind};
-use crate::ir::{BlobComponent, CsgOp, Shape};
+use super::value::{Obj, ObjShape, Value};
+use crate::ir::{BlobComponent, Shape};
 use crate::source::Span;
 
-/// Object constructors.
-pub const FNS: &[(&str, BuiltinFn)] = &[
-    ("sphere", sphere),
-    ("plane", plane),
-    ("box", box_),
-    ("triangle", triangle),
-    ("quad", quad),
-    ("polygon", polygon),
-    ("disk", disk),
-    ("ring", ring),
-    ("cylinder", cylinder),
-    ("cone", cone),
-    ("torus", torus),
-    ("blob", blob),
-    ("mesh", mesh),
-    ("group", group),
-    ("union", union),
-    ("intersection", intersection),
-    ("difference", difference),
+mod compound;
+mod mesh;
+
+pub use compound::{FNS as COMPOUND_FNS, require_closed};
+
+/// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
+/// geometry's shape rules once the shape is made (`checked`), which name the parameter to
+/// blame; the schema states them for the reference.
+pub static FNS: &[(&Sig, BuiltinFn)] = &[
+    (&SPHERE, sphere),
+    (&PLANE, plane),
+    (&BOX, box_),
+    (&TRIANGLE, triangle),
+    (&QUAD, quad),
+    (&POLYGON, polygon),
+    (&DISK, disk),
+    (&RING, ring),
+    (&CYLINDER, cylinder),
+    (&CONE, cone),
+    (&TORUS, torus),
+    (&BLOB, blob),
+    (&mesh::MESH, mesh::mesh),
+];
+
+/// A point, `[0, 0, 0]` unless given.
+const fn point(name: &'static str, doc: &'static str) -> Param {
+    Param::new(name, Ty::Vec3, doc)
+        .unit(Unit::Length)
+        .or(Lit::Vec3([0.0, 0.0, 0.0]))
+}
+
+/// A required point or edge.
+const fn corner(name: &'static str, doc: &'static str) -> Param {
+    Param::new(name, Ty::Vec3, doc).unit(Unit::Length)
+}
+
+/// A direction, `Y` unless given, normalised.
+const fn direction(name: &'static str, doc: &'static str) -> Param {
+    Param::new(name, Ty::Vec3, doc)
+        .range(Range::NonZero)
+        .or(Lit::Vec3([0.0, 1.0, 0.0]))
+}
+
+/// A radius (> 0 by the shape rules), `default` unless given.
+const fn radius(name: &'static str, doc: &'static str, default: f64) -> Param {
+    Param::new(name, Ty::Float, doc)
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .checked_by_builtin()
+        .or(Lit::Float(default))
+}
+
+/// `capped: Bool = true` of cylinders and cones.
+const CAPPED: Param = Param::new(
+    "capped",
+    Ty::Bool,
+    "closes the ends (`false`: an open tube)",
+)
+.or(Lit::Bool(true));
+
+/// The ends of cylinders and cones: `base` and `top`, or `center`, `axis` and `height`.
+const ENDS: [Param; 5] = [
+    Param::new("base", Ty::Vec3, "the centre of the base end")
+        .unit(Unit::Length)
+        .optional(),
+    Param::new("top", Ty::Vec3, "the centre of the top end (≠ base)")
+        .unit(Unit::Length)
+        .optional(),
+    point("center", "the middle, without `base` and `top`"),
+    direction("axis", "from base to top, without both ends"),
+    Param::new(
+        "height",
+        Ty::Float,
+        "the length along `axis`, without both ends",
+    )
+    .unit(Unit::Length)
+    .range(Range::Positive)
+    .or(Lit::Float(1.0)),
 ];
 
 /// Checks a shape by geometry's rules (the one home of shape validity, `geometry::shapes`) and
@@ -50,6 +111,7 @@ fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
     Ok(prim(shape, s.span))
 }
 
+/// An object of `shape` made at `span`, untransformed and without a material.
 fn prim(shape: Shape, span: Span) -> Value {
     Value::Object(Rc::new(Obj {
         shape: ObjShape::Prim(shape),
@@ -61,52 +123,87 @@ fn prim(shape: Shape, span: Span) -> Value {
     }))
 }
 
-fn unit_dir(it: &dyn Host, p: &mut Params, name: &str, default: DVec3) -> R<DVec3> {
-    match p.get(name) {
-        None => Ok(default),
-        Some((v, sp)) => {
-            let d = types::vec3(it, &v, sp)?;
-            if d.length_squared() == 0.0 || !d.is_finite() {
-                return Err(error(
-                    "rtc::param::out_of_range",
-                    sp,
-                    format!("`{name}` must be a non-zero vector"),
-                )
-                .with_label("this vector has length 0")
-                .with_help(format!("give a direction, e.g. `{name}: Y`"))
-                .into());
-            }
-            Ok(d.unit())
-        }
-    }
+/// The direction `name`, normalised (its default `Y` is a unit vector: `unit` keeps it).
+fn unit_dir(it: &dyn Host, p: &mut Params, name: &str) -> R<DVec3> {
+    Ok(p.vec3(it, name)?.0.unit())
 }
 
+/// `sphere(center, radius)`.
+static SPHERE: Sig = Sig::new(
+    "sphere",
+    Group::Shape,
+    "A sphere.",
+    &[
+        point("center", "the centre"),
+        radius("radius", "the radius", 1.0),
+    ],
+    "Object",
+)
+.examples(&["sphere(center: [0, 1, 0], radius: 1)"]);
 fn sphere(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["center", "radius"], a)?;
-    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    let (radius, rs) = p.num_or(it, "radius", 1.0)?;
+    let mut p = Params::new(s, &SPHERE, a)?;
+    let (center, _) = p.vec3(it, "center")?;
+    let (radius, rs) = p.float(it, "radius")?;
     checked(Shape::Sphere { center, radius }, s, &[("radius", rs)])
 }
 
+/// `plane(point, normal)`.
+static PLANE: Sig = Sig::new(
+    "plane",
+    Group::Shape,
+    "A half-space: the normal points outside.",
+    &[
+        point("point", "a point of the plane"),
+        direction("normal", "the outward normal (normalised)"),
+    ],
+    "Object",
+)
+.examples(&["plane(point: [0, 0, 0], normal: Y)"]);
 fn plane(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["point", "normal"], a)?;
-    let point = p.vec3_or(it, "point", DVec3::ZERO)?;
-    let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
+    let mut p = Params::new(s, &PLANE, a)?;
+    let (point, _) = p.vec3(it, "point")?;
+    let normal = unit_dir(it, &mut p, "normal")?;
     checked(Shape::Plane { point, normal }, s, &[])
 }
 
+/// `box(min, max)`.
+static BOX: Sig = Sig::new(
+    "box",
+    Group::Shape,
+    "An axis-aligned box (before transforms).",
+    &[
+        Param::new("min", Ty::Vec3, "the lowest corner")
+            .unit(Unit::Length)
+            .or(Lit::Vec3([-0.5, -0.5, -0.5])),
+        Param::new("max", Ty::Vec3, "the highest corner (> min on every axis)")
+            .unit(Unit::Length)
+            .or(Lit::Vec3([0.5, 0.5, 0.5])),
+    ],
+    "Object",
+)
+.examples(&["box(min: [-1, 0, -1], max: [1, 2, 1])"]);
 fn box_(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["min", "max"], a)?;
-    let min = p.vec3_or(it, "min", DVec3::splat(-0.5))?;
-    let (max, ms) = match p.get("max") {
-        Some((v, sp)) => (types::vec3(it, &v, sp)?, sp),
-        None => (DVec3::splat(0.5), s.span),
-    };
+    let mut p = Params::new(s, &BOX, a)?;
+    let (min, _) = p.vec3(it, "min")?;
+    let (max, ms) = p.vec3(it, "max")?;
     checked(Shape::Box { min, max }, s, &[("max", ms)])
 }
 
+/// `triangle(a, b, c)`.
+static TRIANGLE: Sig = Sig::new(
+    "triangle",
+    Group::Shape,
+    "A triangle, front side counter-clockwise (non-zero area).",
+    &[
+        corner("a", "the first corner"),
+        corner("b", "the second corner"),
+        corner("c", "the third corner"),
+    ],
+    "Object",
+)
+.examples(&["triangle(a: [0, 0, 0], b: [1, 0, 0], c: [0, 1, 0])"]);
 fn triangle(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["a", "b", "c"], a)?;
+    let mut p = Params::new(s, &TRIANGLE, a)?;
     let (va, _) = p.vec3(it, "a")?;
     let (vb, _) = p.vec3(it, "b")?;
     let (vc, cs) = p.vec3(it, "c")?;
@@ -119,16 +216,43 @@ fn triangle(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
+/// `quad(corner, u, v)`.
+static QUAD: Sig = Sig::new(
+    "quad",
+    Group::Shape,
+    "The parallelogram `corner + s·u + t·v`, s, t in [0, 1] (u × v ≠ 0).",
+    &[
+        point("corner", "one corner"),
+        corner("u", "one edge"),
+        corner("v", "the other edge"),
+    ],
+    "Object",
+)
+.examples(&["quad(corner: [0, 0, 0], u: [1, 0, 0], v: [0, 0, 1])"]);
 fn quad(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["corner", "u", "v"], a)?;
-    let corner = p.vec3_or(it, "corner", DVec3::ZERO)?;
+    let mut p = Params::new(s, &QUAD, a)?;
+    let (corner, _) = p.vec3(it, "corner")?;
     let (u, _) = p.vec3(it, "u")?;
     let (v, vs) = p.vec3(it, "v")?;
     checked(Shape::Quad { corner, u, v }, s, &[("v", vs)])
 }
 
+/// `polygon(points)`.
+static POLYGON: Sig = Sig::new(
+    "polygon",
+    Group::Shape,
+    "A flat polygon, closed implicitly; may be concave.",
+    &[Param::new(
+        "points",
+        Ty::ListOf(&Ty::Vec3),
+        "at least 3 corners in one plane",
+    )
+    .unit(Unit::Length)],
+    "Object",
+)
+.examples(&["polygon(points: [[0, 0, 0], [1, 0, 0], [1, 0, 1], [0, 0, 1]])"]);
 fn polygon(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["points"], a)?;
+    let mut p = Params::new(s, &POLYGON, a)?;
     let (v, sp) = p.req("points")?;
     let items: Vec<Value> = match &v {
         Value::List(l) => l.to_vec(),
@@ -141,11 +265,24 @@ fn polygon(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     checked(Shape::Polygon { points }, s, &[("points", sp)])
 }
 
+/// `disk(center, normal, radius)`.
+static DISK: Sig = Sig::new(
+    "disk",
+    Group::Shape,
+    "A flat disk.",
+    &[
+        point("center", "the centre"),
+        direction("normal", "the front side's normal (normalised)"),
+        radius("radius", "the radius", 1.0),
+    ],
+    "Object",
+)
+.examples(&["disk(center: [0, 0.01, 0], normal: Y, radius: 2)"]);
 fn disk(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["center", "normal", "radius"], a)?;
-    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
-    let (radius, rs) = p.num_or(it, "radius", 1.0)?;
+    let mut p = Params::new(s, &DISK, a)?;
+    let (center, _) = p.vec3(it, "center")?;
+    let normal = unit_dir(it, &mut p, "normal")?;
+    let (radius, rs) = p.float(it, "radius")?;
     checked(
         Shape::Disk {
             center,
@@ -157,12 +294,30 @@ fn disk(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
+/// `ring(center, normal, radius, inner)`.
+static RING: Sig = Sig::new(
+    "ring",
+    Group::Shape,
+    "A disk with a round hole; uv: u around, v from the hole's edge (0) to the rim (1).",
+    &[
+        point("center", "the centre"),
+        direction("normal", "the front side's normal (normalised)"),
+        radius("radius", "the outer radius", 1.0),
+        Param::new("inner", Ty::Float, "the hole's radius (< radius)")
+            .unit(Unit::Length)
+            .range(Range::NonNegative)
+            .checked_by_builtin()
+            .or(Lit::Float(0.5)),
+    ],
+    "Object",
+)
+.examples(&["ring(center: [0, 1, 0], normal: Y, radius: 2, inner: 1.5)"]);
 fn ring(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["center", "normal", "radius", "inner"], a)?;
-    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    let normal = unit_dir(it, &mut p, "normal", DVec3::Y)?;
-    let (radius, rs) = p.num_or(it, "radius", 1.0)?;
-    let (inner, is) = p.num_or(it, "inner", 0.5)?;
+    let mut p = Params::new(s, &RING, a)?;
+    let (center, _) = p.vec3(it, "center")?;
+    let normal = unit_dir(it, &mut p, "normal")?;
+    let (radius, rs) = p.float(it, "radius")?;
+    let (inner, is) = p.float(it, "inner")?;
     checked(
         Shape::Ring {
             center,
@@ -180,10 +335,9 @@ fn ring(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 fn ends(it: &dyn Host, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
     let base = p.get("base");
     let top = p.get("top");
-    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
-    let axis = unit_dir(it, p, "axis", DVec3::Y)?;
-    let (height, hs) = p.num_or(it, "height", 1.0)?;
-    positive("height", height, hs)?;
+    let (center, _) = p.vec3(it, "center")?;
+    let axis = unit_dir(it, p, "axis")?;
+    let (height, hs) = p.float(it, "height")?;
     Ok(match (base, top) {
         (Some((b, bs)), Some((t, ts))) => {
             let (b, t) = (types::vec3(it, &b, bs)?, types::vec3(it, &t, ts)?);
@@ -205,17 +359,31 @@ fn ends(it: &dyn Host, p: &mut Params) -> R<(DVec3, DVec3, Span)> {
     })
 }
 
+/// `cylinder(radius, base, top, center, axis, height, capped)`.
+static CYLINDER: Sig = Sig::new(
+    "cylinder",
+    Group::Shape,
+    "A cylinder from `base` to `top`, or centred on `center` along `axis`.",
+    &[
+        radius("radius", "the radius", 1.0),
+        ENDS[0],
+        ENDS[1],
+        ENDS[2],
+        ENDS[3],
+        ENDS[4],
+        CAPPED,
+    ],
+    "Object",
+)
+.examples(&[
+    "cylinder(base: [0, 0, 0], top: [0, 2, 0], radius: 0.25)",
+    "cylinder(radius: 0.5, center: [0, 0, 0], axis: X, height: 3, capped: false)",
+]);
 fn cylinder(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(
-        s,
-        &[
-            "radius", "base", "top", "center", "axis", "height", "capped",
-        ],
-        a,
-    )?;
-    let (radius, rs) = p.num_or(it, "radius", 1.0)?;
+    let mut p = Params::new(s, &CYLINDER, a)?;
+    let (radius, rs) = p.float(it, "radius")?;
     let (base, top, top_span) = ends(it, &mut p)?;
-    let capped = p.bool_or(it, "capped", true)?;
+    let capped = p.bool(it, "capped")?;
     checked(
         Shape::Cylinder {
             base,
@@ -228,25 +396,41 @@ fn cylinder(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
+/// A cone's radius at one end (>= 0, not both 0, by the shape rules).
+const fn end_radius(name: &'static str, doc: &'static str, default: f64) -> Param {
+    Param::new(name, Ty::Float, doc)
+        .unit(Unit::Length)
+        .range(Range::NonNegative)
+        .checked_by_builtin()
+        .or(Lit::Float(default))
+}
+
+/// `cone(base_radius, top_radius, base, top, center, axis, height, capped)`.
+static CONE: Sig = Sig::new(
+    "cone",
+    Group::Shape,
+    "A cone, or a frustum when both radii are > 0; ends as for `cylinder`.",
+    &[
+        end_radius("base_radius", "the radius at `base`", 1.0),
+        end_radius("top_radius", "the radius at `top`", 0.0),
+        ENDS[0],
+        ENDS[1],
+        ENDS[2],
+        ENDS[3],
+        ENDS[4],
+        CAPPED,
+    ],
+    "Object",
+)
+.examples(&[
+    "cone(base_radius: 1, top_radius: 0.2, base: [0, 0, 0], axis: Y, height: 1.5, capped: false)",
+]);
 fn cone(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(
-        s,
-        &[
-            "base_radius",
-            "top_radius",
-            "base",
-            "top",
-            "center",
-            "axis",
-            "height",
-            "capped",
-        ],
-        a,
-    )?;
-    let (br, bs) = p.num_or(it, "base_radius", 1.0)?;
-    let (tr, ts) = p.num_or(it, "top_radius", 0.0)?;
+    let mut p = Params::new(s, &CONE, a)?;
+    let (br, bs) = p.float(it, "base_radius")?;
+    let (tr, ts) = p.float(it, "top_radius")?;
     let (base, top, top_span) = ends(it, &mut p)?;
-    let capped = p.bool_or(it, "capped", true)?;
+    let capped = p.bool(it, "capped")?;
     checked(
         Shape::Cone {
             base,
@@ -260,11 +444,38 @@ fn cone(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
+/// `torus(major_radius, minor_radius, center)`.
+static TORUS: Sig = Sig::new(
+    "torus",
+    Group::Shape,
+    "A torus in the xz-plane around +Y.",
+    &[
+        Param::new(
+            "major_radius",
+            Ty::Float,
+            "from the centre to the tube's centre",
+        )
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .checked_by_builtin(),
+        Param::new(
+            "minor_radius",
+            Ty::Float,
+            "the tube's radius (< major_radius)",
+        )
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .checked_by_builtin(),
+        point("center", "the centre"),
+    ],
+    "Object",
+)
+.examples(&["torus(major_radius: 1, minor_radius: 0.25, center: [0, 1, 0])"]);
 fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["major_radius", "minor_radius", "center"], a)?;
-    let (major, ms) = p.num(it, "major_radius")?;
-    let (minor, ns) = p.num(it, "minor_radius")?;
-    let center = p.vec3_or(it, "center", DVec3::ZERO)?;
+    let mut p = Params::new(s, &TORUS, a)?;
+    let (major, ms) = p.float(it, "major_radius")?;
+    let (minor, ns) = p.float(it, "minor_radius")?;
+    let (center, _) = p.vec3(it, "center")?;
     checked(
         Shape::Torus {
             center,
@@ -276,8 +487,48 @@ fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     )
 }
 
+/// `blob(components, threshold)`.
+static BLOB: Sig = Sig::new(
+    "blob",
+    Group::Shape,
+    "A blob: the surface where the components' summed field reaches `threshold`.",
+    &[
+        Param::new(
+            "components",
+            Ty::ListOf(&Ty::Record),
+            "at least one `blob component` record",
+        ),
+        Param::new("threshold", Ty::Float, "the field value on the surface")
+            .range(Range::Positive)
+            .checked_by_builtin()
+            .or(Lit::Float(0.5)),
+    ],
+    "Object",
+)
+.examples(&[
+    "blob(components: [{ center: [-0.4, 0, 0] }, { center: [0.4, 0, 0] }], threshold: 0.6)",
+]);
+
+/// A blob's component, a record in `blob(components: [...])`.
+pub(crate) static BLOB_COMPONENT: Sig = Sig::new(
+    "blob component",
+    Group::Record,
+    "One component of a `blob`: a sphere of influence.",
+    &[
+        point("center", "the centre"),
+        radius("radius", "how far its field reaches", 1.0),
+        Param::new(
+            "strength",
+            Ty::Float,
+            "its field at the centre (negative subtracts)",
+        )
+        .or(Lit::Float(1.0)),
+    ],
+    "",
+)
+.examples(&["blob(components: [{ center: [0, 0, 0], radius: 1, strength: 1 }, { center: [0.5, 0, 0], strength: -0.5 }])"]);
 fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["components", "threshold"], a)?;
+    let mut p = Params::new(s, &BLOB, a)?;
     let (v, sp) = p.req("components")?;
     let Value::List(items) = &v else {
         return Err(types::mismatch(it, "List", &v, sp).into());
@@ -293,17 +544,17 @@ fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             value: c.clone(),
             span: sp,
         };
-        let mut cp = Params::new(site, &["center", "radius", "strength"], vec![arg])?;
-        let center = cp.vec3_or(it, "center", DVec3::ZERO)?;
-        let (radius, _) = cp.num_or(it, "radius", 1.0)?;
-        let (strength, _) = cp.num_or(it, "strength", 1.0)?;
+        let mut cp = Params::new(site, &BLOB_COMPONENT, vec![arg])?;
+        let (center, _) = cp.vec3(it, "center")?;
+        let (radius, _) = cp.float(it, "radius")?;
+        let (strength, _) = cp.float(it, "strength")?;
         components.push(BlobComponent {
             center,
             radius,
             strength,
         });
     }
-    let (threshold, ts) = p.num_or(it, "threshold", 0.5)?;
+    let (threshold, ts) = p.float(it, "threshold")?;
     checked(
         Shape::Blob {
             components,
@@ -317,156 +568,4 @@ fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             ("threshold", ts),
         ],
     )
-}
-
-fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["path", "smooth", "use_mtl"], a)?;
-    let (pv, ps) = p.req("path")?;
-    let rel = types::string(it, &pv, ps)?;
-    let path = super::assets::existing(it, &rel, ps, "mesh")?;
-    only_obj(&path, ps)?;
-    let smooth = p.bool_or(it, "smooth", false)?;
-    let use_mtl = p.bool_or(it, "use_mtl", false)?;
-    Ok(prim(
-        Shape::Mesh {
-            path,
-            smooth,
-            use_mtl,
-        },
-        s.span,
-    ))
-}
-
-/// Meshes are Wavefront OBJ: another format (STL, PLY, glTF...) is refused by its extension
-/// before anyone tries to read it as OBJ.
-fn only_obj(path: &std::path::Path, span: Span) -> R<()> {
-    let ext = path
-        .extension()
-        .map(|e| e.to_string_lossy().to_ascii_lowercase())
-        .unwrap_or_default();
-    if ext == "obj" {
-        return Ok(());
-    }
-    Err(crate::eval::error::error(
-        "rtc::asset::format",
-        span,
-        format!("`{}` is not a Wavefront OBJ file", path.display()),
-    )
-    .with_label(if ext.is_empty() {
-        "no `.obj` extension".to_owned()
-    } else {
-        format!("a `.{ext}` file")
-    })
-    .with_help(
-        "only OBJ meshes are read; convert the model to `.obj` (e.g. with Blender or MeshLab)",
-    )
-    .into())
-}
-
-/// Flattens nested lists of objects (as `for` produces) into `out`.
-pub fn collect_objects(it: &dyn Host, v: &Value, span: Span, out: &mut Vec<Obj>) -> R<()> {
-    match v {
-        Value::Object(o) => out.push((**o).clone()),
-        Value::List(l) => {
-            for x in l.iter() {
-                collect_objects(it, x, span, out)?;
-            }
-        }
-        Value::Unit => {}
-        other => return Err(types::mismatch(it, "Object", other, span).into()),
-    }
-    Ok(())
-}
-
-fn object_list(it: &dyn Host, p: &mut Params, name: &str) -> R<(Vec<Obj>, Span)> {
-    let (v, sp) = p.req(name)?;
-    let mut out = Vec::new();
-    collect_objects(it, &v, sp, &mut out)?;
-    Ok((out, sp))
-}
-
-fn group(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["children"], a)?;
-    let (children, _) = object_list(it, &mut p, "children")?;
-    Ok(Value::Object(Rc::new(Obj {
-        shape: ObjShape::Group(Rc::new(children)),
-        transform: DAffine3::IDENTITY,
-        material: None,
-        motion: None,
-        span: s.span,
-        origin: 0,
-    })))
-}
-
-fn csg_node(it: &dyn Host, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite) -> R<Value> {
-    if let Err(flaw) = crate::geometry::shapes::csg_operands(children.len()) {
-        return Err(flaw.diagnostic(sp).into());
-    }
-    for c in &children {
-        require_closed(it, c, sp)?;
-    }
-    Ok(Value::Object(Rc::new(Obj {
-        shape: ObjShape::Csg(op, super::operands::Operands::new(children)),
-        transform: DAffine3::IDENTITY,
-        material: None,
-        motion: None,
-        span: s.span,
-        origin: 0,
-    })))
-}
-
-fn union(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["objects", "merge"], a)?;
-    let (children, sp) = object_list(it, &mut p, "objects")?;
-    let op = if p.bool_or(it, "merge", false)? {
-        CsgOp::Merge
-    } else {
-        CsgOp::Union
-    };
-    csg_node(it, op, children, sp, s)
-}
-
-fn intersection(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["objects"], a)?;
-    let (children, sp) = object_list(it, &mut p, "objects")?;
-    csg_node(it, CsgOp::Intersection, children, sp, s)
-}
-
-fn difference(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["base", "cutters"], a)?;
-    let (bv, bs) = p.req("base")?;
-    let Value::Object(base) = &bv else {
-        return Err(types::mismatch(it, "Object", &bv, bs).into());
-    };
-    let (cutters, sp) = object_list(it, &mut p, "cutters")?;
-    let mut children = vec![(**base).clone()];
-    children.extend(cutters);
-    csg_node(it, CsgOp::Difference, children, sp, s)
-}
-
-/// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
-/// `geometry::shapes::encloses_volume`).
-pub fn require_closed(it: &dyn Host, o: &Obj, span: Span) -> R<()> {
-    let _ = it;
-    let open = match &o.shape {
-        // A mesh file's closedness is checked when the preparation stage loads it.
-        ObjShape::Prim(s) => !crate::geometry::shapes::encloses_volume(s, &|_, _| true),
-        ObjShape::Group(ch) => {
-            for c in ch.iter() {
-                require_closed(it, c, span)?;
-            }
-            false
-        }
-        _ => false,
-    };
-    if open {
-        let mut d = error("rtc::csg::open_operand", span, format!("a {} has no inside, so it cannot take part in CSG", obj_kind(o)))
-            .with_label("an open surface")
-            .with_help("use a closed solid (sphere, box, capped cylinder, torus, ...), or a `group` instead of CSG");
-        if o.span != span {
-            d = d.with_secondary(o.span, "made here");
-        }
-        return Err(d.into());
-    }
-    Ok(())
 }

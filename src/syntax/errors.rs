@@ -247,26 +247,15 @@ fn join_or(words: &[String]) -> String {
     }
 }
 
-/// Whether `word` cannot be a name (the grammar's `keyword` rule).
+/// The words that cannot be names (the grammar's `keyword` rule).
+pub(crate) const KEYWORDS: &[&str] = &[
+    "rtc", "let", "fn", "for", "in", "if", "else", "import", "as", "pub", "with", "true", "false",
+    "step", "div",
+];
+
+/// Whether `word` cannot be a name (one of [`KEYWORDS`]).
 pub(crate) fn is_keyword(word: &str) -> bool {
-    matches!(
-        word,
-        "rtc"
-            | "let"
-            | "fn"
-            | "for"
-            | "in"
-            | "if"
-            | "else"
-            | "import"
-            | "as"
-            | "pub"
-            | "with"
-            | "true"
-            | "false"
-            | "step"
-            | "div"
-    )
+    KEYWORDS.contains(&word)
 }
 
 /// A description of the text at `pos` and its length in bytes.

@@ -14,6 +14,7 @@ mod pratt;
 mod stmts;
 
 pub(crate) use build::srgb_to_linear;
+pub(crate) use errors::KEYWORDS;
 
 use pest::Parser;
 

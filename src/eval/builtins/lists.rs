@@ -9,24 +9,40 @@ use crate::eval::args::{ArgVal, CallSite};
 use crate::eval::error::R;
 use crate::eval::host::BuiltinFn;
 use crate::eval::host::Host;
+use crate::eval::schema::{Group, Param, Sig, Ty};
 use crate::eval::types;
 use crate::eval::value::Value;
 use crate::source::Span;
 use crate::syntax::ast::BinOp;
 
-/// List functions by name.
-pub const FNS: &[(&str, BuiltinFn)] = &[
-    ("len", len),
-    ("sum", sum),
-    ("flatten", flatten),
-    ("concat", concat),
-    ("reverse", reverse),
-    ("zip", zip),
-    ("enumerate", enumerate),
-    ("any", any),
-    ("all", all),
-    ("reduce", reduce),
-    ("iterate", iterate),
+/// List functions with their schemas.
+pub static FNS: &[(&Sig, BuiltinFn)] = &[
+    (&LEN, len),
+    (&SUM, sum),
+    (&FLATTEN, flatten),
+    (&CONCAT, concat),
+    (&REVERSE, reverse),
+    (&ZIP, zip),
+    (&ENUMERATE, enumerate),
+    (&ANY, any),
+    (&ALL, all),
+    (&REDUCE, reduce),
+    (&ITERATE, iterate),
+];
+
+/// The list a list function reads.
+const THE_LIST: Param = Param::new("list", Ty::List, "a list (a `Vec3` is three numbers)");
+/// The parameter of the one-list functions.
+const LIST: &[Param] = &[THE_LIST];
+/// `any`, `all`.
+const PREDICATE: &[Param] = &[
+    THE_LIST,
+    Param::new(
+        "f",
+        Ty::Fn,
+        "what to ask of each element (without it, the elements are `Bool`s)",
+    )
+    .optional(),
 ];
 
 /// The elements of a list-like value: a `List`, or a `Vec3` as three `Float`s.
@@ -74,8 +90,21 @@ fn list(it: &dyn Host, v: Vec<Value>, span: Span) -> R<Value> {
     Ok(Value::List(Rc::new(v)))
 }
 
+/// `len(x)`.
+pub(crate) static LEN: Sig = Sig::new(
+    "len",
+    Group::List,
+    "The number of elements (of a `String`, its characters).",
+    &[Param::new(
+        "list",
+        Ty::OneOf(&[Ty::List, Ty::Vec3, Ty::String, Ty::Range]),
+        "a `List`, `Vec3`, `String` or range",
+    )],
+    "Int",
+)
+.examples(&["len(list: [1, 2, 3])"]);
 fn len(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
+    let mut p = Params::new(s, &LEN, a)?;
     let (v, sp) = p.req("list")?;
     Ok(Value::Int(match v {
         Value::List(l) => l.len() as i64,
@@ -88,8 +117,16 @@ fn len(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// `sum(list)`: the elements added with `+`, so numbers, angles, vectors and colours all sum
 /// (the first element starts the sum; `sum([])` is `0`).
+pub(crate) static SUM: Sig = Sig::new(
+    "sum",
+    Group::List,
+    "The elements added with `+` (`0` for `[]`).",
+    LIST,
+    "their sum",
+)
+.examples(&["sum([1, 2, 3])"]);
 fn sum(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
+    let mut p = Params::new(s, &SUM, a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let mut iter = l.iter();
     let Some(first) = iter.next() else {
@@ -103,8 +140,16 @@ fn sum(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `flatten(list)`: the elements of the inner lists in order (one level; other elements stay).
+pub(crate) static FLATTEN: Sig = Sig::new(
+    "flatten",
+    Group::List,
+    "The elements of the inner lists in order (one level).",
+    LIST,
+    "List",
+)
+.examples(&["flatten([[1, 2], [3]])"]);
 fn flatten(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
+    let mut p = Params::new(s, &FLATTEN, a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let mut out = Vec::new();
     for x in l.iter() {
@@ -117,6 +162,15 @@ fn flatten(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `concat(a, b, ...)`: the lists one after another.
+static CONCAT: Sig = Sig::new(
+    "concat",
+    Group::List,
+    "The lists one after another.",
+    &[Param::new("lists", Ty::List, "lists")],
+    "List",
+)
+.variadic()
+.examples(&["concat([1], [2, 3])"]);
 fn concat(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut out = Vec::new();
     for x in a {
@@ -129,15 +183,35 @@ fn concat(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     list(it, out, s.span)
 }
 
+/// `reverse(list)`.
+pub(crate) static REVERSE: Sig = Sig::new(
+    "reverse",
+    Group::List,
+    "The elements in reverse order.",
+    LIST,
+    "List",
+)
+.examples(&["reverse([1, 2, 3])"]);
 fn reverse(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
+    let mut p = Params::new(s, &REVERSE, a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     list(it, l.iter().rev().cloned().collect(), sp)
 }
 
 /// `zip(a, b)`: pairs `[a[i], b[i]]` up to the shorter length.
+pub(crate) static ZIP: Sig = Sig::new(
+    "zip",
+    Group::List,
+    "Pairs `[a[i], b[i]]` up to the shorter length.",
+    &[
+        Param::new("a", Ty::List, "the first list"),
+        Param::new("b", Ty::List, "the second list"),
+    ],
+    "List",
+)
+.examples(&["zip(a: [1, 2], b: [3, 4])"]);
 fn zip(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["a", "b"], a)?;
+    let mut p = Params::new(s, &ZIP, a)?;
     let (x, sp) = list_arg(it, &mut p, "a")?;
     let (y, _) = list_arg(it, &mut p, "b")?;
     let pairs = x
@@ -149,8 +223,16 @@ fn zip(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `enumerate(list)`: pairs `[i, list[i]]`.
+pub(crate) static ENUMERATE: Sig = Sig::new(
+    "enumerate",
+    Group::List,
+    "Pairs `[i, list[i]]`.",
+    LIST,
+    "List",
+)
+.examples(&["enumerate([\"a\", \"b\"])"]);
 fn enumerate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list"], a)?;
+    let mut p = Params::new(s, &ENUMERATE, a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let pairs = l
         .iter()
@@ -161,8 +243,14 @@ fn enumerate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `any` and `all`: over `Bool`s, or over what a predicate `f` says of each element.
-fn any_all(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Value> {
-    let mut p = Params::new(s, &["list", "f"], a)?;
+fn any_all(
+    it: &mut dyn Host,
+    s: CallSite,
+    a: Vec<ArgVal>,
+    want: bool,
+    sig: &'static Sig,
+) -> R<Value> {
+    let mut p = Params::new(s, sig, a)?;
     let (l, sp) = list_arg(it, &mut p, "list")?;
     let f = match p.get("f") {
         Some((f, fs)) if matches!(f, Value::Fn(_) | Value::Builtin(_)) => Some((f, fs)),
@@ -181,18 +269,48 @@ fn any_all(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>, want: bool) -> R<Valu
     Ok(Value::Bool(!want))
 }
 
+/// `any(list, f)`.
+pub(crate) static ANY: Sig = Sig::new(
+    "any",
+    Group::List,
+    "Whether any element is true (or satisfies `f`).",
+    PREDICATE,
+    "Bool",
+)
+.examples(&["any(list: [1, 2], f: fn(x) x > 1)"]);
 fn any(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    any_all(it, s, a, true)
+    any_all(it, s, a, true, &ANY)
 }
 
+/// `all(list, f)`.
+pub(crate) static ALL: Sig = Sig::new(
+    "all",
+    Group::List,
+    "Whether every element is true (or satisfies `f`).",
+    PREDICATE,
+    "Bool",
+)
+.examples(&["all([true, false])"]);
 fn all(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    any_all(it, s, a, false)
+    any_all(it, s, a, false, &ALL)
 }
 
 /// `reduce(list, init, f)`: `f(f(f(init, l[0]), l[1]), ...)`, the accumulation a loop with a
 /// mutable variable would do.
+pub(crate) static REDUCE: Sig = Sig::new(
+    "reduce",
+    Group::List,
+    "`f(f(f(init, l[0]), l[1]), ...)`.",
+    &[
+        THE_LIST,
+        Param::new("init", Ty::Any, "the value to start from"),
+        Param::new("f", Ty::Fn, "the step: `f(accumulated, element)`"),
+    ],
+    "the last value of `f`",
+)
+.examples(&["reduce(list: [1, 2, 3], init: 0, f: fn(acc, x) acc + x)"]);
 fn reduce(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["list", "init", "f"], a)?;
+    let mut p = Params::new(s, &REDUCE, a)?;
     let (l, _) = list_arg(it, &mut p, "list")?;
     let (mut acc, _) = p.req("init")?;
     let (f, fs) = fn_arg(it, &mut p, "f")?;
@@ -205,8 +323,20 @@ fn reduce(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// `iterate(start, next, while)`: the list `start, next(start), next(next(start)), ...` for as
 /// long as `while` holds for the element: a `while` loop as a value. Every step counts against
 /// the loop budget.
+static ITERATE: Sig = Sig::new(
+    "iterate",
+    Group::List,
+    "`start, next(start), next(next(start)), ...` while `while` holds.",
+    &[
+        Param::new("start", Ty::Any, "the first element"),
+        Param::new("next", Ty::Fn, "the element after a given one"),
+        Param::new("while", Ty::Fn, "whether an element belongs to the list"),
+    ],
+    "List",
+)
+.examples(&["iterate(start: 1, next: fn(x) x * 2, while: fn(x) x < 100)"]);
 fn iterate(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["start", "next", "while"], a)?;
+    let mut p = Params::new(s, &ITERATE, a)?;
     let (mut x, _) = p.req("start")?;
     let (next, ns) = fn_arg(it, &mut p, "next")?;
     let (cond, cs) = fn_arg(it, &mut p, "while")?;

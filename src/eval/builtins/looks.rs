@@ -6,57 +6,100 @@ use glam::DVec3;
 
 use crate::diag::Diagnostic;
 use crate::eval::args::{ArgVal, CallSite};
-use crate::eval::args::{Params, check, positive, unit_interval};
+use crate::eval::args::{Params, check, float_of, int_of};
 use crate::eval::error::{R, error, suggest};
 use crate::eval::host::BuiltinFn;
 use crate::eval::host::Host;
+use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use crate::eval::types;
 use crate::eval::value::{Mat, Tex, Value};
 use crate::ir;
 use crate::source::Span;
 use crate::syntax::srgb_to_linear;
 
-/// Colour, material and texture constructors.
-pub const FNS: &[(&str, BuiltinFn)] = &[
-    ("rgb", rgb),
-    ("srgb", srgb),
-    ("hsv", hsv),
-    ("material", material),
-    ("checker", checker),
-    ("stripes", stripes),
-    ("image", image),
+/// Colour, material and texture constructors with their schemas.
+pub static FNS: &[(&Sig, BuiltinFn)] = &[
+    (&RGB, rgb),
+    (&SRGB, srgb),
+    (&HSV, hsv),
+    (&MATERIAL, material),
+    (&CHECKER, checker),
+    (&STRIPES, stripes),
+    (&IMAGE, image),
 ];
 
-fn channels(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<[f64; 3]> {
+/// The channels of `rgb` and `srgb`.
+const CHANNELS: &[Param] = &[
+    Param::new("r", Ty::Float, "red").range(Range::NonNegative),
+    Param::new("g", Ty::Float, "green").range(Range::NonNegative),
+    Param::new("b", Ty::Float, "blue").range(Range::NonNegative),
+];
+
+/// The three channels, or one grey value for all three (`rgb(0.5)`, checked here: the
+/// schema lists the three-channel form).
+fn channels(it: &dyn Host, s: CallSite, a: Vec<ArgVal>, sig: &'static Sig) -> R<[f64; 3]> {
     if let [one] = a.as_slice()
         && let Some(g) = one.value.as_f64()
     {
         check(g >= 0.0, "value", ">= 0", g, one.span)?;
         return Ok([g; 3]);
     }
-    let mut p = Params::new(s, &["r", "g", "b"], a)?;
-    let mut out = [0.0; 3];
-    for (k, n) in ["r", "g", "b"].iter().enumerate() {
-        let (v, sp) = p.num(it, n)?;
-        check(v >= 0.0, n, ">= 0", v, sp)?;
-        out[k] = v;
-    }
-    Ok(out)
+    let mut p = Params::new(s, sig, a)?;
+    Ok([
+        p.float(it, "r")?.0,
+        p.float(it, "g")?.0,
+        p.float(it, "b")?.0,
+    ])
 }
 
+/// `rgb(r, g, b)`.
+static RGB: Sig = Sig::new(
+    "rgb",
+    Group::Colour,
+    "A linear colour (`rgb(value)` is a grey).",
+    CHANNELS,
+    "Color",
+)
+.examples(&["rgb(r: 0.8, g: 0.1, b: 0.1)", "rgb(0.5)"]);
 fn rgb(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    Ok(Value::Color(channels(it, s, a)?.into()))
+    Ok(Value::Color(channels(it, s, a, &RGB)?.into()))
 }
 
+/// `srgb(r, g, b)`.
+pub(crate) static SRGB: Sig = Sig::new(
+    "srgb",
+    Group::Colour,
+    "An sRGB-encoded colour, converted to linear (`srgb(value)` is a grey).",
+    CHANNELS,
+    "Color",
+)
+.examples(&["srgb(0.55, 0.35, 0.2)"]);
 fn srgb(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let c = channels(it, s, a)?;
+    let c = channels(it, s, a, &SRGB)?;
     Ok(Value::Color(c.map(srgb_to_linear).into()))
 }
 
 /// `hsv(hue: Angle, s, v)`: hue is an angle (0deg red, 120deg green), s and v in [0, 1]; the
 /// result is the sRGB-encoded colour converted to linear.
+static HSV: Sig = Sig::new(
+    "hsv",
+    Group::Colour,
+    "A colour by hue, saturation and value (sRGB-encoded, converted to linear).",
+    &[
+        Param::new(
+            "hue",
+            Ty::Angle,
+            "the hue: 0deg red, 120deg green, 240deg blue",
+        )
+        .unit(Unit::Angle),
+        Param::new("s", Ty::Float, "the saturation").range(Range::UnitInterval),
+        Param::new("v", Ty::Float, "the value (brightness)").range(Range::UnitInterval),
+    ],
+    "Color",
+)
+.examples(&["hsv(hue: 120deg, s: 0.5, v: 0.8)"]);
 fn hsv(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["hue", "s", "v"], a)?;
+    let mut p = Params::new(s, &HSV, a)?;
     let (hv, hs) = p.req("hue")?;
     if let Some(x) = hv.as_f64() {
         // A bare hue is most often a fraction of the colour wheel (0.5) or degrees (120).
@@ -75,11 +118,9 @@ fn hsv(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             ))
             .into());
     }
-    let h = types::angle(it, &hv, hs)?;
-    let (sat, ss) = p.num(it, "s")?;
-    let (val, vs) = p.num(it, "v")?;
-    unit_interval("s", sat, ss)?;
-    unit_interval("v", val, vs)?;
+    let h = p.angle_in(it, "hue", &hv, hs)?;
+    let (sat, _) = p.float(it, "s")?;
+    let (val, _) = p.float(it, "v")?;
     let h = h.to_degrees().rem_euclid(360.0) / 60.0;
     let c = val * sat;
     let x = c * (1.0 - (h % 2.0 - 1.0).abs());
@@ -97,25 +138,77 @@ fn hsv(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     ))
 }
 
-/// Every material field, in positional order.
-pub const MAT_FIELDS: &[&str] = &[
-    "color",
-    "ka",
-    "kd",
-    "ks",
-    "n",
-    "reflect",
-    "refract",
-    "eta",
-    "texture",
-    "bump",
-    "bump_scale",
-    "shading",
-    "gloss",
-    "gloss_samples",
-];
+/// A material's fields, in positional order: `material { .. }`, `m with { .. }` and `m.kd` read
+/// their names, types, ranges and defaults here (the defaults are `ir::Material::default()`'s).
+pub static MATERIAL: Sig = Sig::new(
+    "material",
+    Group::Look,
+    "A surface's material (every field optional; `material {}` is the default material).",
+    &[
+        Param::new(
+            "color",
+            Ty::Color,
+            "the base colour C (replaced by `texture`)",
+        )
+        .or(Lit::Color([0.8, 0.8, 0.8])),
+        unit_coefficient("ka", "the ambient coefficient", 0.2),
+        unit_coefficient("kd", "the diffuse coefficient", 0.8),
+        unit_coefficient("ks", "the specular coefficient", 0.0),
+        Param::new("n", Ty::Float, "the Phong exponent (highlight tightness)")
+            .range(Range::Positive)
+            .or(Lit::Float(1.0)),
+        unit_coefficient("reflect", "the mirror reflection weight", 0.0),
+        unit_coefficient("refract", "the transmission weight", 0.0),
+        Param::new(
+            "eta",
+            Ty::Float,
+            "the index of refraction inside (outside is 1)",
+        )
+        .range(Range::Positive)
+        .or(Lit::Float(1.0)),
+        Param::new("texture", Ty::Texture, "a colour texture replacing `color`").optional(),
+        Param::new(
+            "bump",
+            Ty::Texture,
+            "a height texture perturbing the normal",
+        )
+        .optional(),
+        Param::new(
+            "bump_scale",
+            Ty::Float,
+            "the bump strength; only with `bump`",
+        )
+        .range(Range::NonNegative)
+        .or(Lit::Float(1.0)),
+        Param::new("shading", Ty::Shading, "the material's own shading model")
+            .computed("the scene's"),
+        unit_coefficient(
+            "gloss",
+            "spreads reflected and refracted rays over a cone of half-angle `gloss·90°`",
+            0.0,
+        ),
+        Param::new(
+            "gloss_samples",
+            Ty::Int,
+            "rays per glossy lobe at a camera ray's hit",
+        )
+        .unit(Unit::Rays)
+        .range(Range::Ints(1, crate::ir::limits::MAX_GLOSS_SAMPLES as i64))
+        .or(Lit::Int(8)),
+    ],
+    "Material",
+)
+.examples(&["material { color: rgb(0.8, 0.1, 0.1), kd: 0.6, ks: 0.4, n: 32 }", "material { ka: 0, kd: 0.05, ks: 0.5, n: 200, reflect: 0.1, refract: 0.9, eta: 1.5, gloss: 0.1, gloss_samples: 16 }", "material { texture: stripes(size: 0.2), bump: checker(size: 0.1), bump_scale: 0.3, shading: hatching }"]);
 
-/// Sets one material field with type and range checks (shared by `material` and `with`).
+/// A material coefficient in [0, 1].
+const fn unit_coefficient(name: &'static str, doc: &'static str, default: f64) -> Param {
+    Param::new(name, Ty::Float, doc)
+        .range(Range::UnitInterval)
+        .or(Lit::Float(default))
+}
+
+/// Sets one material field with the type and range checks of its schema ([`MATERIAL`];
+/// shared by `material` and `with`).
 pub fn set_mat_field(
     it: &dyn Host,
     m: &mut Mat,
@@ -124,42 +217,30 @@ pub fn set_mat_field(
     span: Span,
 ) -> R<()> {
     let field = name.sym.as_str();
-    let unit = |m: &mut f64| -> R<()> {
-        let x = types::num(it, v, span)?;
-        unit_interval(field, x, span)?;
-        *m = x;
-        Ok(())
+    let Some(param) = MATERIAL.param(field) else {
+        let help = suggest(field, MATERIAL.names())
+            .unwrap_or_else(|| format!("materials have: {}", fields().join(", ")));
+        return Err(error(
+            "rtc::field::unknown",
+            name.span,
+            format!("materials have no field `{field}`"),
+        )
+        .with_label("unknown field")
+        .with_help(help)
+        .into());
     };
-    match field {
+    let number = || float_of(it, &MATERIAL, param, v, span);
+    match param.name {
         "color" => m.m.color = types::color(it, v, span)?,
-        "ka" => unit(&mut m.m.ka)?,
-        "kd" => unit(&mut m.m.kd)?,
-        "ks" => unit(&mut m.m.ks)?,
-        "reflect" => unit(&mut m.m.reflect)?,
-        "refract" => unit(&mut m.m.refract)?,
-        "n" => {
-            let x = types::num(it, v, span)?;
-            positive("n", x, span)?;
-            m.m.n = x;
-        }
-        "eta" => {
-            let x = types::num(it, v, span)?;
-            positive("eta", x, span)?;
-            m.m.eta = x;
-        }
-        "gloss" => unit(&mut m.m.gloss)?,
-        "gloss_samples" => {
-            let x = types::int(it, v, span)?;
-            let max = crate::ir::limits::MAX_GLOSS_SAMPLES;
-            check(
-                (1..=i64::from(max)).contains(&x),
-                "gloss_samples",
-                &format!("in 1..={max}"),
-                x as f64,
-                span,
-            )?;
-            m.m.gloss_samples = x as u32;
-        }
+        "ka" => m.m.ka = number()?,
+        "kd" => m.m.kd = number()?,
+        "ks" => m.m.ks = number()?,
+        "n" => m.m.n = number()?,
+        "reflect" => m.m.reflect = number()?,
+        "refract" => m.m.refract = number()?,
+        "eta" => m.m.eta = number()?,
+        "gloss" => m.m.gloss = number()?,
+        "gloss_samples" => m.m.gloss_samples = int_of(it, &MATERIAL, param, v, span)? as u32,
         "texture" => match v {
             Value::Texture(t) => m.texture = Some(t.clone()),
             other => return Err(types::mismatch(it, "Texture", other, span).into()),
@@ -169,8 +250,7 @@ pub fn set_mat_field(
             other => return Err(types::mismatch(it, "Texture", other, span).into()),
         },
         "bump_scale" => {
-            let x = types::num(it, v, span)?;
-            check(x >= 0.0, "bump_scale", ">= 0", x, span)?;
+            let x = number()?;
             match &mut m.bump {
                 Some(b) => b.1 = x,
                 None => {
@@ -192,20 +272,14 @@ pub fn set_mat_field(
             }
             other => return Err(types::mismatch(it, "Shading", other, span).into()),
         },
-        other => {
-            let help = suggest(other, MAT_FIELDS.iter().copied())
-                .unwrap_or_else(|| format!("materials have: {}", MAT_FIELDS.join(", ")));
-            return Err(error(
-                "rtc::field::unknown",
-                name.span,
-                format!("materials have no field `{other}`"),
-            )
-            .with_label("unknown field")
-            .with_help(help)
-            .into());
-        }
+        other => unreachable!("material field `{other}` has no arm"),
     }
     Ok(())
+}
+
+/// The material fields' names, in order (for messages and members).
+pub fn fields() -> Vec<&'static str> {
+    MATERIAL.names().collect()
 }
 
 /// Energy warnings after a material is complete.
@@ -262,7 +336,7 @@ pub fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
 }
 
 fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, MAT_FIELDS, a)?;
+    let mut p = Params::new(s, &MATERIAL, a)?;
     let mut m = Mat {
         m: ir::Material {
             span: s.span,
@@ -272,7 +346,7 @@ fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         bump: None,
         made: it.next_made(),
     };
-    for f in MAT_FIELDS {
+    for f in MATERIAL.names() {
         if let Some((v, sp)) = p.get(f) {
             let name = crate::syntax::ast::Name {
                 sym: crate::syntax::intern::Sym::new(f),
@@ -285,35 +359,82 @@ fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     Ok(Value::Material(Rc::new(m)))
 }
 
-fn pattern(it: &dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<(DVec3, DVec3, f64)> {
-    let mut p = Params::new(s, &["size", "a", "b"], a)?;
-    let (size, ss) = p.num_or(it, "size", 1.0)?;
-    positive("size", size, ss)?;
-    let ca = p.color_or(it, "a", DVec3::ONE)?;
-    let cb = p.color_or(it, "b", DVec3::ZERO)?;
+/// The parameters of `checker` and `stripes`.
+const PATTERN: &[Param] = &[
+    Param::new("size", Ty::Float, "the edge of a cell")
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .or(Lit::Float(1.0)),
+    Param::new("a", Ty::Color, "the first colour").or(Lit::Color([1.0, 1.0, 1.0])),
+    Param::new("b", Ty::Color, "the second colour").or(Lit::Color([0.0, 0.0, 0.0])),
+];
+
+fn pattern(
+    it: &dyn Host,
+    s: CallSite,
+    a: Vec<ArgVal>,
+    sig: &'static Sig,
+) -> R<(DVec3, DVec3, f64)> {
+    let mut p = Params::new(s, sig, a)?;
+    let (size, _) = p.float(it, "size")?;
+    let (ca, _) = p.color(it, "a")?;
+    let (cb, _) = p.color(it, "b")?;
     Ok((ca, cb, size))
 }
 
+/// `checker(size, a, b)`.
+static CHECKER: Sig = Sig::new(
+    "checker",
+    Group::Look,
+    "A 3-D checkerboard of cubes of edge `size` in object space.",
+    PATTERN,
+    "Texture",
+)
+.examples(&["checker(size: 0.5, a: rgb(0.9, 0.9, 0.9), b: rgb(0.1, 0.1, 0.1))"]);
 fn checker(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let (a, b, size) = pattern(it, s, a)?;
+    let (a, b, size) = pattern(it, s, a, &CHECKER)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Checker { a, b, size },
         made: it.next_made(),
     })))
 }
 
+/// `stripes(size, a, b)`.
+static STRIPES: Sig = Sig::new(
+    "stripes",
+    Group::Look,
+    "Stripes of width `size` along object-space x.",
+    PATTERN,
+    "Texture",
+)
+.examples(&["stripes(size: 0.2)"]);
 fn stripes(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let (a, b, size) = pattern(it, s, a)?;
+    let (a, b, size) = pattern(it, s, a, &STRIPES)?;
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Stripes { a, b, size },
         made: it.next_made(),
     })))
 }
 
+/// `image(path, mapping)`.
+static IMAGE: Sig = Sig::new(
+    "image",
+    Group::Look,
+    "An image file (PNG, JPEG, HDR, EXR), nearest-pixel lookup.",
+    &[
+        Param::new(
+            "path",
+            Ty::String,
+            "the file, relative to the calling file (it must exist)",
+        ),
+        Param::new("mapping", Ty::Mapping, "how surface points find pixels").or(Lit::Name("uv")),
+    ],
+    "Texture",
+)
+.examples(&["image(path: \"images/flare-halo.png\", mapping: planar)"]);
 fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &["path", "mapping"], a)?;
-    let (pv, ps) = p.req("path")?;
-    let rel = types::string(it, &pv, ps)?;
+    let mut p = Params::new(s, &IMAGE, a)?;
+    let (rel, ps) = p.string(it, "path")?;
     let path = crate::eval::assets::existing(it, &rel, ps, "image")?;
     let mapping = match p.get("mapping") {
         None => ir::Mapping::Uv,

@@ -1,26 +1,38 @@
 //! The built-in functions and constants: their table by name and id (the functions themselves
-//! are in this folder's files and in the shape, transform and random-stream files).
+//! are in this folder's files and in the shape, transform and random-stream files), each with
+//! its schema (`eval::schema`), and the names a scene should not rebind.
 
+#[cfg(test)]
+mod doc_tables;
 pub mod lists;
 mod looks;
 mod math;
+#[cfg(test)]
+mod reference;
 mod scene;
+#[cfg(test)]
+mod schema_tests;
+mod settings;
 
-pub use looks::{MAT_FIELDS, mat_warnings, set_mat_field};
+pub use looks::{fields as material_fields, mat_warnings, set_mat_field};
+pub(crate) use math::{CROSS, DISTANCE, DOT, LENGTH, MAX, MIN, NORMALIZE};
 
 use crate::syntax::intern::Sym;
 
 use super::host::BuiltinFn;
+use super::schema::Sig;
 use super::value::{Builtin, Value};
 
-/// Every built-in function, in the order of their ids.
-fn functions() -> Vec<(&'static str, BuiltinFn)> {
+/// Every built-in function with its schema, in the order of their ids.
+pub fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
     [
         math::FNS,
         lists::FNS,
         looks::FNS,
         scene::FNS,
+        settings::FNS,
         super::shapes::FNS,
+        super::shapes::COMPOUND_FNS,
         super::transform::FNS,
         super::rng::FNS,
     ]
@@ -38,12 +50,12 @@ pub fn function(id: u16) -> BuiltinFn {
 
 fn table() -> Vec<(&'static str, Value)> {
     let mut t: Vec<(&'static str, Value)> = Vec::new();
-    for (id, (name, _)) in functions().into_iter().enumerate() {
+    for (id, (sig, _)) in functions().into_iter().enumerate() {
         let id = u16::try_from(id).expect("fewer than 65,536 built-ins");
-        t.push((name, Value::Builtin(Builtin { name, id })));
+        t.push((sig.name, Value::Builtin(Builtin { name: sig.name, id })));
     }
     t.extend(math::constants());
-    t.extend(scene::constants());
+    t.extend(settings::constants());
     t
 }
 
@@ -59,4 +71,17 @@ pub fn global(sym: Sym) -> Option<Value> {
 /// Every built-in name (for did-you-mean).
 pub fn global_names() -> Vec<&'static str> {
     GLOBALS.with(|g| g.keys().map(|k| k.as_str()).collect())
+}
+
+/// Every name a scene should not bind at the top level (what `rtc convert` must not name a
+/// material): the language's keywords, `param` (it starts a declaration), every built-in
+/// function and constant, and the frame's `frame`, `time` and `fps`. Sorted.
+pub fn reserved_names() -> Vec<&'static str> {
+    let mut names: Vec<&'static str> = crate::syntax::KEYWORDS.to_vec();
+    names.push("param");
+    names.extend(table().into_iter().map(|(name, _)| name));
+    names.extend(super::params::FRAME_BUILTINS);
+    names.sort_unstable();
+    names.dedup();
+    names
 }
