@@ -1,10 +1,7 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
 //! in `mesh`).
 
-use crate::num::Norm;
-use std::rc::Rc;
-
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 
 use super::args::Params;
 use super::args::{ArgVal, CallSite};
@@ -13,13 +10,16 @@ use super::host::BuiltinFn;
 use super::host::Host;
 use super::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use super::types;
-use super::value::{Obj, ObjShape, Value};
+use super::value::Value;
 use crate::ir::{BlobComponent, Shape};
 use crate::source::Span;
 
+mod common;
 mod compound;
 mod flat;
 mod mesh;
+
+use common::{checked, direction, point, radius, unit_dir};
 
 pub use compound::{FNS as COMPOUND_FNS, require_closed};
 
@@ -38,37 +38,10 @@ pub static FNS: &[(&Sig, BuiltinFn)] = &[
     (&CYLINDER, cylinder),
     (&CONE, cone),
     (&TORUS, torus),
+    (&QUADRIC, quadric),
     (&BLOB, blob),
     (&mesh::MESH, mesh::mesh),
 ];
-
-/// A point, `[0, 0, 0]` unless given.
-const fn point(name: &'static str, doc: &'static str) -> Param {
-    Param::new(name, Ty::Vec3, doc)
-        .unit(Unit::Length)
-        .or(Lit::Vec3([0.0, 0.0, 0.0]))
-}
-
-/// A required point or edge.
-const fn corner(name: &'static str, doc: &'static str) -> Param {
-    Param::new(name, Ty::Vec3, doc).unit(Unit::Length)
-}
-
-/// A direction, `Y` unless given, normalised.
-const fn direction(name: &'static str, doc: &'static str) -> Param {
-    Param::new(name, Ty::Vec3, doc)
-        .range(Range::NonZero)
-        .or(Lit::Vec3([0.0, 1.0, 0.0]))
-}
-
-/// A radius (> 0 by the shape rules), `default` unless given.
-const fn radius(name: &'static str, doc: &'static str, default: f64) -> Param {
-    Param::new(name, Ty::Float, doc)
-        .unit(Unit::Length)
-        .range(Range::Positive)
-        .checked_by_builtin()
-        .or(Lit::Float(default))
-}
 
 /// `capped: Bool = true` of cylinders and cones.
 const CAPPED: Param = Param::new(
@@ -97,37 +70,6 @@ const ENDS: [Param; 5] = [
     .range(Range::Positive)
     .or(Lit::Float(1.0)),
 ];
-
-/// Checks a shape by geometry's rules (the one home of shape validity, `geometry::shapes`) and
-/// makes it a value; a flaw is reported on the span of the parameter it blames (from `spans`),
-/// else on the call.
-fn checked(shape: Shape, s: CallSite, spans: &[(&str, Span)]) -> R<Value> {
-    if let Err(flaw) = crate::geometry::shapes::check(&shape) {
-        let span = spans
-            .iter()
-            .find(|(name, _)| *name == flaw.param)
-            .map_or(s.span, |(_, sp)| *sp);
-        return Err(flaw.diagnostic(span).into());
-    }
-    Ok(prim(shape, s.span))
-}
-
-/// An object of `shape` made at `span`, untransformed and without a material.
-fn prim(shape: Shape, span: Span) -> Value {
-    Value::Object(Rc::new(Obj {
-        shape: ObjShape::Prim(shape),
-        transform: DAffine3::IDENTITY,
-        material: None,
-        motion: None,
-        span,
-        origin: 0,
-    }))
-}
-
-/// The direction `name`, normalised (its default `Y` is a unit vector: `unit` keeps it).
-fn unit_dir(it: &dyn Host, p: &mut Params, name: &str) -> R<DVec3> {
-    Ok(p.vec3(it, name)?.0.unit())
-}
 
 /// `sphere(center, radius)`.
 static SPHERE: Sig = Sig::new(
@@ -344,6 +286,53 @@ fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         s,
         &[("major_radius", ms), ("minor_radius", ns)],
+    )
+}
+
+/// `quadric(squares, mixed, linear, constant)`.
+static QUADRIC: Sig = Sig::new(
+    "quadric",
+    Group::Shape,
+    "The surface A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J = 0, inside where \
+     negative (POV-Ray's `quadric`; usually unbounded: bound it with CSG).",
+    &[
+        Param::new(
+            "squares",
+            Ty::Vec3,
+            "A, B, C: the coefficients of x², y², z²",
+        ),
+        Param::new("mixed", Ty::Vec3, "D, E, F: the coefficients of xy, xz, yz")
+            .or(Lit::Vec3([0.0, 0.0, 0.0])),
+        Param::new("linear", Ty::Vec3, "G, H, I: the coefficients of x, y, z")
+            .or(Lit::Vec3([0.0, 0.0, 0.0])),
+        Param::new("constant", Ty::Float, "J").or(Lit::Float(0.0)),
+    ],
+    "Object",
+)
+.examples(&[
+    "quadric(squares: [1, 1, 1], constant: -1)  // the unit sphere",
+    "quadric(squares: [1, 0, 1], linear: [0, -1, 0])  // the paraboloid y = x² + z²",
+]);
+fn quadric(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &QUADRIC, a)?;
+    let (squares, ss) = p.vec3(it, "squares")?;
+    let (mixed, ms) = p.vec3(it, "mixed")?;
+    let (linear, ls) = p.vec3(it, "linear")?;
+    let (constant, cs) = p.float(it, "constant")?;
+    checked(
+        Shape::Quadric {
+            squares,
+            mixed,
+            linear,
+            constant,
+        },
+        s,
+        &[
+            ("squares", ss),
+            ("mixed", ms),
+            ("linear", ls),
+            ("constant", cs),
+        ],
     )
 }
 

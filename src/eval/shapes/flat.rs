@@ -1,7 +1,7 @@
 //! Flat shapes: triangles, parallelograms, polygons, disks and rings (surfaces that enclose no
 //! volume; CSG takes none of them).
 
-use super::{checked, corner, direction, point, radius, unit_dir};
+use super::common::{checked, corner, direction, point, radius, unit_dir};
 use crate::eval::args::Params;
 use crate::eval::args::{ArgVal, CallSite};
 use crate::eval::error::R;
@@ -151,4 +151,3 @@ pub(super) fn ring(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         &[("radius", rs), ("inner", is)],
     )
 }
-

@@ -38,7 +38,7 @@ pub(super) fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     only_obj(&path, ps)?;
     let smooth = p.bool(it, "smooth")?;
     let use_mtl = p.bool(it, "use_mtl")?;
-    Ok(super::prim(
+    Ok(super::common::prim(
         Shape::Mesh {
             path,
             smooth,
