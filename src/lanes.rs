@@ -182,7 +182,7 @@ pub(crate) fn sum(v: &Lanes) -> f64 {
 
 /// A vector per ray of a packet.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct V3 {
+pub(crate) struct V3 {
     /// The rays' x.
     pub(crate) x: Lanes,
     /// The rays' y.

@@ -22,7 +22,7 @@ pub mod diag;
 pub mod eval;
 pub mod geometry;
 pub mod ir;
-pub mod lanes;
+pub(crate) mod lanes;
 pub mod loader;
 pub mod metrics;
 pub mod num;

@@ -35,7 +35,7 @@ pub enum Knob {
 
 impl Knob {
     /// Every knob, in report order.
-    pub(crate) const ALL: [Knob; 6] = [
+    const ALL: [Knob; 6] = [
         Knob::PixelSamples,
         Knob::AdaptiveThreshold,
         Knob::LightSamples,
@@ -125,13 +125,13 @@ impl Knob {
 /// Pixel grid factors swept (samples per axis); the reference uses [`REFERENCE_PIXEL_SAMPLES`].
 pub const PIXEL_LADDER: [u32; 6] = [1, 2, 3, 4, 6, 8];
 /// Adaptive thresholds swept (the scene's `min` and `max` kept), coarse to fine.
-pub(crate) const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
+const THRESHOLD_LADDER: [f64; 6] = [0.2, 0.1, 0.05, 0.02, 0.01, 0.005];
 /// Area-light samples per edge swept; the reference uses [`REFERENCE_LIGHT_SAMPLES`].
-pub(crate) const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
+const LIGHT_LADDER: [u32; 5] = [1, 2, 3, 4, 6];
 /// Bounces swept; the reference uses [`REFERENCE_MAX_DEPTH`].
-pub(crate) const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
+const DEPTH_LADDER: [u32; 7] = [0, 1, 2, 3, 4, 6, 8];
 /// Rays per glossy lobe swept; the reference uses [`REFERENCE_GLOSS_SAMPLES`].
-pub(crate) const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
+const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
 /// Cut-offs swept, from cheap (large: more rays dropped) to 0 (every ray traced, the
 /// reference's): about three steps per decade, with the language's default
 /// [`LANGUAGE_CUTOFF`] (≈ 3.0e-4, half an sRGB level at black) among them.
@@ -139,19 +139,19 @@ pub const CUTOFF_LADDER: [f64; 7] = [0.1, 0.03, 0.01, 0.003, 0.001, LANGUAGE_CUT
 
 /// The reference's pixel grid: 16×16 = 256 samples per pixel (twice the ladder's top per axis),
 /// or the scene's own if finer.
-pub(crate) const REFERENCE_PIXEL_SAMPLES: u32 = 16;
+const REFERENCE_PIXEL_SAMPLES: u32 = 16;
 /// The reference's area-light samples per edge, or the scene's own if more. Every camera sample
 /// draws its own light samples, so with 16×16 pixel samples each reference pixel averages
 /// 256 × 16 = 4096 shadow samples per light: 7× the ladder's dearest rung at the scene's own
 /// 4×4 pixel grid (16 × 36). More costs minutes per reference on a soft-shadow scene.
-pub(crate) const REFERENCE_LIGHT_SAMPLES: u32 = 4;
+const REFERENCE_LIGHT_SAMPLES: u32 = 4;
 /// The reference's rays per glossy lobe, or the scene's own if more: the ladder's top. Each of
 /// the reference's 256 camera samples per pixel draws its own lobe, so a reference pixel
 /// averages 256 × 16 = 4096 lobe rays: 16× the top rung at the scene's 4×4 grid.
-pub(crate) const REFERENCE_GLOSS_SAMPLES: u32 = 16;
+const REFERENCE_GLOSS_SAMPLES: u32 = 16;
 /// The reference's bounces: twice the ladder's top (a 16th bounce weighs at most the product of
 /// 16 reflect/refract coefficients), or the scene's own if more.
-pub(crate) const REFERENCE_MAX_DEPTH: u32 = 16;
+const REFERENCE_MAX_DEPTH: u32 = 16;
 
 /// One point of a sweep: every knob's value.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -179,7 +179,7 @@ pub(crate) fn measure(
 }
 
 /// The median (the mean of the middle two for an even count); 0 for none.
-pub(crate) fn median(values: &[f64]) -> f64 {
+fn median(values: &[f64]) -> f64 {
     let mut v = values.to_vec();
     v.sort_by(f64::total_cmp);
     match v.len() {

@@ -26,13 +26,14 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::ir::Scene;
 use crate::render::Region;
 
-pub use knob::{Knob, Setting};
+pub use knob::Knob;
+pub(crate) use knob::Setting;
 pub use measure::MeasureOptions;
 pub use report::{Metric, Report};
 pub use sweep::SweepProgress;
 
 /// A `--reference` image is not the size the sweep renders.
-pub(crate) const REFERENCE_SIZE: &str = "rtc::accuracy::reference_size";
+const REFERENCE_SIZE: &str = "rtc::accuracy::reference_size";
 
 /// The sweep was cancelled before the reference was done: nothing was measured.
 pub const NOTHING_MEASURED: &str = "rtc::accuracy::cancelled";

@@ -37,9 +37,9 @@ pub enum Source {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reference {
     /// Width in pixels.
-    pub(crate) width: u32,
+    width: u32,
     /// Height in pixels.
-    pub(crate) height: u32,
+    height: u32,
     /// Linear RGB, rows from the top.
     pub data: Vec<f32>,
     /// Where it came from.

@@ -14,7 +14,7 @@ use super::scale::SweepSize;
 use super::sweep::Sweep;
 
 /// The JSON document's `schema` value; bumped when a field changes meaning or goes away.
-pub(crate) const SCHEMA: &str = "rtc-accuracy/1";
+const SCHEMA: &str = "rtc-accuracy/1";
 
 /// The error metric recommendations and the plot use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,7 +38,7 @@ impl Metric {
     }
 
     /// The name in JSON.
-    pub(crate) fn key(self) -> &'static str {
+    fn key(self) -> &'static str {
         match self {
             Metric::Flip => "flip",
             Metric::Rmse => "rmse",

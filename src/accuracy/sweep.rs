@@ -35,9 +35,9 @@ impl Sweep {
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Planned {
     /// The setting.
-    pub(crate) setting: Setting,
+    setting: Setting,
     /// Its sweeps, in plan order.
-    pub(crate) sweeps: Vec<Sweep>,
+    sweeps: Vec<Sweep>,
 }
 
 /// The distinct settings to measure, in order: the scene's own, the ladders of `knobs`, then

@@ -21,7 +21,8 @@ pub(crate) mod search;
 use std::path::Path;
 use std::sync::Arc;
 
-pub use self::image::{ImageError, Picture};
+pub(crate) use self::image::ImageError;
+pub use self::image::Picture;
 pub use obj::MeshAsset;
 pub(crate) use obj_error::MeshError;
 

@@ -19,20 +19,20 @@ use rtc::diag::{Diagnostic, IO_ERROR, Severity};
 use rtc::metrics::plot::{ErrorTimePlot, MarkedPoint, PlotPoint, Series};
 
 /// The plot's file name in the output directory.
-pub(crate) const PLOT_FILE: &str = "plot.svg";
+const PLOT_FILE: &str = "plot.svg";
 /// The ꟻLIP map's file name in the output directory.
-pub(crate) const MAP_FILE: &str = "flip-map.png";
+const MAP_FILE: &str = "flip-map.png";
 /// The JSON report's file name in the output directory.
-pub(crate) const JSON_FILE: &str = "report.json";
+const JSON_FILE: &str = "report.json";
 
 /// The bar over the sweep's renders on stderr (when it is a terminal); cancels on Ctrl-C.
-pub(crate) struct SweepBar {
+struct SweepBar {
     bar: Option<ProgressBar>,
 }
 
 impl SweepBar {
     /// A bar on stderr if it is a terminal.
-    pub(crate) fn on_stderr() -> SweepBar {
+    fn on_stderr() -> SweepBar {
         if !std::io::stderr().is_terminal() {
             return SweepBar { bar: None };
         }
@@ -78,7 +78,7 @@ impl SweepProgress for SweepBar {
 }
 
 /// The default output directory: `<scene stem>-accuracy` in the current directory.
-pub(crate) fn default_out_dir(scene: &Path) -> PathBuf {
+fn default_out_dir(scene: &Path) -> PathBuf {
     let stem = scene
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
@@ -87,7 +87,7 @@ pub(crate) fn default_out_dir(scene: &Path) -> PathBuf {
 }
 
 /// Writes the JSON report, the plot and the ꟻLIP map into `dir`; the paths written.
-pub(crate) fn write_outputs(report: &Report, dir: &Path) -> Result<Vec<PathBuf>, Diagnostic> {
+fn write_outputs(report: &Report, dir: &Path) -> Result<Vec<PathBuf>, Diagnostic> {
     std::fs::create_dir_all(dir).map_err(|e| io_error(dir, &e))?;
     let mut written = Vec::new();
     let json = serde_json::to_string_pretty(&report.to_json()).unwrap_or_default();
@@ -105,7 +105,7 @@ pub(crate) fn write_outputs(report: &Report, dir: &Path) -> Result<Vec<PathBuf>,
 
 /// The error-versus-time plot: one curve per knob's ladder (in order of rays), the joint sweep
 /// as loose points, the scene's own setting marked.
-pub(crate) fn plot(report: &Report) -> ErrorTimePlot {
+fn plot(report: &Report) -> ErrorTimePlot {
     let metric = report.metric;
     let point = |p: &rtc::accuracy::report::Point| PlotPoint {
         seconds: p.measurement.seconds,
@@ -159,7 +159,7 @@ pub(crate) fn plot(report: &Report) -> ErrorTimePlot {
 }
 
 /// The warning for a reference whose own noise is large against the smallest measured error.
-pub(crate) fn noisy_reference(report: &Report) -> Diagnostic {
+fn noisy_reference(report: &Report) -> Diagnostic {
     let noise = report.reference.noise_rmse.unwrap_or(0.0);
     Diagnostic::new(
         Severity::Warning,
@@ -177,10 +177,10 @@ pub(crate) fn noisy_reference(report: &Report) -> Diagnostic {
 }
 
 /// The reference's noise is large against the smallest measured error.
-pub(crate) const NOISY_REFERENCE: &str = "rtc::accuracy::noisy_reference";
+const NOISY_REFERENCE: &str = "rtc::accuracy::noisy_reference";
 
 /// Parses a duration: seconds, or a number with `s`, `m` or `h`.
-pub(crate) fn parse_seconds(text: &str) -> Result<f64, String> {
+fn parse_seconds(text: &str) -> Result<f64, String> {
     let t = text.trim();
     let (number, unit) = match t.char_indices().last() {
         Some((i, 's')) => (&t[..i], 1.0),
@@ -197,7 +197,7 @@ pub(crate) fn parse_seconds(text: &str) -> Result<f64, String> {
 }
 
 /// Parses `--region X,Y,W,H` (fitting it to the image comes after the scene is loaded).
-pub(crate) fn parse_region(text: &str) -> Result<rtc::render::Region, String> {
+fn parse_region(text: &str) -> Result<rtc::render::Region, String> {
     rtc::render::Region::parse(text).map_err(|d| match &d.help {
         Some(h) => format!("{}; {h}", d.message),
         None => d.message,
@@ -205,7 +205,7 @@ pub(crate) fn parse_region(text: &str) -> Result<rtc::render::Region, String> {
 }
 
 /// Parses a positive finite number.
-pub(crate) fn parse_positive(text: &str) -> Result<f64, String> {
+fn parse_positive(text: &str) -> Result<f64, String> {
     match text.trim().parse::<f64>() {
         Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
         _ => Err(format!("`{text}` is not a positive number")),
@@ -297,7 +297,7 @@ pub(crate) struct AccuracyArgs {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub(crate) enum MetricArg {
+enum MetricArg {
     /// Mean ꟻLIP (sRGB images).
     Flip,
     /// RMSE in linear light.
@@ -307,7 +307,7 @@ pub(crate) enum MetricArg {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub(crate) enum TableFormat {
+enum TableFormat {
     /// A table.
     Table,
     /// The JSON report (schema rtc-accuracy/1).

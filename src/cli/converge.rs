@@ -109,7 +109,7 @@ fn round_line(r: &Round, t: f64, target: Option<f64>, history: &[(f64, f64)]) ->
 /// Seconds until the estimate reaches `target`, extrapolated on a log-log line through the
 /// last two rounds (error ∝ time^slope): `None` before two rounds or when the error did not
 /// fall.
-pub(crate) fn eta(history: &[(f64, f64)], target: f64) -> Option<f64> {
+fn eta(history: &[(f64, f64)], target: f64) -> Option<f64> {
     let [.., (t0, e0), (t1, e1)] = history else {
         return None;
     };

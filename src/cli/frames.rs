@@ -45,7 +45,7 @@ pub(crate) fn parse_range(text: &str) -> Result<Vec<i64>, String> {
 }
 
 /// Frames one `rtc render` may render (a typo such as `0..100000` should not start a day's work).
-pub(crate) const MAX_FRAMES: usize = 10_000;
+const MAX_FRAMES: usize = 10_000;
 
 /// True when `path` has a place for the frame number.
 pub(crate) fn has_pattern(path: &Path) -> bool {

@@ -18,7 +18,7 @@ static GRACEFUL: AtomicBool = AtomicBool::new(false);
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 
 /// The exit code of a command ended by a signal.
-pub(crate) const EXIT_CODE: i32 = 130;
+const EXIT_CODE: i32 = 130;
 
 /// Installs the handler (once per process; a second call changes nothing).
 pub(crate) fn install() {

@@ -1,24 +1,24 @@
 //! Binary-only parts of the command line.
 
 pub(crate) mod accuracy;
-pub(crate) mod accuracy_table;
+mod accuracy_table;
 pub(crate) mod aov;
 pub(crate) mod check;
 pub(crate) mod converge;
 pub(crate) mod convert;
-pub(crate) mod diff;
+mod diff;
 pub(crate) mod fmt;
-pub(crate) mod frames;
+mod frames;
 pub(crate) mod inputs;
 pub(crate) mod interrupt;
-pub(crate) mod progress;
+mod progress;
 pub(crate) mod render;
 pub(crate) mod report;
 pub(crate) mod shard;
-pub(crate) mod stats;
+mod stats;
 pub(crate) mod watch;
 pub(crate) mod why;
-pub(crate) mod why_json;
+mod why_json;
 
 use std::path::Path;
 
@@ -38,7 +38,7 @@ pub(crate) enum Outcome {
 
 impl Outcome {
     /// Which outcome wins when several files are checked: I/O over scene errors over success.
-    pub(crate) fn severity(self) -> u8 {
+    fn severity(self) -> u8 {
         match self {
             Outcome::Ok => 0,
             Outcome::SceneErrors => 1,
@@ -55,7 +55,7 @@ pub(crate) fn usage_error(msg: &str) -> Outcome {
 }
 
 /// Loads a scene and runs the scene lints on it.
-pub(crate) fn load(file: &Path, sources: &mut SourceMap, opts: &EvalOptions) -> Loaded {
+fn load(file: &Path, sources: &mut SourceMap, opts: &EvalOptions) -> Loaded {
     let mut loaded = rtc::loader::load(file, sources, opts);
     if let Some(scene) = &loaded.scene {
         loaded.diagnostics.extend(rtc::check::lint(scene));
@@ -64,7 +64,7 @@ pub(crate) fn load(file: &Path, sources: &mut SourceMap, opts: &EvalOptions) -> 
 }
 
 /// The exit outcome of a set of diagnostics (`--deny warnings` makes warnings fail).
-pub(crate) fn outcome_of(diags: &Diagnostics, deny_warnings: bool) -> Outcome {
+fn outcome_of(diags: &Diagnostics, deny_warnings: bool) -> Outcome {
     if diags.items.iter().any(|d| d.code == IO_ERROR) {
         Outcome::IoOrUsage
     } else if diags.has_errors() || (deny_warnings && diags.warning_count() > 0) {

@@ -80,7 +80,7 @@ fn capped(diags: &[Diagnostic]) -> std::borrow::Cow<'_, [Diagnostic]> {
 }
 
 /// Errors, and warnings, a report shows at most (docs/language.md §24).
-pub const MAX_SHOWN: usize = rtc::diag::MAX_ERRORS;
+const MAX_SHOWN: usize = rtc::diag::MAX_ERRORS;
 
 /// The code of the note that counts the diagnostics a report leaves out.
 const OMITTED: &str = "rtc::diag::omitted";

@@ -63,7 +63,7 @@ const IN_THE_SCENE: &[&str] = &["--set", "--frame", "--fps"];
 
 /// The fingerprint of this process's pixel-changing options ([`settings_of`] of its
 /// arguments after `render`).
-pub(crate) fn settings_fingerprint(scene_file: &Path) -> String {
+fn settings_fingerprint(scene_file: &Path) -> String {
     let args: Vec<String> = std::env::args().skip(2).collect();
     settings_of(&args, scene_file)
 }
@@ -72,7 +72,7 @@ pub(crate) fn settings_fingerprint(scene_file: &Path) -> String {
 /// each option with the values that follow it is one item, items are sorted, so their order
 /// on the command line does not matter; the scene path (its content is in the scene
 /// fingerprint), the neutral options and those whose effect is in the scene are left out.
-pub(crate) fn settings_of(args: &[String], scene_file: &Path) -> String {
+fn settings_of(args: &[String], scene_file: &Path) -> String {
     let mut items: Vec<String> = Vec::new();
     let mut skipping = false;
     let mut seen_file = false;

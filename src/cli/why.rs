@@ -125,12 +125,12 @@ fn outside(x: i64, y: i64, w: u32, h: u32, camera: Span) -> Diagnostic {
 }
 
 /// A vector as text: four decimals per component.
-pub(crate) fn vec3(v: glam::DVec3) -> String {
+fn vec3(v: glam::DVec3) -> String {
     format!("[{:.4}, {:.4}, {:.4}]", v.x, v.y, v.z)
 }
 
 /// The rays of a tree in the order they are numbered: a ray, then its children's subtrees.
-pub(crate) fn numbered(root: &RayNode) -> Vec<&RayNode> {
+fn numbered(root: &RayNode) -> Vec<&RayNode> {
     fn walk<'a>(n: &'a RayNode, out: &mut Vec<&'a RayNode>) {
         out.push(n);
         for c in &n.children {
@@ -144,7 +144,7 @@ pub(crate) fn numbered(root: &RayNode) -> Vec<&RayNode> {
 
 /// The one-line provenance of a chain (innermost first), e.g. "iteration i = 3 of the `for`
 /// at city.rtc:12, called from `tower()` at city.rtc:30".
-pub(crate) fn chain_text(sources: &SourceMap, chain: &[&Step]) -> String {
+fn chain_text(sources: &SourceMap, chain: &[&Step]) -> String {
     let at = |s: Span| {
         let f = sources.get(s.file);
         format!("{}:{}", f.path.display(), f.line_col(s.start as usize).0)
@@ -195,7 +195,7 @@ pub(crate) fn material_origin(
 }
 
 /// The name of an object for text: `sphere #3`.
-pub(crate) fn object_name(scene: &Scene, object: u32) -> String {
+fn object_name(scene: &Scene, object: u32) -> String {
     let kind = scene
         .objects
         .get(object as usize)

@@ -10,14 +10,14 @@
 //! motion with the arguments that give back its numbers, the course camera as the field of view
 //! whose pixel is |up| to the bit.
 
-pub(crate) mod comments;
-pub(crate) mod exact;
-pub(crate) mod names;
-pub(crate) mod placement;
-pub(crate) mod shapes;
-pub(crate) mod text;
-pub(crate) mod view;
-pub(crate) mod write;
+mod comments;
+mod exact;
+mod names;
+mod placement;
+mod shapes;
+mod text;
+mod view;
+mod write;
 
 use std::path::{Component, Path, PathBuf};
 
@@ -170,7 +170,7 @@ fn absolute(p: &Path) -> PathBuf {
 
 /// `target` as a path from the directory `from`, with `/` separators (both absolute); an
 /// absolute path when they share no root.
-pub(crate) fn relative(from: &Path, target: &Path) -> String {
+fn relative(from: &Path, target: &Path) -> String {
     let a: Vec<Component> = from.components().collect();
     let b: Vec<Component> = target.components().collect();
     if a.first() != b.first() {

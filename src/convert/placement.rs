@@ -33,7 +33,7 @@ pub(crate) fn methods(transform: &DAffine3, motion: Option<&Motion>) -> Vec<Stri
 /// The methods that place an object, read in application order: a per-axis `.scale` when the linear part is diagonal, else `.matrix` of it, then `.translate`.
 /// Each reproduces the transform's numbers exactly (the language composes them as products
 /// with 0 and 1).
-pub(crate) fn placement(t: &DAffine3) -> Vec<String> {
+fn placement(t: &DAffine3) -> Vec<String> {
     placed(t).into_iter().map(|(s, _)| s).collect()
 }
 
@@ -100,7 +100,7 @@ fn rows(m: &DMat3) -> String {
 }
 
 /// `.moving(...)` with the arguments that give back `m`'s translation, rotation, scale and spin.
-pub(crate) fn moving(m: &Motion) -> String {
+fn moving(m: &Motion) -> String {
     let mut args = Vec::new();
     if m.translate != DVec3::ZERO {
         args.push(format!("translate: {}", vector(m.translate)));

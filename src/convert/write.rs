@@ -27,11 +27,11 @@ pub(crate) struct Doc<'a> {
 #[derive(Default)]
 pub(crate) struct Placed {
     /// Before the first item: the file's header.
-    pub(crate) header: Vec<usize>,
+    header: Vec<usize>,
     /// Per item (in [`items`] order), the comments before it and inside it.
-    pub(crate) before: Vec<Vec<usize>>,
+    before: Vec<Vec<usize>>,
     /// After the last item.
-    pub(crate) trailing: Vec<usize>,
+    trailing: Vec<usize>,
 }
 
 /// The spans of the camera, the lights and the objects, in that order.

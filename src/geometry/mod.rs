@@ -21,5 +21,6 @@ pub(crate) mod testing;
 pub mod world;
 
 pub use aabb::Aabb;
-pub use ray::{Crossing, Hit, MappingFrame, Ray};
-pub use world::{SurfaceHit, World, WorldStats};
+pub(crate) use ray::MappingFrame;
+pub use ray::Ray;
+pub use world::{SurfaceHit, World};

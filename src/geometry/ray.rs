@@ -41,7 +41,7 @@ impl Ray {
 
 /// A hit in the space the ray was given in.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit {
+pub(crate) struct Hit {
     /// Ray parameter of the hit.
     pub(crate) t: f64,
     /// Unit outward normal at the hit (not flipped towards the ray).
@@ -54,7 +54,7 @@ pub struct Hit {
 /// equirectangular uv), or the object-space origin for every other shape. The world keeps it
 /// per surface (`World::frame`), so a sphere inside a CSG node maps about its own centre.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum MappingFrame {
+pub(crate) enum MappingFrame {
     /// About the object-space origin.
     Object,
     /// About a sphere's centre, with its radius.
@@ -89,7 +89,7 @@ impl MappingFrame {
 
 /// A place where a ray crosses the boundary of a closed solid (for CSG classification).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Crossing {
+pub(crate) struct Crossing {
     /// The surface hit.
     pub(crate) hit: Hit,
     /// True when the ray goes from outside to inside here.

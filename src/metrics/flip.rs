@@ -12,10 +12,10 @@ use super::worst::mean_of_worst;
 
 /// Viewing conditions: pixels per degree of visual angle. 67 is ꟻLIP's default (a 0.7 m wide
 /// 3840-pixel monitor seen from 0.7 m), which `flip-evaluator` also uses.
-pub const PIXELS_PER_DEGREE: f32 = nv_flip::DEFAULT_PIXELS_PER_DEGREE;
+const PIXELS_PER_DEGREE: f32 = nv_flip::DEFAULT_PIXELS_PER_DEGREE;
 
 /// The PNG encoder failed.
-pub const PNG_ENCODE: &str = "rtc::metrics::png";
+const PNG_ENCODE: &str = "rtc::metrics::png";
 
 /// A ꟻLIP error map: one value in [0, 1] per pixel, rows from the top.
 #[derive(Clone, Debug, PartialEq)]

@@ -28,10 +28,13 @@ mod worst;
 
 use crate::diag::Diagnostic;
 
-pub use flip::{FlipMap, PIXELS_PER_DEGREE, PNG_ENCODE, flip};
-pub use noise::{NoiseEstimate, noise};
-pub use pixel_error::{REL_MSE_EPSILON, rel_mse, rmse, squared_error_map};
-pub use view::{BUFFER_SIZE, EMPTY, LinearRgb, MAX_PIXELS, NOT_FINITE, SIZE_MISMATCH, TOO_LARGE};
+pub(crate) use flip::FlipMap;
+pub use flip::flip;
+pub(crate) use noise::NoiseEstimate;
+pub use noise::noise;
+pub(crate) use pixel_error::squared_error_map;
+pub use pixel_error::{REL_MSE_EPSILON, rel_mse, rmse};
+pub use view::{BUFFER_SIZE, EMPTY, LinearRgb, NOT_FINITE, SIZE_MISMATCH, TOO_LARGE};
 pub(crate) use worst::{WORST_FRACTION, mean_of_worst};
 
 /// Every metric of one test image against its reference.

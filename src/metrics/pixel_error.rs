@@ -27,7 +27,7 @@ pub fn rel_mse(test: LinearRgb<'_>, reference: LinearRgb<'_>) -> Result<f64, Dia
 
 /// The squared error of each pixel: the mean over its three channels of `(t − r)²`, rows from
 /// the top.
-pub fn squared_error_map(
+pub(crate) fn squared_error_map(
     test: LinearRgb<'_>,
     reference: LinearRgb<'_>,
 ) -> Result<Vec<f64>, Diagnostic> {

@@ -14,7 +14,7 @@ pub const NOT_FINITE: &str = "rtc::metrics::not_finite";
 pub const TOO_LARGE: &str = "rtc::metrics::too_large";
 
 /// The largest image measured: ꟻLIP's C++ counts `width × height × 3` channels in 32 bits.
-pub const MAX_PIXELS: u64 = u32::MAX as u64 / 3;
+const MAX_PIXELS: u64 = u32::MAX as u64 / 3;
 
 /// A linear-RGB image: `width × height` pixels of three `f32` channels, rows from the top.
 ///

@@ -45,7 +45,7 @@ pub struct Effects {
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Content {
+pub(crate) struct Content {
     reflective: bool,
     refractive: bool,
     textured: bool,

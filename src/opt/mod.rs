@@ -22,8 +22,10 @@ use crate::geometry::world::balls::WorldParts;
 use crate::geometry::{World, world::instanced_triangles};
 use crate::ir::{LightKind, Material, MaterialId, Object, Scene};
 
-pub use effects::{Content, Effects};
-pub use prepared::{Prepared, PreparedLight, Quality, Stats};
+pub(crate) use effects::Content;
+pub use effects::Effects;
+pub use prepared::{Prepared, Quality};
+pub(crate) use prepared::{PreparedLight, Stats};
 pub(crate) use textures::TextureMap;
 
 /// Prepares `scene` for rendering; on failure, every problem found (errors and warnings).

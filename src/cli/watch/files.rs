@@ -11,10 +11,10 @@ use rtc::ir::Scene;
 use rtc::source::SourceMap;
 
 /// A path's content hash; `None` when it cannot be read (missing, being replaced).
-pub(crate) type ContentHash = Option<u64>;
+type ContentHash = Option<u64>;
 
 /// Hashes a file's bytes (SipHash from std: no collision matters here, only change).
-pub(crate) fn hash_file(path: &Path) -> ContentHash {
+fn hash_file(path: &Path) -> ContentHash {
     let bytes = rtc::source::read_regular(path, rtc::ir::limits::MAX_MESH_FILE_BYTES).ok()?;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     bytes.hash(&mut h);

@@ -5,7 +5,7 @@ use rtc::diag::{Diagnostic, Severity};
 use rtc::source::{SourceMap, Span};
 
 /// Escapes text for HTML element content and attribute values.
-pub(crate) fn escape(text: &str) -> String {
+fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {

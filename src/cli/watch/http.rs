@@ -21,7 +21,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 /// Environment variable, for tests: the idle limit in milliseconds instead of 10 s.
-pub(crate) const IDLE_VAR: &str = "RTC_WATCH_IDLE_MS";
+const IDLE_VAR: &str = "RTC_WATCH_IDLE_MS";
 
 /// How long a refused client's remaining bytes are read and dropped before the socket closes,
 /// so it sees the answer rather than a connection reset.
@@ -37,11 +37,11 @@ const STACK: usize = 256 << 10;
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Limits {
     /// Connections served at once; more are answered 503.
-    pub(crate) connections: usize,
+    connections: usize,
     /// Time for the whole request head to arrive, and for each write of an answer.
-    pub(crate) idle: Duration,
+    idle: Duration,
     /// Bytes of the request line and headers together.
-    pub(crate) head_bytes: usize,
+    head_bytes: usize,
 }
 
 impl Default for Limits {
@@ -73,9 +73,9 @@ impl Limits {
 #[derive(Debug)]
 pub(crate) struct Request {
     /// `GET`.
-    pub(crate) method: String,
+    method: String,
     /// The request target as sent (`/frame/3.png?x`).
-    pub(crate) target: String,
+    target: String,
     headers: Vec<(String, String)>,
 }
 
@@ -96,7 +96,7 @@ impl Request {
 
 /// Why no request was read from a connection.
 #[derive(Debug, PartialEq, Eq)]
-pub(crate) enum Refusal {
+enum Refusal {
     /// The client closed the connection (or it failed) before a whole head came.
     Closed,
     /// The head did not arrive within the idle limit; `partial` when some of it did.
@@ -126,7 +126,7 @@ impl Refusal {
 }
 
 /// Reads one request head from `stream` within `limits`; bytes after it are left unread.
-pub(crate) fn read_head(stream: &mut TcpStream, limits: &Limits) -> Result<Request, Refusal> {
+fn read_head(stream: &mut TcpStream, limits: &Limits) -> Result<Request, Refusal> {
     let deadline = Instant::now() + limits.idle;
     let mut head: Vec<u8> = Vec::with_capacity(1024);
     let mut chunk = [0u8; 4096];

@@ -130,7 +130,7 @@ pub(crate) fn serve(listener: TcpListener, hub: Arc<Hub>, limits: Limits) -> Res
 /// Whether a request's `Host` header names this server by a loopback name and its port:
 /// `127.0.0.1`, `localhost` or `[::1]`, with `:port`. A request without one is refused too
 /// (every browser sends it).
-pub(crate) fn loopback_host(host: Option<&str>, port: u16) -> bool {
+fn loopback_host(host: Option<&str>, port: u16) -> bool {
     let Some(host) = host.map(|h| h.trim().to_ascii_lowercase()) else {
         return false;
     };

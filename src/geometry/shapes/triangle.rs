@@ -298,7 +298,8 @@ pub(crate) struct Edges4 {
 }
 
 impl Edges4 {
-    /// `(t, barycentrics)` of a lane in [`Edges4::mask`], as [`ShearedRay::intersect`] gives them.
+    /// `(t, barycentrics)` of a lane in [`Edges4::mask`], as `ShearedRay::intersect` (the
+    /// tests' reference) gives them.
     #[inline(always)]
     pub(crate) fn hit(&self, lane: usize) -> (f32, [f32; 3]) {
         let (u, vv, w) = (self.u[lane], self.v[lane], self.w[lane]);

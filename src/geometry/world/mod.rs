@@ -67,7 +67,7 @@ struct SurfaceInfo {
 
 /// What building the world took (for `rtc render --stats`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct WorldStats {
+pub(crate) struct WorldStats {
     /// Top-level objects.
     pub(crate) objects: usize,
     /// Objects outside the BVH (unbounded).

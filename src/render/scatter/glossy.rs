@@ -4,7 +4,7 @@
 //! The lobe is uniform in solid angle over the cone of half-angle `gloss·90°`. A ray that the
 //! cone tips through the surface is mirrored back about the surface plane, so it stays on its
 //! side and keeps its weight: the lobe's rays average to the same total weight as the one ray
-//! they replace, and energy never grows. [`pdf`] is the density of that folded cone.
+//! they replace, and energy never grows. `pdf` (the tests') is the density of that folded cone.
 
 use crate::num::Norm;
 use glam::DVec3;

@@ -17,7 +17,8 @@ use glam::DVec3;
 
 use crate::ir::{Color, Material};
 use crate::opt::Effects;
-pub use specular::{reflect, reflect_lanes, refract};
+pub use specular::refract;
+pub(crate) use specular::{reflect, reflect_lanes};
 
 /// The ideal direction a lobe scatters about.
 #[derive(Clone, Copy, Debug, PartialEq)]

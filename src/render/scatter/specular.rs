@@ -18,13 +18,13 @@ pub fn refract(d: DVec3, n: DVec3, n1: f64, n2: f64) -> Option<DVec3> {
 }
 
 /// The mirror direction of unit `d` about unit `n`.
-pub fn reflect(d: DVec3, n: DVec3) -> DVec3 {
+pub(crate) fn reflect(d: DVec3, n: DVec3) -> DVec3 {
     d - 2.0 * d.dot(n) * n
 }
 
 /// [`reflect`] lane by lane, `d − (2·(d·n))·n`, the same operations in the same order.
 #[inline(always)]
-pub fn reflect_lanes(d: &V3, n: &V3) -> V3 {
+pub(crate) fn reflect_lanes(d: &V3, n: &V3) -> V3 {
     let d_n = d.dot(n);
     d.sub(&n.scale(&lanes::map(|i| 2.0 * d_n[i])))
 }
