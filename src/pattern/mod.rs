@@ -8,10 +8,16 @@
 //! rounded), so a pattern gives the same bits on every CPU and thread. Nothing allocates per
 //! evaluation.
 //!
-//! - [`noise`]: Perlin's improved noise (signed, and POV-Ray-like in [0, 1]), vector noise.
+//! - [`noise`]: Perlin's improved noise (signed, and POV-Ray-like in [0, 1]), vector noise;
+//! - [`fbm`]: fractal sums (fBm, turbulence, POV-Ray's scalar turbulence, vector fBm);
+//! - [`cells`]: Worley's F1 and F2.
 
+pub mod cells;
+pub mod fbm;
 pub mod hash;
 pub mod noise;
+
+pub use fbm::Fractal;
 
 #[cfg(test)]
 mod tests;

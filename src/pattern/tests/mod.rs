@@ -4,6 +4,8 @@
 
 use glam::DVec3;
 
+mod cells;
+mod fbm;
 mod noise;
 
 /// A 64-bit LCG (Knuth's MMIX constants): reproducible sample points.
