@@ -10,14 +10,29 @@
 //!
 //! - [`noise`]: Perlin's improved noise (signed, and POV-Ray-like in [0, 1]), vector noise;
 //! - [`fbm`]: fractal sums (fBm, turbulence, POV-Ray's scalar turbulence, vector fBm);
-//! - [`cells`]: Worley's F1 and F2.
+//! - [`cells`]: Worley's F1 and F2;
+//! - [`Pattern`] ([`field`]): the closed set of patterns, implemented in [`geometric`],
+//!   [`tilings`], [`noisy`] and [`ripples`];
+//! - modifiers: [`waves`] (frequency, phase, wave shapes), [`warps`] (turbulence, repeat), and
+//!   [`Field`], a pattern with its warps and wave.
 
 pub mod cells;
 pub mod fbm;
+pub mod field;
+pub mod geometric;
 pub mod hash;
 pub mod noise;
+pub mod noisy;
+pub mod ripples;
+pub mod tilings;
+pub mod warps;
+pub mod waves;
 
 pub use fbm::Fractal;
+pub use field::{Field, NAMES, Pattern};
+pub use noisy::Crackle;
+pub use warps::{Repeat, Turbulence, Warp};
+pub use waves::{Wave, WaveShape};
 
 #[cfg(test)]
 mod tests;

@@ -6,7 +6,11 @@ use glam::DVec3;
 
 mod cells;
 mod fbm;
+mod geometric;
+mod modifiers;
 mod noise;
+mod noisy;
+mod tilings;
 
 /// A 64-bit LCG (Knuth's MMIX constants): reproducible sample points.
 pub(super) struct Lcg(u64);
