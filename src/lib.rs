@@ -27,6 +27,7 @@ pub mod loader;
 pub mod metrics;
 pub mod num;
 pub mod opt;
+pub mod pattern;
 pub mod render;
 pub mod source;
 pub mod syntax;

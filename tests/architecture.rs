@@ -12,7 +12,7 @@ mod architecture_support;
 use architecture_support::{Use, module_of, rust_files, uses};
 
 /// Leaves every module may use.
-const LEAVES: &[&str] = &["diag", "source", "num", "lanes"];
+const LEAVES: &[&str] = &["diag", "source", "num", "lanes", "pattern"];
 
 /// Who may import whom (besides the leaves). A new top-level module gets its row here first.
 const ALLOWED: &[(&str, &[&str])] = &[
@@ -20,6 +20,7 @@ const ALLOWED: &[(&str, &[&str])] = &[
     ("diag", &[]),
     ("num", &[]),
     ("lanes", &[]),
+    ("pattern", &[]),
     ("syntax", &[]),
     ("ir", &[]),
     ("assets", &["ir"]),
@@ -45,8 +46,13 @@ const ONLY: &[(&str, &str, &[&str])] = &[
 ];
 
 /// Items a module may not name although it may use their module: `(module, path)`. The
-/// renderer reads the prepared scene, never the IR's shapes.
-const FORBIDDEN: &[(&str, &[&str])] = &[("render", &["ir", "Shape"])];
+/// renderer reads the prepared scene, never the IR's shapes. The patterns are pure maths of
+/// position: of the other leaves they use `num` only.
+const FORBIDDEN: &[(&str, &[&str])] = &[
+    ("render", &["ir", "Shape"]),
+    ("pattern", &["diag"]),
+    ("pattern", &["source"]),
+];
 
 /// Why `from` may not use `u`, if it may not.
 fn violation(from: &str, u: &Use) -> Option<String> {
@@ -234,6 +240,12 @@ fn a_wrong_import_is_a_violation() {
     assert!(violation("render", &at("crate::lanes::V3")).is_none());
     assert!(violation("lanes", &at("crate::geometry::lanes::RayLanes")).is_some());
     assert!(violation("newthing", &at("crate::ir::Scene")).is_some());
+    // The patterns are a leaf every stage may use, which uses no other leaf but `num`.
+    assert!(violation("render", &at("crate::pattern::Pattern")).is_none());
+    assert!(violation("ir", &at("crate::pattern::Pattern")).is_none());
+    assert!(violation("pattern", &at("crate::num::Norm")).is_none());
+    assert!(violation("pattern", &at("crate::diag::Diagnostic")).is_some());
+    assert!(violation("pattern", &at("crate::ir::Scene")).is_some());
     // Inside a room: a shading model calling an integrator, the scattering layer reading the
     // path state's room above it.
     let module = |m: &str| m.split("::").map(String::from).collect::<Vec<_>>();
