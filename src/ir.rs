@@ -13,6 +13,7 @@ use crate::source::Span;
 mod call;
 mod camera;
 mod flare;
+mod light;
 pub mod limits;
 mod loaded;
 mod motion;
@@ -23,6 +24,7 @@ mod settings;
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;
+pub use light::{Light, LightKind};
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use placement::Transform;
@@ -102,48 +104,6 @@ impl Scene {
     pub fn add_texture(&mut self, t: Texture) -> TextureId {
         self.textures.push(t);
         TextureId((self.textures.len() - 1) as u32)
-    }
-}
-
-/// A light source with an RGB intensity.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Light {
-    /// Where and what shape.
-    pub kind: LightKind,
-    /// RGB intensity; may exceed 1.
-    pub color: Color,
-    /// Where it was defined.
-    pub span: Span,
-}
-
-/// The geometry of a light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LightKind {
-    /// A point light.
-    Point {
-        /// Position.
-        position: DVec3,
-    },
-    /// A parallelogram light `corner + s·u + t·v`, sampled on a `samples[0]×samples[1]` grid.
-    Area {
-        /// One corner.
-        corner: DVec3,
-        /// First edge.
-        u: DVec3,
-        /// Second edge.
-        v: DVec3,
-        /// Stratified sample counts along `u` and `v` (each ≥ 1).
-        samples: [u32; 2],
-    },
-}
-
-impl LightKind {
-    /// The light's centre (its position for a point light).
-    pub(crate) fn center(&self) -> DVec3 {
-        match *self {
-            LightKind::Point { position } => position,
-            LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
-        }
     }
 }
 

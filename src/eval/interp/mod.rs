@@ -4,6 +4,7 @@ mod blocks;
 mod call;
 mod host_impl;
 mod meters;
+mod names;
 mod param_stmt;
 mod program;
 mod split;
@@ -17,7 +18,7 @@ use crate::source::{SourceMap, Span};
 use crate::syntax::ast::*;
 use crate::syntax::intern::Sym;
 
-use super::error::{EvalError, R, error, suggest};
+use super::error::{R, error};
 use super::lower::Sink;
 use super::modules::{Module, Scope};
 use super::ops::Num;
@@ -201,71 +202,6 @@ impl super::error::Quote for Interp<'_> {
 }
 
 impl Interp<'_> {
-    /// Looks a name up: locals of this frame, then module items, then built-ins.
-    #[inline]
-    pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
-        match self.local(sym) {
-            // Numbers (loop variables, mostly) copied without the out-of-line `clone`.
-            Some(Value::Int(i)) => Ok(Value::Int(*i)),
-            Some(Value::Float(f)) => Ok(Value::Float(*f)),
-            Some(v) => Ok(v.clone()),
-            None => self.lookup_global(sym, span),
-        }
-    }
-
-    /// The innermost local named `sym` in the current frame.
-    #[inline(always)]
-    fn local(&self, sym: Sym) -> Option<&Value> {
-        self.locals[self.frame_base..]
-            .iter()
-            .rev()
-            .find(|(k, _)| *k == sym)
-            .map(|(_, v)| v)
-    }
-
-    /// Looks up a name that is not a local: module items, then built-ins.
-    #[inline(never)]
-    fn lookup_global(&self, sym: Sym, span: Span) -> R<Value> {
-        if let Some(b) = self.scope.items.borrow().get(&sym) {
-            return if b.poisoned {
-                Err(EvalError::Poisoned)
-            } else {
-                Ok(b.value.clone())
-            };
-        }
-        if let Some(v) = super::builtins::global(sym) {
-            return Ok(v);
-        }
-        if let Some(v) = super::params::frame_builtin(self.opts, sym.as_str()) {
-            return Ok(v);
-        }
-        Err(self.unknown_name(sym, span).into())
-    }
-
-    #[cold]
-    #[inline(never)]
-    fn unknown_name(&self, sym: Sym, span: Span) -> Diagnostic {
-        let mut names: Vec<&'static str> = self.locals[self.frame_base..]
-            .iter()
-            .map(|(k, _)| k.as_str())
-            .collect();
-        names.extend(self.scope.items.borrow().keys().map(|k| k.as_str()));
-        names.extend(super::builtins::global_names());
-        names.extend(super::params::FRAME_BUILTINS);
-        names.sort_unstable();
-        let d = error("rtc::name::unknown", span, format!("unknown name `{sym}`"))
-            .with_label("not defined here");
-        if let Some(m) = super::modules::std_modules_exporting(sym.as_str()).first() {
-            return d.with_help(format!(
-                "`{sym}` is in `std.{m}`: add `import std.{m} {{ {sym} }}` at the top of the file"
-            ));
-        }
-        match suggest(sym.as_str(), names) {
-            Some(h) => d.with_help(h),
-            None => d.with_help(format!("define it first, e.g. `let {sym} = ...`")),
-        }
-    }
-
     /// Evaluates an expression. The common kinds are handled here, in tail position (no
     /// re-wrapping of results); the others are in `eval_other`, out of line. Every kind that
     /// evaluates sub-expressions is out of line too, so this function, entered for every node,
