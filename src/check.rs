@@ -221,13 +221,50 @@ impl Survey {
         } else {
             format!(" ({kinds})")
         };
+        let effects = Effects::new(&self.content, &scene.settings, &scene.camera);
+        let patterns =
+            if effects.names().contains(&"textures") || effects.names().contains(&"bump maps") {
+                patterns(scene)
+            } else {
+                String::new()
+            };
         format!(
-            "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {}",
+            "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {effects}{patterns}",
             if objects == 1 { "" } else { "s" },
             if lights == 1 { "" } else { "s" },
             scene.camera.width,
             scene.camera.height,
-            Effects::new(&self.content, &scene.settings, &scene.camera)
         )
     }
+}
+
+/// The patterns the scene's materials read, for the effects line: `; patterns: marble, granite
+/// (bump: wrinkles)` (each name once, in first use; empty without patterns).
+fn patterns(scene: &Scene) -> String {
+    let name = |t: crate::ir::TextureId| match scene.textures.get(t.0 as usize) {
+        Some(crate::ir::Texture::Pattern(p)) => Some(p.name()),
+        _ => None,
+    };
+    let (mut colour, mut bump) = (Vec::new(), Vec::new());
+    let add = |list: &mut Vec<&'static str>, n: Option<&'static str>| {
+        if let Some(n) = n.filter(|n| !list.contains(n)) {
+            list.push(n);
+        }
+    };
+    for m in &scene.materials {
+        add(&mut colour, m.texture.and_then(name));
+        if let Some(crate::ir::Mix::Map { texture, .. }) = m.mix.as_deref() {
+            add(&mut colour, name(*texture));
+        }
+        add(&mut bump, m.bump.and_then(|b| name(b.texture)));
+    }
+    let mut out = String::new();
+    if !colour.is_empty() {
+        out = format!("; patterns: {}", colour.join(", "));
+    }
+    if !bump.is_empty() {
+        let sep = if out.is_empty() { "; patterns:" } else { "" };
+        out += &format!("{sep} (bump: {})", bump.join(", "));
+    }
+    out
 }

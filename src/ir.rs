@@ -20,6 +20,7 @@ mod motion;
 mod placement;
 pub mod provenance;
 mod settings;
+mod texture;
 
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
@@ -34,17 +35,12 @@ pub use settings::{
     ShadingModel,
 };
 pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
+pub use texture::{
+    Bump, Mapping, MaterialId, Mix, PatternSpace, PatternTexture, Texture, TextureId,
+};
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).
 pub(crate) type Color = DVec3;
-
-/// Index into [`Scene::materials`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct MaterialId(pub u32);
-
-/// Index into [`Scene::textures`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct TextureId(pub u32);
 
 /// A whole evaluated scene, ready for optimisation and rendering. Two scenes are equal when
 /// what they show and how they render are: `memory` is the load's bookkeeping (a course
@@ -116,6 +112,9 @@ pub struct Material {
     pub texture: Option<TextureId>,
     /// Bump map perturbing the normal.
     pub bump: Option<Bump>,
+    /// A material made of others (a material map or layers), resolved per hit; the fields
+    /// above are then its first part's, for the code that reads a material without a hit.
+    pub mix: Option<Box<Mix>>,
     /// Ambient coefficient.
     pub ka: f64,
     /// Diffuse coefficient.
@@ -147,6 +146,7 @@ impl Default for Material {
             color: DVec3::splat(0.8),
             texture: None,
             bump: None,
+            mix: None,
             ka: 0.2,
             kd: 0.8,
             ks: 0.0,
@@ -160,60 +160,6 @@ impl Default for Material {
             span: Span::default(),
         }
     }
-}
-
-/// A bump map: a height texture whose gradient perturbs the normal.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bump {
-    /// The height field (the green channel of an image, or a procedural texture's luminance).
-    pub texture: TextureId,
-    /// Strength of the perturbation.
-    pub scale: f64,
-}
-
-/// A colour source over surface coordinates.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Texture {
-    /// An image file, looked up nearest-pixel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top.
-    Image {
-        /// Resolved path.
-        path: PathBuf,
-        /// How surface points map to (u, v).
-        mapping: Mapping,
-        /// Where the path was written.
-        span: Span,
-    },
-    /// A 3-D checkerboard of cubes of edge `size` in object space.
-    Checker {
-        /// First colour.
-        a: Color,
-        /// Second colour.
-        b: Color,
-        /// Cube edge length.
-        size: f64,
-    },
-    /// Stripes along object-space x of width `size`.
-    Stripes {
-        /// First colour.
-        a: Color,
-        /// Second colour.
-        b: Color,
-        /// Stripe width.
-        size: f64,
-    },
-}
-
-/// Surface parameterisation used for texture lookups.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Mapping {
-    /// The shape's own (u, v).
-    Uv,
-    /// Equirectangular about object-space +Y (the north pole): v = θ/π from the pole, u = φ/2π.
-    Spherical,
-    /// Object-space x, z, wrapped to [0, 1).
-    Planar,
-    /// Angle about +Y and height.
-    Cylindrical,
 }
 
 /// An object: a shape in its own space, placed by an affine transform, with a material.

@@ -305,7 +305,7 @@ fn the_json_shape_is_pinned() {
     );
     assert_eq!(
         keys(&ray["hit"]),
-        ["material", "normal", "object", "point", "t"]
+        ["material", "normal", "object", "patterns", "point", "t"]
     );
     assert_eq!(keys(&ray["hit"]["material"]), ["index", "source", "span"]);
     assert_eq!(
@@ -382,4 +382,48 @@ fn a_call_made_object_reads_made_in_the_call() {
     let text = String::from_utf8_lossy(&run.stdout);
     assert!(!text.contains("made in in"), "{text}");
     assert!(text.contains("made in `ball()` called at"), "{text}");
+}
+
+#[test]
+fn a_pattern_pixel_gives_the_value_and_the_colour_map_stop() {
+    // A face-on plane z = 0 wearing a gradient along x over 40 units from x = −20, seen from
+    // z = 1000 with one unit per pixel: pixel (30, 10) looks at x = 30.5 − 20 = 10.5, where the
+    // value is (10.5 + 20) / 40 = 0.7625, in the third stop (at 0.75) of four.
+    let dir = scratch("why-pattern");
+    let file = dir.join("pattern.rtc");
+    std::fs::write(
+        &file,
+        "rtc 1.1
+camera { eye: [0, 0, 1000], center: [0, 0, 0], up: Y, fov: 2 * atan(10 / 1000), resolution: [40, 20] }
+point_light { position: [0, 0, 1000] }
+plane(point: [0, 0, 0], normal: Z).material(material {
+  texture: gradient(axis: X).colors([[0, rgb(0, 0, 0)], [0.5, rgb(1, 0, 0)], [0.75, rgb(0, 1, 0)], [1, rgb(0, 0, 1)]])
+    .scale(40).translate([-20, 0, 0])
+  bump: wrinkles(), bump_scale: 0 })
+",
+    )
+    .unwrap();
+    let d = why(file.to_str().unwrap(), 30, 10, &[]);
+    let patterns = d["ray"]["hit"]["patterns"].as_array().unwrap();
+    assert_eq!(patterns.len(), 2, "the texture and the bump");
+    let tex = &patterns[0];
+    assert_eq!(tex["role"], "texture");
+    assert_eq!(tex["name"], "gradient");
+    assert!((tex["value"].as_f64().unwrap() - 0.7625).abs() < 1e-12);
+    assert_eq!(tex["stop"]["index"], 2);
+    assert_eq!(tex["stop"]["at"], 0.75);
+    assert_eq!(tex["stop"]["of"], 4);
+    assert_eq!(patterns[1]["role"], "bump");
+    assert_eq!(patterns[1]["name"], "wrinkles");
+    assert!(patterns[1]["stop"].is_null());
+    // The text form says the same.
+    let run = rtc(&["why", file.to_str().unwrap(), "30", "10"]);
+    let text =
+        String::from_utf8_lossy(&run.stderr).to_string() + &String::from_utf8_lossy(&run.stdout);
+    assert!(
+        text.contains(
+            "texture pattern `gradient` = 0.7625, in the colour map's stop 3 of 4 (at 0.75)"
+        ),
+        "{text}"
+    );
 }

@@ -348,6 +348,21 @@ fn hit_note(
             ))
         }
     }
+    for r in &hit.patterns {
+        let stop = r.stop.map_or(String::new(), |(i, at, n)| {
+            format!(
+                ", in the colour map's stop {} of {n} (at {})",
+                i + 1,
+                rtc::diag::number(at)
+            )
+        });
+        d = d.with_note(format!(
+            "{} pattern `{}` = {}{stop}",
+            r.role,
+            r.name,
+            rtc::diag::number(r.value)
+        ));
+    }
     if let Some(a) = n.ambient {
         d = d.with_note(format!("ambient (once): {}", vec3(a)));
     }

@@ -84,6 +84,12 @@ fn hit(cx: &Context<'_>, h: &HitInfo) -> Value {
             "source": source,
             "span": span.map(|s| place(cx.sources, s)),
         },
+        "patterns": h.patterns.iter().map(|r| json!({
+            "role": r.role,
+            "name": r.name,
+            "value": r.value,
+            "stop": r.stop.map(|(i, at, n)| json!({"index": i, "at": at, "of": n})),
+        })).collect::<Vec<_>>(),
     })
 }
 

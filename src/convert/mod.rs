@@ -13,6 +13,7 @@
 mod comments;
 mod exact;
 mod names;
+mod pattern;
 mod placement;
 mod shapes;
 mod text;

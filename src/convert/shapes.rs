@@ -77,6 +77,7 @@ fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
         }
         Texture::Checker { a, b, size } => pattern("checker", *a, *b, *size),
         Texture::Stripes { a, b, size } => pattern("stripes", *a, *b, *size),
+        Texture::Pattern(pt) => super::pattern::source(pt),
     }
 }
 

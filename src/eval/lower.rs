@@ -11,7 +11,7 @@ use crate::ir;
 use crate::source::Span;
 use crate::syntax::ast::{Expr, ExprKind, Generator};
 
-use super::value::{Mat, Obj, ObjShape, RenderVal, Tex, Value};
+use super::value::{Mat, MatMix, Obj, ObjShape, RenderVal, Tex, Value};
 
 /// Collects what a scene file emits.
 #[derive(Default)]
@@ -169,6 +169,7 @@ impl Lowerer {
             return *id;
         }
         let mut im = m.m.clone();
+        im.mix = m.mix.as_ref().map(|mix| Box::new(self.mix(mix)));
         im.texture = m.texture.as_ref().map(|t| self.texture(t));
         im.bump = m.bump.as_ref().map(|(t, s)| ir::Bump {
             texture: self.texture(t),
@@ -177,6 +178,28 @@ impl Lowerer {
         let id = self.add_material(m.made, im);
         self.mat_ids.insert(m.made, id);
         id
+    }
+
+    /// A mixed material's parts, lowered (before the material itself, so a loop part's
+    /// renumbering meets them first).
+    fn mix(&mut self, mix: &MatMix) -> ir::Mix {
+        match mix {
+            MatMix::Map {
+                pattern,
+                stops,
+                blend,
+            } => ir::Mix::Map {
+                texture: self.texture(pattern),
+                stops: stops
+                    .iter()
+                    .map(|(at, m)| (*at, self.material(m)))
+                    .collect(),
+                blend: *blend,
+            },
+            MatMix::Layers(layers) => {
+                ir::Mix::Layers(layers.iter().map(|m| self.material(m)).collect())
+            }
+        }
     }
 
     fn object(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>) {
@@ -296,16 +319,35 @@ impl Lowerer {
             Some(i) => tex[i],
             None => id,
         };
-        let mat: Vec<ir::MaterialId> = new_materials
-            .into_iter()
-            .map(|(key, mut m)| {
-                m.texture = m.texture.map(retex);
-                if let Some(b) = &mut m.bump {
-                    b.texture = retex(b.texture);
+        // A mixed material's parts come before it, so they are renumbered when it is.
+        let mut mat: Vec<ir::MaterialId> = Vec::with_capacity(new_materials.len());
+        for (key, mut m) in new_materials {
+            m.texture = m.texture.map(retex);
+            if let Some(b) = &mut m.bump {
+                b.texture = retex(b.texture);
+            }
+            if let Some(mix) = &mut m.mix {
+                let remat = |id: ir::MaterialId| match (id.0 as usize).checked_sub(materials) {
+                    Some(i) => mat[i],
+                    None => id,
+                };
+                match &mut **mix {
+                    ir::Mix::Map { texture, stops, .. } => {
+                        *texture = retex(*texture);
+                        for (_, id) in stops {
+                            *id = remat(*id);
+                        }
+                    }
+                    ir::Mix::Layers(layers) => {
+                        for id in layers {
+                            *id = remat(*id);
+                        }
+                    }
                 }
-                self.shared(key, made, |l| l.add_material(key, m), |l| &mut l.mat_ids)
-            })
-            .collect();
+            }
+            let id = self.shared(key, made, |l| l.add_material(key, m), |l| &mut l.mat_ids);
+            mat.push(id);
+        }
         let remat = |id: ir::MaterialId| match (id.0 as usize).checked_sub(materials) {
             Some(i) => mat[i],
             None => id,

@@ -25,6 +25,7 @@ pub static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
         &[TRANSFORMS, &[&MATERIAL, &MOVING, &LOOK_AT_METHOD]],
     ),
     ("Transform", &[TRANSFORMS, &[&POINT, &VECTOR]]),
+    ("Texture", &[TRANSFORMS, super::texture_methods::METHODS]),
     ("Rng", &[super::rng::METHODS]),
     ("List", &[&[&MAP, &FILTER], LIST_FUNCTIONS]),
     (
@@ -112,6 +113,14 @@ pub fn call_method(
             let t = super::transform::method_transform(it, n, site, args)?;
             return Ok(Value::Transform(Rc::new(t * **a)));
         }
+        Value::Texture(t) if is_t => {
+            let m = super::transform::method_transform(it, n, site, args)?;
+            return super::texture_methods::transformed(it, t, m, span);
+        }
+        Value::Texture(t) if super::texture_methods::is_method(n) => {
+            let t = t.clone();
+            return super::texture_methods::call(it, t, site, args);
+        }
         Value::Rng(seed) if has(super::rng::METHODS, n) => {
             return super::rng::method(it, *seed, n, site, args);
         }
@@ -153,6 +162,7 @@ pub fn call_method(
     let known: Vec<&str> = match &recv {
         Value::Object(_)
         | Value::Transform(_)
+        | Value::Texture(_)
         | Value::Rng(_)
         | Value::List(_)
         | Value::Vec3(_) => names(recv.type_name()),

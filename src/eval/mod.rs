@@ -24,6 +24,7 @@ pub(crate) mod provenance;
 pub mod rng;
 pub(crate) mod schema;
 pub(crate) mod shapes;
+pub(crate) mod texture_methods;
 pub(crate) mod transform;
 pub(crate) mod types;
 pub(crate) mod value;

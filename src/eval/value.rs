@@ -222,9 +222,27 @@ pub struct Mat {
     pub texture: Option<Rc<Tex>>,
     /// Bump texture and its strength.
     pub bump: Option<(Rc<Tex>, f64)>,
+    /// The materials it is made of, for a material map or layers (`m` is then its first part's).
+    pub mix: Option<Rc<MatMix>>,
     /// Which material value this is ([`Interp::next_made`](super::interp::Interp::next_made)):
     /// the lowering shares one IR material per value by it.
     pub made: u64,
+}
+
+/// The parts of a mixed material value (lowered to `ir::Mix`).
+#[derive(Clone, Debug)]
+pub enum MatMix {
+    /// `material_map(..)`: a pattern's value picks or blends the stops' materials.
+    Map {
+        /// The pattern (its colour map unused).
+        pattern: Rc<Tex>,
+        /// (position, material), sorted by position.
+        stops: Vec<(f64, Rc<Mat>)>,
+        /// Blend between stops (else switch).
+        blend: bool,
+    },
+    /// `layers([..])`: top first.
+    Layers(Vec<Rc<Mat>>),
 }
 
 /// A texture value (lowered to `ir::Texture`).

@@ -81,7 +81,7 @@ impl Content {
         Content {
             reflective: mats.iter().any(|m| m.reflect > 0.0),
             refractive: mats.iter().any(|m| m.refract > 0.0),
-            textured: mats.iter().any(|m| m.texture.is_some()),
+            textured: mats.iter().any(|m| m.texture.is_some() || m.mix.is_some()),
             bumped: mats.iter().any(|m| m.bump.is_some()),
             area_lights: scene
                 .lights

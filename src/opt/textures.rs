@@ -6,7 +6,7 @@ use std::sync::Arc;
 use crate::assets;
 use crate::diag::Diagnostics;
 use crate::ir::limits::Memory;
-use crate::ir::{Color, Mapping, Texture};
+use crate::ir::{Color, Mapping, PatternTexture, Texture};
 
 pub(crate) use crate::assets::Picture;
 
@@ -19,6 +19,8 @@ pub(crate) enum TextureMap {
     Checker(Color, Color, f64),
     /// Stripes along object-space x: two colours and the stripe width.
     Stripes(Color, Color, f64),
+    /// A procedural pattern through its colour map.
+    Pattern(Box<PatternTexture>),
 }
 
 /// Every texture of a scene, decoded; `None` (with the problems in `out`) when one cannot be.
@@ -51,6 +53,7 @@ pub(crate) fn load_all(
             Texture::Stripes { a, b, size } => {
                 maps.push(TextureMap::Stripes(*a, *b, positive(*size)));
             }
+            Texture::Pattern(p) => maps.push(TextureMap::Pattern(p.clone())),
         }
     }
     (maps.len() == textures.len()).then_some(maps)

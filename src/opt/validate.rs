@@ -11,6 +11,15 @@ use crate::ir::limits::{
 };
 use crate::ir::{Camera, LightKind, Object, Projection, RenderSettings, Sampling, Scene, Shape};
 
+/// Whether a mix has at least one part and every part is one of the scene's `count` materials.
+fn mix_parts_exist(mix: &crate::ir::Mix, count: usize) -> bool {
+    let ids: Vec<crate::ir::MaterialId> = match mix {
+        crate::ir::Mix::Map { stops, .. } => stops.iter().map(|(_, id)| *id).collect(),
+        crate::ir::Mix::Layers(layers) => layers.clone(),
+    };
+    !ids.is_empty() && ids.iter().all(|id| (id.0 as usize) < count)
+}
+
 /// Every scene-level problem of `scene` but its objects' (see [`object`], which callers run on
 /// each object first, in the pass that prepares it: a million objects make every pass cost),
 /// in a fixed order.
@@ -19,12 +28,33 @@ pub(crate) fn scene(scene: &Scene, out: &mut Diagnostics) {
         let bad_texture = |t: Option<crate::ir::TextureId>| {
             t.is_some_and(|t| t.0 as usize >= scene.textures.len())
         };
-        if bad_texture(m.texture) || bad_texture(m.bump.map(|b| b.texture)) {
+        let mix_texture = match m.mix.as_deref() {
+            Some(crate::ir::Mix::Map { texture, .. }) => Some(*texture),
+            _ => None,
+        };
+        if bad_texture(m.texture)
+            || bad_texture(m.bump.map(|b| b.texture))
+            || bad_texture(mix_texture)
+        {
             out.push(
                 Diagnostic::error(
                     "rtc::render::texture",
                     m.span,
                     "this material names a texture that does not exist",
+                )
+                .with_label("this material"),
+            );
+        }
+    }
+    for m in &scene.materials {
+        if let Some(mix) = &m.mix
+            && !mix_parts_exist(mix, scene.materials.len())
+        {
+            out.push(
+                Diagnostic::error(
+                    "rtc::render::material",
+                    m.span,
+                    "this mixed material has no parts, or names a material that does not exist",
                 )
                 .with_label("this material"),
             );

@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use crate::num::Norm;
 
-use super::warps::Turbulence;
+use super::turbulence::Turbulence;
 use super::waves::wrap;
 
 /// POV-Ray's `CLIP_DENSITY` on a distance `r ≥ 0`: `1 − r` inside the unit, 0 beyond.

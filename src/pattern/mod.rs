@@ -17,6 +17,7 @@
 //!   [`Field`], a pattern with its warps and wave.
 
 pub mod cells;
+pub mod color_map;
 pub mod fbm;
 pub mod field;
 pub mod geometric;
@@ -25,13 +26,16 @@ pub mod noise;
 pub mod noisy;
 pub mod ripples;
 pub mod tilings;
+pub mod turbulence;
 pub mod warps;
 pub mod waves;
 
+pub use color_map::{ColorMap, Rgbft, Stop};
 pub use fbm::Fractal;
 pub use field::{Field, NAMES, Pattern};
 pub use noisy::Crackle;
-pub use warps::{Repeat, Turbulence, Warp};
+pub use turbulence::Turbulence;
+pub use warps::{Repeat, Warp};
 pub use waves::{Wave, WaveShape};
 
 #[cfg(test)]

@@ -10,7 +10,7 @@ use glam::DVec3;
 use super::cells::{self, Nearest};
 use super::fbm::{self, Fractal, octave_seed};
 use super::noise;
-use super::warps::Turbulence;
+use super::turbulence::Turbulence;
 
 /// `bozo` (also `spotted`, and `bumps` as a normal): the noise itself, in [0, 1], mean 0.5.
 #[inline]

@@ -2,67 +2,13 @@
 //! and `turbulence`). Transforms are not here: the caller brings the point into the pattern's
 //! space first.
 
-use glam::DVec3;
+use std::f64::consts::{PI, TAU};
 
-use super::fbm::{self, Fractal};
+use glam::{DAffine3, DVec3};
 
-/// Turbulence: the point displaced by vector fBm times `amount` per axis (POV-Ray's
-/// `turbulence <x, y, z>` with `octaves`, `omega`, `lambda`). Marble, wood, agate and the
-/// spirals read it in their own way instead (POV-Ray's "classic" turbulence, handled by the
-/// pattern): give it to them, not as a warp.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Turbulence {
-    /// How far each axis is pushed per unit of the noise sum (0: no turbulence).
-    pub amount: DVec3,
-    /// Octaves, omega and lambda of the sum.
-    pub fractal: Fractal,
-    /// The noise seed.
-    pub seed: u32,
-}
+use crate::num::Norm;
 
-impl Turbulence {
-    /// No turbulence, with POV-Ray's default octaves, omega and lambda.
-    pub const NONE: Turbulence = Turbulence {
-        amount: DVec3::ZERO,
-        fractal: Fractal {
-            octaves: 6,
-            omega: 0.5,
-            lambda: 2.0,
-        },
-        seed: 0,
-    };
-
-    /// `amount` on every axis, POV-Ray's default octaves, omega and lambda, seed 0.
-    pub fn uniform(amount: f64) -> Turbulence {
-        Turbulence {
-            amount: DVec3::splat(amount),
-            ..Turbulence::NONE
-        }
-    }
-
-    /// Whether the amount is zero on every axis (the warp is the identity).
-    pub fn is_none(&self) -> bool {
-        self.amount == DVec3::ZERO
-    }
-
-    /// The warped point: `p + amount ⊙ vector_fbm(p)`.
-    #[inline]
-    pub fn warp(&self, p: DVec3) -> DVec3 {
-        if self.is_none() {
-            return p;
-        }
-        p + self.amount * fbm::vector(p, &self.fractal, self.seed)
-    }
-
-    /// The scalar turbulence classic patterns add: `amount.x · classic(p)` (0 without any).
-    #[inline]
-    pub fn scalar(&self, p: DVec3) -> f64 {
-        if self.is_none() {
-            return 0.0;
-        }
-        self.amount.x * fbm::classic(p, &self.fractal, self.seed)
-    }
-}
+pub use super::turbulence::Turbulence;
 
 /// POV-Ray's repeat warp: space cut into slabs `width` thick along `axis`, each slab showing the
 /// first one (`0 ≤ p[axis] < width`), odd slabs mirrored by `flip`, slab `k` moved by `k·offset`.
@@ -107,13 +53,27 @@ impl Repeat {
     }
 }
 
-/// A warp of either kind.
+/// One step a point goes through before the pattern reads it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Warp {
     /// A turbulence warp.
     Turbulence(Turbulence),
     /// A repeat warp.
     Repeat(Repeat),
+    /// An affine map of the point (a transform written before a warp: the inverse of the
+    /// transform, as the point sees it).
+    Transform(DAffine3),
+    /// The x–y plane wrapped round the unit sphere: x is the longitude about y as a fraction of
+    /// a turn (as [`super::geometric::radial`]), y the latitude as a fraction of the half turn
+    /// from the south pole, z the distance from the origin.
+    Spherical,
+    /// The x–y plane wrapped round the y axis: x is the angle about y as a fraction of a turn,
+    /// y stays, z is the distance from the axis.
+    Cylindrical,
+    /// The x–y plane wrapped round a torus about y of this major radius: x is the angle about
+    /// y, y the angle round the tube (both fractions of a turn), z the distance from the tube's
+    /// core circle.
+    Toroidal(f64),
 }
 
 impl Warp {
@@ -123,6 +83,25 @@ impl Warp {
         match self {
             Warp::Turbulence(t) => t.warp(p),
             Warp::Repeat(r) => r.warp(p),
+            Warp::Transform(m) => m.transform_point3(p),
+            Warp::Spherical => {
+                let r = p.norm();
+                let latitude = if r > 0.0 {
+                    libm::acos((-p.y / r).clamp(-1.0, 1.0)) / PI
+                } else {
+                    0.0
+                };
+                DVec3::new(super::geometric::radial(p), latitude, r)
+            }
+            Warp::Cylindrical => {
+                let d = libm::hypot(p.x, p.z);
+                DVec3::new(super::geometric::radial(p), p.y, d)
+            }
+            Warp::Toroidal(major) => {
+                let d = libm::hypot(p.x, p.z) - major;
+                let tube = libm::atan2(p.y, d).rem_euclid(TAU) / TAU;
+                DVec3::new(super::geometric::radial(p), tube, libm::hypot(d, p.y))
+            }
         }
     }
 }

@@ -81,7 +81,15 @@ impl PixelAovs {
             self.vote(0);
             return;
         };
-        let mat = scene.material(hit.material);
+        let stored = scene.material(hit.material);
+        let mixed;
+        let mat = match stored.mix {
+            Some(_) => {
+                mixed = super::mix::resolve(scene, &hit, scene.world().frame(&hit), stored);
+                &mixed
+            }
+            None => stored,
+        };
         let facing = if hit.normal.dot(ray.dir) > 0.0 {
             -hit.normal
         } else {

@@ -16,9 +16,9 @@ use super::record::{Branch, LightTerm, Recorder};
 use super::sampler::PixelSampler;
 use super::view::View;
 use crate::diag::Diagnostic;
-use crate::geometry::{Ray, SurfaceHit, World};
+use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::{Color, Encoding, MaterialId};
-use crate::opt::Prepared;
+use crate::opt::{Prepared, TextureMap};
 
 /// Where a recorded ray hit.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,18 +33,70 @@ pub struct HitInfo {
     pub object: u32,
     /// The material shaded with (an index into the prepared material table).
     pub material: MaterialId,
+    /// The patterns its material reads, with their values here.
+    pub patterns: Vec<PatternReading>,
+}
+
+/// A pattern a material reads at a hit: what for, its value, and the colour-map stop the
+/// value fell in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternReading {
+    /// `texture`, `bump` or `material map`.
+    pub role: &'static str,
+    /// The pattern's constructor (`marble`).
+    pub name: &'static str,
+    /// Its value at the hit (after warps and wave).
+    pub value: f64,
+    /// For a texture: the stop the value fell in (its index and position) and how many stops
+    /// the map has.
+    pub stop: Option<(usize, f64, usize)>,
 }
 
 impl HitInfo {
-    fn of(world: &World, hit: &SurfaceHit) -> HitInfo {
+    fn of(scene: &Prepared, hit: &SurfaceHit) -> HitInfo {
         HitInfo {
             t: hit.t,
             point: hit.point,
             normal: hit.normal,
-            object: world.object(hit),
+            object: scene.world().object(hit),
             material: hit.material,
+            patterns: patterns_at(scene, hit),
         }
     }
+}
+
+/// The patterns the material of `hit` reads, in the order texture, bump, material map.
+fn patterns_at(scene: &Prepared, hit: &SurfaceHit) -> Vec<PatternReading> {
+    let mat = scene.material(hit.material);
+    let mix_texture = match mat.mix.as_deref() {
+        Some(crate::ir::Mix::Map { texture, .. }) => Some(*texture),
+        _ => None,
+    };
+    let uses = [
+        ("texture", mat.texture),
+        ("bump", mat.bump.map(|b| b.texture)),
+        ("material map", mix_texture),
+    ];
+    let mut out = Vec::new();
+    for (role, t) in uses {
+        let Some(TextureMap::Pattern(pt)) = t.and_then(|t| scene.textures().get(t.0 as usize))
+        else {
+            continue;
+        };
+        let value = super::texture::pattern_value(pt, hit, hit.local_point);
+        let stops = pt.map.stops();
+        let stop = (role == "texture").then(|| {
+            let i = pt.map.stop_index(value);
+            (i, stops[i].at, stops.len())
+        });
+        out.push(PatternReading {
+            role,
+            name: pt.name(),
+            value,
+            stop,
+        });
+    }
+    out
 }
 
 /// One light's contribution at a recorded hit ([`LightTerm`], with the occluder resolved).
@@ -134,7 +186,7 @@ impl Explanation {
 
 /// The recorder that builds the tree.
 struct Tree<'a> {
-    world: &'a World,
+    scene: &'a Prepared,
     stack: Vec<RayNode>,
     root: Option<RayNode>,
 }
@@ -168,14 +220,14 @@ impl Recorder for Tree<'_> {
     }
 
     fn hit(&mut self, hit: &SurfaceHit) {
-        let info = HitInfo::of(self.world, hit);
+        let info = HitInfo::of(self.scene, hit);
         if let Some(n) = self.stack.last_mut() {
             n.hit = Some(info);
         }
     }
 
     fn light(&mut self, term: LightTerm) {
-        let occluder = term.occluder.map(|h| HitInfo::of(self.world, &h));
+        let occluder = term.occluder.map(|h| HitInfo::of(self.scene, &h));
         if let Some(n) = self.stack.last_mut() {
             n.lights.push(LightInfo { term, occluder });
         }
@@ -303,7 +355,7 @@ pub fn explain(
     let mut ctx = Ctx::new();
     let ray = view.camera_sample(x, y, k, (k, grid.len()), offset, &mut ctx);
     let mut tree = Tree {
-        world: scene.world(),
+        scene,
         stack: Vec::new(),
         root: None,
     };

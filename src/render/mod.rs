@@ -36,6 +36,7 @@ pub mod film;
 mod flare;
 pub mod integrator;
 pub mod merge;
+mod mix;
 pub mod offset;
 pub mod output;
 pub mod part;

@@ -1,13 +1,15 @@
 //! Texture lookups at a hit: images nearest-pixel as the course framework does (COURSE.md
-//! §2.5) through a surface mapping; checker and stripes are solid textures in object space.
+//! §2.5) through a surface mapping; checker, stripes and patterns are solid textures in object
+//! space (a pattern may read the surface's uv instead).
 //! Every coordinate comes from the hit (its uv, its object-space point and its mapping frame),
 //! so a lookup never needs the shape.
 
 use glam::{DVec2, DVec3};
 
 use crate::geometry::{MappingFrame, SurfaceHit};
-use crate::ir::{Color, Mapping};
+use crate::ir::{Color, Mapping, PatternSpace, PatternTexture};
 use crate::opt::TextureMap;
+use crate::pattern::Rgbft;
 
 /// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
 pub(crate) fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Color {
@@ -38,6 +40,33 @@ pub(crate) fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: 
                 *b
             }
         }
+        TextureMap::Pattern(pt) => pt.map.at(pattern_value(pt, hit, p)).rgb,
+    }
+}
+
+/// The colour of `tex` at `hit` with its filter and transmit (opaque but for patterns whose
+/// colour map says otherwise): what a layer shows of the layers below.
+pub(crate) fn rgbft(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> Rgbft {
+    match tex {
+        TextureMap::Pattern(pt) => pt.map.at(pattern_value(pt, hit, hit.local_point)),
+        _ => Rgbft::opaque(color(tex, hit, frame)),
+    }
+}
+
+/// The value of pattern texture `pt` at `hit`, reading object-space point `p` (or the hit's uv
+/// for a uv-space pattern): the number its colour map reads.
+#[inline]
+pub(crate) fn pattern_value(pt: &PatternTexture, hit: &SurfaceHit, p: DVec3) -> f64 {
+    pt.field
+        .eval(pt.to_pattern.transform_point3(pattern_point(pt, hit, p)))
+}
+
+/// The point a pattern reads before its own transform: `p`, or (u, v, 0) in uv space.
+#[inline]
+fn pattern_point(pt: &PatternTexture, hit: &SurfaceHit, p: DVec3) -> DVec3 {
+    match pt.space {
+        PatternSpace::Object => p,
+        PatternSpace::Uv => DVec3::new(hit.uv.x, hit.uv.y, 0.0),
     }
 }
 

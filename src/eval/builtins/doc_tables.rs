@@ -357,11 +357,14 @@ fn check_fields(doc: &str, heading: &str, sig: &str, problems: &mut Vec<String>)
 fn the_language_reference_tables_agree_with_the_schemas() {
     let doc = language_md();
     let mut problems = Vec::new();
-    for heading in ["## 11.", "## 12.", "## 14.", "## 16."] {
+    for heading in [
+        "## 11.", "## 12.", "## 14.", "## 16.", "### 16.1", "### 16.3",
+    ] {
         check_calls(&doc, heading, &mut problems);
     }
     check_methods(&doc, "### 13.2", "Object", false, &mut problems);
     check_methods(&doc, "## 20.", "Rng", true, &mut problems);
+    check_methods(&doc, "### 16.2", "Texture", false, &mut problems);
     check_kinds(&doc, "### 13.1", &mut problems);
     check_kinds(&doc, "## 17.", &mut problems);
     check_fields(&doc, "## 15.", "material", &mut problems);

@@ -344,6 +344,7 @@ fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         texture: None,
         bump: None,
+        mix: None,
         made: it.next_made(),
     };
     for f in MATERIAL.names() {

@@ -7,6 +7,8 @@ mod doc_tables;
 pub mod lists;
 mod looks;
 mod math;
+mod mixes;
+mod patterns;
 #[cfg(test)]
 mod reference;
 mod scene;
@@ -29,6 +31,8 @@ pub fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         math::FNS,
         lists::FNS,
         looks::FNS,
+        patterns::FNS,
+        mixes::FNS,
         scene::FNS,
         settings::FNS,
         super::shapes::FNS,

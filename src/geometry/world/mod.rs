@@ -8,7 +8,7 @@ mod reach;
 
 use std::time::Duration;
 
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 use obvhs::BvhBuildParams;
 
 use crate::geometry::bvh::{Bvh, BvhRay, to_f32_box};
@@ -63,6 +63,10 @@ struct SurfaceInfo {
     object: u32,
     /// The frame texture mappings read its hits in.
     frame: MappingFrame,
+    /// Carries a gradient of its object space (where `local_point` lies) to world space: the
+    /// inverse transpose of the linear part of its placement, composed down a CSG tree (at
+    /// shutter open for a moving one).
+    normal_matrix: DMat3,
 }
 
 /// What building the world took (for `rtc render --stats`).
@@ -135,7 +139,7 @@ impl World {
         } = parts;
         let mut surfaces = Vec::new();
         for (n, &object) in nodes.iter_mut().zip(&object_of) {
-            number_surfaces(n, object, &mut surfaces);
+            number_surfaces(n, object, DMat3::IDENTITY, &mut surfaces);
         }
         let mut stats = WorldStats {
             objects: nodes.len() + balls.len(),
@@ -504,6 +508,17 @@ impl World {
             .map_or(MappingFrame::Object, |s| s.frame)
     }
 
+    /// The matrix that carries a gradient at `hit` from its object space (where `local_point`
+    /// lies) to world space (the identity for a ball: its object space is the world's).
+    pub(crate) fn normal_matrix(&self, hit: &SurfaceHit) -> DMat3 {
+        if self.ball(hit).is_some() {
+            return DMat3::IDENTITY;
+        }
+        self.surfaces
+            .get(hit.surface.0 as usize)
+            .map_or(DMat3::IDENTITY, |s| s.normal_matrix)
+    }
+
     /// The ball a hit is on, if it is on one.
     fn ball(&self, hit: &SurfaceHit) -> Option<&Ball> {
         let id = hit.surface.0;
@@ -515,19 +530,24 @@ impl World {
 
 /// Numbers the leaf and mesh nodes of `n` (a node of top-level object `object`) from
 /// `surfaces.len()` on, recording each one's object and mapping frame.
-fn number_surfaces(n: &mut Primitive, object: u32, surfaces: &mut Vec<SurfaceInfo>) {
+fn number_surfaces(n: &mut Primitive, object: u32, parent: DMat3, surfaces: &mut Vec<SurfaceInfo>) {
+    let normal_matrix = parent * n.normal_matrix();
     let frame = match &mut n.geom {
         Geom::Leaf(l) => l.frame(),
         Geom::Mesh(_) => MappingFrame::Object,
         Geom::Csg { children, .. } => {
             for c in children {
-                number_surfaces(c, object, surfaces);
+                number_surfaces(c, object, normal_matrix, surfaces);
             }
             return;
         }
     };
     n.surface = SurfaceId(surfaces.len() as u32);
-    surfaces.push(SurfaceInfo { object, frame });
+    surfaces.push(SurfaceInfo {
+        object,
+        frame,
+        normal_matrix,
+    });
 }
 
 /// Triangles a prepared object places, counting every instance.

@@ -128,6 +128,13 @@ pub(crate) struct Primitive {
 pub struct SurfaceId(pub u32);
 
 impl Primitive {
+    /// The inverse transpose of its placement's linear part (at shutter open when it moves).
+    pub(crate) fn normal_matrix(&self) -> DMat3 {
+        self.placement
+            .as_ref()
+            .map_or(DMat3::IDENTITY, |p| p.normal_matrix)
+    }
+
     /// Wraps geometry with a transform (which must be invertible) and a material.
     pub(crate) fn new(geom: Geom, transform: DAffine3, material: MaterialId) -> Primitive {
         let local = geom.bounds();

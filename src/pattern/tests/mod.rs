@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 mod cells;
+mod color_map;
 mod fbm;
 mod geometric;
 mod modifiers;

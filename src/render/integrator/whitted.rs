@@ -128,7 +128,15 @@ impl<'a> Whitted<'a> {
         if R::ON {
             rec.hit(hit);
         }
-        let mat = scene.material(hit.material);
+        let stored = scene.material(hit.material);
+        let mixed;
+        let mat = match stored.mix {
+            Some(_) if self.effects.textures => {
+                mixed = super::super::mix::resolve(scene, hit, scene.world().frame(hit), stored);
+                &mixed
+            }
+            _ => stored,
+        };
         let (s, inside, facing) = self.surface(ray, hit, path, mat);
         let spawn = s.spawn;
         let mut c = match mat.shading.unwrap_or(self.shading) {
@@ -330,11 +338,13 @@ impl<'a> Whitted<'a> {
 
     /// `facing` tilted by bump map `b` at `hit`.
     fn bump_tilt(&self, hit: SurfaceHit, facing: DVec3, b: crate::ir::Bump) -> DVec3 {
+        let world = self.scene.world();
         bump::perturb(
             &self.scene.textures()[b.texture.0 as usize],
             b.scale,
             &hit,
-            self.scene.world().frame(&hit),
+            world.frame(&hit),
+            world.normal_matrix(&hit),
             facing,
         )
     }

@@ -93,10 +93,11 @@ impl Whitted<'_> {
             && phong_packet::applies(self.scene)
     }
 
-    /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray); others take
+    /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray, not mixed); others take
     /// [`Whitted::trace`]'s own path from their hit on.
     fn batched(&self, mat: &Material) -> bool {
-        mat.shading.unwrap_or(self.shading) == ShadingModel::Phong
+        mat.mix.is_none()
+            && mat.shading.unwrap_or(self.shading) == ShadingModel::Phong
             && !Scattering::of(mat, &self.effects).transmits()
     }
 
