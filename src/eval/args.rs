@@ -17,22 +17,22 @@ use super::value::Value;
 
 /// An evaluated argument.
 #[derive(Clone, Debug)]
-pub struct ArgVal {
+pub(crate) struct ArgVal {
     /// `name:` of a named argument.
-    pub name: Option<Name>,
+    pub(crate) name: Option<Name>,
     /// The value.
-    pub value: Value,
+    pub(crate) value: Value,
     /// Span of the value expression.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 /// What a built-in learns about its call site.
 #[derive(Clone, Copy, Debug)]
-pub struct CallSite {
+pub(crate) struct CallSite {
     /// The whole call.
-    pub span: Span,
+    pub(crate) span: Span,
     /// The function's name as called (for messages).
-    pub name: &'static str,
+    pub(crate) name: &'static str,
 }
 
 thread_local! {
@@ -46,7 +46,7 @@ const SPARE_VECS: usize = 8;
 const SPARE_CAPACITY: usize = 16;
 
 /// Gives an argument vector back for reuse (its remaining values are dropped now).
-pub fn recycle_args(mut args: Vec<ArgVal>) {
+pub(crate) fn recycle_args(mut args: Vec<ArgVal>) {
     if args.capacity() == 0 || args.capacity() > SPARE_CAPACITY {
         return;
     }
@@ -72,7 +72,7 @@ pub(super) fn args_vec(n: usize) -> Vec<ArgVal> {
 
 /// Schema-checked arguments of one built-in call. It keeps the call's argument vector and
 /// records which argument fills each parameter, so matching allocates nothing.
-pub struct Params {
+pub(crate) struct Params {
     site: CallSite,
     sig: &'static Sig,
     args: Vec<ArgVal>,
@@ -102,7 +102,7 @@ impl Drop for Params {
 impl Params {
     /// Matches `args` to the parameters of `sig`: positional first, then named; a single record
     /// argument (`f { a: 1 }`) supplies named arguments.
-    pub fn new(site: CallSite, sig: &'static Sig, mut args: Vec<ArgVal>) -> R<Params> {
+    pub(crate) fn new(site: CallSite, sig: &'static Sig, mut args: Vec<ArgVal>) -> R<Params> {
         let names = sig.params;
         assert!(
             names.len() <= MAX_PARAMS,
@@ -216,18 +216,18 @@ impl Params {
     }
 
     /// An optional argument, unchecked.
-    pub fn get(&mut self, name: &str) -> Option<(Value, Span)> {
+    pub(crate) fn get(&mut self, name: &str) -> Option<(Value, Span)> {
         let i = self.idx(name);
         self.take(i)
     }
 
     /// A required argument, unchecked.
-    pub fn req(&mut self, name: &str) -> R<(Value, Span)> {
+    pub(crate) fn req(&mut self, name: &str) -> R<(Value, Span)> {
         self.get(name).ok_or_else(|| self.missing(name))
     }
 
     /// Where argument `name` is, if the call gives it (it stays in the call).
-    pub fn given(&self, name: &str) -> Option<Span> {
+    pub(crate) fn given(&self, name: &str) -> Option<Span> {
         let k = self.filled_by[self.idx(name)];
         self.args.get(k as usize).map(|a| a.span)
     }
@@ -305,7 +305,7 @@ impl Params {
     }
 
     /// The number `name`, range-checked, or its default.
-    pub fn float(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(f64, Span)> {
+    pub(crate) fn float(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(f64, Span)> {
         self.read(
             name,
             Ty::Float,
@@ -318,12 +318,16 @@ impl Params {
     }
 
     /// The number `name`, range-checked, if given.
-    pub fn float_opt(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<Option<(f64, Span)>> {
+    pub(crate) fn float_opt(
+        &mut self,
+        q: &(impl Quote + ?Sized),
+        name: &str,
+    ) -> R<Option<(f64, Span)>> {
         self.read_opt(name, Ty::Float, |g, p, v, s| float_of(q, g, p, v, s))
     }
 
     /// The `Int` `name`, range-checked, or its default.
-    pub fn int(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(i64, Span)> {
+    pub(crate) fn int(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(i64, Span)> {
         self.read(
             name,
             Ty::Int,
@@ -336,12 +340,16 @@ impl Params {
     }
 
     /// The `Int` `name`, range-checked, if given.
-    pub fn int_opt(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<Option<(i64, Span)>> {
+    pub(crate) fn int_opt(
+        &mut self,
+        q: &(impl Quote + ?Sized),
+        name: &str,
+    ) -> R<Option<(i64, Span)>> {
         self.read_opt(name, Ty::Int, |g, p, v, s| int_of(q, g, p, v, s))
     }
 
     /// The angle `name` in radians, range-checked, or its default.
-    pub fn angle(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(f64, Span)> {
+    pub(crate) fn angle(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(f64, Span)> {
         self.read(
             name,
             Ty::Angle,
@@ -354,7 +362,7 @@ impl Params {
     }
 
     /// The vector `name`, range-checked, or its default.
-    pub fn vec3(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(DVec3, Span)> {
+    pub(crate) fn vec3(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(DVec3, Span)> {
         self.read(
             name,
             Ty::Vec3,
@@ -367,12 +375,16 @@ impl Params {
     }
 
     /// The vector `name`, range-checked, if given.
-    pub fn vec3_opt(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<Option<(DVec3, Span)>> {
+    pub(crate) fn vec3_opt(
+        &mut self,
+        q: &(impl Quote + ?Sized),
+        name: &str,
+    ) -> R<Option<(DVec3, Span)>> {
         self.read_opt(name, Ty::Vec3, |_, p, v, s| vec3_of(q, p, v, s))
     }
 
     /// The colour `name`, or its default.
-    pub fn color(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(DVec3, Span)> {
+    pub(crate) fn color(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(DVec3, Span)> {
         self.read(
             name,
             Ty::Color,
@@ -385,7 +397,7 @@ impl Params {
     }
 
     /// The Bool `name`, or its default.
-    pub fn bool(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<bool> {
+    pub(crate) fn bool(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<bool> {
         let conv = |_: &Sig, _: &Param, v: &Value, s| super::types::boolean(q, v, s);
         let lit = |l| match l {
             Lit::Bool(b) => Some(b),
@@ -395,24 +407,30 @@ impl Params {
     }
 
     /// The string `name` (required).
-    pub fn string(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(Rc<str>, Span)> {
+    pub(crate) fn string(&mut self, q: &(impl Quote + ?Sized), name: &str) -> R<(Rc<str>, Span)> {
         let conv = |_: &Sig, _: &Param, v: &Value, s| super::types::string(q, v, s);
         self.read(name, Ty::String, conv, |_| None)
     }
 
     /// The `Int` `v` (an element of argument `name`) by the type and range of parameter `name`.
-    pub fn int_in(&self, q: &(impl Quote + ?Sized), name: &str, v: &Value, span: Span) -> R<i64> {
+    pub(crate) fn int_in(
+        &self,
+        q: &(impl Quote + ?Sized),
+        name: &str,
+        v: &Value,
+        span: Span,
+    ) -> R<i64> {
         int_of(q, self.sig, &self.sig.params[self.idx(name)], v, span)
     }
 
     /// Whether `x`, computed in place of argument `name` (a default that depends on other
     /// arguments), is in the parameter's range.
-    pub fn in_range(&self, name: &str, x: f64, span: Span) -> R<()> {
+    pub(crate) fn in_range(&self, name: &str, x: f64, span: Span) -> R<()> {
         number_in_range(self.sig, &self.sig.params[self.idx(name)], x, span)
     }
 
     /// The schema's default of the pair of `Int`s `name` (`resolution: [640, 480]`).
-    pub fn default_ints(&self, name: &str) -> [i64; 2] {
+    pub(crate) fn default_ints(&self, name: &str) -> [i64; 2] {
         let param = &self.sig.params[self.idx(name)];
         match param.absent {
             Absent::Is(Lit::Ints(pair)) => pair,
@@ -421,7 +439,13 @@ impl Params {
     }
 
     /// The angle `v` (given for parameter `name`) by its type and range.
-    pub fn angle_in(&self, q: &(impl Quote + ?Sized), name: &str, v: &Value, span: Span) -> R<f64> {
+    pub(crate) fn angle_in(
+        &self,
+        q: &(impl Quote + ?Sized),
+        name: &str,
+        v: &Value,
+        span: Span,
+    ) -> R<f64> {
         angle_of(q, self.sig, &self.sig.params[self.idx(name)], v, span)
     }
 }
@@ -437,7 +461,7 @@ fn wrong_schema(sig: &Sig, param: &Param, why: &str) -> ! {
 }
 
 /// A number for `param` of `sig`: its type, then its range (unless the built-in checks it).
-pub fn float_of(
+pub(crate) fn float_of(
     q: &(impl Quote + ?Sized),
     sig: &Sig,
     param: &Param,
@@ -464,7 +488,7 @@ fn number_in_range(sig: &Sig, param: &Param, x: f64, span: Span) -> R<()> {
 }
 
 /// An `Int` for `param` of `sig`: its type, then its range (unless the built-in checks it).
-pub fn int_of(
+pub(crate) fn int_of(
     q: &(impl Quote + ?Sized),
     sig: &Sig,
     param: &Param,
@@ -479,13 +503,7 @@ pub fn int_of(
 }
 
 /// An angle (radians) for `param` of `sig`: its type, then its range.
-pub fn angle_of(
-    q: &(impl Quote + ?Sized),
-    sig: &Sig,
-    param: &Param,
-    v: &Value,
-    span: Span,
-) -> R<f64> {
+fn angle_of(q: &(impl Quote + ?Sized), sig: &Sig, param: &Param, v: &Value, span: Span) -> R<f64> {
     let a = super::types::angle(q, v, span)?;
     if param.checked == Checked::OnRead && !param.range.holds(a) {
         return Err(out_of_range(sig, param, a, span));
@@ -494,7 +512,7 @@ pub fn angle_of(
 }
 
 /// A vector for `param`: its type, then a non-zero vector's rule.
-pub fn vec3_of(q: &(impl Quote + ?Sized), param: &Param, v: &Value, span: Span) -> R<DVec3> {
+fn vec3_of(q: &(impl Quote + ?Sized), param: &Param, v: &Value, span: Span) -> R<DVec3> {
     let d = super::types::vec3(q, v, span)?;
     if param.checked == Checked::OnRead
         && matches!(param.range, Range::NonZero)
@@ -541,7 +559,7 @@ fn out_of_range(sig: &Sig, param: &Param, x: f64, span: Span) -> EvalError {
 }
 
 /// Range check: `name` must satisfy `ok`, described as `rule` (e.g. "> 0").
-pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
+pub(crate) fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
     if ok && v.is_finite() {
         return Ok(());
     }
@@ -549,7 +567,7 @@ pub fn check(ok: bool, name: &str, rule: &str, v: f64, span: Span) -> R<()> {
 }
 
 /// Range check with the offending value already formatted (e.g. with its unit).
-pub fn check_shown(ok: bool, name: &str, rule: &str, shown: &str, span: Span) -> R<()> {
+pub(crate) fn check_shown(ok: bool, name: &str, rule: &str, shown: &str, span: Span) -> R<()> {
     if ok {
         return Ok(());
     }

@@ -11,7 +11,7 @@ use super::host::Host;
 
 /// The file `rel` names from the current module (a `what` file: "mesh", "image"); an error
 /// naming every place looked at if there is none.
-pub fn existing(it: &dyn Host, rel: &str, span: Span, what: &str) -> R<PathBuf> {
+pub(crate) fn existing(it: &dyn Host, rel: &str, span: Span, what: &str) -> R<PathBuf> {
     crate::assets::search::find(it.dir(), rel).map_err(|missing| {
         let file = it.file_path();
         missing.diagnostic(span, what, file).into()

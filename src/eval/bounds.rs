@@ -83,7 +83,7 @@ fn combined(op: CsgOp, ch: &[Obj], t: DAffine3, span: Span) -> R<Aabb> {
 }
 
 /// The `bounds` record of an object.
-pub fn bounds_value(_it: &mut dyn Host, o: &Obj, span: Span) -> R<Value> {
+pub(crate) fn bounds_value(_it: &mut dyn Host, o: &Obj, span: Span) -> R<Value> {
     let b = bb(o, DAffine3::IDENTITY, span)?;
     let (lo, hi) = (b.min, b.max);
     let c = (lo + hi) / 2.0;

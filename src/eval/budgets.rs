@@ -14,7 +14,7 @@ use super::error::{R, error};
 /// Bytes one object of the scene is charged: its IR form, which the scene keeps to the end,
 /// twice over, for the list that holds them grows by doubling (measured: a grid of 2.8 million
 /// spheres peaks at 425 bytes an object, this charges 2 × 190).
-pub const OBJECT_BYTES: u64 = 2 * std::mem::size_of::<crate::ir::Object>() as u64;
+pub(crate) const OBJECT_BYTES: u64 = 2 * std::mem::size_of::<crate::ir::Object>() as u64;
 
 /// How often (in loop steps) the deadline is looked at: reading the clock is far dearer than
 /// a step.
@@ -22,7 +22,7 @@ const CLOCK_EVERY: u64 = 1024;
 
 /// What a loop step is, for the loop budget's error.
 #[derive(Clone, Copy, Debug)]
-pub enum Step {
+pub(crate) enum Step {
     /// An iteration of a `for`.
     Loop,
     /// A step of `iterate`.
@@ -32,16 +32,16 @@ pub enum Step {
 }
 
 /// What emitting objects may use: their count and the bytes left after the values made.
-pub struct ObjectBudget {
+pub(crate) struct ObjectBudget {
     /// Most objects.
-    pub max_objects: u64,
+    pub(crate) max_objects: u64,
     /// The memory budget with the values' bytes charged.
-    pub memory: Memory,
+    pub(crate) memory: Memory,
 }
 
 impl ObjectBudget {
     /// The error when the scene's `objects` no longer fit the memory budget, if they do not.
-    pub fn check_memory(&self, objects: usize, span: Span) -> Result<(), Diagnostic> {
+    pub(crate) fn check_memory(&self, objects: usize, span: Span) -> Result<(), Diagnostic> {
         let mut m = self.memory;
         m.charge((objects as u64).saturating_mul(OBJECT_BYTES))
             .map_err(|over| over.diagnostic(span, &format!("the scene's {objects} objects")))
@@ -49,7 +49,7 @@ impl ObjectBudget {
 }
 
 /// A string of `len` bytes against the budget of `max`.
-pub fn string_len(len: usize, max: u64, span: Span) -> R<()> {
+pub(crate) fn string_len(len: usize, max: u64, span: Span) -> R<()> {
     if len as u64 > max {
         return Err(error("rtc::budget::string", span, "string is too long")
             .with_label(format!("this string grows past {max} bytes"))
@@ -60,7 +60,7 @@ pub fn string_len(len: usize, max: u64, span: Span) -> R<()> {
 }
 
 /// A list of `len` elements against the budget of `max`.
-pub fn list_len(len: usize, max: u64, span: Span) -> R<()> {
+pub(crate) fn list_len(len: usize, max: u64, span: Span) -> R<()> {
     if len as u64 > max {
         return Err(error("rtc::budget::list", span, "list is too long")
             .with_label(format!("this list grows past {max} elements"))
@@ -71,7 +71,7 @@ pub fn list_len(len: usize, max: u64, span: Span) -> R<()> {
 }
 
 /// Charges `bytes` that `what` (at `span`) is about to hold to `memory`.
-pub fn charge(memory: &mut Memory, bytes: u64, span: Span, what: &str) -> R<()> {
+pub(crate) fn charge(memory: &mut Memory, bytes: u64, span: Span, what: &str) -> R<()> {
     memory
         .charge(bytes)
         .map_err(|over| over.diagnostic(span, what).into())
@@ -79,7 +79,13 @@ pub fn charge(memory: &mut Memory, bytes: u64, span: Span, what: &str) -> R<()> 
 
 /// Step number `steps` (counted already) against the loop budget of `max`, and now and then
 /// against the deadline.
-pub fn step(steps: u64, max: u64, deadline: Option<Instant>, span: Span, kind: Step) -> R<()> {
+pub(crate) fn step(
+    steps: u64,
+    max: u64,
+    deadline: Option<Instant>,
+    span: Span,
+    kind: Step,
+) -> R<()> {
     if steps > max {
         let (label, help) = match kind {
             Step::Loop => (

@@ -5,7 +5,7 @@ use crate::source::Span;
 
 /// Why evaluation of an expression stopped.
 #[derive(Debug)]
-pub enum EvalError {
+pub(crate) enum EvalError {
     /// A new error, unwinding to the statement that will record it (frames are added on the way).
     Diag(Box<Diagnostic>),
     /// The value depends on a statement that already failed; nothing more to say.
@@ -13,7 +13,7 @@ pub enum EvalError {
 }
 
 /// The result type of evaluation.
-pub type R<T> = Result<T, EvalError>;
+pub(crate) type R<T> = Result<T, EvalError>;
 
 impl From<Diagnostic> for EvalError {
     fn from(d: Diagnostic) -> EvalError {
@@ -23,7 +23,7 @@ impl From<Diagnostic> for EvalError {
 
 /// Most trace frames kept on one error: the innermost half and the outermost half, so a deep
 /// (mutual) recursion shows both where it failed and where it started.
-pub const MAX_FRAMES: usize = 8;
+const MAX_FRAMES: usize = 8;
 
 /// The note on a trace whose middle frames were dropped.
 const ELIDED: &str =
@@ -31,7 +31,7 @@ const ELIDED: &str =
 
 impl EvalError {
     /// Adds an outer trace frame (no-op for poisoned values and once the trace is long).
-    pub fn frame(self, span: Span, message: impl FnOnce() -> String) -> EvalError {
+    pub(crate) fn frame(self, span: Span, message: impl FnOnce() -> String) -> EvalError {
         match self {
             EvalError::Diag(mut d) => {
                 let msg = message();
@@ -58,13 +58,16 @@ impl EvalError {
 }
 
 /// Shorthand for an error diagnostic.
-pub fn error(code: &'static str, span: Span, message: impl Into<String>) -> Diagnostic {
+pub(crate) fn error(code: &'static str, span: Span, message: impl Into<String>) -> Diagnostic {
     Diagnostic::error(code, span, message)
 }
 
 /// "did you mean" help text, if a candidate is close.
 /// A single transposition or edit (`fvo` for `fov`) counts as close even for short names.
-pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<String> {
+pub(crate) fn suggest<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<String> {
     let cands: Vec<&str> = candidates.into_iter().collect();
     let near = cands
         .iter()
@@ -77,7 +80,7 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
 /// What the type and error helpers need of the evaluation: the source text a span covers, to
 /// quote it in a help line. The interpreter is one; so is a source map. Taking this instead of
 /// the interpreter keeps the helpers (`types`) below it in the import graph.
-pub trait Quote {
+pub(crate) trait Quote {
     /// The text `span` covers.
     fn snippet(&self, span: Span) -> &str;
 }

@@ -15,10 +15,10 @@ use super::error::{Quote, R};
 use super::value::Value;
 
 /// The signature of every built-in function.
-pub type BuiltinFn = fn(&mut dyn Host, CallSite, Vec<ArgVal>) -> R<Value>;
+pub(crate) type BuiltinFn = fn(&mut dyn Host, CallSite, Vec<ArgVal>) -> R<Value>;
 
 /// The evaluator's services to the code it calls (implemented by `Interp`).
-pub trait Host: Quote {
+pub(crate) trait Host: Quote {
     /// Records a warning once per (code, span), however often a loop reaches it.
     fn warn(&mut self, d: Diagnostic);
     /// Records a finding every time (`print`'s notes).

@@ -23,7 +23,7 @@ pub struct Library {
 
 /// True when a parsed file is a library: it exports something and emits nothing (every
 /// top-level statement is `let`, `fn`, `import`, or a call of `assert` or `print`).
-pub fn is_library(file: &File<'_>) -> bool {
+fn is_library(file: &File<'_>) -> bool {
     // `pub` statements are never read by the fast path: the built ones hold every export.
     let exports = file.built_stmts().iter().any(|s| match s {
         Stmt::Let(l) => l.public,
@@ -45,7 +45,7 @@ fn is_statement_call(kind: &ExprKind) -> bool {
     matches!(&callee.kind, ExprKind::Ident(name) if matches!(name.as_str(), "assert" | "print"))
 }
 
-/// Checks `text` (the file `path`) as a library module when it is one ([`is_library`]);
+/// Checks `text` (the file `path`) as a library module when it is one (`is_library`);
 /// `None` for a scene file, which the caller loads as a scene. Sources read go into `sources`.
 pub fn load_library(
     path: &Path,

@@ -15,18 +15,18 @@ use super::value::{Mat, MatMix, Obj, ObjShape, RenderVal, Tex, Value};
 
 /// Collects what a scene file emits.
 #[derive(Default)]
-pub struct Lowerer {
+pub(crate) struct Lowerer {
     /// Objects so far.
-    pub objects: Vec<ir::Object>,
+    pub(crate) objects: Vec<ir::Object>,
     /// Lights so far.
-    pub lights: Vec<ir::Light>,
+    pub(crate) lights: Vec<ir::Light>,
     /// Cameras emitted (one is required).
-    pub cameras: Vec<Rc<ir::Camera>>,
+    pub(crate) cameras: Vec<Rc<ir::Camera>>,
     /// Render blocks emitted (at most one).
-    pub renders: Vec<Rc<RenderVal>>,
+    pub(crate) renders: Vec<Rc<RenderVal>>,
     /// With provenance: per object, its origin and those of the groups placing it (innermost
     /// first).
-    pub origins: Option<Vec<Vec<u32>>>,
+    pub(crate) origins: Option<Vec<Vec<u32>>>,
     /// The origins of the groups being lowered (outermost first), with provenance.
     placing: Vec<u32>,
     /// The IR materials, one per material value lowered, in the order of first use.
@@ -38,13 +38,13 @@ pub struct Lowerer {
     /// The [`Tex::made`] of each of `textures`.
     pub(super) texture_keys: Vec<u64>,
     /// Material ids by [`Mat::made`].
-    pub(super) mat_ids: super::fxhash::FxHashMap<u64, ir::MaterialId>,
+    mat_ids: super::fxhash::FxHashMap<u64, ir::MaterialId>,
     /// Texture ids by [`Tex::made`].
-    pub(super) tex_ids: super::fxhash::FxHashMap<u64, ir::TextureId>,
+    tex_ids: super::fxhash::FxHashMap<u64, ir::TextureId>,
 }
 
 /// Whether a value is something a scene file may emit.
-pub fn emittable(v: &Value) -> bool {
+pub(crate) fn emittable(v: &Value) -> bool {
     match v {
         Value::Object(_) | Value::Light(_) | Value::Camera(_) | Value::Render(_) => true,
         Value::List(l) => {
@@ -58,7 +58,7 @@ pub fn emittable(v: &Value) -> bool {
 
 impl Lowerer {
     /// Adds an emitted value; `Err` carries the type of a value that cannot be emitted.
-    pub fn emit(
+    pub(crate) fn emit(
         &mut self,
         v: &Value,
         budget: &super::budgets::ObjectBudget,
@@ -110,7 +110,7 @@ impl Lowerer {
     /// by doubling on the way to a million objects, copying itself and touching its pages
     /// twice. At most `limit` (the object budget) are reserved; a body that emits no object
     /// leaves the room untouched (address space, never paged in).
-    pub fn reserve_for(&mut self, gens: &[Generator], filter: Option<&Expr>, limit: u64) {
+    pub(crate) fn reserve_for(&mut self, gens: &[Generator], filter: Option<&Expr>, limit: u64) {
         let int = |e: &Expr| match e.kind {
             ExprKind::Int(i) => Some(i),
             _ => None,
@@ -150,21 +150,21 @@ impl Lowerer {
     }
 
     /// Appends a texture (`made` is its value's [`Tex::made`]).
-    pub(super) fn add_texture(&mut self, made: u64, t: ir::Texture) -> ir::TextureId {
+    fn add_texture(&mut self, made: u64, t: ir::Texture) -> ir::TextureId {
         self.textures.push(t);
         self.texture_keys.push(made);
         ir::TextureId((self.textures.len() - 1) as u32)
     }
 
     /// Appends a material (`made` is its value's [`Mat::made`]).
-    pub(super) fn add_material(&mut self, made: u64, m: ir::Material) -> ir::MaterialId {
+    fn add_material(&mut self, made: u64, m: ir::Material) -> ir::MaterialId {
         self.materials.push(m);
         self.material_keys.push(made);
         ir::MaterialId((self.materials.len() - 1) as u32)
     }
 
     /// The id of a material, adding it on first use.
-    pub fn material(&mut self, m: &Mat) -> ir::MaterialId {
+    fn material(&mut self, m: &Mat) -> ir::MaterialId {
         if let Some(id) = self.mat_ids.get(&m.made) {
             return *id;
         }
@@ -383,7 +383,10 @@ impl Lowerer {
 
     /// Builds the scene, which carries on the load's `memory` charged so far; `Err` lists what
     /// is missing or duplicated.
-    pub fn finish(mut self, memory: ir::limits::Memory) -> Result<ir::Scene, Vec<Diagnostic>> {
+    pub(crate) fn finish(
+        mut self,
+        memory: ir::limits::Memory,
+    ) -> Result<ir::Scene, Vec<Diagnostic>> {
         let mut errs = Vec::new();
         if self.cameras.len() > 1 {
             errs.push(
@@ -455,7 +458,7 @@ fn renumber(o: &mut ir::Object, remat: &impl Fn(ir::MaterialId) -> ir::MaterialI
 }
 
 /// Where the elements of a `for` go.
-pub enum Sink<'a> {
+pub(crate) enum Sink<'a> {
     /// Collected into a list value.
     List(&'a mut Vec<Value>),
     /// Emitted straight into the scene (top-level loops), with the statement's span.

@@ -22,7 +22,7 @@ fn members_of(v: &Value) -> Vec<&'static str> {
     }
 }
 
-pub fn member(it: &mut dyn Host, v: Value, name: Name, vspan: Span) -> R<Value> {
+pub(crate) fn member(it: &mut dyn Host, v: Value, name: Name, vspan: Span) -> R<Value> {
     let n = name.sym.as_str();
     let found = match &v {
         Value::Module(m) => {
@@ -167,7 +167,7 @@ fn material_field(m: &super::value::Mat, n: &str, span: Span) -> R<Option<Value>
 
 /// The error for `v.n` when `v` has no member (or method, by `what`) called `n`: did-you-mean,
 /// else the list of what it does have.
-pub fn unknown(
+pub(crate) fn unknown(
     what: &str,
     v: &Value,
     n: &str,
@@ -192,7 +192,7 @@ pub fn unknown(
 }
 
 /// `v[i]`; `from_vec3`: the index is the variable of a `for` over a `Vec3` (for the help).
-pub fn index(v: Value, i: Value, (ispan, from_vec3): (Span, bool)) -> R<Value> {
+pub(crate) fn index(v: Value, i: Value, (ispan, from_vec3): (Span, bool)) -> R<Value> {
     let Value::Int(k) = i else {
         let help = match i {
             // `for i in [0, 2, 4]`: three plain numbers are a `Vec3`, whose elements are Floats.

@@ -19,7 +19,7 @@ use super::value::{Obj, Value};
 /// The methods of each receiver type with their schemas, in the order messages list them. A
 /// list or vector method that is also a function (`l.sum()` is `sum(l)`) has the function's
 /// schema, its receiver the first parameter.
-pub static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
+pub(crate) static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
     (
         "Object",
         &[TRANSFORMS, &[&MATERIAL, &MOVING, &LOOK_AT_METHOD]],
@@ -67,7 +67,7 @@ fn has(table: &[&Sig], n: &str) -> bool {
 }
 
 /// `recv.name(args)`.
-pub fn call_method(
+pub(crate) fn call_method(
     it: &mut dyn Host,
     recv: Value,
     name: Name,
@@ -310,6 +310,6 @@ static FILTER: Sig = Sig::new(
 .examples(&["[1, 2, 3].filter(f: fn(x) x > 1)"]);
 
 /// Methods of objects: every transform method, plus `material`, `moving` and `look_at`.
-pub fn object_methods() -> Vec<&'static str> {
+pub(crate) fn object_methods() -> Vec<&'static str> {
     names("Object")
 }

@@ -12,7 +12,7 @@ use super::value::Value;
 
 /// The embedded standard library: `std.NAME` is the text of `stdlib/NAME.rtc`. Adding a module
 /// is one line here.
-pub const STDLIB: &[(&str, &str)] = &[
+pub(crate) const STDLIB: &[(&str, &str)] = &[
     ("prelude", include_str!("../../stdlib/prelude.rtc")),
     ("math", include_str!("../../stdlib/math.rtc")),
     ("color", include_str!("../../stdlib/color.rtc")),
@@ -24,33 +24,33 @@ pub const STDLIB: &[(&str, &str)] = &[
 
 /// A name bound at module level.
 #[derive(Clone, Debug)]
-pub struct Binding {
+pub(crate) struct Binding {
     /// Its value (meaningless when `poisoned`).
-    pub value: Value,
+    pub(crate) value: Value,
     /// Exported.
-    pub public: bool,
+    pub(crate) public: bool,
     /// Where it was bound.
-    pub span: Span,
+    pub(crate) span: Span,
     /// Its definition failed; uses are silently skipped.
-    pub poisoned: bool,
+    pub(crate) poisoned: bool,
 }
 
 /// The items of one module while it is evaluated (and afterwards, for closures).
 #[derive(Debug)]
-pub struct Scope {
+pub(crate) struct Scope {
     /// Module-level bindings.
-    pub items: RefCell<super::fxhash::FxHashMap<Sym, Binding>>,
+    pub(crate) items: RefCell<super::fxhash::FxHashMap<Sym, Binding>>,
     /// Directory that relative paths in this file resolve against.
-    pub dir: PathBuf,
+    pub(crate) dir: PathBuf,
     /// The file.
-    pub file: FileId,
+    pub(crate) file: FileId,
     /// Name for messages (`std.color` or the path).
-    pub name: String,
+    pub(crate) name: String,
 }
 
 impl Scope {
     /// An empty scope for a file.
-    pub fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
+    pub(crate) fn new(file: FileId, dir: PathBuf, name: String) -> Scope {
         Scope {
             items: RefCell::new(Default::default()),
             dir,
@@ -62,16 +62,16 @@ impl Scope {
 
 /// An evaluated module as a value.
 #[derive(Debug)]
-pub struct Module {
+pub(crate) struct Module {
     /// `std.color` or the path as written.
-    pub name: String,
+    pub(crate) name: String,
     /// Its scope (exports are the `pub` bindings).
-    pub scope: Rc<Scope>,
+    pub(crate) scope: Rc<Scope>,
 }
 
 impl Module {
     /// A `pub` binding, or `Err(true)` when the name exists but is private, `Err(false)` if absent.
-    pub fn export(&self, name: Sym) -> Result<Binding, bool> {
+    pub(crate) fn export(&self, name: Sym) -> Result<Binding, bool> {
         match self.scope.items.borrow().get(&name) {
             Some(b) if b.public => Ok(b.clone()),
             Some(_) => Err(true),
@@ -80,7 +80,7 @@ impl Module {
     }
 
     /// Names of all exports, sorted (for did-you-mean).
-    pub fn export_names(&self) -> Vec<&'static str> {
+    pub(crate) fn export_names(&self) -> Vec<&'static str> {
         let mut v: Vec<&'static str> = self
             .scope
             .items
@@ -102,7 +102,7 @@ pub fn stdlib(name: &str) -> Option<&'static str> {
 /// The standard modules that export `name` (read from their `pub let` / `pub fn` lines), for
 /// the help of an unknown name: `red` is in `std.color`. `std.prelude` is left out: its names
 /// are the same as in `std.math`.
-pub fn std_modules_exporting(name: &str) -> Vec<&'static str> {
+pub(crate) fn std_modules_exporting(name: &str) -> Vec<&'static str> {
     let exports = |text: &str| {
         text.lines().any(|l| {
             let rest = l
@@ -122,13 +122,13 @@ pub fn std_modules_exporting(name: &str) -> Vec<&'static str> {
 
 /// Resolves `rel` against `dir` without touching the file system (paths stay as the user would
 /// write them, so messages are stable).
-pub fn resolve(dir: &Path, rel: &str) -> PathBuf {
+pub(crate) fn resolve(dir: &Path, rel: &str) -> PathBuf {
     crate::assets::search::join(dir, rel)
 }
 
 /// The identity of a module file: its canonical path (symlinks and `..` resolved), so one file
 /// reached through several symlinked folders is one module, and a cycle through a link is seen;
 /// the path as given when it cannot be canonicalised (it does not exist: reading it fails).
-pub fn identity(path: &Path) -> PathBuf {
+pub(crate) fn identity(path: &Path) -> PathBuf {
     std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
 }

@@ -18,7 +18,7 @@ use crate::ir::{self, Motion};
 use crate::source::Span;
 
 /// `.moving(..)`'s parameters.
-pub static MOVING: Sig = Sig::new(
+pub(crate) static MOVING: Sig = Sig::new(
     "moving",
     Group::Method,
     "The object moving while the shutter is open, to where these changes put it at close.",
@@ -66,7 +66,12 @@ pub static MOVING: Sig = Sig::new(
 /// `obj.moving(translate:, rotate:, scale:, spin:, axis:)`: the change of the object's
 /// placement from shutter open to shutter close, applied after its placement (as a
 /// `.translate(...)` would be); `spin:` turns it about `axis:` by any angle, whole turns too.
-pub fn moving(it: &mut dyn Host, mut o: Rc<Obj>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+pub(crate) fn moving(
+    it: &mut dyn Host,
+    mut o: Rc<Obj>,
+    site: CallSite,
+    args: Vec<ArgVal>,
+) -> R<Value> {
     let mut p = Params::new(site, &MOVING, args)?;
     let (translate, _) = p.vec3(it, "translate")?;
     let rotate = match p.get("rotate") {
@@ -247,7 +252,7 @@ fn rotation(it: &dyn Host, v: &Value, sp: Span) -> R<DQuat> {
 }
 
 /// The camera's `shutter: [open, close]` (fractions of a frame, 0 ≤ open ≤ close ≤ 1).
-pub fn shutter(p: &mut Params) -> R<Option<ir::Shutter>> {
+pub(crate) fn shutter(p: &mut Params) -> R<Option<ir::Shutter>> {
     let Some((v, sp)) = p.get("shutter") else {
         return Ok(None);
     };
@@ -287,7 +292,7 @@ pub fn shutter(p: &mut Params) -> R<Option<ir::Shutter>> {
 }
 
 /// `eye_close:` and `center_close:`: where the camera is and looks when the shutter closes.
-pub fn camera_motion(
+pub(crate) fn camera_motion(
     it: &dyn Host,
     p: &mut Params,
     eye: DVec3,
@@ -321,7 +326,7 @@ pub fn camera_motion(
 }
 
 /// `look_at(from:, to:, up:)`'s parameters.
-pub static LOOK_AT: Sig = Sig::new(
+pub(crate) static LOOK_AT: Sig = Sig::new(
     "look_at",
     Group::Transform,
     "Places an object made at the origin at `from`, its +Z axis towards `to`, +Y towards `up`.",
@@ -342,7 +347,7 @@ const UP: Param =
     Param::new("up", Ty::Vec3, "+Y turns as close to it as it can").or(Lit::Vec3([0.0, 1.0, 0.0]));
 /// `look_at(from:, to:, up:)`: places an object made at the origin at `from`, its +Z axis
 /// turned towards `to` and its +Y axis towards `up`.
-pub fn look_at_fn(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+pub(crate) fn look_at_fn(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &LOOK_AT, a)?;
     let (from, _) = p.vec3(it, "from")?;
     let (to, ts) = p.vec3(it, "to")?;
@@ -354,7 +359,7 @@ pub fn look_at_fn(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `.look_at(to, up)`'s parameters.
-pub static LOOK_AT_METHOD: Sig = Sig::new(
+pub(crate) static LOOK_AT_METHOD: Sig = Sig::new(
     "look_at",
     Group::Method,
     "The object turned about its own origin so that its +Z axis points at `to`.",
@@ -365,7 +370,7 @@ pub static LOOK_AT_METHOD: Sig = Sig::new(
 
 /// `obj.look_at(to, up:)`: turns the object about its own origin so that what was its +Z axis
 /// points at `to` (and +Y towards `up`).
-pub fn look_at_method(
+pub(crate) fn look_at_method(
     it: &mut dyn Host,
     site: CallSite,
     args: Vec<ArgVal>,
@@ -377,7 +382,7 @@ pub fn look_at_method(
 }
 
 /// The transform `obj.look_at(to, up)` applies to an object whose origin is at `origin`.
-pub fn look_at_about(origin: DVec3, to: DVec3, up: DVec3, span: Span) -> R<DAffine3> {
+pub(crate) fn look_at_about(origin: DVec3, to: DVec3, up: DVec3, span: Span) -> R<DAffine3> {
     let r = aim(to - origin, up, span)?;
     Ok(DAffine3::from_translation(origin) * r * DAffine3::from_translation(-origin))
 }

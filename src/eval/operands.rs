@@ -15,7 +15,7 @@ use std::rc::Rc;
 
 /// A view of the first `len` operands of a shared list (of objects, `value::Obj`; generic so
 /// that this file stands below the values).
-pub struct Operands<T> {
+pub(crate) struct Operands<T> {
     shared: Rc<RefCell<Vec<T>>>,
     len: usize,
 }
@@ -31,7 +31,7 @@ impl<T> Clone for Operands<T> {
 
 impl<T: Clone> Operands<T> {
     /// A view of all of `items`.
-    pub fn new(items: Vec<T>) -> Operands<T> {
+    pub(crate) fn new(items: Vec<T>) -> Operands<T> {
         let len = items.len();
         Operands {
             shared: Rc::new(RefCell::new(items)),
@@ -40,18 +40,18 @@ impl<T: Clone> Operands<T> {
     }
 
     /// How many operands.
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.len
     }
 
     /// The operands, in order.
-    pub fn items(&self) -> Ref<'_, [T]> {
+    pub(crate) fn items(&self) -> Ref<'_, [T]> {
         Ref::map(self.shared.borrow(), |v| &v[..self.len])
     }
 
     /// These operands followed by `more`, sharing this view's list when nothing was added
     /// after it yet.
-    pub fn extended(&self, more: Vec<T>) -> Operands<T> {
+    pub(crate) fn extended(&self, more: Vec<T>) -> Operands<T> {
         if let Ok(mut list) = self.shared.try_borrow_mut()
             && list.len() == self.len
         {

@@ -12,7 +12,7 @@ use super::operands::Operands;
 use super::value::{Obj, ObjShape, Value};
 
 /// `-x`, `!x`.
-pub fn unary(op: UnOp, v: Value, span: Span) -> R<Value> {
+pub(crate) fn unary(op: UnOp, v: Value, span: Span) -> R<Value> {
     Ok(match (op, v) {
         (UnOp::Neg, Value::Int(i)) => Value::Int(i.checked_neg().ok_or_else(|| overflow(span))?),
         (UnOp::Neg, Value::Float(f)) => Value::Float(-f),
@@ -48,7 +48,7 @@ fn overflow(span: Span) -> crate::diag::Diagnostic {
 
 /// A number in flight on the arithmetic fast paths: held in registers, not as a [`Value`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Num {
+pub(crate) enum Num {
     /// An `Int`.
     Int(i64),
     /// A `Float`.
@@ -58,7 +58,7 @@ pub enum Num {
 impl Num {
     /// The number `v` is, if it is one.
     #[inline(always)]
-    pub fn of(v: &Value) -> Option<Num> {
+    pub(crate) fn of(v: &Value) -> Option<Num> {
         match *v {
             Value::Int(i) => Some(Num::Int(i)),
             Value::Float(f) => Some(Num::Float(f)),
@@ -68,7 +68,7 @@ impl Num {
 
     /// As a float (what [`Value::as_f64`] gives for it).
     #[inline(always)]
-    pub fn f64(self) -> f64 {
+    pub(crate) fn f64(self) -> f64 {
         match self {
             Num::Int(i) => i as f64,
             Num::Float(f) => f,
@@ -77,7 +77,7 @@ impl Num {
 
     /// As a value.
     #[inline(always)]
-    pub fn value(self) -> Value {
+    pub(crate) fn value(self) -> Value {
         match self {
             Num::Int(i) => Value::Int(i),
             Num::Float(f) => Value::Float(f),
@@ -89,7 +89,7 @@ impl Num {
 /// finite): the arithmetic of loops, without the general operator's checks and messages. `None`
 /// sends the operation to [`binary`], which gives the same value or the error.
 #[inline(always)]
-pub fn num_op(op: BinOp, l: Num, r: Num) -> Option<Num> {
+pub(crate) fn num_op(op: BinOp, l: Num, r: Num) -> Option<Num> {
     use BinOp::*;
     match (l, r) {
         (Num::Int(a), Num::Int(b)) => Some(Num::Int(match op {
@@ -115,13 +115,13 @@ pub fn num_op(op: BinOp, l: Num, r: Num) -> Option<Num> {
 
 /// [`num_op`] on two values (`None` unless both are numbers).
 #[inline]
-pub fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
+pub(crate) fn arithmetic(op: BinOp, l: &Value, r: &Value) -> Option<Value> {
     num_op(op, Num::of(l)?, Num::of(r)?).map(Num::value)
 }
 
 /// `a op b` for every operator except the short-circuit `&&` and `||`.
 #[allow(clippy::too_many_arguments)]
-pub fn binary(
+pub(crate) fn binary(
     it: &mut dyn Host,
     op: BinOp,
     l: Value,

@@ -12,16 +12,16 @@ use super::value::Value;
 
 /// One `--set NAME=VALUE`, its value parsed as an expression.
 #[derive(Clone, Debug)]
-pub struct Override {
+pub(crate) struct Override {
     /// The parameter it sets.
-    pub name: Sym,
+    pub(crate) name: Sym,
     /// The value, evaluated where the `param` statement is.
-    pub value: Expr,
+    pub(crate) value: Expr,
 }
 
 /// Parses every `--set` value as one expression; each gets a source of its own (`--set NAME`),
 /// so a mistake in it is reported there.
-pub fn parse_overrides(
+pub(crate) fn parse_overrides(
     opts: &EvalOptions,
     sources: &mut SourceMap,
 ) -> (Vec<Override>, Vec<Diagnostic>) {
@@ -64,7 +64,7 @@ pub fn parse_overrides(
 }
 
 /// The value of the built-ins `frame` (Int), `time` (seconds, `frame / fps`) and `fps`.
-pub fn frame_builtin(opts: &EvalOptions, name: &str) -> Option<Value> {
+pub(crate) fn frame_builtin(opts: &EvalOptions, name: &str) -> Option<Value> {
     match name {
         "frame" => Some(Value::Int(opts.frame)),
         "time" => Some(Value::Float(opts.frame as f64 / opts.fps)),
@@ -74,10 +74,10 @@ pub fn frame_builtin(opts: &EvalOptions, name: &str) -> Option<Value> {
 }
 
 /// The names [`frame_builtin`] knows (for did-you-mean).
-pub const FRAME_BUILTINS: &[&str] = &["frame", "time", "fps"];
+pub(crate) const FRAME_BUILTINS: &[&str] = &["frame", "time", "fps"];
 
 /// The error for `param` anywhere but the top level of the scene file.
-pub fn misplaced(l: &Let) -> Diagnostic {
+pub(crate) fn misplaced(l: &Let) -> Diagnostic {
     error(
         "rtc::param::position",
         l.span,

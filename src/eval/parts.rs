@@ -15,11 +15,11 @@ use crate::source::{FileId, SourceMap};
 use super::options::{EvalOptions, LoopParts};
 
 /// Most threads a loop is split over.
-pub(super) const MOST_PARTS: usize = 8;
+const MOST_PARTS: usize = 8;
 /// A loop runs alone at least this long before splitting is considered (timing noise).
-pub(super) const LOOK_AT_LEAST: Duration = Duration::from_millis(4);
+const LOOK_AT_LEAST: Duration = Duration::from_millis(4);
 /// What a split must save to be worth its threads: their start and the merge's copying.
-pub(super) const WORTH: Duration = Duration::from_millis(8);
+const WORTH: Duration = Duration::from_millis(8);
 
 /// This thread's part in splitting loops.
 pub(crate) enum Role {
@@ -114,7 +114,7 @@ impl Role {
 }
 
 /// Threads for `LoopParts::Auto { threads }`.
-pub(super) fn parts_for(threads: usize) -> usize {
+fn parts_for(threads: usize) -> usize {
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     let n = if threads == 0 { cores } else { threads };
     n.min(MOST_PARTS)

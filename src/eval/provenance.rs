@@ -6,7 +6,7 @@
 use crate::ir::provenance::{Provenance, Step, StepKind};
 
 /// The steps and origins recorded so far.
-pub struct Builder {
+pub(crate) struct Builder {
     /// The steps (index 0 unused: the top level).
     table: Provenance,
     /// The innermost active step.
@@ -36,7 +36,7 @@ impl Default for Builder {
 
 impl Builder {
     /// Enters a step inside the current one; returns what [`Builder::leave`] restores.
-    pub fn enter(&mut self, kind: StepKind) -> u32 {
+    pub(crate) fn enter(&mut self, kind: StepKind) -> u32 {
         let saved = self.top;
         self.table.steps.push(Step {
             parent: saved,
@@ -47,12 +47,12 @@ impl Builder {
     }
 
     /// Leaves the step entered when [`Builder::enter`] returned `saved`.
-    pub fn leave(&mut self, saved: u32) {
+    pub(crate) fn leave(&mut self, saved: u32) {
         self.top = saved;
     }
 
     /// The origin of an object made now.
-    pub fn origin(&mut self) -> u32 {
+    pub(crate) fn origin(&mut self) -> u32 {
         if self.top == Provenance::ROOT {
             return 0;
         }
@@ -67,7 +67,7 @@ impl Builder {
     /// The origin of an object derived now (moved, given a material) from one of origin
     /// `from`: unchanged when the current step is already on one of its chains, else with the
     /// current chain added (made in one place, placed in another).
-    pub fn derive(&mut self, from: u32) -> u32 {
+    pub(crate) fn derive(&mut self, from: u32) -> u32 {
         let tops = self.origins.get(from as usize).cloned().unwrap_or_default();
         if self.top == Provenance::ROOT || tops.iter().any(|&t| self.table.encloses(self.top, t)) {
             return from;
@@ -80,7 +80,7 @@ impl Builder {
 
     /// The side table for the scene's objects, given each object's origins (its own first,
     /// then those of the groups that placed it, innermost group first).
-    pub fn finish(mut self, objects: Vec<Vec<u32>>) -> Provenance {
+    pub(crate) fn finish(mut self, objects: Vec<Vec<u32>>) -> Provenance {
         self.table.objects = objects
             .into_iter()
             .map(|origins| {

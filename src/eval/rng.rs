@@ -26,7 +26,7 @@ use super::schema::{Group, Lit, Param, Sig, Ty};
 use super::value::Value;
 
 /// `random(seed:)` with its schema.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[(&RANDOM, random)];
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[(&RANDOM, random)];
 
 /// SplitMix64's finaliser.
 pub fn mix(mut z: u64) -> u64 {
@@ -58,7 +58,7 @@ pub fn unit(seed: u64, key: &str, i: i64, lane: u64) -> f64 {
 }
 
 /// A standard normal deviate.
-pub fn normal(seed: u64, key: &str, i: i64) -> f64 {
+fn normal(seed: u64, key: &str, i: i64) -> f64 {
     let u0 = unit(seed, key, i, 0);
     let u1 = unit(seed, key, i, 1);
     (-2.0 * libm::log(1.0 - u0)).sqrt() * libm::cos(std::f64::consts::TAU * u1)
@@ -94,7 +94,7 @@ fn random(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// `rng.uniform(key, i)`, `rng.normal(key, i)`, `rng.in_sphere(key, i)`, `rng.on_sphere(key, i)`,
 /// `rng.range(key, i, lo, hi)`.
-pub fn method(
+pub(crate) fn method(
     it: &mut dyn Host,
     seed: u64,
     name: &'static str,
@@ -122,7 +122,7 @@ pub fn method(
 }
 
 /// The methods of `Rng` values with their schemas.
-pub static METHODS: &[&Sig] = &[&UNIFORM, &NORMAL, &IN_SPHERE, &ON_SPHERE, &RANGE];
+pub(crate) static METHODS: &[&Sig] = &[&UNIFORM, &NORMAL, &IN_SPHERE, &ON_SPHERE, &RANGE];
 
 /// What a draw is keyed by: a purpose and an index.
 const KEY: [Param; 2] = [

@@ -7,31 +7,38 @@
 //! from it. A leaf: it knows nothing of values or of the interpreter.
 
 /// A built-in function, method or record form: what `docs/builtins.md` shows of it and what
-/// the argument reader checks.
+/// the argument reader checks. What only the reference shows (here and in [`Param`]) is read by
+/// the tests alone, which write and check `docs/builtins.md`: those fields allow `dead_code`
+/// outside them.
 #[derive(Debug)]
-pub struct Sig {
+pub(crate) struct Sig {
     /// The name it is called by.
-    pub name: &'static str,
+    pub(crate) name: &'static str,
     /// Where the reference lists it.
-    pub group: Group,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) group: Group,
     /// One line saying what it gives.
-    pub doc: &'static str,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) doc: &'static str,
     /// Its parameters, in positional order.
-    pub params: &'static [Param],
+    pub(crate) params: &'static [Param],
     /// The result's type as the docs show it.
-    pub result: &'static str,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) result: &'static str,
     /// How an argument outside its range is reported.
-    pub blame: Blame,
+    pub(crate) blame: Blame,
     /// The last parameter takes any number of values (`min(a, b, ...)`, `print(...)`).
-    pub variadic: bool,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) variadic: bool,
     /// Calls that evaluate without an error, together reading every parameter (a test
     /// evaluates them; the reference shows them).
-    pub examples: &'static [&'static str],
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) examples: &'static [&'static str],
 }
 
 /// The sections of the reference.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Group {
+pub(crate) enum Group {
     /// Numbers, angles and vectors.
     Math,
     /// Lists.
@@ -62,7 +69,8 @@ pub enum Group {
 
 impl Group {
     /// The heading of the group's section in the reference.
-    pub fn title(self) -> &'static str {
+    #[cfg(test)]
+    pub(crate) fn title(self) -> &'static str {
         match self {
             Group::Math => "Math",
             Group::List => "Lists",
@@ -83,7 +91,7 @@ impl Group {
 
 /// How a range violation reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Blame {
+pub(crate) enum Blame {
     /// "`radius` must be > 0, but it is -1".
     Param,
     /// A function's domain: "`sqrt(x)` needs `x` >= 0, but `x` is -1".
@@ -92,26 +100,28 @@ pub enum Blame {
 
 /// One parameter (or field of a record form).
 #[derive(Clone, Copy, Debug)]
-pub struct Param {
+pub(crate) struct Param {
     /// Its name (named arguments, record fields, messages).
-    pub name: &'static str,
+    pub(crate) name: &'static str,
     /// What it accepts.
-    pub ty: Ty,
+    pub(crate) ty: Ty,
     /// What a number of it measures.
-    pub unit: Unit,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) unit: Unit,
     /// The values it allows.
-    pub range: Range,
+    pub(crate) range: Range,
     /// Who checks `range`.
-    pub checked: Checked,
+    pub(crate) checked: Checked,
     /// What it is when the call leaves it out.
-    pub absent: Absent,
+    pub(crate) absent: Absent,
     /// One line saying what it does.
-    pub doc: &'static str,
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub(crate) doc: &'static str,
 }
 
 /// The type of a parameter.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Ty {
+pub(crate) enum Ty {
     /// A number (`Int` or `Float`).
     Float,
     /// An `Int`.
@@ -168,7 +178,8 @@ pub enum Ty {
 
 impl Ty {
     /// The type as the reference writes it.
-    pub fn show(self) -> String {
+    #[cfg(test)]
+    pub(crate) fn show(self) -> String {
         let name = match self {
             Ty::Float => "Float",
             Ty::Int => "Int",
@@ -205,7 +216,7 @@ impl Ty {
 
 /// What a number measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Unit {
+pub(crate) enum Unit {
     /// A pure number.
     None,
     /// A length in scene units.
@@ -224,7 +235,8 @@ pub enum Unit {
 
 impl Unit {
     /// The unit as the reference writes it ("" for none).
-    pub fn show(self) -> &'static str {
+    #[cfg(test)]
+    pub(crate) fn show(self) -> &'static str {
         match self {
             Unit::None => "",
             Unit::Length => "scene units",
@@ -239,7 +251,7 @@ impl Unit {
 
 /// The values a parameter allows (of a pair, each element).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Range {
+pub(crate) enum Range {
     /// Any value of its type.
     Any,
     /// `> 0`.
@@ -262,7 +274,7 @@ pub enum Range {
 
 impl Range {
     /// Whether the number `x` is allowed (`NonZero` is a vector rule: always true here).
-    pub fn holds(self, x: f64) -> bool {
+    pub(crate) fn holds(self, x: f64) -> bool {
         match self {
             Range::Any | Range::NonZero => true,
             Range::Positive => x > 0.0,
@@ -276,7 +288,7 @@ impl Range {
     }
 
     /// Whether the `Int` `i` is allowed (compared as integers, so `i64::MAX` bounds exactly).
-    pub fn holds_int(self, i: i64) -> bool {
+    pub(crate) fn holds_int(self, i: i64) -> bool {
         match self {
             Range::Ints(lo, hi) => i >= lo && i <= hi,
             other => other.holds(i as f64),
@@ -284,7 +296,8 @@ impl Range {
     }
 
     /// The rule as the reference writes it (`> 0`, `≥ 0`, `[0, 1]`, `1..=64`; "" for any).
-    pub fn show(self, ty: Ty) -> String {
+    #[cfg(test)]
+    pub(crate) fn show(self, ty: Ty) -> String {
         let num = |x: f64| crate::diag::number(x);
         match self {
             Range::Any => String::new(),
@@ -301,7 +314,7 @@ impl Range {
 
     /// The rule as a message says it after "must be" (`> 0`, `in [0, 1]`, `in 1..=64`); the
     /// bounds of an angle in degrees.
-    pub fn rule(self, ty: Ty) -> String {
+    pub(crate) fn rule(self, ty: Ty) -> String {
         let num = |x: f64| crate::diag::number(x);
         match self {
             Range::Any => "any value".to_string(),
@@ -324,7 +337,7 @@ impl Range {
 
 /// Who checks a parameter's range.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Checked {
+pub(crate) enum Checked {
     /// The argument reader, as the argument is read.
     OnRead,
     /// The built-in itself, later: the rule involves other parameters (`max` ≥ `min`), or
@@ -335,7 +348,7 @@ pub enum Checked {
 
 /// What a parameter is when the call leaves it out.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Absent {
+pub(crate) enum Absent {
     /// The call must give it (`rtc::arg::missing`).
     Required,
     /// This value.
@@ -348,7 +361,7 @@ pub enum Absent {
 
 /// A default value.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Lit {
+pub(crate) enum Lit {
     /// A number.
     Float(f64),
     /// An `Int`.
@@ -369,7 +382,8 @@ pub enum Lit {
 
 impl Lit {
     /// The value as rtc source writes it (`1`, `40deg`, `Y`, `[0, 0, 0]`, `rgb(1, 1, 1)`).
-    pub fn show(self) -> String {
+    #[cfg(test)]
+    fn show(self) -> String {
         let v = |xs: [f64; 3]| xs.map(|x| format!("{x}")).join(", ");
         match self {
             Lit::Float(x) => format!("{x}"),
@@ -390,7 +404,8 @@ impl Lit {
 impl Absent {
     /// The default as the reference writes it: `required`, the value, `none`, or the words
     /// that say how it is computed.
-    pub fn show(self) -> String {
+    #[cfg(test)]
+    pub(crate) fn show(self) -> String {
         match self {
             Absent::Required => "required".to_string(),
             Absent::Is(l) => format!("`{}`", l.show()),
@@ -402,7 +417,7 @@ impl Absent {
 
 impl Param {
     /// A required parameter of type `ty`, unitless and of any value.
-    pub const fn new(name: &'static str, ty: Ty, doc: &'static str) -> Param {
+    pub(crate) const fn new(name: &'static str, ty: Ty, doc: &'static str) -> Param {
         Param {
             name,
             ty,
@@ -415,17 +430,17 @@ impl Param {
     }
 
     /// With its unit.
-    pub const fn unit(self, unit: Unit) -> Param {
+    pub(crate) const fn unit(self, unit: Unit) -> Param {
         Param { unit, ..self }
     }
 
     /// With its range.
-    pub const fn range(self, range: Range) -> Param {
+    pub(crate) const fn range(self, range: Range) -> Param {
         Param { range, ..self }
     }
 
     /// Its range is checked by the built-in, not the reader ([`Checked::ByBuiltin`]).
-    pub const fn checked_by_builtin(self) -> Param {
+    pub(crate) const fn checked_by_builtin(self) -> Param {
         Param {
             checked: Checked::ByBuiltin,
             ..self
@@ -433,7 +448,7 @@ impl Param {
     }
 
     /// With a default value.
-    pub const fn or(self, value: Lit) -> Param {
+    pub(crate) const fn or(self, value: Lit) -> Param {
         Param {
             absent: Absent::Is(value),
             ..self
@@ -441,7 +456,7 @@ impl Param {
     }
 
     /// Optional without a default.
-    pub const fn optional(self) -> Param {
+    pub(crate) const fn optional(self) -> Param {
         Param {
             absent: Absent::Optional,
             ..self
@@ -449,7 +464,7 @@ impl Param {
     }
 
     /// With a default computed from the other arguments, as `how` says.
-    pub const fn computed(self, how: &'static str) -> Param {
+    pub(crate) const fn computed(self, how: &'static str) -> Param {
         Param {
             absent: Absent::Computed(how),
             ..self
@@ -459,7 +474,7 @@ impl Param {
 
 impl Sig {
     /// A signature whose range violations name the parameter.
-    pub const fn new(
+    pub(crate) const fn new(
         name: &'static str,
         group: Group,
         doc: &'static str,
@@ -479,12 +494,12 @@ impl Sig {
     }
 
     /// With example calls.
-    pub const fn examples(self, examples: &'static [&'static str]) -> Sig {
+    pub(crate) const fn examples(self, examples: &'static [&'static str]) -> Sig {
         Sig { examples, ..self }
     }
 
     /// Range violations are the function's domain ([`Blame::Function`]).
-    pub const fn domain(self) -> Sig {
+    pub(crate) const fn domain(self) -> Sig {
         Sig {
             blame: Blame::Function,
             ..self
@@ -492,7 +507,7 @@ impl Sig {
     }
 
     /// The last parameter takes any number of values.
-    pub const fn variadic(self) -> Sig {
+    pub(crate) const fn variadic(self) -> Sig {
         Sig {
             variadic: true,
             ..self
@@ -503,7 +518,7 @@ impl Sig {
     /// (a built-in asks for its own parameters), so its address is compared first: the calls
     /// are hot (a loop making a million spheres).
     #[inline]
-    pub fn index(&self, name: &str) -> Option<usize> {
+    pub(crate) fn index(&self, name: &str) -> Option<usize> {
         let i = self
             .params
             .iter()
@@ -517,13 +532,14 @@ impl Sig {
     }
 
     /// Parameter `name`.
-    pub fn param(&self, name: &str) -> Option<&'static Param> {
+    pub(crate) fn param(&self, name: &str) -> Option<&'static Param> {
         let params: &'static [Param] = self.params;
         self.index(name).map(|i| &params[i])
     }
 
     /// How a call reads: `sphere(center, radius)`, `min(values...)`.
-    pub fn usage(&self) -> String {
+    #[cfg(test)]
+    pub(crate) fn usage(&self) -> String {
         let mut names: Vec<String> = self.names().map(String::from).collect();
         if self.variadic
             && let Some(last) = names.last_mut()
@@ -534,7 +550,7 @@ impl Sig {
     }
 
     /// The parameter names in order.
-    pub fn names(&self) -> impl Iterator<Item = &'static str> + Clone + use<> {
+    pub(crate) fn names(&self) -> impl Iterator<Item = &'static str> + Clone + use<> {
         let params: &'static [Param] = self.params;
         params.iter().map(|p| p.name)
     }
@@ -544,7 +560,7 @@ impl Sig {
 /// own, so the record is the process's): every parameter a schema declares must be read
 /// somewhere, and a built-in asking for a name its schema lacks panics.
 #[cfg(test)]
-pub mod read {
+pub(crate) mod read {
     use std::collections::BTreeSet;
     use std::sync::Mutex;
 
@@ -554,13 +570,13 @@ pub mod read {
     static READ: Mutex<BTreeSet<(usize, usize)>> = Mutex::new(BTreeSet::new());
 
     /// Notes that parameter `i` of `sig` was asked for.
-    pub fn record(sig: &Sig, i: usize) {
+    pub(crate) fn record(sig: &Sig, i: usize) {
         let mut read = READ.lock().unwrap_or_else(|e| e.into_inner());
         read.insert((sig as *const Sig as usize, i));
     }
 
     /// Whether parameter `i` of `sig` was asked for.
-    pub fn was_read(sig: &Sig, i: usize) -> bool {
+    pub(crate) fn was_read(sig: &Sig, i: usize) -> bool {
         let read = READ.lock().unwrap_or_else(|e| e.into_inner());
         read.contains(&(sig as *const Sig as usize, i))
     }

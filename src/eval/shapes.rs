@@ -21,12 +21,12 @@ mod mesh;
 
 use common::{checked, direction, point, radius, unit_dir};
 
-pub use compound::{FNS as COMPOUND_FNS, require_closed};
+pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed};
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
 /// geometry's shape rules once the shape is made (`checked`), which name the parameter to
 /// blame; the schema states them for the reference.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&SPHERE, sphere),
     (&PLANE, plane),
     (&BOX, box_),

@@ -21,7 +21,7 @@ use crate::pattern::{
 use crate::source::Span;
 
 /// The methods of textures other than the transforms, in the order messages list them.
-pub static METHODS: &[&Sig] = &[
+pub(crate) static METHODS: &[&Sig] = &[
     &COLORS,
     &TURBULENCE,
     &FREQUENCY,
@@ -33,12 +33,12 @@ pub static METHODS: &[&Sig] = &[
 ];
 
 /// Whether `name` is one of [`METHODS`].
-pub fn is_method(name: &str) -> bool {
+pub(crate) fn is_method(name: &str) -> bool {
     METHODS.iter().any(|m| m.name == name)
 }
 
 /// `tex.name(args)` for a method of [`METHODS`].
-pub fn call(it: &mut dyn Host, tex: Rc<Tex>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
+pub(crate) fn call(it: &mut dyn Host, tex: Rc<Tex>, site: CallSite, args: Vec<ArgVal>) -> R<Value> {
     let mut pt = pattern_of(&tex.t, site)?;
     match site.name {
         "colors" => colors(it, &mut pt, site, args)?,
@@ -65,7 +65,7 @@ pub fn call(it: &mut dyn Host, tex: Rc<Tex>, site: CallSite, args: Vec<ArgVal>) 
 }
 
 /// `tex` moved by transform `t` (from a transform method): the pattern moves with it.
-pub fn transformed(it: &mut dyn Host, tex: &Tex, t: DAffine3, span: Span) -> R<Value> {
+pub(crate) fn transformed(it: &mut dyn Host, tex: &Tex, t: DAffine3, span: Span) -> R<Value> {
     let t = super::transform::nonsingular(t, span)?;
     let site = CallSite {
         span,

@@ -16,7 +16,7 @@ use crate::source::Span;
 
 /// Transform constructors (each builds a `DAffine3`; the value is made here, so that the
 /// method forms on objects never put a transform behind an `Rc` only to take it out).
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&TRANSLATE, |it, s, a| translate(it, s, a).map(t)),
     (&SCALE, |it, s, a| scale(it, s, a).map(t)),
     (&ROTATE, |it, s, a| rotate(it, s, a).map(t)),
@@ -28,10 +28,10 @@ pub static FNS: &[(&Sig, BuiltinFn)] = &[
 
 /// The methods of objects and transforms that apply a transform (`.rotate(y: 30deg)`), in
 /// the order messages list them.
-pub static METHODS: &[&Sig] = &[&TRANSLATE, &SCALE, &ROTATE, &MATRIX, &AROUND, &TRANSFORM];
+pub(crate) static METHODS: &[&Sig] = &[&TRANSLATE, &SCALE, &ROTATE, &MATRIX, &AROUND, &TRANSFORM];
 
 /// Whether `name` is one of [`METHODS`].
-pub fn is_method(name: &str) -> bool {
+pub(crate) fn is_method(name: &str) -> bool {
     METHODS.iter().any(|m| m.name == name)
 }
 
@@ -40,7 +40,7 @@ fn t(a: DAffine3) -> Value {
 }
 
 /// Errors if `a` is singular (it would flatten space) or not finite.
-pub fn nonsingular(a: DAffine3, span: Span) -> R<DAffine3> {
+pub(crate) fn nonsingular(a: DAffine3, span: Span) -> R<DAffine3> {
     let det = a.matrix3.determinant();
     if det == 0.0 || !det.is_finite() || !a.translation.is_finite() {
         return Err(
@@ -243,7 +243,7 @@ static TRANSFORM: Sig = Sig::new(
 .examples(&["box().transform(transform: rotate(y: 90deg) >> translate([0, 1, 0]))"]);
 
 /// Builds the transform a method such as `.rotate(y: 30deg)` applies (`.transform(t)` passes `t`).
-pub fn method_transform(
+pub(crate) fn method_transform(
     it: &mut dyn Host,
     name: &'static str,
     site: CallSite,

@@ -10,7 +10,7 @@ use super::error::{Quote, R, error, suggest};
 use super::value::Value;
 
 /// Every type name an annotation may use.
-pub const TYPE_NAMES: &[&str] = &[
+const TYPE_NAMES: &[&str] = &[
     "Any",
     "Int",
     "Float",
@@ -34,7 +34,7 @@ pub const TYPE_NAMES: &[&str] = &[
 ];
 
 /// "expected `T`, found `U`" at `span`, with a label and a concrete help where one is known.
-pub fn mismatch(
+pub(crate) fn mismatch(
     it: &(impl Quote + ?Sized),
     expected: &str,
     found: &Value,
@@ -94,7 +94,7 @@ fn fmt(f: f64) -> String {
 }
 
 /// True if `v` has the type named `name` (Int counts as Float).
-pub fn has_type(name: &str, v: &Value) -> bool {
+fn has_type(name: &str, v: &Value) -> bool {
     match name {
         "Any" => true,
         "Float" => matches!(v, Value::Float(_) | Value::Int(_)),
@@ -105,7 +105,7 @@ pub fn has_type(name: &str, v: &Value) -> bool {
 }
 
 /// Checks `v` against an annotation, widening Int to Float where Float is declared.
-pub fn check_ann(it: &(impl Quote + ?Sized), t: &TypeAnn, v: Value, span: Span) -> R<Value> {
+pub(crate) fn check_ann(it: &(impl Quote + ?Sized), t: &TypeAnn, v: Value, span: Span) -> R<Value> {
     let name = t.name.sym.as_str();
     if !TYPE_NAMES.contains(&name) {
         let d = error(
@@ -152,13 +152,13 @@ pub fn check_ann(it: &(impl Quote + ?Sized), t: &TypeAnn, v: Value, span: Span) 
 }
 
 /// A number (Int or Float) as f64.
-pub fn num(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<f64> {
+pub(crate) fn num(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<f64> {
     v.as_f64()
         .ok_or_else(|| mismatch(it, "Float", v, span).into())
 }
 
 /// An Int.
-pub fn int(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<i64> {
+pub(crate) fn int(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<i64> {
     match v {
         Value::Int(i) => Ok(*i),
         _ => Err(mismatch(it, "Int", v, span).into()),
@@ -166,7 +166,7 @@ pub fn int(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<i64> {
 }
 
 /// An angle in radians.
-pub fn angle(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<f64> {
+pub(crate) fn angle(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<f64> {
     match v {
         Value::Angle(a) => Ok(*a),
         _ => Err(mismatch(it, "Angle", v, span).into()),
@@ -174,7 +174,7 @@ pub fn angle(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<f64> {
 }
 
 /// A Vec3; a `List` of exactly three numbers (what `.map` on a list gives) is one too.
-pub fn vec3(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
+pub(crate) fn vec3(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
     match v {
         Value::Vec3(x) => Ok(*x),
         Value::List(l) => match l.as_slice() {
@@ -189,7 +189,7 @@ pub fn vec3(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
 }
 
 /// A colour.
-pub fn color(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
+pub(crate) fn color(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
     match v {
         Value::Color(x) => Ok(*x),
         _ => Err(mismatch(it, "Color", v, span).into()),
@@ -197,7 +197,7 @@ pub fn color(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<DVec3> {
 }
 
 /// A Bool.
-pub fn boolean(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<bool> {
+pub(crate) fn boolean(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<bool> {
     match v {
         Value::Bool(b) => Ok(*b),
         _ => Err(mismatch(it, "Bool", v, span).into()),
@@ -205,7 +205,7 @@ pub fn boolean(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<bool> {
 }
 
 /// A String.
-pub fn string(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<std::rc::Rc<str>> {
+pub(crate) fn string(it: &(impl Quote + ?Sized), v: &Value, span: Span) -> R<std::rc::Rc<str>> {
     match v {
         Value::Str(s) => Ok(s.clone()),
         _ => Err(mismatch(it, "String", v, span).into()),

@@ -12,7 +12,7 @@ use crate::syntax::intern::Sym;
 
 /// A value of the language.
 #[derive(Clone, Debug)]
-pub enum Value {
+pub(crate) enum Value {
     /// The result of `print` and `assert`; discarded silently.
     Unit,
     /// 64-bit integer.
@@ -76,11 +76,11 @@ pub enum Value {
 /// A built-in function: its name and which it is (its implementation is looked up by `id` in
 /// the built-ins' table, so values need not know the interpreter's signature).
 #[derive(Clone, Copy)]
-pub struct Builtin {
+pub(crate) struct Builtin {
     /// Name used in messages.
-    pub name: &'static str,
+    pub(crate) name: &'static str,
     /// Its index in the built-ins' table (`builtins::function`).
-    pub id: u16,
+    pub(crate) id: u16,
 }
 
 impl fmt::Debug for Builtin {
@@ -91,22 +91,22 @@ impl fmt::Debug for Builtin {
 
 /// A numeric range.
 #[derive(Clone, Copy, Debug)]
-pub struct Range {
+pub(crate) struct Range {
     /// Start (inclusive).
-    pub start: f64,
+    pub(crate) start: f64,
     /// End.
-    pub end: f64,
+    pub(crate) end: f64,
     /// Step (non-zero).
-    pub step: f64,
+    pub(crate) step: f64,
     /// End included.
-    pub inclusive: bool,
+    pub(crate) inclusive: bool,
     /// All of start, end and step were Int.
-    pub ints: bool,
+    pub(crate) ints: bool,
 }
 
 impl Range {
     /// Number of elements (saturating; the caller checks budgets).
-    pub fn len(&self) -> u64 {
+    pub(crate) fn len(&self) -> u64 {
         let span = (self.end - self.start) / self.step;
         if !span.is_finite() || span < 0.0 {
             return 0;
@@ -125,13 +125,8 @@ impl Range {
         }
     }
 
-    /// True when the range has no elements.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
     /// The `i`th element.
-    pub fn get(&self, i: u64) -> Value {
+    pub(crate) fn get(&self, i: u64) -> Value {
         if self.ints {
             Value::Int((self.start as i64).wrapping_add((i as i64).wrapping_mul(self.step as i64)))
         } else {
@@ -142,27 +137,27 @@ impl Range {
 
 /// One field of a record value.
 #[derive(Clone, Debug)]
-pub struct FieldVal {
+pub(crate) struct FieldVal {
     /// Its name.
-    pub name: Sym,
+    pub(crate) name: Sym,
     /// Its value.
-    pub value: Value,
+    pub(crate) value: Value,
     /// Span of the value.
-    pub span: Span,
+    pub(crate) span: Span,
     /// Span of the name.
-    pub name_span: Span,
+    pub(crate) name_span: Span,
 }
 
 /// A record: ordered fields.
 #[derive(Clone, Debug, Default)]
-pub struct Record {
+pub(crate) struct Record {
     /// The fields in written order.
-    pub fields: Vec<FieldVal>,
+    pub(crate) fields: Vec<FieldVal>,
 }
 
 impl Record {
     /// Looks a field up.
-    pub fn get(&self, name: Sym) -> Option<&Value> {
+    pub(crate) fn get(&self, name: Sym) -> Option<&Value> {
         self.fields
             .iter()
             .find(|f| f.name == name)
@@ -172,39 +167,39 @@ impl Record {
 
 /// A user function with the local bindings it captured.
 #[derive(Debug)]
-pub struct Closure {
+pub(crate) struct Closure {
     /// The definition.
-    pub def: Rc<FnDef>,
+    pub(crate) def: Rc<FnDef>,
     /// Locals visible where it was defined (module items are found through `module`).
-    pub captured: Vec<(Sym, Value)>,
+    pub(crate) captured: Vec<(Sym, Value)>,
     /// The module whose items it sees.
-    pub module: Rc<crate::eval::modules::Scope>,
+    pub(crate) module: Rc<crate::eval::modules::Scope>,
 }
 
 /// An object value.
 #[derive(Clone, Debug)]
-pub struct Obj {
+pub(crate) struct Obj {
     /// The geometry.
-    pub shape: ObjShape,
+    pub(crate) shape: ObjShape,
     /// Object to world.
-    pub transform: DAffine3,
+    pub(crate) transform: DAffine3,
     /// Own material.
-    pub material: Option<Rc<Mat>>,
+    pub(crate) material: Option<Rc<Mat>>,
     /// How it moves while the shutter is open (in the space `transform` maps into).
-    pub motion: Option<ir::Motion>,
+    pub(crate) motion: Option<ir::Motion>,
     /// Where it was made.
-    pub span: Span,
+    pub(crate) span: Span,
     /// Its origin in the provenance record (0 when none is kept: `eval::provenance`).
-    pub origin: u32,
+    pub(crate) origin: u32,
 }
 
 /// Bytes one list element is charged to the memory budget: the size of a value (what the
 /// element holds besides is charged when it is made).
-pub const VALUE_BYTES: u64 = std::mem::size_of::<Value>() as u64;
+pub(crate) const VALUE_BYTES: u64 = std::mem::size_of::<Value>() as u64;
 
 /// Geometry of an object value.
 #[derive(Clone, Debug)]
-pub enum ObjShape {
+pub(crate) enum ObjShape {
     /// A primitive (never `Shape::Csg`).
     Prim(ir::Shape),
     /// CSG over children.
@@ -215,23 +210,23 @@ pub enum ObjShape {
 
 /// A material value.
 #[derive(Clone, Debug)]
-pub struct Mat {
+pub(crate) struct Mat {
     /// The scalar parameters (texture ids are filled when lowering).
-    pub m: ir::Material,
+    pub(crate) m: ir::Material,
     /// Colour texture.
-    pub texture: Option<Rc<Tex>>,
+    pub(crate) texture: Option<Rc<Tex>>,
     /// Bump texture and its strength.
-    pub bump: Option<(Rc<Tex>, f64)>,
+    pub(crate) bump: Option<(Rc<Tex>, f64)>,
     /// The materials it is made of, for a material map or layers (`m` is then its first part's).
-    pub mix: Option<Rc<MatMix>>,
+    pub(crate) mix: Option<Rc<MatMix>>,
     /// Which material value this is ([`Interp::next_made`](super::interp::Interp::next_made)):
     /// the lowering shares one IR material per value by it.
-    pub made: u64,
+    pub(crate) made: u64,
 }
 
 /// The parts of a mixed material value (lowered to `ir::Mix`).
 #[derive(Clone, Debug)]
-pub enum MatMix {
+pub(crate) enum MatMix {
     /// `material_map(..)`: a pattern's value picks or blends the stops' materials.
     Map {
         /// The pattern (its colour map unused).
@@ -247,27 +242,27 @@ pub enum MatMix {
 
 /// A texture value (lowered to `ir::Texture`).
 #[derive(Clone, Debug)]
-pub struct Tex {
+pub(crate) struct Tex {
     /// The texture.
-    pub t: ir::Texture,
+    pub(crate) t: ir::Texture,
     /// Which texture value this is (as [`Mat::made`]).
-    pub made: u64,
+    pub(crate) made: u64,
 }
 
 /// Render settings as a value.
 #[derive(Clone, Debug)]
-pub struct RenderVal {
+pub(crate) struct RenderVal {
     /// The settings (material id filled later).
-    pub s: ir::RenderSettings,
+    pub(crate) s: ir::RenderSettings,
     /// The default material for objects without one.
-    pub material: Option<Rc<Mat>>,
+    pub(crate) material: Option<Rc<Mat>>,
     /// Where it was made.
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 impl Value {
     /// The type name used in messages.
-    pub fn type_name(&self) -> &'static str {
+    pub(crate) fn type_name(&self) -> &'static str {
         match self {
             Value::Unit => "Unit",
             Value::Int(_) => "Int",
@@ -301,7 +296,7 @@ impl Value {
     }
 
     /// The value as a float, if it is a number.
-    pub fn as_f64(&self) -> Option<f64> {
+    pub(crate) fn as_f64(&self) -> Option<f64> {
         match *self {
             Value::Int(i) => Some(i as f64),
             Value::Float(f) => Some(f),
@@ -312,7 +307,7 @@ impl Value {
     /// A short rendering for messages and `print`: lists show their first 8 items, and the
     /// whole text stops after [`SHOW_LIMIT`] bytes with `...` (lists that share their items
     /// describe exponentially large trees in a few steps; their text must stay small).
-    pub fn show(&self) -> String {
+    pub(crate) fn show(&self) -> String {
         let mut out = String::new();
         self.show_into(&mut out);
         if out.len() > SHOW_LIMIT {
@@ -401,7 +396,7 @@ impl Value {
     }
 }
 
-/// Longest text [`Value::show`] produces before it ends in `...`.
+/// Longest text `Value::show` produces before it ends in `...`.
 pub const SHOW_LIMIT: usize = 10_000;
 
 /// A material as the `material { .. }` call that makes it (textures shown by kind).
@@ -427,7 +422,7 @@ fn show_material(m: &Mat) -> String {
 }
 
 /// Kind name of an object value.
-pub fn obj_kind(o: &Obj) -> &'static str {
+pub(crate) fn obj_kind(o: &Obj) -> &'static str {
     match &o.shape {
         ObjShape::Prim(s) => s.kind_name(),
         ObjShape::Csg(..) => "csg",
@@ -436,18 +431,18 @@ pub fn obj_kind(o: &Obj) -> &'static str {
 }
 
 /// Formats a float without noise: integers without a fraction, otherwise up to 6 digits.
-pub fn fmt_f(f: f64) -> String {
+pub(crate) fn fmt_f(f: f64) -> String {
     crate::diag::number(f)
 }
 
 /// "an `Int`", "a `Float`": a type name with its article, for messages.
-pub fn a_type(t: &str) -> String {
+pub(crate) fn a_type(t: &str) -> String {
     let vowel = t.starts_with(['A', 'E', 'I', 'O', 'U']);
     format!("{} `{t}`", if vowel { "an" } else { "a" })
 }
 
 /// Builds a record value from (name, value) pairs with `span` for every field.
-pub fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
+pub(crate) fn record_of(fields: &[(&str, Value)], span: Span) -> Value {
     Value::Record(Rc::new(Record {
         fields: fields
             .iter()

@@ -10,7 +10,7 @@ use super::host::Host;
 use super::value::Value;
 
 /// Applies the updates to a copy of `base`.
-pub fn with(
+pub(crate) fn with(
     it: &mut dyn Host,
     base: Value,
     bspan: Span,

@@ -16,7 +16,7 @@ use crate::source::Span;
 use crate::syntax::ast::BinOp;
 
 /// List functions with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&LEN, len),
     (&SUM, sum),
     (&FLATTEN, flatten),
@@ -46,7 +46,7 @@ const PREDICATE: &[Param] = &[
 ];
 
 /// The elements of a list-like value: a `List`, or a `Vec3` as three `Float`s.
-pub fn items(v: &Value) -> Option<Rc<Vec<Value>>> {
+pub(crate) fn items(v: &Value) -> Option<Rc<Vec<Value>>> {
     match v {
         Value::List(l) => Some(l.clone()),
         Value::Vec3(x) => Some(Rc::new(x.to_array().map(Value::Float).to_vec())),
@@ -73,7 +73,7 @@ fn fn_arg(it: &dyn Host, p: &mut Params, name: &str) -> R<(Value, Span)> {
 }
 
 /// Calls `f` with positional arguments.
-pub fn call(it: &mut dyn Host, f: &Value, args: &[Value], fs: Span, site: Span) -> R<Value> {
+pub(crate) fn call(it: &mut dyn Host, f: &Value, args: &[Value], fs: Span, site: Span) -> R<Value> {
     let a = args
         .iter()
         .map(|v| ArgVal {

@@ -18,7 +18,7 @@ use crate::source::Span;
 use crate::syntax::srgb_to_linear;
 
 /// Colour, material and texture constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&RGB, rgb),
     (&SRGB, srgb),
     (&HSV, hsv),
@@ -66,7 +66,7 @@ fn rgb(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 }
 
 /// `srgb(r, g, b)`.
-pub(crate) static SRGB: Sig = Sig::new(
+static SRGB: Sig = Sig::new(
     "srgb",
     Group::Colour,
     "An sRGB-encoded colour, converted to linear (`srgb(value)` is a grey).",
@@ -140,7 +140,7 @@ fn hsv(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// A material's fields, in positional order: `material { .. }`, `m with { .. }` and `m.kd` read
 /// their names, types, ranges and defaults here (the defaults are `ir::Material::default()`'s).
-pub static MATERIAL: Sig = Sig::new(
+pub(crate) static MATERIAL: Sig = Sig::new(
     "material",
     Group::Look,
     "A surface's material (every field optional; `material {}` is the default material).",
@@ -209,7 +209,7 @@ const fn unit_coefficient(name: &'static str, doc: &'static str, default: f64) -
 
 /// Sets one material field with the type and range checks of its schema ([`MATERIAL`];
 /// shared by `material` and `with`).
-pub fn set_mat_field(
+pub(crate) fn set_mat_field(
     it: &dyn Host,
     m: &mut Mat,
     name: crate::syntax::ast::Name,
@@ -278,12 +278,12 @@ pub fn set_mat_field(
 }
 
 /// The material fields' names, in order (for messages and members).
-pub fn fields() -> Vec<&'static str> {
+pub(crate) fn fields() -> Vec<&'static str> {
     MATERIAL.names().collect()
 }
 
 /// Energy warnings after a material is complete.
-pub fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
+pub(crate) fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
     if m.m.kd + m.m.ks > 1.0 + 1e-9 {
         it.warn(
             Diagnostic::warning("rtc::material::energy", span, "`kd + ks` is greater than 1")

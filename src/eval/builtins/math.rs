@@ -16,7 +16,7 @@ use crate::eval::types;
 use crate::eval::value::Value;
 
 /// Math functions with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&SIN, sin),
     (&COS, cos),
     (&TAN, tan),
@@ -65,7 +65,7 @@ const VALUES: &[Param] = &[Param::new(
 )];
 
 /// Constants: axes and circle numbers.
-pub fn constants() -> Vec<(&'static str, Value)> {
+pub(crate) fn constants() -> Vec<(&'static str, Value)> {
     vec![
         ("X", Value::Vec3(DVec3::X)),
         ("Y", Value::Vec3(DVec3::Y)),

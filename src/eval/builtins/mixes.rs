@@ -13,7 +13,7 @@ use crate::ir;
 use crate::source::Span;
 
 /// The mix constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[(&MATERIAL_MAP, material_map), (&LAYERS, layers)];
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[(&MATERIAL_MAP, material_map), (&LAYERS, layers)];
 
 /// Most parts one mix may have (a budget: each part is resolved at every hit that reads it).
 pub(crate) const MAX_PARTS: usize = 256;

@@ -4,7 +4,7 @@
 
 #[cfg(test)]
 mod doc_tables;
-pub mod lists;
+pub(crate) mod lists;
 mod looks;
 mod math;
 mod mixes;
@@ -16,7 +16,7 @@ mod scene;
 mod schema_tests;
 mod settings;
 
-pub use looks::{fields as material_fields, mat_warnings, set_mat_field};
+pub(crate) use looks::{fields as material_fields, mat_warnings, set_mat_field};
 pub(crate) use math::{CROSS, DISTANCE, DOT, LENGTH, MAX, MIN, NORMALIZE};
 
 use crate::syntax::intern::Sym;
@@ -26,7 +26,7 @@ use super::schema::Sig;
 use super::value::{Builtin, Value};
 
 /// Every built-in function with its schema, in the order of their ids.
-pub fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
+fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
     [
         math::FNS,
         lists::FNS,
@@ -48,7 +48,7 @@ static FUNCTIONS: std::sync::LazyLock<Vec<BuiltinFn>> =
     std::sync::LazyLock::new(|| functions().into_iter().map(|(_, f)| f).collect());
 
 /// The implementation of the built-in with id `id`.
-pub fn function(id: u16) -> BuiltinFn {
+pub(crate) fn function(id: u16) -> BuiltinFn {
     FUNCTIONS[usize::from(id)]
 }
 
@@ -68,19 +68,19 @@ thread_local! {
 }
 
 /// A built-in by name.
-pub fn global(sym: Sym) -> Option<Value> {
+pub(crate) fn global(sym: Sym) -> Option<Value> {
     GLOBALS.with(|g| g.get(&sym).cloned())
 }
 
 /// Every built-in name (for did-you-mean).
-pub fn global_names() -> Vec<&'static str> {
+pub(crate) fn global_names() -> Vec<&'static str> {
     GLOBALS.with(|g| g.keys().map(|k| k.as_str()).collect())
 }
 
 /// Every name a scene should not bind at the top level (what `rtc convert` must not name a
 /// material): the language's keywords, `param` (it starts a declaration), every built-in
 /// function and constant, and the frame's `frame`, `time` and `fps`. Sorted.
-pub fn reserved_names() -> Vec<&'static str> {
+pub(crate) fn reserved_names() -> Vec<&'static str> {
     let mut names: Vec<&'static str> = crate::syntax::KEYWORDS.to_vec();
     names.push("param");
     names.extend(table().into_iter().map(|(name, _)| name));

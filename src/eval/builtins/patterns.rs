@@ -14,7 +14,7 @@ use crate::ir::{self, PatternSpace, PatternTexture};
 use crate::pattern::{ColorMap, Crackle, Field, Fractal, Pattern, Turbulence};
 
 /// The pattern constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&GRADIENT, gradient),
     (&HEXAGON, hexagon),
     (&BRICK, brick),

@@ -8,7 +8,7 @@ use crate::eval::schema::{Group, Sig};
 
 /// Every schema: the functions in table order, then the methods that are no function, then
 /// the records built-ins read. Each once.
-pub fn all() -> Vec<&'static Sig> {
+pub(crate) fn all() -> Vec<&'static Sig> {
     let mut out: Vec<&'static Sig> = super::functions().into_iter().map(|(s, _)| s).collect();
     for (_, tables) in RECEIVERS {
         for m in tables.iter().flat_map(|t| t.iter()) {
@@ -22,7 +22,7 @@ pub fn all() -> Vec<&'static Sig> {
 }
 
 /// The whole reference, as Markdown.
-pub fn markdown() -> String {
+fn markdown() -> String {
     let mut out = String::from(HEADER);
     let sigs = all();
     let mut groups: Vec<Group> = sigs.iter().map(|s| s.group).collect();

@@ -14,7 +14,7 @@ use crate::ir;
 use crate::ir::limits::{MAX_IMAGE_SIDE, MAX_LIGHT_SAMPLES_PER_AXIS};
 
 /// The camera and light constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&CAMERA, camera),
     (&POINT_LIGHT, point_light),
     (&AREA_LIGHT, area_light),

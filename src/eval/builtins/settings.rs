@@ -16,7 +16,7 @@ use crate::ir::limits::{MAX_DEPTH, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::source::Span;
 
 /// The render settings' constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&RENDER, render),
     (&GOOCH, gooch),
     (&ADAPTIVE, adaptive),
@@ -25,7 +25,7 @@ pub static FNS: &[(&Sig, BuiltinFn)] = &[
 ];
 
 /// Named enumeration values.
-pub fn constants() -> Vec<(&'static str, Value)> {
+pub(crate) fn constants() -> Vec<(&'static str, Value)> {
     let modes = ir::RenderMode::NAMED
         .iter()
         .map(|(name, mode)| (*name, Value::Mode(*mode)));

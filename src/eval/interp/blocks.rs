@@ -14,7 +14,7 @@ use super::Interp;
 
 impl Interp<'_> {
     /// Evaluates a block in a new scope; its value is its last expression (`Unit` if none).
-    pub fn block(&mut self, b: &Block) -> R<Value> {
+    pub(crate) fn block(&mut self, b: &Block) -> R<Value> {
         let mark = self.locals.len();
         let r = self.block_inner(b, mark);
         self.locals.truncate(mark);
@@ -277,7 +277,7 @@ impl Interp<'_> {
     /// from 0), emitting each element as it is made instead of building the whole list first
     /// (a million objects never coexist as values). A long loop may be split over threads
     /// (`split`).
-    pub fn emit_for(
+    pub(crate) fn emit_for(
         &mut self,
         e: &Expr,
         stmt: usize,

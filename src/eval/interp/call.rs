@@ -24,7 +24,7 @@ impl Interp<'_> {
     }
 
     /// Evaluates `callee(args)`, including method calls `x.m(args)` and module functions.
-    pub fn call_expr(&mut self, callee: &Expr, args: &[Arg], span: Span) -> R<Value> {
+    pub(crate) fn call_expr(&mut self, callee: &Expr, args: &[Arg], span: Span) -> R<Value> {
         if let ExprKind::Member(obj, name) = &callee.kind {
             let recv = self.eval(obj)?;
             let field = match &recv {
@@ -48,7 +48,7 @@ impl Interp<'_> {
     }
 
     /// Calls a function value with evaluated arguments.
-    pub fn call_value(
+    pub(crate) fn call_value(
         &mut self,
         f: Value,
         args: Vec<ArgVal>,
@@ -84,7 +84,7 @@ impl Interp<'_> {
     }
 
     /// Calls a user function: matches arguments to parameters, checks types, runs the body.
-    pub fn call_closure(&mut self, c: &Rc<Closure>, args: Vec<ArgVal>, span: Span) -> R<Value> {
+    fn call_closure(&mut self, c: &Rc<Closure>, args: Vec<ArgVal>, span: Span) -> R<Value> {
         let def = &c.def;
         let fname = def.name.sym;
         if self.depth >= self.opts.max_recursion_depth {

@@ -1,5 +1,8 @@
 //! The interpreter as the [`Host`] of the built-ins it calls: each service delegates to the
-//! interpreter's own method of the same name.
+//! interpreter's own method of the same name. That method must be visible here (declared in
+//! `interp/mod.rs`, or `pub(crate)` in a sibling file): were it private to a sibling,
+//! `Interp::name(self, ..)` would resolve to this trait method and recurse forever (rustc's
+//! `unconditional_recursion` warning).
 
 use std::path::Path;
 

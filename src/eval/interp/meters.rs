@@ -12,29 +12,29 @@ use super::Interp;
 
 impl Interp<'_> {
     /// Checks a string length (bytes) against the budget.
-    pub fn check_string_len(&self, len: usize, span: Span) -> R<()> {
+    pub(crate) fn check_string_len(&self, len: usize, span: Span) -> R<()> {
         budgets::string_len(len, self.opts.max_string_len, span)
     }
 
     /// Checks a list length against the budget.
-    pub fn check_list_len(&self, len: usize, span: Span) -> R<()> {
+    pub(crate) fn check_list_len(&self, len: usize, span: Span) -> R<()> {
         budgets::list_len(len, self.opts.max_list_len, span)
     }
 
     /// A new string of `len` bytes is about to be made: its length and memory budgets.
-    pub fn new_string(&self, len: usize, span: Span) -> R<()> {
+    pub(crate) fn new_string(&self, len: usize, span: Span) -> R<()> {
         self.check_string_len(len, span)?;
         self.charge(len as u64, span, "this string")
     }
 
     /// A new list of `len` elements is about to be made: its length and memory budgets.
-    pub fn new_list(&self, len: usize, span: Span) -> R<()> {
+    pub(crate) fn new_list(&self, len: usize, span: Span) -> R<()> {
         self.check_list_len(len, span)?;
         self.charge((len as u64).saturating_mul(VALUE_BYTES), span, "this list")
     }
 
     /// Charges `bytes` that `what` (at `span`) is about to hold to the memory budget.
-    pub fn charge(&self, bytes: u64, span: Span, what: &str) -> R<()> {
+    pub(crate) fn charge(&self, bytes: u64, span: Span, what: &str) -> R<()> {
         let mut m = self.memory_used();
         budgets::charge(&mut m, bytes, span, what)?;
         self.memory.set(m.used);
@@ -43,7 +43,7 @@ impl Interp<'_> {
 
     /// The memory budget with the values' bytes charged (objects are charged as the lowering
     /// counts them: [`Interp::object_budget`]).
-    pub fn memory_used(&self) -> Memory {
+    pub(crate) fn memory_used(&self) -> Memory {
         Memory {
             budget: self.opts.max_memory,
             used: self.memory.get(),
@@ -51,7 +51,7 @@ impl Interp<'_> {
     }
 
     /// What emitting objects may use now.
-    pub fn object_budget(&self) -> budgets::ObjectBudget {
+    pub(crate) fn object_budget(&self) -> budgets::ObjectBudget {
         budgets::ObjectBudget {
             max_objects: self.opts.max_objects,
             memory: self.memory_used(),
@@ -60,7 +60,7 @@ impl Interp<'_> {
 
     /// Counts one loop iteration or call against the loop budget, and now and then looks at
     /// the deadline.
-    pub fn step(&mut self, span: Span, kind: budgets::Step) -> R<()> {
+    pub(crate) fn step(&mut self, span: Span, kind: budgets::Step) -> R<()> {
         self.loop_iters += 1;
         let (max, deadline) = (self.opts.max_loop_iterations, self.opts.deadline);
         budgets::step(self.loop_iters, max, deadline, span, kind)

@@ -41,7 +41,7 @@ const PURE_NODES: u32 = 16;
 /// lowerer emitted) is recorded in [`Mark`](super::parts::Mark) and compared; a new field of
 /// that kind must be added to `Mark` and to the merge of a helper's `Part`, or splitting
 /// would change what a scene makes.
-pub struct Interp<'a> {
+pub(crate) struct Interp<'a> {
     /// Budgets.
     opts: &'a EvalOptions,
     /// Every file read so far.
@@ -95,7 +95,11 @@ impl Drop for Interp<'_> {
 
 impl<'a> Interp<'a> {
     /// A fresh evaluator whose current module is `scope`.
-    pub fn new(opts: &'a EvalOptions, sources: &'a mut SourceMap, scope: Rc<Scope>) -> Interp<'a> {
+    pub(crate) fn new(
+        opts: &'a EvalOptions,
+        sources: &'a mut SourceMap,
+        scope: Rc<Scope>,
+    ) -> Interp<'a> {
         Interp {
             opts,
             sources,
@@ -148,38 +152,38 @@ impl<'a> Interp<'a> {
 
     /// Numbers a new material or texture value: values are told apart by these numbers, which
     /// a replay of the evaluation on another thread gives out alike (`split`).
-    pub fn next_made(&mut self) -> u64 {
+    fn next_made(&mut self) -> u64 {
         self.made += 1;
         self.made
     }
 
     /// The provenance origin of an object made now (0 when provenance is off).
-    pub fn origin(&mut self) -> u32 {
+    fn origin(&mut self) -> u32 {
         self.prov.as_mut().map_or(0, |p| p.origin())
     }
 
     /// The provenance origin of an object derived now from one of origin `from`.
-    pub fn derive(&mut self, from: u32) -> u32 {
+    fn derive(&mut self, from: u32) -> u32 {
         self.prov.as_mut().map_or(from, |p| p.derive(from))
     }
 
     /// Records a finding every time (`print`'s notes).
-    pub fn report(&mut self, d: Diagnostic) {
+    fn report(&mut self, d: Diagnostic) {
         self.diags.push(d);
     }
 
     /// The folder relative asset paths of the current module resolve against.
-    pub fn dir(&self) -> &std::path::Path {
+    fn dir(&self) -> &std::path::Path {
         &self.scope.dir
     }
 
     /// The path of the current module's file (for messages).
-    pub fn file_path(&self) -> &std::path::Path {
+    fn file_path(&self) -> &std::path::Path {
         &self.sources.get(self.scope.file).path
     }
 
     /// Records a warning once per (code, span), however often a loop reaches it.
-    pub fn warn(&mut self, d: Diagnostic) {
+    fn warn(&mut self, d: Diagnostic) {
         let Some(span) = d.span else {
             return self.diags.push(d);
         };
@@ -190,7 +194,7 @@ impl<'a> Interp<'a> {
     }
 
     /// The source text under a span.
-    pub fn snippet(&self, span: Span) -> &str {
+    fn snippet(&self, span: Span) -> &str {
         self.sources.snippet(span)
     }
 }
@@ -207,7 +211,7 @@ impl Interp<'_> {
     /// evaluates sub-expressions is out of line too, so this function, entered for every node,
     /// needs no stack frame of its own: a literal or a local costs a few instructions, not a
     /// frame of every arm's temporaries (a million spheres from a loop evaluate ~30 nodes each).
-    pub fn eval(&mut self, e: &Expr) -> R<Value> {
+    fn eval(&mut self, e: &Expr) -> R<Value> {
         match &e.kind {
             ExprKind::Int(i) => Ok(Value::Int(*i)),
             ExprKind::Float(f) => Ok(Value::Float(*f)),

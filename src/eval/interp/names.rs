@@ -12,7 +12,7 @@ use super::Interp;
 impl Interp<'_> {
     /// Looks a name up: locals of this frame, then module items, then built-ins.
     #[inline]
-    pub fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
+    pub(crate) fn lookup(&self, sym: Sym, span: Span) -> R<Value> {
         match self.local(sym) {
             // Numbers (loop variables, mostly) copied without the out-of-line `clone`.
             Some(Value::Int(i)) => Ok(Value::Int(*i)),

@@ -53,7 +53,7 @@ impl Interp<'_> {
 
     /// Evaluates a module's statements. `scene` receives emitted values; `None` for libraries,
     /// where emitting is an error.
-    pub fn run_module(&mut self, file: &File<'_>, mut scene: Option<&mut Lowerer>) {
+    pub(crate) fn run_module(&mut self, file: &File<'_>, mut scene: Option<&mut Lowerer>) {
         // Every `fn` item is a statement pest built (the fast path reads none).
         for st in file.built_stmts() {
             if let Stmt::Fn(def) = st {

@@ -92,15 +92,15 @@ impl Job {
 /// A loop's syntax, as `emit_for` found it.
 pub(super) struct Loop<'e> {
     /// The generators, outermost first.
-    pub gens: &'e [Generator],
+    pub(crate) gens: &'e [Generator],
     /// The `if` filter.
-    pub filter: Option<&'e Expr>,
+    pub(crate) filter: Option<&'e Expr>,
     /// The body.
-    pub body: &'e Block,
+    pub(crate) body: &'e Block,
     /// The header (iteration frames of errors).
-    pub header: Span,
+    pub(crate) header: Span,
     /// The whole statement (emission errors).
-    pub span: Span,
+    pub(crate) span: Span,
 }
 
 impl Interp<'_> {

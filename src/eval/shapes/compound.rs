@@ -17,7 +17,7 @@ use crate::ir::CsgOp;
 use crate::source::Span;
 
 /// Group and CSG constructors with their schemas.
-pub static FNS: &[(&Sig, BuiltinFn)] = &[
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&GROUP, group),
     (&UNION, union),
     (&INTERSECTION, intersection),
@@ -164,7 +164,7 @@ fn difference(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 
 /// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
 /// `geometry::shapes::encloses_volume`).
-pub fn require_closed(it: &dyn Host, o: &Obj, span: Span) -> R<()> {
+pub(crate) fn require_closed(it: &dyn Host, o: &Obj, span: Span) -> R<()> {
     let _ = it;
     let open = match &o.shape {
         // A mesh file's closedness is checked when the preparation stage loads it.
