@@ -20,7 +20,7 @@ tiles='[rgb(0.8, 0.2, 0.15), rgb(0.95, 0.85, 0.3), rgb(0.2, 0.45, 0.8), rgb(0.25
 swatch() { # name texture-expression
   cat >"$tmp/$1.rtc" <<SCENE
 rtc 1.1
-camera { eye: [0, 1000, 0], center: [0, 0, 0], up: -Z, fov: 2 * atan(2 / 1000), resolution: [128, 128] }
+camera { eye: [0, 1000, 0], center: [0, 0, 0], up: -Z, fov: 2 * atan(2 / 1000), resolution: [96, 96] }
 point_light { position: [0, 1000, 0] }
 plane(point: [0, 0, 0], normal: Y).material(material { texture: $2, ka: 1, kd: 0, ks: 0 })
 render { shadows: false, max_depth: 0, supersampling: 3 }
@@ -32,7 +32,7 @@ SCENE
 swatch gradient "gradient(axis: [1, 0, 1]).colors($map).scale(2)"
 swatch checker "checker().colors([rgb(0.9, 0.9, 0.85), rgb(0.1, 0.1, 0.15)]).scale(0.5)"
 swatch hexagon "hexagon().colors($tiles).scale(0.5)"
-swatch brick "brick(size: [1, 0.5, 0.5], mortar: 0.06).colors([rgb(0.8, 0.78, 0.72), rgb(0.6, 0.22, 0.15)])"
+swatch brick "brick(size: [1, 0.5, 0.5], mortar: 0.06).colors([rgb(0.8, 0.78, 0.72), rgb(0.6, 0.22, 0.15)]).translate([0, 0.25, 0])"
 swatch radial "radial().colors($map)"
 swatch onion "onion().colors($map).scale(0.8)"
 swatch spherical_falloff "spherical_falloff().colors($map).scale(1.9)"

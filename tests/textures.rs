@@ -431,3 +431,24 @@ fn every_std_textures_preset_loads_and_shows_its_colours() {
         render_scene(&scene, &opts(2)).unwrap();
     }
 }
+
+#[test]
+fn the_uv_mode_shows_surface_coordinates_and_a_uv_pattern_reads_them() {
+    // A face-on quad over the whole view: its uv is (s, t) along its edges, so at world (x, y)
+    // u = (x + 40) / 80 and v = (y + 20) / 40.
+    let quad = |material: &str, mode: &str| {
+        load(&format!(
+            "camera {{ eye: [0, 0, 1000], center: [0, 0, 0], up: Y, fov: 2 * atan({H} / 2 / 1000),
+                       resolution: [{W}, {H}] }}
+             point_light {{ position: [0, 0, 1000] }}
+             quad(corner: [-40, -20, 0], u: [80, 0, 0], v: [0, 40, 0]).material({material})
+             render {{ shadows: false, max_depth: 0{mode} }}"
+        ))
+        .unwrap()
+    };
+    let uv = |p: DVec3| DVec3::new((p.x + 40.0) / 80.0, (p.y + 20.0) / 40.0, 0.0);
+    assert_pixels(&quad("material {}", ", mode: uv"), 1e-12, uv);
+    // gradient along x read in uv space: grey u, through the grey map.
+    let tex = showing("gradient(axis: X).uv()");
+    assert_pixels(&quad(&tex, ""), 1e-12, |p| DVec3::splat(uv(p).x));
+}

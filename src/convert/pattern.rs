@@ -66,25 +66,27 @@ pub(crate) fn source(pt: &PatternTexture) -> String {
                     glam::DVec3::ZERO
                 )),
             ),
-            Warp::Transform(m) => placed(m),
+            Warp::Placement(m) => placed(m),
+            Warp::Transform(m) => placed(&m.inverse()),
             Warp::Spherical => ".warp(\"spherical\")".into(),
             Warp::Cylindrical => ".warp(\"cylindrical\")".into(),
             Warp::Toroidal(r) => format!(".warp(\"toroidal\", radius: {})", number(*r)),
         };
     }
-    out += &placed(&pt.to_pattern);
+    out += &placed(&pt.placement);
     if pt.space == PatternSpace::Uv {
         out += ".uv()";
     }
     out
 }
 
-/// The transform methods whose placement is the inverse of `to_pattern` (none for the identity).
-fn placed(to_pattern: &DAffine3) -> String {
-    if *to_pattern == DAffine3::IDENTITY {
+/// The transform methods that compose to `placement` exactly, as an object's (none for the
+/// identity).
+fn placed(placement: &DAffine3) -> String {
+    if *placement == DAffine3::IDENTITY {
         return String::new();
     }
-    placement::methods(&to_pattern.inverse(), None).concat()
+    placement::methods(placement, None).concat()
 }
 
 /// `.turbulence(..)` with the parameters that differ from the defaults.

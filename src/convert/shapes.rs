@@ -8,7 +8,7 @@ use glam::{DMat3, DVec3};
 
 use super::placement;
 use super::text::{color, number, string, unit_direction, vector};
-use crate::ir::{Arg, CsgOp, Mapping, Material, Object, Scene, ShadingModel, Shape, Texture};
+use crate::ir::{Arg, CsgOp, Mapping, Material, Mix, Object, Scene, ShadingModel, Shape, Texture};
 
 /// Longest line before an object's methods go on lines of their own.
 const LINE: usize = 100;
@@ -47,6 +47,37 @@ pub(crate) fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec
         fields.push(format!("shading: {}", shading(s)));
     }
     fields
+}
+
+/// A mixed material as its constructor: `material_map(..)` or `layers([..])`, its parts by the
+/// names `name` gives their ids (they are written before it: parts come first in the IR).
+pub(crate) fn mixed(
+    scene: &Scene,
+    mix: &Mix,
+    name: &dyn Fn(u32) -> String,
+    asset: AssetPath<'_>,
+) -> String {
+    match mix {
+        Mix::Map {
+            texture,
+            stops,
+            blend,
+        } => {
+            let stops: Vec<String> = stops
+                .iter()
+                .map(|(at, id)| format!("[{}, {}]", number(*at), name(id.0)))
+                .collect();
+            format!(
+                "material_map(pattern: {}, stops: [{}], blend: {blend})",
+                self::texture(&scene.textures[texture.0 as usize], asset),
+                stops.join(", ")
+            )
+        }
+        Mix::Layers(layers) => {
+            let names: Vec<String> = layers.iter().map(|id| name(id.0)).collect();
+            format!("layers([{}])", names.join(", "))
+        }
+    }
 }
 
 /// A shading model as the language names it.

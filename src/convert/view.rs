@@ -154,15 +154,20 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
             number(threshold)
         )),
     }
+    // A mode without parameters is written by its name in the language's table.
     match s.mode {
         RenderMode::Shaded => {}
-        RenderMode::Normal => fields.push("mode: normal".into()),
         RenderMode::Depth(DepthRange::Auto) => fields.push("mode: depth".into()),
         RenderMode::Depth(DepthRange::Fixed { near, far }) => fields.push(format!(
             "mode: depth(near: {}, far: {})",
             number(near),
             number(far)
         )),
+        named => {
+            if let Some((name, _)) = RenderMode::NAMED.iter().find(|(_, m)| *m == named) {
+                fields.push(format!("mode: {name}"));
+            }
+        }
     }
     if s.shading != lang.shading {
         fields.push(format!("shading: {}", shapes::shading(s.shading)));

@@ -122,7 +122,13 @@ pub(crate) fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Pl
                 "// The course uses ks as the mirror weight, so reflect = ks unless the file gives it.\n",
             );
         }
+        let part = |id: u32| palette.entries[palette.entry_of[id as usize]].1.clone();
         for (id, name) in &palette.entries {
+            if let Some(mix) = &scene.material(*id).mix {
+                let text = shapes::mixed(scene, mix, &part, doc.asset);
+                let _ = writeln!(out, "let {name} = {text}");
+                continue;
+            }
             let fields = shapes::material(scene, scene.material(*id), doc.asset);
             let one_line = format!("let {name} = material {{ {} }}", fields.join(", "));
             if one_line.len() <= 100 {

@@ -72,7 +72,7 @@ pub(crate) fn transformed(it: &mut dyn Host, tex: &Tex, t: DAffine3, span: Span)
         name: "transform",
     };
     let mut pt = pattern_of(&tex.t, site)?;
-    pt.to_pattern *= t.inverse();
+    pt.placement = t * pt.placement;
     Ok(made(it, pt))
 }
 
@@ -89,7 +89,7 @@ fn made(it: &mut dyn Host, pt: PatternTexture) -> Value {
 fn pattern_of(t: &ir::Texture, site: CallSite) -> R<PatternTexture> {
     let placed = |pattern: Pattern, size: f64, map: Option<ColorMap>| PatternTexture {
         field: Field::new(pattern),
-        to_pattern: DAffine3::from_scale(DVec3::splat(1.0 / size)),
+        placement: DAffine3::from_scale(DVec3::splat(size)),
         space: PatternSpace::Object,
         map: map.unwrap_or_else(ColorMap::grey),
     };
@@ -479,12 +479,12 @@ fn repeat(it: &mut dyn Host, pt: &mut PatternTexture, site: CallSite, args: Vec<
 }
 
 /// Adds warp `w` as written after everything the texture has: the point meets it first, then
-/// the transforms written so far (moved from `to_pattern` into the warp list), then the earlier
+/// the transforms written so far (moved from `placement` into the warp list), then the earlier
 /// warps (POV-Ray's order: a modifier acts on the pattern as modified before it).
 fn written_after(pt: &mut PatternTexture, w: Warp) {
-    if pt.to_pattern != DAffine3::IDENTITY {
-        pt.field.warps.insert(0, Warp::Transform(pt.to_pattern));
-        pt.to_pattern = DAffine3::IDENTITY;
+    if pt.placement != DAffine3::IDENTITY {
+        pt.field.warps.insert(0, Warp::Placement(pt.placement));
+        pt.placement = DAffine3::IDENTITY;
     }
     pt.field.warps.insert(0, w);
 }

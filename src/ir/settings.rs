@@ -167,14 +167,24 @@ pub enum RenderMode {
     Normal,
     /// Distance along the ray mapped to grey: near white, far black.
     Depth(DepthRange),
+    /// The first hit's surface coordinates as a colour: red = frac(u), green = frac(v), blue 0;
+    /// misses black (for checking texture mappings and `.uv()` patterns).
+    Uv,
 }
 
 impl RenderMode {
+    /// Whether the mode reads surface coordinates (so the world computes them at every hit,
+    /// as it does for textures).
+    pub(crate) fn reads_uv(self) -> bool {
+        matches!(self, RenderMode::Uv)
+    }
+
     /// The modes a scene names without parameters, by their names in the language (`depth`
     /// takes a range and is a function of its own).
     pub(crate) const NAMED: &'static [(&'static str, RenderMode)] = &[
         ("shaded", RenderMode::Shaded),
         ("normal", RenderMode::Normal),
+        ("uv", RenderMode::Uv),
     ];
 }
 

@@ -90,9 +90,9 @@ pub enum PatternSpace {
 pub struct PatternTexture {
     /// The pattern, its warps and its wave.
     pub field: Field,
-    /// Object (or uv) space → the pattern's own space: the inverse of the transforms written on
-    /// the pattern.
-    pub to_pattern: DAffine3,
+    /// The pattern's own space → object (or uv) space: the transforms written on the pattern,
+    /// composed as an object's are (the point meets the inverse; `opt` inverts it once).
+    pub placement: DAffine3,
     /// Where the point comes from.
     pub space: PatternSpace,
     /// Value → colour (with filter and transmit).

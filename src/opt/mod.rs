@@ -26,7 +26,7 @@ pub(crate) use effects::Content;
 pub use effects::Effects;
 pub use prepared::{Prepared, Quality};
 pub(crate) use prepared::{PreparedLight, Stats};
-pub(crate) use textures::TextureMap;
+pub(crate) use textures::{PreparedPattern, TextureMap};
 
 /// Prepares `scene` for rendering; on failure, every problem found (errors and warnings).
 pub fn prepare(scene: &Scene) -> Result<Prepared, Diagnostics> {
@@ -94,7 +94,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         .collect();
     let mut world = World::new(parts, expected_rays(scene, &lights));
     let effects = Effects::new(&content, &scene.settings, &scene.camera);
-    world.need_uv(effects.textures || effects.bump || effects.hatching);
+    world.need_uv(
+        effects.textures || effects.bump || effects.hatching || scene.settings.mode.reads_uv(),
+    );
     let w = world.stats();
     let stats = Stats {
         objects: w.objects,

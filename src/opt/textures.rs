@@ -6,7 +6,10 @@ use std::sync::Arc;
 use crate::assets;
 use crate::diag::Diagnostics;
 use crate::ir::limits::Memory;
-use crate::ir::{Color, Mapping, PatternTexture, Texture};
+use glam::DAffine3;
+
+use crate::ir::{Color, Mapping, PatternSpace, PatternTexture, Texture};
+use crate::pattern::{ColorMap, Field, Warp};
 
 pub(crate) use crate::assets::Picture;
 
@@ -20,7 +23,42 @@ pub(crate) enum TextureMap {
     /// Stripes along object-space x: two colours and the stripe width.
     Stripes(Color, Color, f64),
     /// A procedural pattern through its colour map.
-    Pattern(Box<PatternTexture>),
+    Pattern(Box<PreparedPattern>),
+}
+
+/// A pattern texture ready for lookups: its placement and its warps' placements inverted once
+/// (the point meets the inverses).
+#[derive(Clone, Debug)]
+pub(crate) struct PreparedPattern {
+    /// The pattern, its warps (placements turned into point maps) and its wave.
+    pub(crate) field: Field,
+    /// Object (or uv) space → the pattern's own space.
+    pub(crate) to_pattern: DAffine3,
+    /// Where the point comes from.
+    pub(crate) space: PatternSpace,
+    /// Value → colour.
+    pub(crate) map: ColorMap,
+    /// The language's constructor (`marble`), for `rtc why`.
+    pub(crate) name: &'static str,
+}
+
+impl PreparedPattern {
+    /// `p` prepared.
+    pub(crate) fn of(p: &PatternTexture) -> PreparedPattern {
+        let mut field = p.field.clone();
+        for w in &mut field.warps {
+            if let Warp::Placement(m) = *w {
+                *w = Warp::Transform(m.inverse());
+            }
+        }
+        PreparedPattern {
+            field,
+            to_pattern: p.placement.inverse(),
+            space: p.space,
+            map: p.map.clone(),
+            name: p.name(),
+        }
+    }
 }
 
 /// Every texture of a scene, decoded; `None` (with the problems in `out`) when one cannot be.
@@ -53,7 +91,7 @@ pub(crate) fn load_all(
             Texture::Stripes { a, b, size } => {
                 maps.push(TextureMap::Stripes(*a, *b, positive(*size)));
             }
-            Texture::Pattern(p) => maps.push(TextureMap::Pattern(p.clone())),
+            Texture::Pattern(p) => maps.push(TextureMap::Pattern(Box::new(PreparedPattern::of(p)))),
         }
     }
     (maps.len() == textures.len()).then_some(maps)

@@ -60,9 +60,13 @@ pub enum Warp {
     Turbulence(Turbulence),
     /// A repeat warp.
     Repeat(Repeat),
-    /// An affine map of the point (a transform written before a warp: the inverse of the
-    /// transform, as the point sees it).
+    /// An affine map of the point (prepared from a [`Warp::Placement`]: its inverse).
     Transform(DAffine3),
+    /// Transforms written before a later warp, as written: the placement of the pattern's space
+    /// in the space outside it (what the IR keeps, so that `rtc convert` writes it exactly).
+    /// The point meets its inverse; the preparation stage turns it into a [`Warp::Transform`]
+    /// once, since inverting per evaluation is slow.
+    Placement(DAffine3),
     /// The x–y plane wrapped round the unit sphere: x is the longitude about y as a fraction of
     /// a turn (as [`super::geometric::radial`]), y the latitude as a fraction of the half turn
     /// from the south pole, z the distance from the origin.
@@ -84,6 +88,7 @@ impl Warp {
             Warp::Turbulence(t) => t.warp(p),
             Warp::Repeat(r) => r.warp(p),
             Warp::Transform(m) => m.transform_point3(p),
+            Warp::Placement(m) => m.inverse().transform_point3(p),
             Warp::Spherical => {
                 let r = p.norm();
                 let latitude = if r > 0.0 {

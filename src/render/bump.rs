@@ -9,8 +9,8 @@ use glam::{DMat3, DVec2, DVec3};
 
 use super::texture;
 use crate::geometry::{MappingFrame, SurfaceHit};
-use crate::ir::{PatternSpace, PatternTexture};
-use crate::opt::TextureMap;
+use crate::ir::PatternSpace;
+use crate::opt::{PreparedPattern, TextureMap};
 
 /// The normal `n` (unit, facing the viewer) tilted by the height field `tex` scaled by `scale`;
 /// `to_world` carries a gradient of the hit's object space to world space
@@ -87,7 +87,7 @@ pub(crate) const PATTERN_STEP: f64 = 0.02;
 /// The gradient of pattern `pt`'s value at object-space point `p`, in object space: central
 /// differences of [`PATTERN_STEP`] along the pattern's own axes, carried back through its
 /// transform (∇ₚ f(Tp) = Tᵀ ∇f).
-pub(crate) fn solid_gradient(pt: &PatternTexture, p: DVec3) -> DVec3 {
+pub(crate) fn solid_gradient(pt: &PreparedPattern, p: DVec3) -> DVec3 {
     let q = pt.to_pattern.transform_point3(p);
     let d = PATTERN_STEP;
     let slope =
@@ -124,19 +124,19 @@ mod tests {
     }
 
     /// A placed noise pattern: wrinkles, rotated, stretched and moved.
-    fn placed_noise() -> crate::ir::PatternTexture {
+    fn placed_noise() -> PreparedPattern {
         use glam::{DAffine3, DQuat};
         let place = DAffine3::from_scale_rotation_translation(
             DVec3::new(0.7, 1.3, 0.4),
             DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).unit(), 0.8),
             DVec3::new(0.3, -1.0, 2.0),
         );
-        crate::ir::PatternTexture {
+        PreparedPattern::of(&crate::ir::PatternTexture {
             field: crate::pattern::Field::new(crate::pattern::Pattern::Bozo { seed: 3 }),
-            to_pattern: place.inverse(),
+            placement: place,
             space: PatternSpace::Object,
             map: crate::pattern::ColorMap::grey(),
-        }
+        })
     }
 
     #[test]

@@ -91,7 +91,7 @@ fn patterns_at(scene: &Prepared, hit: &SurfaceHit) -> Vec<PatternReading> {
         });
         out.push(PatternReading {
             role,
-            name: pt.name(),
+            name: pt.name,
             value,
             stop,
         });

@@ -7,8 +7,8 @@
 use glam::{DVec2, DVec3};
 
 use crate::geometry::{MappingFrame, SurfaceHit};
-use crate::ir::{Color, Mapping, PatternSpace, PatternTexture};
-use crate::opt::TextureMap;
+use crate::ir::{Color, Mapping, PatternSpace};
+use crate::opt::{PreparedPattern, TextureMap};
 use crate::pattern::Rgbft;
 
 /// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
@@ -56,14 +56,14 @@ pub(crate) fn rgbft(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> 
 /// The value of pattern texture `pt` at `hit`, reading object-space point `p` (or the hit's uv
 /// for a uv-space pattern): the number its colour map reads.
 #[inline]
-pub(crate) fn pattern_value(pt: &PatternTexture, hit: &SurfaceHit, p: DVec3) -> f64 {
+pub(crate) fn pattern_value(pt: &PreparedPattern, hit: &SurfaceHit, p: DVec3) -> f64 {
     pt.field
         .eval(pt.to_pattern.transform_point3(pattern_point(pt, hit, p)))
 }
 
 /// The point a pattern reads before its own transform: `p`, or (u, v, 0) in uv space.
 #[inline]
-fn pattern_point(pt: &PatternTexture, hit: &SurfaceHit, p: DVec3) -> DVec3 {
+fn pattern_point(pt: &PreparedPattern, hit: &SurfaceHit, p: DVec3) -> DVec3 {
     match pt.space {
         PatternSpace::Object => p,
         PatternSpace::Uv => DVec3::new(hit.uv.x, hit.uv.y, 0.0),

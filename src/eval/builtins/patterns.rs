@@ -59,7 +59,7 @@ pub(crate) fn texture(it: &mut dyn Host, pattern: Pattern) -> Value {
     Value::Texture(Rc::new(Tex {
         t: ir::Texture::Pattern(Box::new(PatternTexture {
             field: Field::new(pattern),
-            to_pattern: DAffine3::IDENTITY,
+            placement: DAffine3::IDENTITY,
             space: PatternSpace::Object,
             map: map.unwrap_or_else(ColorMap::grey),
         })),

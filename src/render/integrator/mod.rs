@@ -4,6 +4,7 @@
 
 pub(crate) mod depth;
 mod normal;
+mod uv;
 pub mod whitted;
 
 use crate::diag::Diagnostic;
@@ -18,6 +19,7 @@ use super::record::{NoRecord, Recorder};
 use super::view::FirstRays;
 use depth::DepthImage;
 use normal::NormalImage;
+use uv::UvImage;
 use whitted::Whitted;
 
 /// The integrator of a render (a closed set, dispatched by `match`).
@@ -28,6 +30,8 @@ pub(crate) enum Integrator<'a> {
     Normal(NormalImage<'a>),
     /// The first hit's distance as grey.
     Depth(DepthImage<'a>),
+    /// The first hit's surface coordinates as a colour.
+    Uv(UvImage<'a>),
 }
 
 impl<'a> Integrator<'a> {
@@ -41,6 +45,7 @@ impl<'a> Integrator<'a> {
         Ok(match scene.settings().mode {
             RenderMode::Shaded => Integrator::Whitted(Whitted::new(scene)),
             RenderMode::Normal => Integrator::Normal(NormalImage::new(scene)),
+            RenderMode::Uv => Integrator::Uv(UvImage::new(scene)),
             RenderMode::Depth(range) => {
                 Integrator::Depth(DepthImage::new(scene, range, first, pool)?)
             }
@@ -50,9 +55,10 @@ impl<'a> Integrator<'a> {
     /// The film channels it fills, in the order of [`Integrator::sample`]'s output.
     pub(crate) fn channels(&self) -> &'static [Channel] {
         match self {
-            Integrator::Whitted(_) | Integrator::Normal(_) | Integrator::Depth(_) => {
-                &[Channel::Color]
-            }
+            Integrator::Whitted(_)
+            | Integrator::Normal(_)
+            | Integrator::Depth(_)
+            | Integrator::Uv(_) => &[Channel::Color],
         }
     }
 
@@ -83,6 +89,7 @@ impl<'a> Integrator<'a> {
             Integrator::Whitted(w) => w.trace_with(ray, Path::CAMERA, ctx, rec),
             Integrator::Normal(n) => first_hit(n.scene(), ray, rec, |r| n.color(r)),
             Integrator::Depth(d) => first_hit(d.scene(), ray, rec, |r| d.color(r)),
+            Integrator::Uv(u) => first_hit(u.scene(), ray, rec, |r| u.color(r)),
         };
     }
 }
