@@ -36,7 +36,7 @@ pub use settings::{
 };
 pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
 pub use texture::{
-    Bump, Mapping, MaterialId, Mix, PatternSpace, PatternTexture, Texture, TextureId,
+    Bump, ImageFilter, Mapping, MaterialId, Mix, PatternSpace, PatternTexture, Texture, TextureId,
 };
 
 /// Linear RGB colour (channels may exceed 1 for bright lights).

@@ -72,9 +72,15 @@ fn canonical(p: &Path) -> PathBuf {
 /// A texture as what it is: canonical path, no span.
 fn texture(scene: &Scene, t: Option<rtc::ir::TextureId>) -> Option<Texture> {
     t.map(|id| match &scene.textures[id.0 as usize] {
-        Texture::Image { path, mapping, .. } => Texture::Image {
+        Texture::Image {
+            path,
+            mapping,
+            filter,
+            ..
+        } => Texture::Image {
             path: canonical(path),
             mapping: *mapping,
+            filter: *filter,
             span: Span::default(),
         },
         other => other.clone(),

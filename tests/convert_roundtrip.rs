@@ -57,9 +57,15 @@ fn canonical(p: &Path) -> PathBuf {
 /// A texture as what it is: canonical path, no span.
 fn texture(t: &Texture) -> Texture {
     match t {
-        Texture::Image { path, mapping, .. } => Texture::Image {
+        Texture::Image {
+            path,
+            mapping,
+            filter,
+            ..
+        } => Texture::Image {
             path: canonical(path),
             mapping: *mapping,
+            filter: *filter,
             span: Span::default(),
         },
         other => other.clone(),

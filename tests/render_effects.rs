@@ -364,6 +364,7 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
         let t = s.add_texture(Texture::Image {
             path: common::data("textures/earthmap1k.png"),
             mapping: rtc::ir::Mapping::Spherical,
+            filter: rtc::ir::ImageFilter::Nearest,
             span: Span::default(),
         });
         s.add_material(Material {

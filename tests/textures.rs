@@ -452,3 +452,44 @@ fn the_uv_mode_shows_surface_coordinates_and_a_uv_pattern_reads_them() {
     let tex = showing("gradient(axis: X).uv()");
     assert_pixels(&quad(&tex, ""), 1e-12, |p| DVec3::splat(uv(p).x));
 }
+
+#[test]
+fn a_bilinear_image_blends_between_texel_centres() {
+    // A 2×1 image, black then white (linear 0 and 1), on a face-on quad filling the view: in
+    // uv, texel centres are at u = 1/4 and 3/4; bilinear reads 0 left of 1/4, 1 right of 3/4 and
+    // 2(u − 1/4) between; nearest reads int(u·1): 0 for u < 1, so all black but the right edge.
+    let dir = std::env::temp_dir().join(format!("rtc-textures-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("two.png");
+    image::RgbImage::from_fn(2, 1, |x, _| image::Rgb([if x == 0 { 0 } else { 255 }; 3]))
+        .save(&png)
+        .unwrap();
+    let quad = |filter: &str| {
+        let tex = format!("image(path: \"{}\", filter: \"{filter}\")", png.display());
+        load(&format!(
+            "camera {{ eye: [0, 0, 1000], center: [0, 0, 0], up: Y, fov: 2 * atan({H} / 2 / 1000),
+                       resolution: [{W}, {H}] }}
+             point_light {{ position: [0, 0, 1000] }}
+             quad(corner: [-40, -20, 0], u: [80, 0, 0], v: [0, 40, 0]).material({})
+             render {{ shadows: false, max_depth: 0 }}",
+            showing(&tex)
+        ))
+        .unwrap()
+    };
+    assert_pixels(&quad("bilinear"), 1e-12, |p| {
+        let u = (p.x + 40.0) / 80.0;
+        DVec3::splat((2.0 * (u - 0.25)).clamp(0.0, 1.0))
+    });
+    assert_pixels(&quad("nearest"), 0.0, |_| DVec3::ZERO);
+    assert_eq!(
+        load(&format!(
+            "plane().material({})",
+            showing(&format!(
+                "image(path: \"{}\", filter: \"linear\")",
+                png.display()
+            ))
+        ))
+        .unwrap_err(),
+        "rtc::texture::choice"
+    );
+}

@@ -50,6 +50,7 @@ pub fn exercise(path: &Path) {
         let tex = scene.add_texture(Texture::Image {
             path: path.to_path_buf(),
             mapping,
+            filter: Default::default(),
             span: Default::default(),
         });
         let mat = scene.add_material(Material {

@@ -179,6 +179,25 @@ impl Picture {
         self.texels[y * self.width as usize + x]
     }
 
+    /// The texels around `uv` blended by distance: texel `(i, j)`'s centre is at
+    /// `((i + ½)/w, (j + ½)/h)`, and beyond the outer centres the edge texels hold (clamped).
+    pub fn bilinear(&self, uv: DVec2) -> DVec3 {
+        let axis = |t: f64, n: u32| {
+            let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+            let x = (t * f64::from(n) - 0.5).clamp(0.0, f64::from(n - 1));
+            let i = (x.floor() as u32).min(n - 1);
+            let j = (i + 1).min(n - 1);
+            (i as usize, j as usize, x - f64::from(i))
+        };
+        let (x0, x1, fx) = axis(uv.x, self.width);
+        let (y0, y1, fy) = axis(uv.y, self.height);
+        let w = self.width as usize;
+        let at = |x: usize, y: usize| self.texels[y * w + x];
+        let top = at(x0, y0) + (at(x1, y0) - at(x0, y0)) * fx;
+        let bottom = at(x0, y1) + (at(x1, y1) - at(x0, y1)) * fx;
+        top + (bottom - top) * fy
+    }
+
     /// Approximate heap bytes.
     pub(crate) fn memory(&self) -> usize {
         self.texels.len() * std::mem::size_of::<DVec3>()
@@ -225,6 +244,27 @@ mod tests {
         assert_eq!(p.nearest(DVec2::new(0.99, 0.99)).x, 1.0); // (int(1.98), int(0.99)) = (1, 0)
         assert_eq!(p.nearest(DVec2::new(f64::NAN, 7.0)).x, 3.0);
         assert!(Picture::new(0, 2, vec![]).is_none());
+    }
+
+    #[test]
+    fn bilinear_is_exact_at_texel_centres_and_blends_between_them() {
+        // 2×2 image: 0 1 / 2 3.
+        let texels = (0..4).map(|i| DVec3::splat(f64::from(i))).collect();
+        let p = Picture::new(2, 2, texels).unwrap();
+        let at = |u: f64, v: f64| p.bilinear(DVec2::new(u, v)).x;
+        assert_eq!(at(0.25, 0.25), 0.0);
+        assert_eq!(at(0.75, 0.25), 1.0);
+        assert_eq!(at(0.25, 0.75), 2.0);
+        assert_eq!(at(0.75, 0.75), 3.0);
+        assert_eq!(at(0.5, 0.25), 0.5);
+        assert_eq!(at(0.5, 0.5), 1.5);
+        // Clamped beyond the outer centres and outside [0, 1].
+        assert_eq!(at(0.0, 0.0), 0.0);
+        assert_eq!(at(1.0, 1.0), 3.0);
+        assert_eq!(at(-4.0, 9.0), 2.0);
+        assert_eq!(at(f64::NAN, 0.25), 0.0);
+        let one = Picture::new(1, 1, vec![DVec3::ONE]).unwrap();
+        assert_eq!(one.bilinear(DVec2::new(0.3, 0.9)), DVec3::ONE);
     }
 
     /// Found by the texture fuzzer: the display window (2×2) passed the budget while the

@@ -409,6 +409,7 @@ fn material(
         Some(parts.add_texture(Texture::Image {
             path,
             mapping,
+            filter: crate::ir::ImageFilter::Nearest,
             span: e.value.span,
         }))
     });

@@ -55,9 +55,15 @@ fn same_material(scene: &Scene, a: MaterialId, b: MaterialId) -> bool {
     };
     let texture = |m: &Material| {
         m.texture.map(|t| match &scene.textures[t.0 as usize] {
-            Texture::Image { path, mapping, .. } => Texture::Image {
+            Texture::Image {
+                path,
+                mapping,
+                filter,
+                ..
+            } => Texture::Image {
                 path: path.clone(),
                 mapping: *mapping,
+                filter: *filter,
                 span: Span::default(),
             },
             other => other.clone(),

@@ -8,7 +8,9 @@ use glam::{DMat3, DVec3};
 
 use super::placement;
 use super::text::{color, number, string, unit_direction, vector};
-use crate::ir::{Arg, CsgOp, Mapping, Material, Mix, Object, Scene, ShadingModel, Shape, Texture};
+use crate::ir::{
+    Arg, CsgOp, ImageFilter, Mapping, Material, Mix, Object, Scene, ShadingModel, Shape, Texture,
+};
 
 /// Longest line before an object's methods go on lines of their own.
 const LINE: usize = 100;
@@ -97,14 +99,23 @@ pub(crate) fn shading(s: ShadingModel) -> String {
 
 fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
     match t {
-        Texture::Image { path, mapping, .. } => {
+        Texture::Image {
+            path,
+            mapping,
+            filter,
+            ..
+        } => {
             let map = match mapping {
                 Mapping::Uv => "",
                 Mapping::Spherical => ", mapping: spherical",
                 Mapping::Planar => ", mapping: planar",
                 Mapping::Cylindrical => ", mapping: cylindrical",
             };
-            format!("image({}{map})", string(&asset(path)))
+            let filter = match filter {
+                ImageFilter::Nearest => "",
+                ImageFilter::Bilinear => ", filter: \"bilinear\"",
+            };
+            format!("image({}{map}{filter})", string(&asset(path)))
         }
         Texture::Checker { a, b, size } => pattern("checker", *a, *b, *size),
         Texture::Stripes { a, b, size } => pattern("stripes", *a, *b, *size),

@@ -31,12 +31,14 @@ pub struct Bump {
 /// A colour source over surface coordinates.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Texture {
-    /// An image file, looked up nearest-pixel at `(int(u·(w−1)), int(v·(h−1)))`, v = 0 at the top.
+    /// An image file read through a surface mapping, v = 0 at the top row.
     Image {
         /// Resolved path.
         path: PathBuf,
         /// How surface points map to (u, v).
         mapping: Mapping,
+        /// How a point between texel centres is read.
+        filter: ImageFilter,
         /// Where the path was written.
         span: Span,
     },
@@ -73,6 +75,17 @@ pub enum Mapping {
     Planar,
     /// Angle about +Y and height.
     Cylindrical,
+}
+
+/// How an image is read between its texels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ImageFilter {
+    /// The texel at `(int(u·(w−1)), int(v·(h−1)))`: the course's lookup, blocky up close.
+    #[default]
+    Nearest,
+    /// The four texels around the point, weighted by distance (texel centres at
+    /// `((i + ½)/w, (j + ½)/h)`, edges clamped): smooth up close.
+    Bilinear,
 }
 
 /// Where a pattern reads its point.

@@ -8,7 +8,7 @@ use crate::diag::Diagnostics;
 use crate::ir::limits::Memory;
 use glam::DAffine3;
 
-use crate::ir::{Color, Mapping, PatternSpace, PatternTexture, Texture};
+use crate::ir::{Color, ImageFilter, Mapping, PatternSpace, PatternTexture, Texture};
 use crate::pattern::{ColorMap, Field, Warp};
 
 pub(crate) use crate::assets::Picture;
@@ -16,8 +16,10 @@ pub(crate) use crate::assets::Picture;
 /// A texture ready for lookups (by `TextureId`).
 #[derive(Clone, Debug)]
 pub(crate) enum TextureMap {
-    /// A decoded image with its surface mapping.
+    /// A decoded image with its surface mapping, read nearest-texel.
     Image(Arc<Picture>, Mapping),
+    /// The same, read bilinearly.
+    Bilinear(Arc<Picture>, Mapping),
     /// A 3-D checkerboard of cubes: two colours and the cube edge.
     Checker(Color, Color, f64),
     /// Stripes along object-space x: two colours and the stripe width.
@@ -74,6 +76,7 @@ pub(crate) fn load_all(
             Texture::Image {
                 path,
                 mapping,
+                filter,
                 span,
             } => match memory.charge(assets::picture_bytes(path)) {
                 Err(over) => {
@@ -81,7 +84,10 @@ pub(crate) fn load_all(
                     out.push(over.diagnostic(*span, &what));
                 }
                 Ok(()) => match assets::picture(path) {
-                    Ok(pic) => maps.push(TextureMap::Image(pic, *mapping)),
+                    Ok(pic) => maps.push(match filter {
+                        ImageFilter::Nearest => TextureMap::Image(pic, *mapping),
+                        ImageFilter::Bilinear => TextureMap::Bilinear(pic, *mapping),
+                    }),
                     Err(e) => out.push(e.diagnostic(*span, path)),
                 },
             },

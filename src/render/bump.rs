@@ -37,10 +37,17 @@ pub(crate) fn perturb(
     let t = up.cross(n).unit();
     let b = t.cross(n);
     let (dh_du, dh_dv) = match tex {
-        TextureMap::Image(pic, mapping) => {
+        TextureMap::Image(pic, mapping) | TextureMap::Bilinear(pic, mapping) => {
             let uv = texture::uv(*mapping, hit, frame);
             let (du, dv) = pic.texel_size();
-            let h = |o: DVec2| pic.nearest(uv + o).y;
+            let bilinear = matches!(tex, TextureMap::Bilinear(..));
+            let h = |o: DVec2| {
+                if bilinear {
+                    pic.bilinear(uv + o).y
+                } else {
+                    pic.nearest(uv + o).y
+                }
+            };
             let h0 = h(DVec2::ZERO);
             (
                 (h(DVec2::new(du, 0.0)) - h0) / du,

@@ -21,6 +21,7 @@ pub(crate) fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> 
 pub(crate) fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
     match tex {
         TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, frame)),
+        TextureMap::Bilinear(pic, mapping) => pic.bilinear(uv(*mapping, hit, frame)),
         TextureMap::Checker(a, b, size) => {
             // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor flips
             // the parity pixel by pixel; snapping to a tiny fraction of a cell first keeps the

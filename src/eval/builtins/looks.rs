@@ -421,7 +421,7 @@ fn stripes(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 static IMAGE: Sig = Sig::new(
     "image",
     Group::Look,
-    "An image file (PNG, JPEG, HDR, EXR), nearest-pixel lookup.",
+    "An image file (PNG, JPEG, HDR, EXR), read nearest-texel or bilinearly.",
     &[
         Param::new(
             "path",
@@ -429,10 +429,17 @@ static IMAGE: Sig = Sig::new(
             "the file, relative to the calling file (it must exist)",
         ),
         Param::new("mapping", Ty::Mapping, "how surface points find pixels").or(Lit::Name("uv")),
+        Param::new(
+            "filter",
+            Ty::String,
+            "\"nearest\" (the course's texel lookup) or \"bilinear\" (smooth up close)",
+        )
+        .checked_by_builtin()
+        .or(Lit::Name("\"nearest\"")),
     ],
     "Texture",
 )
-.examples(&["image(path: \"images/flare-halo.png\", mapping: planar)"]);
+.examples(&["image(path: \"images/flare-halo.png\", mapping: planar, filter: \"bilinear\")"]);
 fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &IMAGE, a)?;
     let (rel, ps) = p.string(it, "path")?;
@@ -442,10 +449,24 @@ fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Some((Value::Mapping(m), _)) => m,
         Some((other, sp)) => return Err(types::mismatch(it, "Mapping", &other, sp).into()),
     };
+    let filter = match p.get("filter") {
+        None => ir::ImageFilter::Nearest,
+        Some((Value::Str(f), sp)) => match &*f {
+            "nearest" => ir::ImageFilter::Nearest,
+            "bilinear" => ir::ImageFilter::Bilinear,
+            other => {
+                let choices = ["nearest", "bilinear"];
+                let e = crate::eval::texture_methods::bad_choice("filter", other, &choices, sp);
+                return Err(e.into());
+            }
+        },
+        Some((other, sp)) => return Err(types::mismatch(it, "String", &other, sp).into()),
+    };
     Ok(Value::Texture(Rc::new(Tex {
         t: ir::Texture::Image {
             path,
             mapping,
+            filter,
             span: ps,
         },
         made: it.next_made(),
