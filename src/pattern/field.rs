@@ -3,6 +3,8 @@
 
 use glam::DVec3;
 
+use crate::num::Norm;
+
 use super::fbm::Fractal;
 use super::noisy::{self, Crackle};
 use super::ripples::{self, DEFAULT_WAVES};
@@ -17,7 +19,8 @@ use super::{geometric, tilings};
 pub enum Pattern {
     /// [`geometric::gradient`]: the fractional coordinate along `axis`; [0, 1].
     Gradient {
-        /// The direction (its length is the frequency).
+        /// The direction, a unit vector ([`Pattern::gradient`] makes it one: POV-Ray
+        /// normalises the direction it is given, so its length does not matter).
         axis: DVec3,
     },
     /// [`tilings::checker`]: 0 or 1 by unit cube.
@@ -167,6 +170,14 @@ pub const NAMES: &[&str] = &[
 ];
 
 impl Pattern {
+    /// `gradient direction` as POV-Ray reads it: along the unit vector of `direction` (whose
+    /// length does not matter); along x when `direction` has no direction.
+    pub fn gradient(direction: DVec3) -> Pattern {
+        Pattern::Gradient {
+            axis: direction.unit_or(DVec3::X),
+        }
+    }
+
     /// The pattern POV-Ray's name gives with its defaults, seed 0 and no turbulence (`gradient`
     /// along x and the spirals' one arm are rtc's choices: POV-Ray requires them).
     pub fn named(name: &str) -> Option<Pattern> {

@@ -16,8 +16,10 @@ fn falloff(r: f64) -> f64 {
     (1.0 - r).max(0.0)
 }
 
-/// `gradient axis`: the coordinate along `axis` (not normalised: its length is the frequency),
-/// wrapped into [0, 1] — the fractional part, with a whole number inside [0, 1] left as is.
+/// `gradient axis`: the coordinate along the unit vector `axis`, wrapped into [0, 1] — the
+/// fractional part, with a whole number inside [0, 1] left as is. POV-Ray normalises the
+/// direction it is given, and so does [`super::Pattern::gradient`]; given a longer `axis`,
+/// this function reads `p · axis` as it is.
 #[inline]
 pub fn gradient(p: DVec3, axis: DVec3) -> f64 {
     wrap(p.dot(axis))

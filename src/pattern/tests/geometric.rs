@@ -5,13 +5,14 @@ use std::f64::consts::{PI, TAU};
 use glam::DVec3;
 
 use super::Lcg;
+use crate::pattern::Pattern;
 use crate::pattern::geometric::{
     boxed, cylindrical, gradient, onion, planar, radial, spherical, spiral1, spiral2, triangle,
 };
 use crate::pattern::warps::Turbulence;
 
-/// Gradient is the fractional coordinate along its axis (the axis's length is the frequency);
-/// a value that is already in [0, 1] stays (so 1.0 is 1, 2.0 is 0).
+/// Gradient is the fractional coordinate along its direction, whose length does not matter
+/// (POV-Ray normalises it); a value that is already in [0, 1] stays (so 1.0 is 1, 2.0 is 0).
 #[test]
 fn gradient_is_the_fractional_coordinate() {
     let mut rng = Lcg::new(101);
@@ -20,15 +21,20 @@ fn gradient_is_the_fractional_coordinate() {
         let along = p.x;
         let expected = along - along.floor();
         assert!((gradient(p, DVec3::X) - expected).abs() < 1e-12);
-        let twice = 2.0 * p.y;
-        assert!((gradient(p, DVec3::new(0.0, 2.0, 0.0)) - (twice - twice.floor())).abs() < 1e-12);
+        let up = Pattern::gradient(DVec3::new(0.0, 2.0, 0.0));
+        assert!((up.eval(p) - (p.y - p.y.floor())).abs() < 1e-12);
     }
     assert_eq!(gradient(DVec3::new(2.25, 9.0, 9.0), DVec3::X), 0.25);
     assert_eq!(gradient(DVec3::new(-0.25, 0.0, 0.0), DVec3::X), 0.75);
     assert_eq!(gradient(DVec3::new(0.0, 1.0, 0.0), DVec3::Y), 1.0);
     assert_eq!(gradient(DVec3::new(0.0, 2.0, 0.0), DVec3::Y), 0.0);
-    let diagonal = DVec3::new(1.0, 1.0, 0.0);
-    assert!((gradient(DVec3::new(0.3, 0.4, 7.0), diagonal) - 0.7).abs() < 1e-12);
+    let diagonal = Pattern::gradient(DVec3::new(1.0, 1.0, 0.0));
+    let along = 0.7 / 2f64.sqrt();
+    assert!((diagonal.eval(DVec3::new(0.3, 0.4, 7.0)) - along).abs() < 1e-12);
+    assert_eq!(
+        Pattern::gradient(DVec3::ZERO),
+        Pattern::Gradient { axis: DVec3::X }
+    );
 }
 
 /// Onion is the fractional distance from the origin.
