@@ -86,13 +86,15 @@ fn render(name: &str) -> Image {
     render_image(&scene, &options).expect("the twin renders")
 }
 
+/// One pixel of a comparison: the largest channel difference, x, y, rtc's and POV-Ray's.
+type Pixel = (i32, u32, u32, [u8; 3], [u8; 3]);
+
 /// How one twin compares.
 struct Comparison {
     pixels: usize,
     differing: usize,
-    /// The largest channel difference and the pixels with the largest ones:
-    /// (difference, x, y, rtc's, POV-Ray's).
-    worst: Vec<(i32, u32, u32, [u8; 3], [u8; 3])>,
+    /// The pixels with the largest differences, largest first.
+    worst: Vec<Pixel>,
 }
 
 impl Comparison {
