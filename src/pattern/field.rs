@@ -3,6 +3,8 @@
 
 use glam::DVec3;
 
+use crate::num::Norm;
+
 use super::fbm::Fractal;
 use super::noisy::{self, Crackle};
 use super::ripples::{self, DEFAULT_WAVES};
@@ -15,9 +17,11 @@ use super::{geometric, tilings};
 /// [`Pattern::range`]; discrete patterns give tile indices ([`Pattern::entries`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Pattern {
-    /// [`geometric::gradient`]: the fractional coordinate along `axis`; [0, 1].
+    /// [`geometric::gradient`]: the coordinate along `axis`, its remainder modulo 1 above 1;
+    /// (−∞, 1] (the wave wraps it).
     Gradient {
-        /// The direction (its length is the frequency).
+        /// The direction, a unit vector ([`Pattern::gradient`] makes it one: POV-Ray
+        /// normalises the direction it is given, so its length does not matter).
         axis: DVec3,
     },
     /// [`tilings::checker`]: 0 or 1 by unit cube.
@@ -31,7 +35,8 @@ pub enum Pattern {
         /// Joint thickness; POV-Ray's default 0.5.
         mortar: f64,
     },
-    /// [`geometric::radial`]: the angle about y as a fraction of a turn; [0, 1].
+    /// [`geometric::radial`]: the angle about y as a fraction of a turn; [0.25, 1.25] (the
+    /// wave wraps it).
     Radial,
     /// [`geometric::onion`]: the fractional distance from the origin; [0, 1).
     Onion,
@@ -167,6 +172,14 @@ pub const NAMES: &[&str] = &[
 ];
 
 impl Pattern {
+    /// `gradient direction` as POV-Ray reads it: along the unit vector of `direction` (whose
+    /// length does not matter); along x when `direction` has no direction.
+    pub fn gradient(direction: DVec3) -> Pattern {
+        Pattern::Gradient {
+            axis: direction.unit_or(DVec3::X),
+        }
+    }
+
     /// The pattern POV-Ray's name gives with its defaults, seed 0 and no turbulence (`gradient`
     /// along x and the spirals' one arm are rtc's choices: POV-Ray requires them).
     pub fn named(name: &str) -> Option<Pattern> {
@@ -303,6 +316,8 @@ impl Pattern {
             Pattern::Square => (0.0, 3.0),
             Pattern::Triangular => (0.0, 5.0),
             Pattern::Spiral1 { .. } | Pattern::Marble { .. } => (f64::NEG_INFINITY, f64::INFINITY),
+            Pattern::Gradient { .. } => (f64::NEG_INFINITY, 1.0),
+            Pattern::Radial => (0.25, 1.25),
             Pattern::Wood { .. } => (0.0, f64::INFINITY),
             Pattern::Spiral2 { .. } => (0.0, 2.0),
             Pattern::Granite { .. } => (0.0, 0.984_375),

@@ -8,7 +8,6 @@ use glam::DVec3;
 use crate::num::Norm;
 
 use super::turbulence::Turbulence;
-use super::waves::wrap;
 
 /// POV-Ray's `CLIP_DENSITY` on a distance `r ≥ 0`: `1 − r` inside the unit, 0 beyond.
 #[inline(always)]
@@ -16,22 +15,29 @@ fn falloff(r: f64) -> f64 {
     (1.0 - r).max(0.0)
 }
 
-/// `gradient axis`: the coordinate along `axis` (not normalised: its length is the frequency),
-/// wrapped into [0, 1] — the fractional part, with a whole number inside [0, 1] left as is.
+/// `gradient axis`: the coordinate `v = p · axis` along the unit vector `axis`, as POV-Ray
+/// gives it to the wave: above 1 its remainder modulo 1, otherwise `v` itself (negative values
+/// too), in (−∞, 1]. The wave wraps what is left after its frequency and phase, so the colour
+/// map reads the fractional coordinate, and at a fractional frequency the same value as
+/// POV-Ray's on both sides of 0. POV-Ray normalises the direction it is given, and so does
+/// [`super::Pattern::gradient`]; given a longer `axis`, this function reads `p · axis` as it is.
 #[inline]
 pub fn gradient(p: DVec3, axis: DVec3) -> f64 {
-    wrap(p.dot(axis))
+    let v = p.dot(axis);
+    if v > 1.0 { v % 1.0 } else { v }
 }
 
-/// `radial`: the angle about the y axis as a fraction of a turn, in [0, 1], as POV-Ray:
-/// `0.25 + (atan2(x, z) + π) / 2π` wrapped, so 1 on +x (0 just past it), 0.25 on −z, 0.5 on
-/// −x, 0.75 on +z. Within 0.001 of the axis, where the angle is noise, 0.25 (POV-Ray's rule).
+/// `radial`: the angle about the y axis as a fraction of a turn, as POV-Ray gives it to the
+/// wave: `0.25 + (atan2(x, z) + π) / 2π` in [0.25, 1.25], rising from 0.25 on −z through 0.5
+/// on −x, 0.75 on +z and 1 on +x to 1.25 just before −z again (the wave wraps it, so the colour
+/// map reads 1 on +x and 0 just past it). Within 0.001 of the axis, where the angle is noise,
+/// 0.25 (POV-Ray's rule).
 #[inline]
 pub fn radial(p: DVec3) -> f64 {
     if p.x.abs() < 0.001 && p.z.abs() < 0.001 {
         return 0.25;
     }
-    wrap(0.25 + (libm::atan2(p.x, p.z) + PI) / TAU)
+    0.25 + (libm::atan2(p.x, p.z) + PI) / TAU
 }
 
 /// `onion`: the fractional part of the distance from the origin, in [0, 1): concentric shells.

@@ -99,14 +99,21 @@ pub fn triangular(p: DVec3) -> f64 {
     index.rem_euclid(6.0) + 0.0
 }
 
+/// How far short of each multiple of the brick size its joints end (POV-Ray's `EPSILON`, which
+/// its brick adds to the mortar): the multiples themselves, where faces of walls and floors lie,
+/// read brick.
+pub const BRICK_FACE: f64 = 1e-10;
+
 /// `brick size mortar`: 1 in a brick, 0 in the mortar. Courses `size.y` high, bricks `size.x`
 /// long and `size.z` deep, joints `mortar` thick; each course is offset by half a brick from the
 /// one below along x (and the end joints along z the other way), so the wall reads as bricks
 /// on the x–y and the z–y faces. Mortar lies just below and just before each whole multiple of
-/// the size (the origin sits at the top corner of a joint), POV-Ray's placement.
+/// the size (the origin sits at the top corner of a joint), POV-Ray's placement. A point on a
+/// multiple itself reads the brick: the joints end [`BRICK_FACE`] short of it, as POV-Ray's do,
+/// so a wall's face at z = 0 (or a floor at y = 0) shows bricks, not one sheet of mortar.
 #[inline]
 pub fn brick(p: DVec3, size: DVec3, mortar: f64) -> f64 {
-    let q = p + DVec3::splat(mortar);
+    let q = p + DVec3::splat(mortar + BRICK_FACE);
     // Course and where in it: the bottom `mortar` of each course is a bed joint.
     let course = tile(q.y / size.y);
     if q.y - course * size.y <= mortar {

@@ -53,6 +53,19 @@ impl Repeat {
     }
 }
 
+/// The angle of `p` about the y axis as a fraction of a turn, from +x towards +z (+x 0, +z ¼,
+/// −x ½, −z ¾; just below +x it rounds to 1), as POV-Ray's spherical, cylindrical and toroidal
+/// warps measure it; 0 on the axis. (The `radial` pattern measures its angle the other way,
+/// from −z.)
+#[inline]
+pub fn longitude(p: DVec3) -> f64 {
+    if p.x == 0.0 && p.z == 0.0 {
+        return 0.0;
+    }
+    let a = libm::atan2(p.z, p.x);
+    if a < 0.0 { (a + TAU) / TAU } else { a / TAU }
+}
+
 /// One step a point goes through before the pattern reads it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Warp {
@@ -68,15 +81,19 @@ pub enum Warp {
     /// once, since inverting per evaluation is slow.
     Placement(DAffine3),
     /// The x–y plane wrapped round the unit sphere: x is the longitude about y as a fraction of
-    /// a turn (as [`super::geometric::radial`]), y the latitude as a fraction of the half turn
-    /// from the south pole, z the distance from the origin.
+    /// a turn ([`longitude`]: 0 on +x, ¼ on +z), y the latitude as a fraction of the half turn
+    /// from the south pole, z the distance from the origin (POV-Ray's `warp { spherical }`).
+    /// The origin stays where it is.
     Spherical,
-    /// The x–y plane wrapped round the y axis: x is the angle about y as a fraction of a turn,
-    /// y stays, z is the distance from the axis.
+    /// The x–y plane wrapped round the y axis: x is the longitude about y ([`longitude`]), y
+    /// stays, z is the distance from the axis (POV-Ray's `warp { cylindrical }`). Points on the
+    /// axis stay where they are.
     Cylindrical,
-    /// The x–y plane wrapped round a torus about y of this major radius: x is the angle about
-    /// y, y the angle round the tube (both fractions of a turn), z the distance from the tube's
-    /// core circle.
+    /// The x–y plane wrapped round a torus about y of this major radius: x is the longitude
+    /// about y ([`longitude`]), y the angle round the tube as a fraction of a turn (0 on the
+    /// inner equator, ¼ below the core circle, ½ on the outer equator, ¾ above it), z the
+    /// distance from the tube's core circle (POV-Ray's `warp { toroidal }`). Points on the y
+    /// axis stay where they are.
     Toroidal(f64),
 }
 
@@ -91,21 +108,29 @@ impl Warp {
             Warp::Placement(m) => m.inverse().transform_point3(p),
             Warp::Spherical => {
                 let r = p.norm();
-                let latitude = if r > 0.0 {
-                    libm::acos((-p.y / r).clamp(-1.0, 1.0)) / PI
-                } else {
-                    0.0
-                };
-                DVec3::new(super::geometric::radial(p), latitude, r)
+                if r == 0.0 {
+                    return p;
+                }
+                let latitude = libm::acos((-p.y / r).clamp(-1.0, 1.0)) / PI;
+                DVec3::new(longitude(p), latitude, r)
             }
             Warp::Cylindrical => {
                 let d = libm::hypot(p.x, p.z);
-                DVec3::new(super::geometric::radial(p), p.y, d)
+                if d == 0.0 {
+                    return p;
+                }
+                DVec3::new(longitude(p), p.y, d)
             }
             Warp::Toroidal(major) => {
-                let d = libm::hypot(p.x, p.z) - major;
-                let tube = libm::atan2(p.y, d).rem_euclid(TAU) / TAU;
-                DVec3::new(super::geometric::radial(p), tube, libm::hypot(d, p.y))
+                let across = libm::hypot(p.x, p.z);
+                if across == 0.0 {
+                    return p;
+                }
+                let d = across - major;
+                // Half a turn from the outer equator, in [0, 1): the inner equator is 0.
+                let tube = 0.5 + libm::atan2(p.y, d) / TAU;
+                let tube = if tube >= 1.0 { tube - 1.0 } else { tube };
+                DVec3::new(longitude(p), tube, libm::hypot(d, p.y))
             }
         }
     }

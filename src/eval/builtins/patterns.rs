@@ -249,7 +249,7 @@ seeded!(
 static GRADIENT: Sig = Sig::new(
     "gradient",
     Group::Look,
-    "The fractional coordinate along `axis` (its length is the frequency); in [0, 1].",
+    "The fractional coordinate along the direction `axis` (its length does not matter, as in POV-Ray); in [0, 1].",
     &[
         Param::new("axis", Ty::Vec3, "the direction the value grows along")
             .range(Range::NonZero)
@@ -261,7 +261,7 @@ static GRADIENT: Sig = Sig::new(
 fn gradient(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &GRADIENT, a)?;
     let (axis, _) = p.vec3(it, "axis")?;
-    Ok(texture(it, Pattern::Gradient { axis }))
+    Ok(texture(it, Pattern::gradient(axis)))
 }
 
 /// `brick(size, mortar)`.

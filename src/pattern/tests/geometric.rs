@@ -9,26 +9,46 @@ use crate::pattern::geometric::{
     boxed, cylindrical, gradient, onion, planar, radial, spherical, spiral1, spiral2, triangle,
 };
 use crate::pattern::warps::Turbulence;
+use crate::pattern::{Field, Pattern, Wave, WaveShape};
 
-/// Gradient is the fractional coordinate along its axis (the axis's length is the frequency);
-/// a value that is already in [0, 1] stays (so 1.0 is 1, 2.0 is 0).
+/// Gradient is the coordinate along its direction, whose length does not matter (POV-Ray
+/// normalises it), given to the wave as POV-Ray gives it: above 1 its remainder modulo 1
+/// (so 1.0 is 1, 2.0 is 0), below 0 as it is. Through the wave (the field) the colour map reads
+/// the fractional coordinate; at a fractional frequency the wave wraps `v · frequency`, so
+/// negative coordinates read what POV-Ray's do.
 #[test]
 fn gradient_is_the_fractional_coordinate() {
     let mut rng = Lcg::new(101);
+    let along_x = Field::new(Pattern::gradient(DVec3::X));
+    let up = Field::new(Pattern::gradient(DVec3::new(0.0, 2.0, 0.0)));
     for _ in 0..10_000 {
         let p = rng.point(100.0);
-        let along = p.x;
-        let expected = along - along.floor();
-        assert!((gradient(p, DVec3::X) - expected).abs() < 1e-12);
-        let twice = 2.0 * p.y;
-        assert!((gradient(p, DVec3::new(0.0, 2.0, 0.0)) - (twice - twice.floor())).abs() < 1e-12);
+        let raw = if p.x > 1.0 { p.x % 1.0 } else { p.x };
+        assert_eq!(gradient(p, DVec3::X), raw);
+        assert!((along_x.eval(p) - (p.x - p.x.floor())).abs() < 1e-12);
+        assert!((up.eval(p) - (p.y - p.y.floor())).abs() < 1e-12);
     }
     assert_eq!(gradient(DVec3::new(2.25, 9.0, 9.0), DVec3::X), 0.25);
-    assert_eq!(gradient(DVec3::new(-0.25, 0.0, 0.0), DVec3::X), 0.75);
+    assert_eq!(gradient(DVec3::new(-0.25, 0.0, 0.0), DVec3::X), -0.25);
+    assert_eq!(along_x.eval(DVec3::new(-0.25, 0.0, 0.0)), 0.75);
     assert_eq!(gradient(DVec3::new(0.0, 1.0, 0.0), DVec3::Y), 1.0);
     assert_eq!(gradient(DVec3::new(0.0, 2.0, 0.0), DVec3::Y), 0.0);
-    let diagonal = DVec3::new(1.0, 1.0, 0.0);
-    assert!((gradient(DVec3::new(0.3, 0.4, 7.0), diagonal) - 0.7).abs() < 1e-12);
+    // Frequency 1.5 at x = −0.25: POV-Ray wraps −0.375 to 0.625 (not 0.75 · 1.5 = 1.125 → 0.125).
+    let faster = Field {
+        wave: Wave {
+            frequency: 1.5,
+            ..Wave::new(WaveShape::Ramp)
+        },
+        ..along_x.clone()
+    };
+    assert_eq!(faster.eval(DVec3::new(-0.25, 0.0, 0.0)), 0.625);
+    let diagonal = Pattern::gradient(DVec3::new(1.0, 1.0, 0.0));
+    let along = 0.7 / 2f64.sqrt();
+    assert!((diagonal.eval(DVec3::new(0.3, 0.4, 7.0)) - along).abs() < 1e-12);
+    assert_eq!(
+        Pattern::gradient(DVec3::ZERO),
+        Pattern::Gradient { axis: DVec3::X }
+    );
 }
 
 /// Onion is the fractional distance from the origin.
@@ -75,20 +95,33 @@ fn falloffs_are_one_minus_their_distance() {
 }
 
 /// Radial: 0.25 on −z, 0.5 on −x, 0.75 on +z, 1 on +x, rising linearly with the angle turning
-/// from +x towards −z; 0.25 within 0.001 of the axis.
+/// from +x towards −z, to 1.25 just before −z (POV-Ray's value, which its wave wraps: through
+/// the field 1 on +x and 0 just past it); 0.25 within 0.001 of the axis.
 #[test]
 fn radial_is_the_turn_about_y() {
     let at = |angle: f64| radial(DVec3::new(libm::cos(angle), 3.0, -libm::sin(angle)));
-    assert!((at(PI / 2.0) - 0.25).abs() < 1e-12);
+    let wrapped = Field::new(Pattern::Radial);
+    let seen = |angle: f64| wrapped.eval(DVec3::new(libm::cos(angle), 3.0, -libm::sin(angle)));
+    // −z is where the value jumps from 1.25 down to 0.25: rounding picks the side.
+    assert!((seen(PI / 2.0) - 0.25).abs() < 1e-12);
     assert!((at(PI) - 0.5).abs() < 1e-12);
     assert!((at(1.5 * PI) - 0.75).abs() < 1e-12);
     assert_eq!(radial(DVec3::new(1.0, 0.0, 0.0)), 1.0);
+    assert_eq!(wrapped.eval(DVec3::new(1.0, 0.0, 0.0)), 1.0);
     for i in 1..100 {
         let angle = TAU * f64::from(i) / 100.0;
+        let turn = angle / TAU;
+        let raw = if i < 25 { 1.0 + turn } else { turn };
+        let off = (at(angle) - raw).abs();
         assert!(
-            (at(angle) - angle / TAU).abs() < 1e-12,
+            off < 1e-12 || (i == 25 && (off - 1.0).abs() < 1e-12),
             "angle {angle}: {}",
             at(angle)
+        );
+        assert!(
+            (seen(angle) - turn).abs() < 1e-12,
+            "angle {angle}: {}",
+            seen(angle)
         );
     }
     assert_eq!(radial(DVec3::new(0.0005, 7.0, -0.0009)), 0.25);

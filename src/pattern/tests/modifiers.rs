@@ -1,9 +1,11 @@
-//! Wave shapes, frequency and phase; turbulence and repeat warps; a field with both.
+//! Wave shapes, frequency and phase; turbulence, repeat and wrapping warps; a field with both.
 
 use glam::DVec3;
 
 use super::Lcg;
+use crate::num::Norm;
 use crate::pattern::fbm::{self, Fractal};
+use crate::pattern::warps::longitude;
 use crate::pattern::waves::wrap;
 use crate::pattern::{Field, Pattern, Repeat, Turbulence, Warp, Wave, WaveShape};
 
@@ -155,6 +157,55 @@ fn repeat_warp_copies_the_first_slab() {
     assert!((a.x - b.x).abs() < 0.01);
 }
 
+/// The spherical, cylindrical and toroidal warps measure the longitude from +x towards +z, as
+/// POV-Ray's do (+x 0, +z ¼, −x ½, −z ¾); the torus's tube angle is 0 on its inner equator, ¼
+/// below the core circle, ½ outside and ¾ above; points on the axis stay where they are.
+#[test]
+fn wrapping_warps_measure_angles_as_povray() {
+    let close = |a: DVec3, b: DVec3| (a - b).abs().max_element() < 1e-12;
+    for (p, turn) in [
+        (DVec3::X, 0.0),
+        (DVec3::Z, 0.25),
+        (-DVec3::X, 0.5),
+        (-DVec3::Z, 0.75),
+        (DVec3::new(1.0, 0.0, 1.0), 0.125),
+    ] {
+        assert!((longitude(p) - turn).abs() < 1e-15, "{p}");
+        let r = p.norm();
+        let on_sphere = Warp::Spherical.apply(p * 3.0);
+        assert!(
+            close(on_sphere, DVec3::new(turn, 0.5, 3.0 * r)),
+            "{on_sphere}"
+        );
+        let round_axis = Warp::Cylindrical.apply(p * 2.0 + DVec3::new(0.0, 0.7, 0.0));
+        assert!(
+            close(round_axis, DVec3::new(turn, 0.7, 2.0 * r)),
+            "{round_axis}"
+        );
+    }
+    // Latitude: 0 at the south pole, 1 at the north pole.
+    let north = Warp::Spherical.apply(DVec3::new(0.0, 2.0, 0.0));
+    assert!(close(north, DVec3::new(0.0, 1.0, 2.0)), "{north}");
+    let south = Warp::Spherical.apply(DVec3::new(0.0, -2.0, 0.0));
+    assert!(close(south, DVec3::new(0.0, 0.0, 2.0)), "{south}");
+    for p in [DVec3::ZERO, DVec3::new(0.0, 0.4, 0.0)] {
+        assert_eq!(Warp::Cylindrical.apply(p), p);
+        assert_eq!(Warp::Toroidal(1.0).apply(p), p);
+    }
+    assert_eq!(Warp::Spherical.apply(DVec3::ZERO), DVec3::ZERO);
+    // Round a torus of major radius 2 at +z (longitude ¼): the tube's angle and distance.
+    let torus = Warp::Toroidal(2.0);
+    for (offset, tube) in [
+        (DVec3::new(0.0, 0.0, -0.5), 0.0),
+        (DVec3::new(0.0, -0.5, 0.0), 0.25),
+        (DVec3::new(0.0, 0.0, 0.5), 0.5),
+        (DVec3::new(0.0, 0.5, 0.0), 0.75),
+    ] {
+        let q = torus.apply(DVec3::new(0.0, 0.0, 2.0) + offset);
+        assert!(close(q, DVec3::new(0.25, tube, 0.5)), "{offset}: {q}");
+    }
+}
+
 /// A field warps the point, reads the pattern, then shapes the value (marble: the triangle by
 /// default); a discrete pattern's index passes through its wave untouched.
 #[test]
@@ -177,10 +228,9 @@ fn a_field_is_wave_of_pattern_of_warped_point() {
             Warp::Repeat(Repeat::along(0, 1.0)),
             Warp::Turbulence(Turbulence::NONE),
         ],
-        ..Field::new(Pattern::Gradient {
-            axis: DVec3::new(0.5, 0.0, 0.0),
-        })
+        ..Field::new(Pattern::gradient(DVec3::new(0.5, 0.0, 0.0)))
     };
-    // Gradient 0.5·x over the repeated first unit: 0.5·0.5 at x = 3.5.
-    assert_eq!(repeated.eval(DVec3::new(3.5, 0.0, 0.0)), 0.25);
+    // Gradient along x (the direction's length does not matter) over the repeated first
+    // unit: 0.5 at x = 3.5.
+    assert_eq!(repeated.eval(DVec3::new(3.5, 0.0, 0.0)), 0.5);
 }
