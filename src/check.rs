@@ -222,12 +222,11 @@ impl Survey {
             format!(" ({kinds})")
         };
         let effects = Effects::new(&self.content, &scene.settings, &scene.camera);
-        let patterns =
-            if effects.names().contains(&"textures") || effects.names().contains(&"bump maps") {
-                patterns(scene)
-            } else {
-                String::new()
-            };
+        let patterns = if effects.textures || effects.bump {
+            patterns(scene)
+        } else {
+            String::new()
+        };
         format!(
             "{objects} object{}{kinds}, {lights} light{}, camera {}x{}; effects: {effects}{patterns}",
             if objects == 1 { "" } else { "s" },

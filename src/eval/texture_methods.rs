@@ -202,7 +202,8 @@ fn color_map(it: &dyn Host, items: &[Value], discrete: bool, span: Span) -> R<Co
             },
             Value::List(pair) => match pair.as_slice() {
                 [at, Value::Color(c)] => Stop {
-                    at: number(at)
+                    at: at
+                        .as_f64()
                         .ok_or_else(|| bad(i, "has a position that is no number".into()))?,
                     color: Rgbft::opaque(*c),
                 },
@@ -222,7 +223,7 @@ fn color_map(it: &dyn Host, items: &[Value], discrete: bool, span: Span) -> R<Co
                     }
                 }
                 let at = field("at")
-                    .and_then(number)
+                    .and_then(Value::as_f64)
                     .ok_or_else(|| bad(i, "needs `at: number`".into()))?;
                 let Some(Value::Color(c)) = field("color") else {
                     return Err(bad(i, "needs `color: rgb(..)`".into()));
@@ -230,7 +231,7 @@ fn color_map(it: &dyn Host, items: &[Value], discrete: bool, span: Span) -> R<Co
                 let share = |name: &str| -> R<f64> {
                     match field(name) {
                         None => Ok(0.0),
-                        Some(v) => match number(v) {
+                        Some(v) => match v.as_f64() {
                             Some(x) if (0.0..=1.0).contains(&x) => Ok(x),
                             _ => Err(bad(i, format!("has `{name}` outside [0, 1]"))),
                         },
@@ -263,15 +264,6 @@ fn color_map(it: &dyn Host, items: &[Value], discrete: bool, span: Span) -> R<Co
         stops.push(stop);
     }
     ColorMap::new(stops).ok_or_else(|| bad(0, "is not usable".into()))
-}
-
-/// A number value as a float.
-fn number(v: &Value) -> Option<f64> {
-    match v {
-        Value::Int(i) => Some(*i as f64),
-        Value::Float(x) => Some(*x),
-        _ => None,
-    }
 }
 
 /// `.frequency(f)` and `.phase(p)`: on ripples and waves they change the rings themselves (as
@@ -362,7 +354,7 @@ fn turbulence(
     let mut p = Params::new(site, &TURBULENCE, args)?;
     let (v, span) = p.req("amount")?;
     let amount = match v {
-        Value::Int(_) | Value::Float(_) => DVec3::splat(number(&v).unwrap_or(0.0)),
+        Value::Int(_) | Value::Float(_) => DVec3::splat(v.as_f64().unwrap_or(0.0)),
         Value::Vec3(a) => a,
         other => return Err(types::mismatch(it, "Float or Vec3", &other, span).into()),
     };

@@ -42,6 +42,15 @@ impl Rgbft {
         }
     }
 
+    /// `self` and `other` blended channel by channel, `other`'s share `w`.
+    pub fn lerp(self, other: Rgbft, w: f64) -> Rgbft {
+        Rgbft {
+            rgb: self.rgb + (other.rgb - self.rgb) * w,
+            filter: self.filter + (other.filter - self.filter) * w,
+            transmit: self.transmit + (other.transmit - self.transmit) * w,
+        }
+    }
+
     /// The share of the surface this colour covers: `1 − filter − transmit`, clamped to [0, 1].
     pub fn coverage(&self) -> f64 {
         (1.0 - self.filter - self.transmit).clamp(0.0, 1.0)
@@ -129,11 +138,6 @@ impl ColorMap {
             return s[upper - 1].color;
         }
         let (lo, hi) = (s[upper - 1], s[upper]);
-        let t = (v - lo.at) / (hi.at - lo.at);
-        Rgbft {
-            rgb: lo.color.rgb + (hi.color.rgb - lo.color.rgb) * t,
-            filter: lo.color.filter + (hi.color.filter - lo.color.filter) * t,
-            transmit: lo.color.transmit + (hi.color.transmit - lo.color.transmit) * t,
-        }
+        lo.color.lerp(hi.color, (v - lo.at) / (hi.at - lo.at))
     }
 }

@@ -71,7 +71,7 @@ fn resolve_at(
             let w = (v - lo_at) / (hi_at - lo_at);
             let (a, ca) = part(lo);
             let (b, cb) = part(hi);
-            (blended(&a, &b, w), mix_rgbft(ca, cb, w))
+            (blended(&a, &b, w), ca.lerp(cb, w))
         }
         Mix::Layers(layers) => {
             let parts: Vec<(Material, Rgbft)> = layers.iter().map(|id| part(*id)).collect();
@@ -126,14 +126,5 @@ fn blended(a: &Material, b: &Material, w: f64) -> Material {
         gloss: lerp(a.gloss, b.gloss),
         gloss_samples: a.gloss_samples.max(b.gloss_samples),
         ..major.clone()
-    }
-}
-
-/// Two colours with filter and transmit, `b`'s share `w`.
-fn mix_rgbft(a: Rgbft, b: Rgbft, w: f64) -> Rgbft {
-    Rgbft {
-        rgb: a.rgb + (b.rgb - a.rgb) * w,
-        filter: a.filter + (b.filter - a.filter) * w,
-        transmit: a.transmit + (b.transmit - a.transmit) * w,
     }
 }

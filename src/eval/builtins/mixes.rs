@@ -50,7 +50,10 @@ fn material_map(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     for (i, item) in items.iter().enumerate() {
         let stop = match item {
             Value::List(pair) => match pair.as_slice() {
-                [at, Value::Material(m)] => at_of(at).map(|at| (at, m.clone())),
+                [at, Value::Material(m)] => at
+                    .as_f64()
+                    .filter(|x| x.is_finite())
+                    .map(|at| (at, m.clone())),
                 _ => None,
             },
             _ => None,
@@ -95,15 +98,6 @@ fn pattern_texture(it: &mut dyn Host, t: &Tex, span: Span) -> R<Rc<Tex>> {
     match crate::eval::texture_methods::transformed(it, t, glam::DAffine3::IDENTITY, span)? {
         Value::Texture(t) => Ok(t),
         _ => unreachable!("a texture's transform is a texture"),
-    }
-}
-
-/// A stop's position.
-fn at_of(v: &Value) -> Option<f64> {
-    match v {
-        Value::Int(i) => Some(*i as f64),
-        Value::Float(x) if x.is_finite() => Some(*x),
-        _ => None,
     }
 }
 
