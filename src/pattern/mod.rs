@@ -25,6 +25,7 @@ pub mod hash;
 pub mod noise;
 pub mod noisy;
 pub mod ripples;
+pub mod slopes;
 pub mod tilings;
 pub mod turbulence;
 pub mod warps;

@@ -148,6 +148,83 @@ pub fn improved(p: DVec3, seed: u32) -> f64 {
     improved_with(p, seed, quintic)
 }
 
+/// The quintic fade's derivative: 30t²(1 − t)².
+#[inline(always)]
+fn quintic_slope(t: f64) -> f64 {
+    let s = t * (1.0 - t);
+    30.0 * s * s
+}
+
+/// [`improved`] and its gradient at `p`, from the same cell walk: the value is bit-identical to
+/// `improved(p, seed)`; the gradient is exact (the blend of the corner gradients plus the
+/// fades' slopes times the corner values' differences), since improved noise is smooth.
+#[inline]
+pub fn improved_and_gradient(p: DVec3, seed: u32) -> (f64, DVec3) {
+    let cell = Cell::of(p, hash::key(seed));
+    let (mut v, mut gx, mut gy, mut gz) = ([0.0; 8], [0.0; 8], [0.0; 8], [0.0; 8]);
+    for c in 0..8 {
+        let i = pick(cell.hashes[c]).0;
+        v[c] = dot(i, cell.offset(c));
+        let g = &GRADIENTS[i];
+        (gx[c], gy[c], gz[c]) = (g[0], g[1], g[2]);
+    }
+    let t = cell.t;
+    let u = DVec3::new(quintic(t.x), quintic(t.y), quintic(t.z));
+    // ∂/∂uₓ of the trilinear blend is the same blend, one dimension down, of the differences
+    // along x; likewise for y and z.
+    let along_x = [
+        v[1] - v[0],
+        v[1] - v[0],
+        v[3] - v[2],
+        v[3] - v[2],
+        v[5] - v[4],
+        v[5] - v[4],
+        v[7] - v[6],
+        v[7] - v[6],
+    ];
+    let along_y = [
+        v[2] - v[0],
+        v[3] - v[1],
+        v[2] - v[0],
+        v[3] - v[1],
+        v[6] - v[4],
+        v[7] - v[5],
+        v[6] - v[4],
+        v[7] - v[5],
+    ];
+    let along_z = [
+        v[4] - v[0],
+        v[5] - v[1],
+        v[6] - v[2],
+        v[7] - v[3],
+        v[4] - v[0],
+        v[5] - v[1],
+        v[6] - v[2],
+        v[7] - v[3],
+    ];
+    let fade_slope = DVec3::new(quintic_slope(t.x), quintic_slope(t.y), quintic_slope(t.z));
+    let gradient = DVec3::new(blend(gx, u), blend(gy, u), blend(gz, u))
+        + fade_slope
+            * DVec3::new(
+                blend(along_x, DVec3::new(0.0, u.y, u.z)),
+                blend(along_y, DVec3::new(u.x, 0.0, u.z)),
+                blend(along_z, DVec3::new(u.x, u.y, 0.0)),
+            );
+    (blend(v, u), gradient)
+}
+
+/// [`unit`] and its gradient (zero where the clamp holds the value).
+#[inline]
+pub fn unit_and_gradient(p: DVec3, seed: u32) -> (f64, DVec3) {
+    let (n, g) = improved_and_gradient(p + SHIFT, seed);
+    let v = 0.5 + 0.5 * n;
+    if (0.0..=1.0).contains(&v) {
+        (v, 0.5 * g)
+    } else {
+        (v.clamp(0.0, 1.0), DVec3::ZERO)
+    }
+}
+
 /// Improved noise read at `p + SHIFT` (no zero on integer planes): what fBm and the noise
 /// patterns sum.
 #[inline]

@@ -51,6 +51,18 @@ impl Repeat {
         }
         q + slab * self.offset
     }
+
+    /// How [`Repeat::warp`] scales each axis at `p` (its Jacobian's diagonal): `flip` in odd
+    /// slabs, 1 elsewhere.
+    #[inline]
+    pub fn scale_at(&self, p: DVec3) -> DVec3 {
+        let slab = (p[self.axis.min(2)] / self.width).floor();
+        if slab.rem_euclid(2.0) == 1.0 {
+            self.flip
+        } else {
+            DVec3::ONE
+        }
+    }
 }
 
 /// The angle of `p` about the y axis as a fraction of a turn, from +x towards +z (+x 0, +z ¼,

@@ -42,6 +42,29 @@ impl WaveShape {
             WaveShape::Poly(e) => libm::pow(v, e),
         }
     }
+
+    /// The shape's slope at `v` in [0, 1] (one side's at a corner); infinite where the shape
+    /// is (`poly_wave` below 1 at 0).
+    #[inline]
+    pub fn slope(self, v: f64) -> f64 {
+        match self {
+            WaveShape::Ramp => 1.0,
+            WaveShape::Triangle => {
+                if v < 0.5 {
+                    2.0
+                } else {
+                    -2.0
+                }
+            }
+            WaveShape::Sine => PI * libm::cos(TAU * v),
+            WaveShape::Scallop => {
+                let s = libm::sin(PI * v);
+                PI * libm::cos(PI * v) * if s < 0.0 { -1.0 } else { 1.0 }
+            }
+            WaveShape::Cubic => 6.0 * v * (1.0 - v),
+            WaveShape::Poly(e) => e * libm::pow(v, e - 1.0),
+        }
+    }
 }
 
 /// Wraps a value into [0, 1]: values already in [0, 1] pass unchanged (so a pattern's 1 stays
@@ -87,6 +110,17 @@ impl Wave {
             v * self.frequency + self.phase
         };
         self.shape.at(wrap(scaled))
+    }
+
+    /// The slope of [`Wave::apply`] at pattern value `v` (wrapping has slope 1 between its
+    /// jumps).
+    #[inline]
+    pub fn slope(&self, v: f64) -> f64 {
+        if self.frequency == 0.0 {
+            self.shape.slope(wrap(v))
+        } else {
+            self.frequency * self.shape.slope(wrap(v * self.frequency + self.phase))
+        }
     }
 }
 

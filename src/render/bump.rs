@@ -56,6 +56,13 @@ pub(crate) fn perturb(
         }
         TextureMap::Pattern(pt) => {
             // A uv-space pattern: its value's slopes along u and v.
+            let q = pt
+                .to_pattern
+                .transform_point3(DVec3::new(hit.uv.x, hit.uv.y, 0.0));
+            if let Some(g) = pt.field.gradient(q, PATTERN_STEP) {
+                let g = pt.to_pattern.matrix3.transpose() * g;
+                return tilt(n, scale, g.x * t + g.y * b);
+            }
             let h = |du: f64, dv: f64| {
                 let q = DVec3::new(hit.uv.x + du, hit.uv.y + dv, 0.0);
                 pt.field.eval(pt.to_pattern.transform_point3(q))
@@ -79,11 +86,16 @@ pub(crate) fn perturb(
             )
         }
     };
-    if dh_du == 0.0 && dh_dv == 0.0 {
+    tilt(n, scale, dh_du * t + dh_dv * b)
+}
+
+/// `n` tilted against the height's slope `slope` (a tangent vector) by `scale`, unit; `n`
+/// itself where the slope is zero or the tilt degenerates.
+fn tilt(n: DVec3, scale: f64, slope: DVec3) -> DVec3 {
+    if slope == DVec3::ZERO {
         return n;
     }
-    let tilted = n - scale * (dh_du * t + dh_dv * b);
-    tilted.try_unit().unwrap_or(n)
+    (n - scale * slope).try_unit().unwrap_or(n)
 }
 
 /// The step of a pattern's finite differences, in the pattern's own space: POV-Ray's default
@@ -91,11 +103,15 @@ pub(crate) fn perturb(
 /// pattern's edges (crackle's, brick's) into single-pixel spikes.
 pub(crate) const PATTERN_STEP: f64 = 0.02;
 
-/// The gradient of pattern `pt`'s value at object-space point `p`, in object space: central
-/// differences of [`PATTERN_STEP`] along the pattern's own axes, carried back through its
-/// transform (∇ₚ f(Tp) = Tᵀ ∇f).
+/// The gradient of pattern `pt`'s value at object-space point `p`, in object space: the
+/// pattern's own where it has one (`pattern::slopes`, octaves faded at [`PATTERN_STEP`]),
+/// otherwise central differences of [`PATTERN_STEP`] along the pattern's own axes; carried back
+/// through its transform (∇ₚ f(Tp) = Tᵀ ∇f).
 pub(crate) fn solid_gradient(pt: &PreparedPattern, p: DVec3) -> DVec3 {
     let q = pt.to_pattern.transform_point3(p);
+    if let Some(g) = pt.field.gradient(q, PATTERN_STEP) {
+        return pt.to_pattern.matrix3.transpose() * g;
+    }
     let d = PATTERN_STEP;
     let slope =
         |axis: DVec3| (pt.field.eval(q + d * axis) - pt.field.eval(q - d * axis)) / (2.0 * d);

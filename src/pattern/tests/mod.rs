@@ -11,6 +11,7 @@ mod geometric;
 mod modifiers;
 mod noise;
 mod noisy;
+mod slopes;
 mod tilings;
 
 /// A 64-bit LCG (Knuth's MMIX constants): reproducible sample points.
