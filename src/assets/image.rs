@@ -164,6 +164,16 @@ impl Picture {
         })
     }
 
+    /// Width and height in texels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// The texel in column `x`, row `y` from the top (both in range).
+    pub fn texel(&self, x: u32, y: u32) -> DVec3 {
+        self.texels[y as usize * self.width as usize + x as usize]
+    }
+
     /// The size of one texel in (u, v).
     pub(crate) fn texel_size(&self) -> (f64, f64) {
         (1.0 / f64::from(self.width), 1.0 / f64::from(self.height))

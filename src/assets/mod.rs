@@ -9,6 +9,7 @@
 
 mod cache;
 mod image;
+mod mipmap;
 mod mtl;
 mod obj;
 pub mod obj_count;
@@ -23,6 +24,7 @@ use std::sync::Arc;
 
 pub(crate) use self::image::ImageError;
 pub use self::image::Picture;
+pub use self::mipmap::MipChain;
 pub use obj::MeshAsset;
 pub(crate) use obj_error::MeshError;
 
@@ -30,6 +32,7 @@ use cache::{Cache, FileKey};
 
 static MESHES: Cache<MeshAsset> = Cache::new();
 static PICTURES: Cache<Picture> = Cache::new();
+static MIPS: Cache<MipChain> = Cache::new();
 
 /// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
 /// when it or one of its material libraries changes).
@@ -59,12 +62,24 @@ pub fn picture(path: &Path) -> Result<Arc<Picture>, ImageError> {
     )
 }
 
+/// The mip chain of the image at `path` ([`picture`]'s, halved down to a texel), built once
+/// per process (again when the file changes).
+pub fn mip_chain(path: &Path) -> Result<Arc<MipChain>, ImageError> {
+    let picture = picture(path)?;
+    MIPS.get_or_load(
+        FileKey::of(path, false),
+        || Ok(MipChain::of(&picture)),
+        |_| Vec::new(),
+    )
+}
+
 /// Forgets the loads of `path` and of every mesh that read it as a material library: for a
 /// file whose content changed though its size and modification time did not (`rtc watch`
 /// compares contents; a file system's clock may be too coarse to tell two writes apart).
 pub fn forget(path: &Path) {
     MESHES.forget(path);
     PICTURES.forget(path);
+    MIPS.forget(path);
 }
 
 /// How many loads of `path` the process keeps (versions, and a mesh's smooth and flat

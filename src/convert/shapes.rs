@@ -97,23 +97,33 @@ pub(crate) fn shading(s: ShadingModel) -> String {
     }
 }
 
+/// The `mapping:` argument of an image texture (nothing for the default, uv).
+fn mapping_arg(mapping: Mapping) -> &'static str {
+    match mapping {
+        Mapping::Uv => "",
+        Mapping::Spherical => ", mapping: spherical",
+        Mapping::Planar => ", mapping: planar",
+        Mapping::Cylindrical => ", mapping: cylindrical",
+    }
+}
+
 fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
     match t {
+        Texture::NormalMap { path, mapping, .. } => {
+            let map = mapping_arg(*mapping);
+            format!("normal_map({}{map})", string(&asset(path)))
+        }
         Texture::Image {
             path,
             mapping,
             filter,
             ..
         } => {
-            let map = match mapping {
-                Mapping::Uv => "",
-                Mapping::Spherical => ", mapping: spherical",
-                Mapping::Planar => ", mapping: planar",
-                Mapping::Cylindrical => ", mapping: cylindrical",
-            };
+            let map = mapping_arg(*mapping);
             let filter = match filter {
                 ImageFilter::Nearest => "",
                 ImageFilter::Bilinear => ", filter: \"bilinear\"",
+                ImageFilter::Mipmap => ", filter: \"mipmap\"",
             };
             format!("image({}{map}{filter})", string(&asset(path)))
         }

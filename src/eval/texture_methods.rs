@@ -108,7 +108,7 @@ fn pattern_of(t: &ir::Texture, site: CallSite) -> R<PatternTexture> {
             let map = ColorMap::new(vec![at(0.0, *a), at(0.5, *a), at(0.5, *b), at(1.0, *b)]);
             placed(Pattern::Gradient { axis: DVec3::X }, 2.0 * size, map)
         }
-        ir::Texture::Image { .. } => {
+        ir::Texture::Image { .. } | ir::Texture::NormalMap { .. } => {
             return Err(error(
                 "rtc::texture::image",
                 site.span,

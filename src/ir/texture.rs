@@ -42,6 +42,18 @@ pub enum Texture {
         /// Where the path was written.
         span: Span,
     },
+    /// A tangent-space normal map: an image whose texels encode unit normals as
+    /// `(n + 1) / 2`, x along increasing u, y up the picture (decreasing v), z out of the
+    /// surface (the OpenGL convention), read bilinearly. As a bump it replaces the normal; as
+    /// a colour it shows its texels.
+    NormalMap {
+        /// Resolved path.
+        path: PathBuf,
+        /// How surface points map to (u, v).
+        mapping: Mapping,
+        /// Where the path was written.
+        span: Span,
+    },
     /// A 3-D checkerboard of cubes of edge `size` in object space.
     Checker {
         /// First colour.
@@ -86,6 +98,9 @@ pub enum ImageFilter {
     /// The four texels around the point, weighted by distance (texel centres at
     /// `((i + ½)/w, (j + ½)/h)`, edges clamped): smooth up close.
     Bilinear,
+    /// Trilinear through the image's mip chain, at the level whose texels match the pixel's
+    /// footprint on the surface: smooth up close and free of moiré far away.
+    Mipmap,
 }
 
 /// Where a pattern reads its point.

@@ -11,7 +11,7 @@ use glam::DAffine3;
 use crate::ir::{Color, ImageFilter, Mapping, PatternSpace, PatternTexture, Texture};
 use crate::pattern::{ColorMap, Field, Warp};
 
-pub(crate) use crate::assets::Picture;
+pub(crate) use crate::assets::{MipChain, Picture};
 
 /// A texture ready for lookups (by `TextureId`).
 #[derive(Clone, Debug)]
@@ -20,6 +20,10 @@ pub(crate) enum TextureMap {
     Image(Arc<Picture>, Mapping),
     /// The same, read bilinearly.
     Bilinear(Arc<Picture>, Mapping),
+    /// The same, read trilinearly through its mip chain over the pixel's footprint.
+    Mipmap(Arc<MipChain>, Mapping),
+    /// A tangent-space normal map (`ir::Texture::NormalMap`), read bilinearly.
+    NormalMap(Arc<Picture>, Mapping),
     /// A 3-D checkerboard of cubes: two colours and the cube edge.
     Checker(Color, Color, f64),
     /// Stripes along object-space x: two colours and the stripe width.
@@ -78,19 +82,20 @@ pub(crate) fn load_all(
                 mapping,
                 filter,
                 span,
-            } => match memory.charge(assets::picture_bytes(path)) {
-                Err(over) => {
-                    let what = format!("the texture `{}`", path.display());
-                    out.push(over.diagnostic(*span, &what));
-                }
-                Ok(()) => match assets::picture(path) {
-                    Ok(pic) => maps.push(match filter {
-                        ImageFilter::Nearest => TextureMap::Image(pic, *mapping),
-                        ImageFilter::Bilinear => TextureMap::Bilinear(pic, *mapping),
-                    }),
-                    Err(e) => out.push(e.diagnostic(*span, path)),
-                },
-            },
+            } => {
+                let bytes = image_bytes(path, *filter);
+                let decode = || image_map(path, *filter, *mapping);
+                maps.extend(decoded(path, *span, bytes, decode, out, memory));
+            }
+            Texture::NormalMap {
+                path,
+                mapping,
+                span,
+            } => {
+                let bytes = assets::picture_bytes(path);
+                let decode = || Ok(TextureMap::NormalMap(assets::picture(path)?, *mapping));
+                maps.extend(decoded(path, *span, bytes, decode, out, memory));
+            }
             Texture::Checker { a, b, size } => {
                 maps.push(TextureMap::Checker(*a, *b, positive(*size)));
             }
@@ -101,6 +106,47 @@ pub(crate) fn load_all(
         }
     }
     (maps.len() == textures.len()).then_some(maps)
+}
+
+/// The image at `path` decoded by `decode` once `bytes` are charged to `memory`; `None` with
+/// the problem in `out` when the budget or the file refuses.
+fn decoded(
+    path: &std::path::Path,
+    span: crate::source::Span,
+    bytes: u64,
+    decode: impl FnOnce() -> Result<TextureMap, assets::ImageError>,
+    out: &mut Diagnostics,
+    memory: &mut Memory,
+) -> Option<TextureMap> {
+    if let Err(over) = memory.charge(bytes) {
+        out.push(over.diagnostic(span, &format!("the texture `{}`", path.display())));
+        return None;
+    }
+    decode()
+        .map_err(|e| out.push(e.diagnostic(span, path)))
+        .ok()
+}
+
+/// Bytes an image takes decoded, with its mip chain's third more when it has one.
+fn image_bytes(path: &std::path::Path, filter: ImageFilter) -> u64 {
+    let bytes = assets::picture_bytes(path);
+    match filter {
+        ImageFilter::Mipmap => bytes + bytes.div_ceil(3),
+        _ => bytes,
+    }
+}
+
+/// The decoded image at `path` read through `filter`.
+fn image_map(
+    path: &std::path::Path,
+    filter: ImageFilter,
+    mapping: Mapping,
+) -> Result<TextureMap, assets::ImageError> {
+    Ok(match filter {
+        ImageFilter::Nearest => TextureMap::Image(assets::picture(path)?, mapping),
+        ImageFilter::Bilinear => TextureMap::Bilinear(assets::picture(path)?, mapping),
+        ImageFilter::Mipmap => TextureMap::Mipmap(assets::mip_chain(path)?, mapping),
+    })
 }
 
 fn positive(size: f64) -> f64 {

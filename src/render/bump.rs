@@ -29,18 +29,24 @@ pub(crate) fn perturb(
         let g = to_world * solid_gradient(pt, hit.local_point);
         return (n - scale * (g - g.dot(n) * n)).try_unit().unwrap_or(n);
     }
-    let up = if n.y.abs() > 0.999 {
-        DVec3::X
-    } else {
-        DVec3::Y
-    };
-    let t = up.cross(n).unit();
-    let b = t.cross(n);
+    let (t, b) = tangent_frame(n);
     let (dh_du, dh_dv) = match tex {
-        TextureMap::Image(pic, mapping) | TextureMap::Bilinear(pic, mapping) => {
+        TextureMap::NormalMap(pic, mapping) => {
+            let tangents = super::normal_map::fallback_tangents(n);
+            return super::normal_map::tilt(pic, *mapping, scale, hit, frame, n, tangents);
+        }
+        TextureMap::Image(_, mapping)
+        | TextureMap::Bilinear(_, mapping)
+        | TextureMap::Mipmap(_, mapping) => {
+            // A mip-mapped height field takes its slopes from the full-size picture.
+            let (pic, bilinear) = match tex {
+                TextureMap::Image(pic, _) => (&**pic, false),
+                TextureMap::Bilinear(pic, _) => (&**pic, true),
+                TextureMap::Mipmap(chain, _) => (chain.level(0), true),
+                _ => unreachable!("an image texture"),
+            };
             let uv = texture::uv(*mapping, hit, frame);
             let (du, dv) = pic.texel_size();
-            let bilinear = matches!(tex, TextureMap::Bilinear(..));
             let h = |o: DVec2| {
                 if bilinear {
                     pic.bilinear(uv + o).y
@@ -87,6 +93,18 @@ pub(crate) fn perturb(
         }
     };
     tilt(n, scale, dh_du * t + dh_dv * b)
+}
+
+/// The tangent frame at unit normal `n`: T = normalize(+Y × N) (increasing longitude u on a
+/// sphere; +X × N at the poles) and B = T × N (increasing v, southwards).
+pub(crate) fn tangent_frame(n: DVec3) -> (DVec3, DVec3) {
+    let up = if n.y.abs() > 0.999 {
+        DVec3::X
+    } else {
+        DVec3::Y
+    };
+    let t = up.cross(n).unit();
+    (t, t.cross(n))
 }
 
 /// `n` tilted against the height's slope `slope` (a tangent vector) by `scale`, unit; `n`

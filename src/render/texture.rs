@@ -6,9 +6,13 @@
 
 use glam::{DVec2, DVec3};
 
+use super::footprint;
+use crate::assets::MipChain;
 use crate::geometry::{MappingFrame, SurfaceHit};
+use crate::ir::Sampling;
 use crate::ir::{Color, Mapping, PatternSpace};
-use crate::opt::{PreparedPattern, TextureMap};
+use crate::num::Norm;
+use crate::opt::{Prepared, PreparedPattern, TextureMap};
 use crate::pattern::Rgbft;
 
 /// The colour of `tex` at `hit`, whose surface's mapping frame is `frame` (`World::frame`).
@@ -21,7 +25,11 @@ pub(crate) fn color(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame) -> 
 pub(crate) fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: DVec3) -> Color {
     match tex {
         TextureMap::Image(pic, mapping) => pic.nearest(uv(*mapping, hit, frame)),
-        TextureMap::Bilinear(pic, mapping) => pic.bilinear(uv(*mapping, hit, frame)),
+        TextureMap::Bilinear(pic, mapping) | TextureMap::NormalMap(pic, mapping) => {
+            pic.bilinear(uv(*mapping, hit, frame))
+        }
+        // Without a footprint (a bump's neighbour, an explanation): the full-size picture.
+        TextureMap::Mipmap(chain, mapping) => chain.level(0).bilinear(uv(*mapping, hit, frame)),
         TextureMap::Checker(a, b, size) => {
             // A hit on a cell face (a plane at y = 0) is ±1e-13 off it, so a plain floor flips
             // the parity pixel by pixel; snapping to a tiny fraction of a cell first keeps the
@@ -43,6 +51,37 @@ pub(crate) fn solid(tex: &TextureMap, hit: &SurfaceHit, frame: MappingFrame, p: 
         }
         TextureMap::Pattern(pt) => pt.map.at(pattern_value(pt, hit, p)).rgb,
     }
+}
+
+/// The colour of mip-mapped image `chain` at `hit` under `mapping`: trilinear over the
+/// footprint of one sample (a pixel over the supersampling factor, at most eight per axis, as
+/// pbrt-v4 scales it) measured in the picture's texels along the wider of the pixel's two
+/// screen steps; the full-size picture where no footprint is found (a silhouette, a grazing
+/// view).
+pub(crate) fn mipmapped(
+    scene: &Prepared,
+    chain: &MipChain,
+    mapping: Mapping,
+    hit: &SurfaceHit,
+    frame: MappingFrame,
+) -> Color {
+    let fraction = match scene.settings().sampling {
+        Sampling::Grid { factor } => 1.0 / f64::from(factor.clamp(1, 8)),
+        Sampling::Adaptive { min, .. } => 1.0 / f64::from(min.clamp(1, 8)),
+    };
+    let (w, h) = chain.level(0).size();
+    let texels = DVec2::new(f64::from(w), f64::from(h));
+    let footprint =
+        footprint::surface_steps(scene.camera(), hit.point, hit.geometric_normal, fraction)
+            .and_then(|steps| {
+                footprint::coordinate_steps(scene, hit, steps, |h| {
+                    uv(mapping, h, scene.world().frame(h))
+                })
+            })
+            .map_or(1.0, |[dx, dy]| {
+                (dx * texels).norm().max((dy * texels).norm())
+            });
+    chain.lookup(uv(mapping, hit, frame), footprint)
 }
 
 /// The colour of `tex` at `hit` with its filter and transmit (opaque but for patterns whose

@@ -26,6 +26,7 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&CHECKER, checker),
     (&STRIPES, stripes),
     (&IMAGE, image),
+    (&NORMAL_MAP, normal_map),
 ];
 
 /// The channels of `rgb` and `srgb`.
@@ -421,7 +422,7 @@ fn stripes(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 static IMAGE: Sig = Sig::new(
     "image",
     Group::Look,
-    "An image file (PNG, JPEG, HDR, EXR), read nearest-texel or bilinearly.",
+    "An image file (PNG, JPEG, HDR, EXR), read nearest-texel, bilinearly or mip-mapped.",
     &[
         Param::new(
             "path",
@@ -432,7 +433,7 @@ static IMAGE: Sig = Sig::new(
         Param::new(
             "filter",
             Ty::String,
-            "\"nearest\" (the course's texel lookup) or \"bilinear\" (smooth up close)",
+            "\"nearest\" (the course's texel lookup), \"bilinear\" (smooth up close) or \"mipmap\" (trilinear over the pixel's footprint: smooth up close, no moiré far away)",
         )
         .checked_by_builtin()
         .or(Lit::Name("\"nearest\"")),
@@ -444,18 +445,15 @@ fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &IMAGE, a)?;
     let (rel, ps) = p.string(it, "path")?;
     let path = crate::eval::assets::existing(it, &rel, ps, "image")?;
-    let mapping = match p.get("mapping") {
-        None => ir::Mapping::Uv,
-        Some((Value::Mapping(m), _)) => m,
-        Some((other, sp)) => return Err(types::mismatch(it, "Mapping", &other, sp).into()),
-    };
+    let mapping = image_mapping(it, &mut p)?;
     let filter = match p.get("filter") {
         None => ir::ImageFilter::Nearest,
         Some((Value::Str(f), sp)) => match &*f {
             "nearest" => ir::ImageFilter::Nearest,
             "bilinear" => ir::ImageFilter::Bilinear,
+            "mipmap" => ir::ImageFilter::Mipmap,
             other => {
-                let choices = ["nearest", "bilinear"];
+                let choices = ["nearest", "bilinear", "mipmap"];
                 let e = crate::eval::texture_methods::bad_choice("filter", other, &choices, sp);
                 return Err(e.into());
             }
@@ -471,4 +469,44 @@ fn image(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         made: it.next_made(),
     })))
+}
+
+/// `normal_map(path, mapping)`.
+static NORMAL_MAP: Sig = Sig::new(
+    "normal_map",
+    Group::Look,
+    "A tangent-space normal map image (OpenGL convention: x along u, y up the picture), for `bump:`.",
+    &[
+        Param::new(
+            "path",
+            Ty::String,
+            "the file, relative to the calling file (it must exist)",
+        ),
+        Param::new("mapping", Ty::Mapping, "how surface points find pixels").or(Lit::Name("uv")),
+    ],
+    "Texture",
+)
+.examples(&["normal_map(path: \"images/flare-halo.png\", mapping: planar)"]);
+fn normal_map(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &NORMAL_MAP, a)?;
+    let (rel, ps) = p.string(it, "path")?;
+    let path = crate::eval::assets::existing(it, &rel, ps, "image")?;
+    let mapping = image_mapping(it, &mut p)?;
+    Ok(Value::Texture(Rc::new(Tex {
+        t: ir::Texture::NormalMap {
+            path,
+            mapping,
+            span: ps,
+        },
+        made: it.next_made(),
+    })))
+}
+
+/// An image's `mapping:` argument (uv when absent).
+fn image_mapping(it: &mut dyn Host, p: &mut Params) -> R<ir::Mapping> {
+    Ok(match p.get("mapping") {
+        None => ir::Mapping::Uv,
+        Some((Value::Mapping(m), _)) => m,
+        Some((other, sp)) => return Err(types::mismatch(it, "Mapping", &other, sp).into()),
+    })
 }

@@ -24,7 +24,7 @@ use crate::render::record::{Branch, NoRecord, Recorder};
 use crate::render::sampler::Rng;
 use crate::render::scatter::{Lobe, Scattering, reflect};
 use crate::render::shading::{self, Surface};
-use crate::render::{bump, texture};
+use crate::render::{bump, normal_map, texture};
 
 /// A secondary ray about to be cast: where from, its lobe and the lobe's ideal direction, and
 /// the normal facing the ray it continues.
@@ -323,7 +323,12 @@ impl<'a> Whitted<'a> {
     /// The colour of texture `t` at `hit`.
     fn textured(&self, hit: SurfaceHit, t: crate::ir::TextureId) -> Color {
         let frame = self.scene.world().frame(&hit);
-        texture::color(&self.scene.textures()[t.0 as usize], &hit, frame)
+        match &self.scene.textures()[t.0 as usize] {
+            crate::opt::TextureMap::Mipmap(chain, mapping) => {
+                texture::mipmapped(self.scene, chain, *mapping, &hit, frame)
+            }
+            tex => texture::color(tex, &hit, frame),
+        }
     }
 
     /// The shading normal: `facing`, tilted by the material's bump map where it has one (read
@@ -339,8 +344,15 @@ impl<'a> Whitted<'a> {
     /// `facing` tilted by bump map `b` at `hit`.
     fn bump_tilt(&self, hit: SurfaceHit, facing: DVec3, b: crate::ir::Bump) -> DVec3 {
         let world = self.scene.world();
+        let tex = &self.scene.textures()[b.texture.0 as usize];
+        if let crate::opt::TextureMap::NormalMap(pic, mapping) = tex {
+            let tangents = normal_map::measured_tangents(self.scene, &hit, *mapping)
+                .unwrap_or_else(|| normal_map::fallback_tangents(facing));
+            let frame = world.frame(&hit);
+            return normal_map::tilt(pic, *mapping, b.scale, &hit, frame, facing, tangents);
+        }
         bump::perturb(
-            &self.scene.textures()[b.texture.0 as usize],
+            tex,
             b.scale,
             &hit,
             world.frame(&hit),

@@ -25,9 +25,10 @@ use glam::{DVec2, DVec3};
 
 use super::{Surface, light_sample, occluder, transmission};
 use crate::geometry::Ray;
-use crate::ir::{Color, Projection};
+use crate::ir::Color;
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
+use crate::render::footprint;
 use crate::render::record::{LightTerm, Recorder};
 
 /// Distance between neighbouring strokes of one family on screen, in pixels.
@@ -189,16 +190,9 @@ fn midline_present(family: u64, j: f64, density: f64) -> bool {
 /// land on the same surface; `None` when neither side of either does (a silhouette).
 fn screen_gradient(scene: &Prepared, s: &Surface<'_>) -> Option<glam::DMat2> {
     let cam = scene.camera();
-    let view = cam.center - cam.eye;
-    let forward = view.unit();
-    let right = view.cross(cam.up).unit();
-    let up = right.cross(view).unit();
-    let pixel_angle = match cam.projection {
-        Projection::Course => cam.up.norm() / view.norm(),
-        Projection::Perspective { fov_y } => {
-            2.0 * libm::tan(0.5 * fov_y) / f64::from(cam.height.max(1))
-        }
-    };
+    let forward = (cam.center - cam.eye).unit();
+    let (right, up) = footprint::screen_axes(cam);
+    let pixel_angle = footprint::pixel_angle(cam);
     // A sixteenth of a pixel: close enough that periodic coordinates (a plane's repeat every
     // unit, a sphere's seam) wrap only where a pixel spans 8 periods, where the strokes are
     // far finer than a pixel and their box filter gives the flat tone anyway.
