@@ -49,9 +49,14 @@ pub fn square(p: DVec3) -> f64 {
 #[inline]
 pub fn hexagon(p: DVec3) -> f64 {
     // Lattice coordinates of the point; the nearest centre is the cube-rounded triple
-    // (i, j, −i − j), correcting the coordinate that rounded furthest.
-    let fi = p.x * (2.0 / 3.0);
-    let fj = p.z / 3f64.sqrt() - p.x / 3.0;
+    // (i, j, −i − j), correcting the coordinate that rounded furthest. The point is snapped to
+    // a millionth first (a wall at z = 0 is hit a rounding error either side of the edge
+    // between two rows of hexagons) and then moved a billionth towards +z, so a point on an
+    // edge along x reads the hexagon on its +z side, as POV-Ray's does.
+    let snap = |v: f64| (v * 1e6).round() / 1e6;
+    let (x, z) = (snap(p.x), snap(p.z) + 1e-9);
+    let fi = x * (2.0 / 3.0);
+    let fj = z / 3f64.sqrt() - x / 3.0;
     let fk = -fi - fj;
     let (mut i, mut j, k) = (fi.round(), fj.round(), fk.round());
     let (di, dj, dk) = ((i - fi).abs(), (j - fj).abs(), (k - fk).abs());
