@@ -46,10 +46,15 @@ fn floor(texture: &Path, filter: &str, supersampling: u32) -> Scene {
          render {{ shadows: false, max_depth: 0, supersampling: {supersampling} }}",
         texture.display()
     );
+    load(&src)
+}
+
+/// The scene `src`, which must load.
+fn load(src: &str) -> Scene {
     let mut sources = SourceMap::default();
     let loaded = load_source(
-        Path::new("floor.rtc"),
-        &src,
+        Path::new("scene.rtc"),
+        src,
         &mut sources,
         &EvalOptions::default(),
     );
@@ -61,7 +66,7 @@ fn floor(texture: &Path, filter: &str, supersampling: u32) -> Scene {
         .collect();
     loaded
         .scene
-        .unwrap_or_else(|| panic!("the floor scene loads: {codes:?}"))
+        .unwrap_or_else(|| panic!("the scene loads: {codes:?}"))
 }
 
 fn render(scene: &Scene, threads: usize) -> Film {
@@ -144,14 +149,7 @@ fn lit_floor(bump: &str, turn: f64, light: [f64; 3]) -> Scene {
          render {{ shadows: false, max_depth: 0 }}",
         far[0], far[1], far[2]
     );
-    let mut sources = SourceMap::default();
-    let loaded = load_source(
-        Path::new("lit.rtc"),
-        &src,
-        &mut sources,
-        &EvalOptions::default(),
-    );
-    loaded.scene.expect("the lit floor loads")
+    load(&src)
 }
 
 /// The normal a texel encodes: `2c − 1`, c = byte / 255.
