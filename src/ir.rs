@@ -25,7 +25,7 @@ mod texture;
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;
-pub use light::{Light, LightKind};
+pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot};
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use placement::Transform;

@@ -213,13 +213,13 @@ fn light(node: &YamlNode, diags: &mut Diagnostics) -> Option<Light> {
     let position = position.and_then(|e| val::triple(e.value, "`position`", Triple::Point, diags));
     let color = color.and_then(|e| val::triple(e.value, "`color`", Triple::Color, diags));
     m.finish("a light", &["position", "color"], diags);
-    Some(Light {
-        kind: LightKind::Point {
+    Some(Light::new(
+        LightKind::Point {
             position: position?,
         },
-        color: color?,
-        span: node.span,
-    })
+        color?,
+        node.span,
+    ))
 }
 
 /// RenderMode, Shadows, MaxRecursionDepth, SuperSampling, GoochParameters (and student spellings).

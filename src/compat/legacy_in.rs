@@ -245,11 +245,11 @@ impl<'t> Reader<'t, '_> {
                 let (position, _) = self.triple(kind, kw, XYZ_FIELDS)?;
                 let (color, c_span) = self.triple(kind, kw, RGB_FIELDS)?;
                 self.non_negative_color(color, c_span, "light colour");
-                draft.lights.push(Light {
-                    kind: LightKind::Point { position },
+                draft.lights.push(Light::new(
+                    LightKind::Point { position },
                     color,
-                    span: kw.join(self.span(self.pos, self.pos)),
-                });
+                    kw.join(self.span(self.pos, self.pos)),
+                ));
             }
             Kind::Material => {
                 let (color, c_span) = self.triple(kind, kw, RGB_FIELDS)?;

@@ -97,27 +97,52 @@ fn course_fov_of(c: &Camera) -> Option<String> {
 
 /// A light as its constructor.
 pub(crate) fn light(l: &Light) -> String {
-    match l.kind {
-        LightKind::Point { position } => format!(
-            "point_light {{ position: {}, color: {} }}",
-            vector(position),
-            color(l.color)
+    let (name, mut fields) = match (l.kind, l.spot) {
+        (LightKind::Point { position }, Some(spot)) => (
+            "spot_light",
+            vec![
+                format!("position: {}", vector(position)),
+                format!("target: {}", vector(position + spot.axis)),
+                format!("radius: {}deg", number(spot.radius.to_degrees())),
+                format!("falloff: {}deg", number(spot.falloff.to_degrees())),
+                format!("tightness: {}", number(spot.tightness)),
+            ],
         ),
-        LightKind::Area {
-            corner,
-            u,
-            v,
-            samples,
-        } => format!(
-            "area_light {{ corner: {}, u: {}, v: {}, samples: [{}, {}], color: {} }}",
-            vector(corner),
-            vector(u),
-            vector(v),
-            samples[0],
-            samples[1],
-            color(l.color)
+        (LightKind::Point { position }, None) => (
+            "point_light",
+            vec![format!("position: {}", vector(position))],
         ),
+        (
+            LightKind::Area {
+                corner,
+                u,
+                v,
+                samples,
+            },
+            _,
+        ) => (
+            "area_light",
+            vec![
+                format!("corner: {}", vector(corner)),
+                format!("u: {}", vector(u)),
+                format!("v: {}", vector(v)),
+                format!("samples: [{}, {}]", samples[0], samples[1]),
+            ],
+        ),
+        (LightKind::Parallel { direction }, _) => (
+            "parallel_light",
+            vec![format!("direction: {}", vector(direction))],
+        ),
+    };
+    fields.push(format!("color: {}", color(l.color)));
+    if let Some(fade) = l.fade {
+        fields.push(format!("fade_distance: {}", number(fade.distance)));
+        fields.push(format!("fade_power: {}", number(fade.power)));
     }
+    if !l.shadows {
+        fields.push("shadows: false".into());
+    }
+    format!("{name} {{ {} }}", fields.join(", "))
 }
 
 /// What the `render { ... }` record needs besides the settings.

@@ -21,6 +21,14 @@ pub struct Effects {
     pub(crate) bump: bool,
     /// Some light is an area light (soft shadows).
     pub(crate) soft_shadows: bool,
+    /// Some light is a spot light (a cone per light sample).
+    pub(crate) spot_lights: bool,
+    /// Some light is a parallel light.
+    pub(crate) parallel_lights: bool,
+    /// Some light fades with distance.
+    pub(crate) light_fading: bool,
+    /// Some light casts no shadows (while the scene has shadows).
+    pub(crate) shadowless_lights: bool,
     /// More than one sample per pixel.
     pub(crate) supersampling: bool,
     /// A thin-lens camera (depth of field).
@@ -51,6 +59,14 @@ pub(crate) struct Content {
     textured: bool,
     bumped: bool,
     area_lights: bool,
+    /// Some light is a spot light.
+    spot_lights: bool,
+    /// Some light is a parallel light.
+    parallel_lights: bool,
+    /// Some light fades with distance.
+    fading_lights: bool,
+    /// Some light casts no shadows.
+    shadowless_lights: bool,
     lights: bool,
     gooch_material: bool,
     hatching_material: bool,
@@ -87,6 +103,13 @@ impl Content {
                 .lights
                 .iter()
                 .any(|l| matches!(l.kind, LightKind::Area { .. })),
+            spot_lights: scene.lights.iter().any(|l| l.spot.is_some()),
+            parallel_lights: scene
+                .lights
+                .iter()
+                .any(|l| matches!(l.kind, LightKind::Parallel { .. })),
+            fading_lights: scene.lights.iter().any(|l| l.fade.is_some()),
+            shadowless_lights: scene.lights.iter().any(|l| !l.shadows),
             lights: !scene.lights.is_empty(),
             gooch_material: material_model(|m| matches!(m, ShadingModel::Gooch(_))),
             hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
@@ -134,6 +157,10 @@ impl Effects {
             textures: shaded && content.textured,
             bump: shaded && content.bumped,
             soft_shadows: shadows && content.area_lights,
+            spot_lights: shaded && content.spot_lights,
+            parallel_lights: shaded && content.parallel_lights,
+            light_fading: shaded && content.fading_lights,
+            shadowless_lights: shadows && content.shadowless_lights,
             supersampling: match s.sampling {
                 Sampling::Grid { factor } => factor > 1,
                 Sampling::Adaptive { max, .. } => max > 1,
@@ -161,6 +188,10 @@ impl Effects {
         let all = [
             (self.shadows, "shadows"),
             (self.soft_shadows, "soft shadows"),
+            (self.spot_lights, "spot lights"),
+            (self.parallel_lights, "parallel lights"),
+            (self.light_fading, "light fading"),
+            (self.shadowless_lights, "shadowless lights"),
             (self.reflection, "reflection"),
             (self.refraction, "refraction"),
             (self.textures, "textures"),

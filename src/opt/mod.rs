@@ -85,8 +85,11 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         .map(|l| PreparedLight {
             kind: l.kind,
             color: l.color,
+            spot: l.spot,
+            fade: l.fade,
+            shadows: l.shadows,
             samples: match l.kind {
-                LightKind::Point { .. } => 1,
+                LightKind::Point { .. } | LightKind::Parallel { .. } => 1,
                 // Both at most MAX_LIGHT_SAMPLES_PER_AXIS (validated), so no overflow.
                 LightKind::Area { samples, .. } => samples[0].max(1) * samples[1].max(1),
             },

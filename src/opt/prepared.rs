@@ -9,7 +9,9 @@ use super::textures::TextureMap;
 use super::validate;
 use crate::diag::Diagnostic;
 use crate::geometry::World;
-use crate::ir::{Camera, Color, LightKind, Material, MaterialId, RenderSettings, Sampling};
+use crate::ir::{
+    Camera, Color, Fade, LightKind, Material, MaterialId, RenderSettings, Sampling, Spot,
+};
 
 /// A light prepared for shading: sample positions are generated per shading point.
 #[derive(Clone, Copy, Debug)]
@@ -20,6 +22,23 @@ pub struct PreparedLight {
     pub(crate) color: Color,
     /// Number of shadow/shading samples (1 for a point light).
     pub samples: u32,
+    /// A spot light's cone.
+    pub(crate) spot: Option<Spot>,
+    /// Fading with distance.
+    pub(crate) fade: Option<Fade>,
+    /// Whether objects cast shadows from it.
+    pub(crate) shadows: bool,
+}
+
+impl PreparedLight {
+    /// Whether it is a plain point light: no cone, no fading, casting shadows (what the packet
+    /// shader handles).
+    pub(crate) fn is_plain_point(&self) -> bool {
+        matches!(self.kind, LightKind::Point { .. })
+            && self.spot.is_none()
+            && self.fade.is_none()
+            && self.shadows
+    }
 }
 
 /// What preparing took (`rtc render --stats`).
@@ -191,7 +210,7 @@ impl Prepared {
             .iter()
             .map(|l| match l.kind {
                 LightKind::Area { samples, .. } => samples,
-                LightKind::Point { .. } => [1, 1],
+                LightKind::Point { .. } | LightKind::Parallel { .. } => [1, 1],
             })
             .collect()
     }

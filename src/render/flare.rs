@@ -33,7 +33,7 @@ pub(crate) struct Source {
 /// The fraction of `light` the eye sees: its samples not hidden behind something.
 fn visible_fraction(scene: &Prepared, eye: DVec3, light: &PreparedLight, stats: &mut Stats) -> f64 {
     let points: Vec<DVec3> = match light.kind {
-        LightKind::Point { position } => vec![position],
+        LightKind::Point { .. } | LightKind::Parallel { .. } => vec![light.kind.center()],
         LightKind::Area {
             corner,
             u,
@@ -68,12 +68,9 @@ fn visible_fraction(scene: &Prepared, eye: DVec3, light: &PreparedLight, stats: 
     seen as f64 / points.len() as f64
 }
 
-/// The centre of a light (an area light's middle).
+/// The centre of a light (an area light's middle, a far point up a parallel light).
 fn centre(light: &PreparedLight) -> DVec3 {
-    match light.kind {
-        LightKind::Point { position } => position,
-        LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
-    }
+    light.kind.center()
 }
 
 /// The flare sources of `scene` through `camera`: the lights in front of the eye, inside the

@@ -65,13 +65,13 @@ pub fn mat(color: [f64; 3], ka: f64, kd: f64, ks: f64, n: f64) -> Material {
 
 /// A white or coloured point light.
 pub fn light(pos: [f64; 3], color: [f64; 3]) -> Light {
-    Light {
-        kind: LightKind::Point {
+    Light::new(
+        LightKind::Point {
             position: DVec3::from(pos),
         },
-        color: DVec3::from(color),
-        span: Span::default(),
-    }
+        DVec3::from(color),
+        Span::default(),
+    )
 }
 
 /// Adds a sphere with its own material.

@@ -4,6 +4,7 @@
 
 #[cfg(test)]
 mod doc_tables;
+mod lights;
 pub(crate) mod lists;
 mod looks;
 mod math;
@@ -34,6 +35,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         patterns::FNS,
         mixes::FNS,
         scene::FNS,
+        lights::FNS,
         settings::FNS,
         super::shapes::FNS,
         super::shapes::COMPOUND_FNS,

@@ -11,14 +11,10 @@ use crate::eval::host::Host;
 use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use crate::eval::value::Value;
 use crate::ir;
-use crate::ir::limits::{MAX_IMAGE_SIDE, MAX_LIGHT_SAMPLES_PER_AXIS};
+use crate::ir::limits::MAX_IMAGE_SIDE;
 
-/// The camera and light constructors with their schemas.
-pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
-    (&CAMERA, camera),
-    (&POINT_LIGHT, point_light),
-    (&AREA_LIGHT, area_light),
-];
+/// The camera constructor with its schema.
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[(&CAMERA, camera)];
 
 /// `camera { .. }`'s fields, in positional order.
 static CAMERA: Sig = Sig::new(
@@ -174,105 +170,6 @@ fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         focus_distance: focus,
         shutter,
         motion,
-        span: s.span,
-    })))
-}
-
-/// A light's intensity.
-const LIGHT_COLOR: Param = Param::new(
-    "color",
-    Ty::Color,
-    "the light's RGB intensity (may exceed 1)",
-)
-.or(Lit::Color([1.0, 1.0, 1.0]));
-
-/// `point_light { position, color }`.
-static POINT_LIGHT: Sig = Sig::new(
-    "point_light",
-    Group::Light,
-    "A point light.",
-    &[
-        Param::new("position", Ty::Vec3, "where the light is").unit(Unit::Length),
-        LIGHT_COLOR,
-    ],
-    "Light",
-)
-.examples(&["point_light { position: [5, 8, 5], color: rgb(1, 0.95, 0.9) }"]);
-fn point_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &POINT_LIGHT, a)?;
-    let (position, _) = p.vec3(it, "position")?;
-    let (color, _) = p.color(it, "color")?;
-    Ok(Value::Light(Rc::new(ir::Light {
-        kind: ir::LightKind::Point { position },
-        color,
-        span: s.span,
-    })))
-}
-
-/// `area_light { corner, u, v, samples, color }`.
-static AREA_LIGHT: Sig = Sig::new(
-    "area_light",
-    Group::Light,
-    "The parallelogram `corner + s·u + t·v`, sampled on a stratified grid: soft shadows.",
-    &[
-        Param::new("corner", Ty::Vec3, "one corner").unit(Unit::Length),
-        Param::new("u", Ty::Vec3, "one edge").unit(Unit::Length),
-        Param::new("v", Ty::Vec3, "the other edge (u × v ≠ 0)").unit(Unit::Length),
-        Param::new(
-            "samples",
-            Ty::OneOf(&[Ty::Pair(&Ty::Int), Ty::Int]),
-            "the grid, `[n, m]` or `n` (n × n)",
-        )
-        .unit(Unit::Samples)
-        .range(Range::Ints(1, MAX_LIGHT_SAMPLES_PER_AXIS as i64))
-        .or(Lit::Ints([4, 4])),
-        LIGHT_COLOR,
-    ],
-    "Light",
-)
-.examples(&["area_light { corner: [-1, 6, -1], u: [2, 0, 0], v: [0, 0, 2], samples: [3, 3], color: rgb(0.4, 0.4, 0.5) }"]);
-fn area_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
-    let mut p = Params::new(s, &AREA_LIGHT, a)?;
-    let (corner, _) = p.vec3(it, "corner")?;
-    let (u, _) = p.vec3(it, "u")?;
-    let (v, vs) = p.vec3(it, "v")?;
-    if u.cross(v).length_squared() == 0.0 {
-        return Err(
-            error("rtc::light::degenerate", vs, "the area light has zero area")
-                .with_label("`u` and `v` are parallel or zero")
-                .with_help(
-                    "use two edges that span a parallelogram, e.g. `u: [1, 0, 0], v: [0, 0, 1]`",
-                )
-                .into(),
-        );
-    }
-    let samples = match p.get("samples") {
-        None => p.default_ints("samples").map(|n| n as u32),
-        Some((Value::List(l), sp)) if l.len() == 2 => [
-            p.int_in(it, "samples", &l[0], sp)? as u32,
-            p.int_in(it, "samples", &l[1], sp)? as u32,
-        ],
-        Some((n @ Value::Int(_), sp)) => [p.int_in(it, "samples", &n, sp)? as u32; 2],
-        Some((other, sp)) => {
-            return Err(error(
-                "rtc::type::mismatch",
-                sp,
-                format!("expected `[n, m]`, found `{}`", other.type_name()),
-            )
-            .with_label("not a sample count")
-            .with_help("write `samples: [4, 4]`")
-            .into());
-        }
-    };
-    let (color, _) = p.color(it, "color")?;
-    Ok(Value::Light(Rc::new(ir::Light {
-        kind: ir::LightKind::Area {
-            corner,
-            u,
-            v,
-            samples,
-        },
-        color,
         span: s.span,
     })))
 }

@@ -21,6 +21,9 @@ use crate::render::scatter::straight_through;
 /// test itself only asks whether there is one). With glass shadows, glass on the way is
 /// passed as [`glass_shadow`] passes it.
 fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<SurfaceHit> {
+    if !ls.shadows {
+        return None;
+    }
     let (mut ray, mut left) = s.spawn.ray_to(ls.position)?;
     for _ in 0..glass_shadow::MAX_CROSSINGS {
         let hit = scene.world().intersect(&ray.at_time(s.time), 0.0, left)?;
@@ -43,7 +46,7 @@ fn transmission(
     ls: &LightSample,
     stats: &mut Stats,
 ) -> Option<Color> {
-    if scene.effects().glass_shadows {
+    if scene.effects().glass_shadows && ls.shadows {
         glass_shadow::transmission(scene, s, ls, stats)
     } else {
         visible(scene, s, ls, stats).then_some(Color::ONE)

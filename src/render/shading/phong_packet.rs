@@ -66,12 +66,10 @@ impl SurfaceLanes {
     }
 }
 
-/// Whether [`shade`] can shade this scene's points: every light is a point light.
+/// Whether [`shade`] can shade this scene's points: every light is a plain point light (no
+/// cone, no fading, casting shadows).
 pub(crate) fn applies(scene: &Prepared) -> bool {
-    scene
-        .lights()
-        .iter()
-        .all(|l| matches!(l.kind, LightKind::Point { .. }))
+    scene.lights().iter().all(|l| l.is_plain_point())
 }
 
 /// The Phong colours of the live lanes of `s` (other lanes are left zero), counted in

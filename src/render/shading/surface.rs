@@ -6,7 +6,7 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::geometry::Ray;
-use crate::ir::{Color, LightKind, Material};
+use crate::ir::{Color, LightKind, Material, PARALLEL_DISTANCE};
 use crate::opt::{Prepared, PreparedLight};
 use crate::render::deal::Weight;
 use crate::render::film::Stats;
@@ -43,8 +43,10 @@ pub(crate) struct LightSample {
     pub(crate) l: DVec3,
     /// The sample's position (shadow rays aim at it).
     pub(crate) position: DVec3,
-    /// The light's colour times the sample's share (1/samples).
+    /// The light's colour times the sample's share (1/samples), its cone's and its fading's.
     pub(crate) color: Color,
+    /// Whether objects cast shadows from it.
+    pub(crate) shadows: bool,
 }
 
 /// The `k`-th sample of light `index` for a surface point (stratified and jittered on area
@@ -59,6 +61,7 @@ pub(crate) fn light_sample(
 ) -> LightSample {
     let pos = match light.kind {
         LightKind::Point { position } => position,
+        LightKind::Parallel { direction } => s.p - PARALLEL_DISTANCE * direction,
         LightKind::Area {
             corner,
             u,
@@ -77,10 +80,24 @@ pub(crate) fn light_sample(
     };
     let d = pos - s.p;
     let dist = d.norm();
+    let l = match light.kind {
+        // Exactly the light's direction, not the rounded way to the far point.
+        LightKind::Parallel { direction } => -direction,
+        _ if dist > 0.0 => d / dist,
+        _ => s.n,
+    };
+    let mut color = light.color * f64::from(weight.num) / f64::from(weight.den);
+    if let Some(spot) = light.spot {
+        color *= spot.share(-l);
+    }
+    if let Some(fade) = light.fade {
+        color *= fade.share(dist);
+    }
     LightSample {
-        l: if dist > 0.0 { d / dist } else { s.n },
+        l,
         position: pos,
-        color: light.color * f64::from(weight.num) / f64::from(weight.den),
+        color,
+        shadows: light.shadows,
     }
 }
 
@@ -110,7 +127,7 @@ fn shadow_ray(
     ls: &LightSample,
     stats: &mut Stats,
 ) -> Option<(Ray, f64)> {
-    if !scene.effects().shadows {
+    if !scene.effects().shadows || !ls.shadows {
         return None;
     }
     stats.shadow_rays += 1;

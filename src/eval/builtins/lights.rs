@@ -1,0 +1,276 @@
+//! The light constructors: point, area, spot and parallel lights, each with the modifiers every
+//! light takes (fading with distance, shadows or none), after POV-Ray 3.7's `light_source`.
+
+use std::rc::Rc;
+
+use glam::DVec3;
+
+use crate::eval::args::Params;
+use crate::eval::args::{ArgVal, CallSite};
+use crate::eval::error::{R, error};
+use crate::eval::host::BuiltinFn;
+use crate::eval::host::Host;
+use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
+use crate::eval::value::Value;
+use crate::ir;
+use crate::ir::limits::MAX_LIGHT_SAMPLES_PER_AXIS;
+use crate::num::Norm;
+
+/// The light constructors with their schemas.
+pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
+    (&POINT_LIGHT, point_light),
+    (&AREA_LIGHT, area_light),
+    (&SPOT_LIGHT, spot_light),
+    (&PARALLEL_LIGHT, parallel_light),
+];
+
+/// A light's intensity.
+const LIGHT_COLOR: Param = Param::new(
+    "color",
+    Ty::Color,
+    "the light's RGB intensity (may exceed 1)",
+)
+.or(Lit::Color([1.0, 1.0, 1.0]));
+
+/// `point_light { position, color }`.
+static POINT_LIGHT: Sig = Sig::new(
+    "point_light",
+    Group::Light,
+    "A point light.",
+    &[
+        Param::new("position", Ty::Vec3, "where the light is").unit(Unit::Length),
+        LIGHT_COLOR,
+        FADE_DISTANCE,
+        FADE_POWER,
+        SHADOWS,
+    ],
+    "Light",
+)
+.examples(&["point_light { position: [5, 8, 5], color: rgb(1, 0.95, 0.9) }"]);
+fn point_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &POINT_LIGHT, a)?;
+    let (position, _) = p.vec3(it, "position")?;
+    let (color, _) = p.color(it, "color")?;
+    let kind = ir::LightKind::Point { position };
+    Ok(Value::Light(Rc::new(shaped(it, &mut p, kind, color, s)?)))
+}
+
+/// `area_light { corner, u, v, samples, color }`.
+static AREA_LIGHT: Sig = Sig::new(
+    "area_light",
+    Group::Light,
+    "The parallelogram `corner + s·u + t·v`, sampled on a stratified grid: soft shadows.",
+    &[
+        Param::new("corner", Ty::Vec3, "one corner").unit(Unit::Length),
+        Param::new("u", Ty::Vec3, "one edge").unit(Unit::Length),
+        Param::new("v", Ty::Vec3, "the other edge (u × v ≠ 0)").unit(Unit::Length),
+        Param::new(
+            "samples",
+            Ty::OneOf(&[Ty::Pair(&Ty::Int), Ty::Int]),
+            "the grid, `[n, m]` or `n` (n × n)",
+        )
+        .unit(Unit::Samples)
+        .range(Range::Ints(1, MAX_LIGHT_SAMPLES_PER_AXIS as i64))
+        .or(Lit::Ints([4, 4])),
+        LIGHT_COLOR,
+        FADE_DISTANCE,
+        FADE_POWER,
+        SHADOWS,
+    ],
+    "Light",
+)
+.examples(&["area_light { corner: [-1, 6, -1], u: [2, 0, 0], v: [0, 0, 2], samples: [3, 3], color: rgb(0.4, 0.4, 0.5) }"]);
+fn area_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &AREA_LIGHT, a)?;
+    let (corner, _) = p.vec3(it, "corner")?;
+    let (u, _) = p.vec3(it, "u")?;
+    let (v, vs) = p.vec3(it, "v")?;
+    if u.cross(v).length_squared() == 0.0 {
+        return Err(
+            error("rtc::light::degenerate", vs, "the area light has zero area")
+                .with_label("`u` and `v` are parallel or zero")
+                .with_help(
+                    "use two edges that span a parallelogram, e.g. `u: [1, 0, 0], v: [0, 0, 1]`",
+                )
+                .into(),
+        );
+    }
+    let samples = match p.get("samples") {
+        None => p.default_ints("samples").map(|n| n as u32),
+        Some((Value::List(l), sp)) if l.len() == 2 => [
+            p.int_in(it, "samples", &l[0], sp)? as u32,
+            p.int_in(it, "samples", &l[1], sp)? as u32,
+        ],
+        Some((n @ Value::Int(_), sp)) => [p.int_in(it, "samples", &n, sp)? as u32; 2],
+        Some((other, sp)) => {
+            return Err(error(
+                "rtc::type::mismatch",
+                sp,
+                format!("expected `[n, m]`, found `{}`", other.type_name()),
+            )
+            .with_label("not a sample count")
+            .with_help("write `samples: [4, 4]`")
+            .into());
+        }
+    };
+    let (color, _) = p.color(it, "color")?;
+    let kind = ir::LightKind::Area {
+        corner,
+        u,
+        v,
+        samples,
+    };
+    Ok(Value::Light(Rc::new(shaped(it, &mut p, kind, color, s)?)))
+}
+
+/// Where a light fades (`fade_distance`).
+const FADE_DISTANCE: Param = Param::new(
+    "fade_distance",
+    Ty::Float,
+    "the distance at which the light has its colour: `2 / (1 + (d / fade_distance)^fade_power)` of it at distance d (no fading when absent)",
+)
+.unit(Unit::Length)
+.range(Range::Positive)
+.optional();
+
+/// How a light fades (`fade_power`).
+const FADE_POWER: Param = Param::new(
+    "fade_power",
+    Ty::Float,
+    "how fast it fades beyond `fade_distance`: 1 linear, 2 the inverse square",
+)
+.range(Range::Positive)
+.or(Lit::Float(2.0));
+
+/// Whether a light casts shadows.
+const SHADOWS: Param = Param::new(
+    "shadows",
+    Ty::Bool,
+    "whether objects cast shadows from it (`false`: a fill light, POV-Ray's `shadowless`)",
+)
+.or(Lit::Bool(true));
+
+/// A light of `kind` and `color` with the modifiers every light takes, read from `p`.
+fn shaped(
+    it: &mut dyn Host,
+    p: &mut Params,
+    kind: ir::LightKind,
+    color: DVec3,
+    s: CallSite,
+) -> R<ir::Light> {
+    let mut light = ir::Light::new(kind, color, s.span);
+    let power_given = p.given("fade_power");
+    let (power, _) = p.float(it, "fade_power")?;
+    match p.float_opt(it, "fade_distance")? {
+        Some((distance, _)) => light.fade = Some(ir::Fade { distance, power }),
+        None => {
+            if let Some(sp) = power_given {
+                return Err(error(
+                    "rtc::light::fade",
+                    sp,
+                    "`fade_power` without a `fade_distance`",
+                )
+                .with_label("this light does not fade")
+                .with_help("add `fade_distance: 10` (where the light has its colour), or remove `fade_power`")
+                .into());
+            }
+        }
+    }
+    light.shadows = p.bool(it, "shadows")?;
+    Ok(light)
+}
+
+/// `spot_light { position, target, radius, falloff, tightness, color, .. }`.
+static SPOT_LIGHT: Sig = Sig::new(
+    "spot_light",
+    Group::Light,
+    "A spot light: a point light shining in a cone from `position` towards `target` (POV-Ray's `spotlight`).",
+    &[
+        Param::new("position", Ty::Vec3, "where the light is").unit(Unit::Length),
+        Param::new("target", Ty::Vec3, "the point the cone's axis goes through (not `position`)")
+            .unit(Unit::Length),
+        Param::new("radius", Ty::Angle, "the half-angle of full strength")
+            .unit(Unit::Angle)
+            .range(Range::Open(0.0, std::f64::consts::FRAC_PI_2))
+            .or(Lit::Degrees(30.0)),
+        Param::new("falloff", Ty::Angle, "the half-angle where the light ends (≥ `radius`), reached along a smoothstep of the cosine")
+            .unit(Unit::Angle)
+            .range(Range::Open(0.0, std::f64::consts::FRAC_PI_2))
+            .or(Lit::Degrees(45.0)),
+        Param::new("tightness", Ty::Float, "the exponent of the angle's cosine over the whole cone (0: none)")
+            .range(Range::NonNegative)
+            .or(Lit::Float(0.0)),
+        LIGHT_COLOR,
+        FADE_DISTANCE,
+        FADE_POWER,
+        SHADOWS,
+    ],
+    "Light",
+)
+.examples(&["spot_light { position: [0, 8, 0], target: [0, 0, 0], radius: 15deg, falloff: 25deg }"]);
+fn spot_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &SPOT_LIGHT, a)?;
+    let (position, _) = p.vec3(it, "position")?;
+    let (target, ts) = p.vec3(it, "target")?;
+    let Some(axis) = (target - position).try_unit() else {
+        return Err(
+            error("rtc::light::aim", ts, "the spot light is aimed at itself")
+                .with_label("`target` is the light's `position`")
+                .with_help("aim it at a point away from the light, e.g. `target: [0, 0, 0]`")
+                .into(),
+        );
+    };
+    let (radius, _) = p.angle(it, "radius")?;
+    let (falloff, fs) = p.angle(it, "falloff")?;
+    if falloff < radius {
+        return Err(error(
+            "rtc::light::falloff",
+            fs,
+            "the spot light's `falloff` is inside its `radius`",
+        )
+        .with_label("the light would end before its full-strength cone does")
+        .with_help("make `falloff` at least `radius`, e.g. `radius: 20deg, falloff: 30deg`")
+        .into());
+    }
+    let (tightness, _) = p.float(it, "tightness")?;
+    let (color, _) = p.color(it, "color")?;
+    let mut light = shaped(it, &mut p, ir::LightKind::Point { position }, color, s)?;
+    light.spot = Some(ir::Spot {
+        axis,
+        radius,
+        falloff,
+        tightness,
+    });
+    Ok(Value::Light(Rc::new(light)))
+}
+
+/// `parallel_light { direction, color, .. }`.
+static PARALLEL_LIGHT: Sig = Sig::new(
+    "parallel_light",
+    Group::Light,
+    "A parallel light (a sun): light travelling along `direction` everywhere, from infinitely far away.",
+    &[
+        Param::new("direction", Ty::Vec3, "the direction the light travels in, e.g. `[-1, -2, -1]` (down and away)")
+            .range(Range::NonZero),
+        LIGHT_COLOR,
+        SHADOWS,
+    ],
+    "Light",
+)
+.examples(&["parallel_light { direction: [-1, -2, -1], color: rgb(1, 0.95, 0.85) }"]);
+fn parallel_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &PARALLEL_LIGHT, a)?;
+    let (direction, ds) = p.vec3(it, "direction")?;
+    let Some(direction) = direction.try_unit() else {
+        return Err(
+            error("rtc::light::aim", ds, "the parallel light has no direction")
+                .with_label("a zero vector")
+                .with_help("give the direction the light travels in, e.g. `direction: [0, -1, 0]`")
+                .into(),
+        );
+    };
+    let (color, _) = p.color(it, "color")?;
+    let mut light = ir::Light::new(ir::LightKind::Parallel { direction }, color, s.span);
+    light.shadows = p.bool(it, "shadows")?;
+    Ok(Value::Light(Rc::new(light)))
+}
