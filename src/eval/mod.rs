@@ -5,6 +5,10 @@ mod assets;
 mod bounds;
 mod budgets;
 mod builtins;
+mod compile;
+mod compile_builtins;
+#[cfg(test)]
+mod compile_tests;
 mod error;
 mod fxhash;
 mod host;

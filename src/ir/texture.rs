@@ -116,7 +116,7 @@ impl PatternTexture {
     /// The name of the language's constructor of its pattern (`marble`, `spherical_falloff`).
     pub fn name(&self) -> &'static str {
         use crate::pattern::Pattern as P;
-        match self.field.pattern {
+        match &self.field.pattern {
             P::Gradient { .. } => "gradient",
             P::Checker => "checker",
             P::Hexagon => "hexagon",
@@ -143,6 +143,7 @@ impl PatternTexture {
             P::Dents { .. } => "dents",
             P::Crackle { .. } => "crackle",
             P::Cells { .. } => "cells",
+            P::Function(_) => "function",
         }
     }
 }
