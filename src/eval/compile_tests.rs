@@ -259,3 +259,73 @@ fn programs_stay_small() {
         },
     );
 }
+
+#[test]
+fn noise_built_ins_are_the_pattern_modules_noises() {
+    use crate::pattern::{Fractal, cells, fbm, noise};
+    let fractal = Fractal {
+        octaves: 3,
+        omega: 0.6,
+        lambda: 2.5,
+    };
+    type Noise = fn(DVec3, &Fractal) -> DVec3;
+    let cases: [(&str, Noise); 6] = [
+        ("noise(p, seed: 7)", |p, _| DVec3::splat(noise::unit(p, 7))),
+        ("snoise(p, seed: 7)", |p, _| {
+            DVec3::splat(noise::signed(p, 7))
+        }),
+        ("vnoise(p, seed: 7)", |p, _| noise::vector(p, 7)),
+        (
+            "fbm(p, octaves: 3, omega: 0.6, lambda: 2.5, seed: 7)",
+            |p, f| DVec3::splat(fbm::fbm(p, f, 7)),
+        ),
+        (
+            "turbulence(p, octaves: 3, omega: 0.6, lambda: 2.5, seed: 7)",
+            |p, f| DVec3::splat(fbm::turbulence(p, f, 7)),
+        ),
+        ("worley(p, form: \"edges\", seed: 7)", |p, _| {
+            let d = cells::worley(p, 7);
+            DVec3::splat(d.f2 - d.f1)
+        }),
+    ];
+    for (call, want) in cases {
+        with_f(&format!("let f = fn(p) {{ {call} }}"), |it, f| {
+            for p in points() {
+                let arg = ArgVal {
+                    name: None,
+                    value: Value::Vec3(p),
+                    span: Span::default(),
+                };
+                let got = it
+                    .call_value(f.clone(), vec![arg], Span::default(), Span::default())
+                    .unwrap_or(Value::Unit);
+                let got = match got {
+                    Value::Vec3(v) => v,
+                    other => DVec3::splat(other.as_f64().expect("a number")),
+                };
+                let want = want(p, &fractal);
+                assert_eq!(
+                    got.to_array().map(f64::to_bits),
+                    want.to_array().map(f64::to_bits),
+                    "{call} at {p}"
+                );
+            }
+        });
+    }
+}
+
+#[test]
+fn a_value_that_is_not_finite_reads_as_zero() {
+    with_f(
+        "let f = fn(p) { sqrt(p.x - 1000) + 1 / (p.y - p.y) }",
+        |_, f| {
+            let Value::Fn(c) = &f else { panic!() };
+            let Ok(program) = super::compile::compile(c) else {
+                panic!()
+            };
+            let p = DVec3::new(1.0, 2.0, 3.0);
+            assert!(program.run(p).is_nan());
+            assert_eq!(program.eval(p), 0.0);
+        },
+    );
+}
