@@ -22,7 +22,7 @@ use crate::source::Span;
 use crate::syntax::ast::{Arg, BinOp, Block, Expr, ExprKind, FnDef, Name, Stmt, TypeAnn, UnOp};
 use crate::syntax::intern::Sym;
 
-use super::error::{EvalError, R, error};
+use super::error::{EvalError, Quote, R, error};
 use super::modules::Scope;
 use super::value::{Closure, Value, a_type};
 
@@ -102,6 +102,24 @@ impl Callable {
     }
 }
 
+/// The program of the argument `f` of `pattern(f)` (at `span`): a user function's, or the
+/// error for any other value.
+pub(crate) fn compile_value(q: &(impl Quote + ?Sized), f: Value, span: Span) -> R<Program> {
+    match f {
+        Value::Fn(c) => compile(&c),
+        Value::Builtin(b) => Err(nope(
+            span,
+            format!("the built-in `{}` is not a function of the point", b.name),
+            "a built-in",
+            format!(
+                "wrap it in a function: `pattern(fn(p) {{ {}(p) }})`",
+                b.name
+            ),
+        )),
+        other => Err(super::types::mismatch(q, "Fn", &other, span).into()),
+    }
+}
+
 /// The program of `c`, a `fn(p)` of the pattern-space point giving a number.
 pub(crate) fn compile(c: &Closure) -> R<Program> {
     let def = &c.def;
@@ -172,7 +190,7 @@ fn result_span(b: &Block) -> Span {
 }
 
 /// `rtc::fn::not_compilable` at `span`.
-pub(crate) fn nope(
+pub(super) fn nope(
     span: Span,
     message: impl Into<String>,
     label: impl Into<String>,

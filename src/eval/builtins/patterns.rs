@@ -496,22 +496,6 @@ static PATTERN: Sig = Sig::new(
 fn pattern(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &PATTERN, a)?;
     let (f, sp) = p.req("f")?;
-    let program = match f {
-        Value::Fn(c) => crate::eval::compile::compile(&c)?,
-        Value::Builtin(b) => {
-            return Err(crate::eval::compile::nope(
-                sp,
-                format!("the built-in `{}` is not a function of the point", b.name),
-                "a built-in",
-                format!(
-                    "wrap it in a function: `pattern(fn(p) {{ {}(p) }})`",
-                    b.name
-                ),
-            ));
-        }
-        other => {
-            return Err(crate::eval::types::mismatch(it, "Fn", &other, sp).into());
-        }
-    };
+    let program = it.compile_pattern(f, sp)?;
     Ok(texture(it, Pattern::Function(Arc::new(program))))
 }
