@@ -310,6 +310,8 @@ impl Compiler {
                 self.top = mark + usize::from(t.width());
                 Ok(Val::Reg(t, mark as Reg))
             }
+            // A function may capture registers above the mark: they stay allocated.
+            Val::Fn(f) => Ok(Val::Fn(f)),
             other => {
                 self.top = mark;
                 Ok(other)

@@ -190,6 +190,9 @@ fn calls_captures_and_modules() {
     same("let mk = fn(s) fn(p) p.x * s\nlet f = mk(4)");
     same("let f = fn(p, s = 3) { p.y * s }");
     same("let on = true\nlet f = fn(p) { if on { p.x } else { [1, 2, 3] } }");
+    same(
+        "let f = fn(p) { let g = if true { let a = p.x * 2\nfn(x) x + a } else { 0 }\nlet b = p.y * 3 + p.z\ng(b) }",
+    );
 }
 
 #[test]

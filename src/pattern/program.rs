@@ -395,13 +395,24 @@ impl Program {
                     reach(a, 1);
                     reach(b, 1);
                 }
-                Op::Vec { dst, a, b, .. } => {
-                    reach(dst, 3);
+                Op::Vec { f, dst, a, b } => {
+                    let scalar_out = matches!(
+                        f,
+                        VecOp::Dot | VecOp::Length | VecOp::Distance | VecOp::Eq | VecOp::Ne
+                    );
+                    reach(dst, if scalar_out { 1 } else { 3 });
                     reach(a, 3);
-                    reach(b, 3);
+                    reach(
+                        b,
+                        if matches!(f, VecOp::Scale | VecOp::Div) {
+                            1
+                        } else {
+                            3
+                        },
+                    );
                 }
-                Op::Noise { dst, p, .. } => {
-                    reach(dst, 3);
+                Op::Noise { f, dst, p } => {
+                    reach(dst, f.width());
                     reach(p, 3);
                 }
                 Op::Jump { to } | Op::JumpUnless { to, .. } => {
