@@ -7,6 +7,7 @@ mod budgets;
 mod builtins;
 mod compile;
 mod compile_builtins;
+mod compile_calls;
 #[cfg(test)]
 mod compile_tests;
 mod error;
