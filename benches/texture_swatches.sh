@@ -56,6 +56,10 @@ swatch dents "dents().colors($map).scale(0.5)"
 swatch crackle "crackle().colors($map).scale(0.6)"
 swatch crackle-f1 "crackle(form: \"f1\").colors($map).scale(0.6)"
 swatch cells "cells().colors($map).scale(0.5)"
+swatch function "pattern(fn(p) {
+  let r = sqrt(p.x * p.x + p.z * p.z)
+  if r < 1.2 { 0.5 + 0.6 * fbm(p * 3, octaves: 5) } else { 2 * worley(p * 2, form: \"edges\") }
+}).colors($map)"
 
 # Modifiers, on onion (a plain ramp of distance) or bozo.
 swatch mod-frequency "onion().frequency(3).colors($map)"

@@ -41,6 +41,9 @@ pub(crate) trait Host: Quote {
     fn charge(&self, bytes: u64, span: Span, what: &str) -> R<()>;
     /// Calls a function value (user, literal or built-in) with evaluated arguments.
     fn call_value(&mut self, f: Value, args: Vec<ArgVal>, span: Span, callee: Span) -> R<Value>;
+    /// The function value `f` (the argument at `span`) compiled into a pattern's program
+    /// (`pattern(f)`; `eval::compile`, which sits above the built-ins).
+    fn compile_pattern(&mut self, f: Value, span: Span) -> R<crate::pattern::Program>;
     /// The folder relative asset paths of the current module resolve against.
     fn dir(&self) -> &Path;
     /// The path of the current module's file (for messages).

@@ -5,6 +5,11 @@ mod assets;
 mod bounds;
 mod budgets;
 mod builtins;
+mod compile;
+mod compile_builtins;
+mod compile_calls;
+#[cfg(test)]
+mod compile_tests;
 mod error;
 mod fxhash;
 mod host;

@@ -53,6 +53,8 @@ pub(crate) enum Group {
     Transform,
     /// Materials and textures.
     Look,
+    /// Noise functions of a point.
+    Noise,
     /// Lights.
     Light,
     /// The camera.
@@ -79,6 +81,7 @@ impl Group {
             Group::Shape => "Objects",
             Group::Transform => "Transforms",
             Group::Look => "Materials and textures",
+            Group::Noise => "Noise",
             Group::Light => "Lights",
             Group::Camera => "Camera",
             Group::Render => "Render settings",

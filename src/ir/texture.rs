@@ -131,7 +131,7 @@ impl PatternTexture {
     /// The name of the language's constructor of its pattern (`marble`, `spherical_falloff`).
     pub fn name(&self) -> &'static str {
         use crate::pattern::Pattern as P;
-        match self.field.pattern {
+        match &self.field.pattern {
             P::Gradient { .. } => "gradient",
             P::Checker => "checker",
             P::Hexagon => "hexagon",
@@ -158,6 +158,7 @@ impl PatternTexture {
             P::Dents { .. } => "dents",
             P::Crackle { .. } => "crackle",
             P::Cells { .. } => "cells",
+            P::Function(_) => "function",
         }
     }
 }

@@ -1,12 +1,15 @@
 //! [`Pattern`], the closed set of scalar fields of position a texture can hold, and [`Field`],
 //! a pattern with its warps and wave: the number a colour map will read at a point.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 
 use crate::num::Norm;
 
 use super::fbm::Fractal;
 use super::noisy::{self, Crackle};
+use super::program::Program;
 use super::ripples::{self, DEFAULT_WAVES};
 use super::warps::{Turbulence, Warp};
 use super::waves::{Wave, WaveShape};
@@ -15,7 +18,7 @@ use super::{geometric, tilings};
 /// A scalar field of position, in the pattern's own space (the caller applies the object's and
 /// the pattern's transforms first). Each variant's range is on its function and in
 /// [`Pattern::range`]; discrete patterns give tile indices ([`Pattern::entries`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Pattern {
     /// [`geometric::gradient`]: the coordinate along `axis`, its remainder modulo 1 above 1;
     /// (−∞, 1] (the wave wraps it).
@@ -137,6 +140,9 @@ pub enum Pattern {
         /// The seed.
         seed: u32,
     },
+    /// A user function of position compiled to a [`Program`] (the language's `pattern(f)`):
+    /// whatever it returns, a value that is not finite read as 0; unbounded.
+    Function(Arc<Program>),
 }
 
 /// Every POV-Ray pattern name [`Pattern::named`] knows.
@@ -281,6 +287,7 @@ impl Pattern {
             Pattern::Dents { seed } => noisy::dents(p, *seed),
             Pattern::Crackle { form, seed } => noisy::crackle(p, *form, *seed),
             Pattern::Cells { seed } => tilings::cells(p, *seed),
+            Pattern::Function(program) => program.eval(p),
         }
     }
 
@@ -315,7 +322,9 @@ impl Pattern {
             Pattern::Hexagon => (0.0, 2.0),
             Pattern::Square => (0.0, 3.0),
             Pattern::Triangular => (0.0, 5.0),
-            Pattern::Spiral1 { .. } | Pattern::Marble { .. } => (f64::NEG_INFINITY, f64::INFINITY),
+            Pattern::Spiral1 { .. } | Pattern::Marble { .. } | Pattern::Function(_) => {
+                (f64::NEG_INFINITY, f64::INFINITY)
+            }
             Pattern::Gradient { .. } => (f64::NEG_INFINITY, 1.0),
             Pattern::Radial => (0.25, 1.25),
             Pattern::Wood { .. } => (0.0, f64::INFINITY),
@@ -346,9 +355,9 @@ impl Field {
     /// The pattern with no warp and its default wave at frequency 1, phase 0.
     pub fn new(pattern: Pattern) -> Field {
         Field {
+            wave: Wave::new(pattern.default_wave()),
             pattern,
             warps: Vec::new(),
-            wave: Wave::new(pattern.default_wave()),
         }
     }
 

@@ -11,6 +11,7 @@
 //! - [`noise`]: Perlin's improved noise (signed, and POV-Ray-like in [0, 1]), vector noise;
 //! - [`fbm`]: fractal sums (fBm, turbulence, POV-Ray's scalar turbulence, vector fBm);
 //! - [`cells`]: Worley's F1 and F2;
+//! - [`program`]: user functions of position compiled to register operations;
 //! - [`Pattern`] ([`field`]): the closed set of patterns, implemented in [`geometric`],
 //!   [`tilings`], [`noisy`] and [`ripples`];
 //! - modifiers: [`waves`] (frequency, phase, wave shapes), [`warps`] (turbulence, repeat), and
@@ -24,6 +25,7 @@ pub mod geometric;
 pub mod hash;
 pub mod noise;
 pub mod noisy;
+pub mod program;
 pub mod ripples;
 pub mod slopes;
 pub mod tilings;
@@ -35,6 +37,7 @@ pub use color_map::{ColorMap, Rgbft, Stop};
 pub use fbm::Fractal;
 pub use field::{Field, NAMES, Pattern};
 pub use noisy::Crackle;
+pub use program::Program;
 pub use turbulence::Turbulence;
 pub use warps::{Repeat, Warp};
 pub use waves::{Wave, WaveShape};

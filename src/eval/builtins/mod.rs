@@ -9,6 +9,7 @@ pub(crate) mod lists;
 mod looks;
 mod math;
 mod mixes;
+pub(crate) mod noise;
 mod patterns;
 #[cfg(test)]
 mod reference;
@@ -33,6 +34,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         lists::FNS,
         looks::FNS,
         patterns::FNS,
+        noise::FNS,
         mixes::FNS,
         scene::FNS,
         lights::FNS,

@@ -2,6 +2,7 @@
 //! read through a grey colour map until `.colors(..)` gives it one (docs/textures.md).
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
@@ -42,6 +43,7 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&DENTS, dents),
     (&CRACKLE, crackle),
     (&CELLS, cells),
+    (&PATTERN, pattern),
 ];
 
 /// A pattern texture value: `pattern` with no warp, its default wave, in object space, read
@@ -476,4 +478,24 @@ fn crackle(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     };
     let seed = seed(it, &mut p)?;
     Ok(texture(it, Pattern::Crackle { form, seed }))
+}
+
+/// `pattern(f)`.
+static PATTERN: Sig = Sig::new(
+    "pattern",
+    Group::Look,
+    "A pattern from a function of the point: `f(p)` is the value at `p` (pattern space), compiled once when the pattern is made (language.md §16.4 lists what compiles); any range, waves wrap it as other patterns.",
+    &[Param::new(
+        "f",
+        Ty::Fn,
+        "a `fn(p)` of the point giving a number",
+    )],
+    "Texture",
+)
+.examples(&["pattern(fn(p) { p.x - floor(p.x) })"]);
+fn pattern(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &PATTERN, a)?;
+    let (f, sp) = p.req("f")?;
+    let program = it.compile_pattern(f, sp)?;
+    Ok(texture(it, Pattern::Function(Arc::new(program))))
 }

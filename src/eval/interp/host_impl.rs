@@ -61,6 +61,10 @@ impl Host for Interp<'_> {
         Interp::call_value(self, f, args, span, callee)
     }
 
+    fn compile_pattern(&mut self, f: Value, span: Span) -> R<crate::pattern::Program> {
+        super::super::compile::compile_value(self, f, span)
+    }
+
     fn dir(&self) -> &Path {
         Interp::dir(self)
     }

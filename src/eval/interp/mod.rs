@@ -94,6 +94,13 @@ impl Drop for Interp<'_> {
 }
 
 impl<'a> Interp<'a> {
+    /// The current module's item `name` (tests read what a scene bound).
+    #[cfg(test)]
+    pub(crate) fn item(&self, name: &str) -> Option<Value> {
+        let sym = crate::syntax::intern::Sym::new(name);
+        self.scope.items.borrow().get(&sym).map(|b| b.value.clone())
+    }
+
     /// A fresh evaluator whose current module is `scope`.
     pub(crate) fn new(
         opts: &'a EvalOptions,

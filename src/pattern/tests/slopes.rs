@@ -90,7 +90,10 @@ fn smooth_fields_agree_with_differences_everywhere() {
     field.wave.frequency = 1.7;
     assert_eq!(agreement(&field, 21), 1.0);
     for pattern in [Pattern::Leopard, Pattern::Dents { seed: 2 }, Pattern::Onion] {
-        assert!(agreement(&Field::new(pattern), 22) > 0.999, "{pattern:?}");
+        assert!(
+            agreement(&Field::new(pattern.clone()), 22) > 0.999,
+            "{pattern:?}"
+        );
     }
     assert!(
         agreement(
@@ -105,7 +108,7 @@ fn creased_sums_agree_with_differences_away_from_their_creases() {
     // granite's and wrinkles' octaves have creases and clamps where a difference straddles a
     // kink; away from them (nearly every point) the gradient is the derivative.
     for pattern in [Pattern::Granite { seed: 1 }, Pattern::Wrinkles { seed: 1 }] {
-        let share = agreement(&Field::new(pattern), 24);
+        let share = agreement(&Field::new(pattern.clone()), 24);
         assert!(share > 0.99, "{pattern:?}: {share}");
     }
 }
@@ -138,7 +141,7 @@ fn faded_sums_keep_the_relief_of_differences_at_the_step() {
     // straddling granite's many creases flatten them).
     let step = 0.02;
     for pattern in [Pattern::Wrinkles { seed: 5 }, Pattern::Granite { seed: 5 }] {
-        let field = Field::new(pattern);
+        let field = Field::new(pattern.clone());
         let mut rnd = Lcg::new(31);
         let (mut ours, mut theirs) = (0.0_f64, 0.0_f64);
         for _ in 0..20_000 {
