@@ -8,6 +8,7 @@ mod builtins;
 mod compile;
 mod compile_builtins;
 mod compile_calls;
+mod compile_ops;
 #[cfg(test)]
 mod compile_tests;
 mod error;
