@@ -5,7 +5,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::Picture;
+use super::image::Picture;
 
 /// A picture and its halvings down to one texel.
 #[derive(Clone, Debug)]

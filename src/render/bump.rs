@@ -29,7 +29,7 @@ pub(crate) fn perturb(
         let g = to_world * solid_gradient(pt, hit.local_point);
         return (n - scale * (g - g.dot(n) * n)).try_unit().unwrap_or(n);
     }
-    let (t, b) = tangent_frame(n);
+    let (t, b) = super::normal_map::tangent_frame(n);
     let (dh_du, dh_dv) = match tex {
         TextureMap::NormalMap(pic, mapping) => {
             let tangents = super::normal_map::fallback_tangents(n);
@@ -93,18 +93,6 @@ pub(crate) fn perturb(
         }
     };
     tilt(n, scale, dh_du * t + dh_dv * b)
-}
-
-/// The tangent frame at unit normal `n`: T = normalize(+Y × N) (increasing longitude u on a
-/// sphere; +X × N at the poles) and B = T × N (increasing v, southwards).
-pub(crate) fn tangent_frame(n: DVec3) -> (DVec3, DVec3) {
-    let up = if n.y.abs() > 0.999 {
-        DVec3::X
-    } else {
-        DVec3::Y
-    };
-    let t = up.cross(n).unit();
-    (t, t.cross(n))
 }
 
 /// `n` tilted against the height's slope `slope` (a tangent vector) by `scale`, unit; `n`

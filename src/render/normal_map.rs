@@ -7,14 +7,13 @@
 
 use glam::{DMat2, DVec3};
 
-use super::bump;
 use super::footprint;
 use super::texture;
-use crate::assets::Picture;
 use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::ir::Mapping;
 use crate::num::Norm;
 use crate::opt::Prepared;
+use crate::opt::textures::Picture;
 
 /// How the surface point moves per unit of u and of v at `hit` (world space), from the
 /// pixel's footprint: the two screen steps and the (u, v) they change, inverted. `None` at a
@@ -72,8 +71,20 @@ pub(crate) fn tilt(
 }
 
 /// The bump maps' tangent frame at `n` as dp/du, dp/dv: increasing longitude and latitude
-/// about +Y ([`bump::tangent_frame`]).
+/// about +Y ([`tangent_frame`]).
 pub(crate) fn fallback_tangents(n: DVec3) -> [DVec3; 2] {
-    let (t, b) = bump::tangent_frame(n);
+    let (t, b) = tangent_frame(n);
     [t, b]
+}
+
+/// The tangent frame at unit normal `n`: T = normalize(+Y × N) (increasing longitude u on a
+/// sphere; +X × N at the poles) and B = T × N (increasing v, southwards).
+pub(crate) fn tangent_frame(n: DVec3) -> (DVec3, DVec3) {
+    let up = if n.y.abs() > 0.999 {
+        DVec3::X
+    } else {
+        DVec3::Y
+    };
+    let t = up.cross(n).unit();
+    (t, t.cross(n))
 }

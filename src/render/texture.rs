@@ -7,11 +7,11 @@
 use glam::{DVec2, DVec3};
 
 use super::footprint;
-use crate::assets::MipChain;
 use crate::geometry::{MappingFrame, SurfaceHit};
 use crate::ir::Sampling;
 use crate::ir::{Color, Mapping, PatternSpace};
 use crate::num::Norm;
+use crate::opt::textures::MipChain;
 use crate::opt::{Prepared, PreparedPattern, TextureMap};
 use crate::pattern::Rgbft;
 
