@@ -9,6 +9,7 @@ mod looks;
 mod math;
 mod mixes;
 mod patterns;
+mod projection;
 #[cfg(test)]
 mod reference;
 mod scene;
