@@ -19,6 +19,14 @@ pub(crate) fn camera(c: &Camera, course_fov: bool) -> String {
     let mut out = String::new();
     let view = match c.projection {
         Projection::Perspective { fov_y } => format!("fov: {}rad", number(fov_y)),
+        Projection::Orthographic { height } => {
+            format!("projection: \"orthographic\", height: {}", number(height))
+        }
+        Projection::Equirectangular => "projection: \"equirectangular\"".to_string(),
+        Projection::Fisheye { fov } => format!("projection: \"fisheye\", fov: {}rad", number(fov)),
+        Projection::Cylindrical { fov } => {
+            format!("projection: \"cylindrical\", fov: {}rad", number(fov))
+        }
         Projection::Course if !course_fov => "course: true".to_string(),
         Projection::Course => {
             let size = c.up.norm();

@@ -42,7 +42,7 @@ impl Camera {
         let factor = factor.max(1);
         let up = match self.projection {
             Projection::Course => self.up * f64::from(factor),
-            Projection::Perspective { .. } => self.up,
+            _ => self.up,
         };
         Camera {
             width: self.width.div_ceil(factor),
@@ -65,4 +65,38 @@ pub enum Projection {
         /// Vertical field of view in radians, in (0, π).
         fov_y: f64,
     },
+    /// Parallel rays along the view direction (POV-Ray's `orthographic`): pixel (x, y) with
+    /// offset (sx, sy) starts at `eye + (x+sx−w/2)·p·right + ((h−1−y)+sy−h/2)·p·up'`, where
+    /// `p = height / h` is the pixel size in world units.
+    Orthographic {
+        /// The view's height in world units, > 0 (its width is `height · w / h`).
+        height: f64,
+    },
+    /// A 360° × 180° panorama (POV-Ray's `spherical` camera, `angle 360 180`): the pixel at
+    /// (u, v) = ((x+sx)/w, (y+1−sy)/h) looks at longitude `(u − ½)·2π` (positive to the right)
+    /// and latitude `(½ − v)·π` (positive up) from the view direction.
+    Equirectangular,
+    /// An equidistant fisheye (POV-Ray's `fisheye`): in the circle inscribed in the image
+    /// (radius `R = min(w, h) / 2` pixels), a pixel `r` pixels from the image centre looks
+    /// `(r / R) · fov / 2` away from the view direction; pixels outside the circle are black.
+    Fisheye {
+        /// The angle across the circle, in radians, in (0, 2π].
+        fov: f64,
+    },
+    /// A vertical cylindrical panorama (POV-Ray's `cylinder 1`): column `u = (x+sx)/w` looks at
+    /// the horizontal angle `(u − ½)·fov` from the view direction, row `v` at the height
+    /// `(½ − v) · h · fov / w` on the cylinder of radius 1 around the eye (square pixels on the
+    /// horizon).
+    Cylindrical {
+        /// The horizontal angle across the image, in radians, in (0, 2π].
+        fov: f64,
+    },
+}
+
+impl Projection {
+    /// Whether every ray starts at the eye and passes through a plane image (the perspective
+    /// and course cameras): what the packet tracer's pinhole rays and `project` assume.
+    pub fn is_planar(&self) -> bool {
+        matches!(self, Projection::Course | Projection::Perspective { .. })
+    }
 }

@@ -150,6 +150,33 @@ pub(crate) fn camera(c: &Camera) -> Result<(), Diagnostic> {
             "use a field of view such as 45deg",
         );
     }
+    if let Projection::Fisheye { fov } | Projection::Cylindrical { fov } = c.projection
+        && !(fov > 0.0 && fov <= std::f64::consts::TAU)
+    {
+        return bad(
+            "has a panorama's angle outside (0°, 360°]",
+            "use an angle such as 180deg (a fisheye) or 360deg (a cylinder)",
+        );
+    }
+    if let Projection::Orthographic { height } = c.projection
+        && !(height > 0.0 && height.is_finite())
+    {
+        return bad(
+            "has an orthographic view that is not > 0 units tall",
+            "give the view a height such as 4 (world units)",
+        );
+    }
+    if c.aperture > 0.0
+        && !matches!(
+            c.projection,
+            Projection::Perspective { .. } | Projection::Course | Projection::Orthographic { .. }
+        )
+    {
+        return bad(
+            "has a lens (`aperture > 0`) on a panorama",
+            "use `aperture: 0` with a panoramic projection",
+        );
+    }
     Ok(())
 }
 

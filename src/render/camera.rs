@@ -1,5 +1,6 @@
 //! Primary rays: the course camera (COURSE.md §2.4) and a perspective camera with a field of view,
-//! both optionally with a thin lens.
+//! both optionally with a thin lens; an orthographic camera (optionally with a lens) and the
+//! panoramas (`super::panorama`).
 
 use crate::num::Norm;
 use glam::DVec3;
@@ -8,6 +9,8 @@ use crate::geometry::Ray;
 use crate::geometry::lanes::RayLanes;
 use crate::ir::{self, Projection};
 use crate::lanes::{self, Lanes, V3, WIDTH};
+
+use super::panorama::Panorama;
 
 /// A camera ready to generate rays for continuous image coordinates.
 #[derive(Clone, Copy, Debug)]
@@ -28,6 +31,19 @@ pub struct Camera {
     focus_distance: f64,
     width: u32,
     height: u32,
+    /// How pixels map to rays beyond the pinhole's plane image.
+    kind: Kind,
+}
+
+/// The projections of a [`Camera`], as its ray function needs them.
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    /// Rays from the eye through the plane image (course and perspective).
+    Planar,
+    /// Parallel rays from the plane image through the eye.
+    Orthographic,
+    /// A panorama: rays from the eye in directions `super::panorama` computes.
+    Panorama(Panorama),
 }
 
 impl Camera {
@@ -40,7 +56,20 @@ impl Camera {
         let forward = view.unit();
         let r_unit = right_dir.unit();
         let u_unit = r_unit.cross(view).unit();
+        let mut kind = Kind::Planar;
         let (center, right, up) = match c.projection {
+            Projection::Orthographic { height } => {
+                // The plane through the eye, `height` world units tall (POV-Ray's orthographic).
+                kind = Kind::Orthographic;
+                let pixel = height / h;
+                (c.eye, r_unit * pixel, u_unit * pixel)
+            }
+            Projection::Equirectangular
+            | Projection::Fisheye { .. }
+            | Projection::Cylindrical { .. } => {
+                kind = Kind::Panorama(Panorama::new(c, forward, r_unit, u_unit));
+                (c.center, r_unit, u_unit)
+            }
             Projection::Course => {
                 // |up| is the size of one pixel on the plane through `center` (COURSE.md §2.4).
                 let size = c.up.norm();
@@ -70,7 +99,19 @@ impl Camera {
             focus_distance,
             width: c.width,
             height: c.height,
+            kind,
         }
+    }
+
+    /// Whether some pixels have no ray (a fisheye's corners, [`super::panorama::BLIND`]).
+    pub(crate) fn has_blind_pixels(&self) -> bool {
+        matches!(self.kind, Kind::Panorama(p) if p.is_fisheye())
+    }
+
+    /// Whether every ray starts at the eye and passes through a plane image, so the pinhole
+    /// packets and [`Camera::project`] apply.
+    pub(crate) fn is_planar(&self) -> bool {
+        matches!(self.kind, Kind::Planar)
     }
 
     /// Image width in pixels.
@@ -84,15 +125,19 @@ impl Camera {
     }
 
     /// Where world point `p` appears on the image, in continuous pixel units (x from the left
-    /// edge, y from the top edge; a pixel's centre is at +½), through the pinhole; `None` when
-    /// `p` is not in front of the eye.
+    /// edge, y from the top edge; a pixel's centre is at +½), through the pinhole (or along the
+    /// orthographic camera's rays); `None` when `p` is not in front of the eye, and for the
+    /// panoramas.
     pub fn project(&self, p: DVec3) -> Option<(f64, f64)> {
         let d = p - self.eye;
         let along = d.dot(self.forward);
-        if along <= 0.0 {
+        if along <= 0.0 || matches!(self.kind, Kind::Panorama(_)) {
             return None;
         }
-        let on_plane = self.eye + d * ((self.origin - self.eye).dot(self.forward) / along);
+        let on_plane = match self.kind {
+            Kind::Orthographic => p - along * self.forward,
+            _ => self.eye + d * ((self.origin - self.eye).dot(self.forward) / along),
+        };
         let rel = on_plane - self.origin;
         let px = rel.dot(self.right) / self.right.length_squared();
         let py = rel.dot(self.up) / self.up.length_squared();
@@ -118,14 +163,21 @@ impl Camera {
         let px = f64::from(x) + sx;
         let py = f64::from(self.height - 1 - y) + sy;
         let target = self.origin + px * self.right + py * self.up;
-        let dir = (target - self.eye).unit();
+        let (start, dir) = match self.kind {
+            Kind::Planar => (self.eye, (target - self.eye).unit()),
+            Kind::Orthographic => (target, self.forward),
+            Kind::Panorama(p) => {
+                let v = f64::from(self.height) - py;
+                return Ray::new(self.eye, p.dir(px, v));
+            }
+        };
         if self.aperture <= 0.0 {
-            return Ray::new(self.eye, dir);
+            return Ray::new(start, dir);
         }
-        // Thin lens: aim every lens point at where the pinhole ray meets the focal plane.
-        let focus = self.eye + dir * (self.focus_distance / dir.dot(self.forward));
+        // Thin lens: aim every lens point at where the lens-less ray meets the focal plane.
+        let focus = start + dir * (self.focus_distance / dir.dot(self.forward));
         let (a, b) = concentric_disk(lens.0, lens.1);
-        let origin = self.eye + self.aperture * (a * self.lens_u + b * self.lens_v);
+        let origin = start + self.aperture * (a * self.lens_u + b * self.lens_v);
         Ray::new(origin, (focus - origin).unit())
     }
 }
@@ -354,5 +406,57 @@ mod tests {
         let pa = a.at((500.0 - a.origin.z) / a.dir.z);
         let pb = b.at((500.0 - b.origin.z) / b.dir.z);
         assert!((pa - pb).norm() < 1e-9);
+    }
+
+    #[test]
+    fn orthographic_rays_are_parallel_and_start_on_the_eye_plane() {
+        // Looking down −z from (1, 2, 10): 4 units tall, 80 × 40 pixels of 0.05 units.
+        let c = ir::Camera {
+            center: DVec3::new(1.0, 2.0, 0.0),
+            projection: Projection::Orthographic { height: 2.0 },
+            ..course(DVec3::new(1.0, 2.0, 10.0), DVec3::Y, 80, 40)
+        };
+        let cam = Camera::new(&c);
+        for (i, j) in [(0, 0), (79, 39), (13, 27), (40, 20)] {
+            let r = cam.ray(i, j, 0.5, 0.5, (0.5, 0.5));
+            assert_eq!(r.dir, DVec3::NEG_Z, "({i}, {j})");
+            // eye + (i + ½ − w/2)·p·right + (h/2 − j − ½)·p·up, p = height / h.
+            let p = 2.0 / 40.0;
+            let want = DVec3::new(
+                1.0 + (f64::from(i) + 0.5 - 40.0) * p,
+                2.0 + (20.0 - f64::from(j) - 0.5) * p,
+                10.0,
+            );
+            assert!(
+                (r.origin - want).norm() < 1e-12,
+                "({i}, {j}): {:?}",
+                r.origin
+            );
+            let (px, py) = cam.project(r.at(3.0)).unwrap();
+            assert!((px - (f64::from(i) + 0.5)).abs() < 1e-9);
+            assert!((py - (f64::from(j) + 0.5)).abs() < 1e-9);
+        }
+        assert!(!cam.is_planar());
+    }
+
+    #[test]
+    fn orthographic_lens_rays_meet_at_the_focal_plane() {
+        let mut c = course(DVec3::new(0.0, 0.0, 10.0), DVec3::Y, 10, 10);
+        c.center = DVec3::ZERO;
+        c.projection = Projection::Orthographic { height: 3.0 };
+        c.aperture = 0.5;
+        c.focus_distance = 4.0;
+        let cam = Camera::new(&c);
+        let a = cam.ray(3, 4, 0.5, 0.5, (0.1, 0.9));
+        let b = cam.ray(3, 4, 0.5, 0.5, (0.8, 0.2));
+        let pinhole = Camera::new(&ir::Camera {
+            aperture: 0.0,
+            ..c.clone()
+        })
+        .ray(3, 4, 0.5, 0.5, (0.5, 0.5));
+        let on_plane = |r: Ray| r.at((6.0 - r.origin.z) / r.dir.z);
+        assert!(a.origin != b.origin);
+        assert!((on_plane(a) - pinhole.at(4.0)).norm() < 1e-9);
+        assert!((on_plane(b) - pinhole.at(4.0)).norm() < 1e-9);
     }
 }

@@ -354,6 +354,15 @@ pub fn explain(
     };
     let mut ctx = Ctx::new();
     let ray = view.camera_sample(x, y, k, (k, grid.len()), offset, &mut ctx);
+    if super::panorama::is_blind(&ray) {
+        return Err(Diagnostic::new(
+            crate::diag::Severity::Error,
+            "rtc::why::no_ray",
+            Some(scene.camera().span),
+            format!("pixel ({x}, {y}) is outside the fisheye's circle: it is black, no ray is traced"),
+        )
+        .with_help("ask about a pixel inside the circle (radius min(width, height) / 2 around the image centre)"));
+    }
     let mut tree = Tree {
         scene,
         stack: Vec::new(),

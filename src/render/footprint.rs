@@ -26,6 +26,12 @@ pub(crate) fn pixel_angle(cam: &Camera) -> f64 {
         Projection::Perspective { fov_y } => {
             2.0 * libm::tan(0.5 * fov_y) / f64::from(cam.height.max(1))
         }
+        // A pixel's width in world units, as an angle seen from `distance(eye, center)`.
+        Projection::Orthographic { height } => height / f64::from(cam.height.max(1)) / view.norm(),
+        // A panorama's pixel spans the same angle everywhere along its middle row.
+        Projection::Equirectangular => std::f64::consts::PI / f64::from(cam.height.max(1)),
+        Projection::Fisheye { fov } => fov / f64::from(cam.width.min(cam.height).max(1)),
+        Projection::Cylindrical { fov } => fov / f64::from(cam.width.max(1)),
     }
 }
 

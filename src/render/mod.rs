@@ -41,6 +41,7 @@ mod mix;
 mod normal_map;
 pub mod offset;
 pub mod output;
+mod panorama;
 pub mod part;
 pub mod path;
 mod pixel;

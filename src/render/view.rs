@@ -116,6 +116,7 @@ impl View {
             && !self.spread_lights
             && !self.motion_blur
             && !self.camera.has_lens()
+            && self.camera.is_planar()
             && BATCH <= camera::PINHOLE_BATCH
     }
 

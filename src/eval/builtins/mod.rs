@@ -11,6 +11,7 @@ mod math;
 mod mixes;
 pub(crate) mod noise;
 mod patterns;
+mod projection;
 #[cfg(test)]
 mod reference;
 mod scene;

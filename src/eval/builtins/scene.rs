@@ -28,10 +28,15 @@ static CAMERA: Sig = Sig::new(
             .or(Lit::Vec3([0.0, 0.0, 0.0])),
         Param::new("up", Ty::Vec3, "up on the image (not along `center - eye`)")
             .or(Lit::Vec3([0.0, 1.0, 0.0])),
-        Param::new("fov", Ty::Angle, "the vertical field of view")
-            .unit(Unit::Angle)
-            .range(Range::Open(0.0, std::f64::consts::PI))
-            .or(Lit::Degrees(40.0)),
+        Param::new(
+            "fov",
+            Ty::Angle,
+            "the vertical field of view; a fisheye's angle across its circle (default 180deg) or a cylinder's across the image (default 360deg), up to 360deg",
+        )
+        .unit(Unit::Angle)
+        .range(Range::Open(0.0, std::f64::consts::PI))
+        .checked_by_builtin()
+        .or(Lit::Degrees(40.0)),
         Param::new(
             "resolution",
             Ty::Pair(&Ty::Int),
@@ -81,10 +86,26 @@ static CAMERA: Sig = Sig::new(
             "the course camera: a pixel at `center` is |up| wide",
         )
         .or(Lit::Bool(false)),
+        Param::new(
+            "projection",
+            Ty::String,
+            "\"perspective\", \"orthographic\", \"equirectangular\", \"fisheye\" or \"cylindrical\"",
+        )
+        .checked_by_builtin()
+        .or(Lit::Name("\"perspective\"")),
+        Param::new(
+            "height",
+            Ty::Float,
+            "the orthographic view's height (the width follows the image's shape)",
+        )
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .checked_by_builtin()
+        .computed("2 * distance(eye, center) * tan(fov / 2)"),
     ],
     "Camera",
 )
-.examples(&["camera { eye: [0, 2, 8], center: [0, 1, 0], up: Y, fov: 40deg, resolution: [640, 480], aperture: 0.05, focus: 7 }", "camera { eye: [0, 2, 8], shutter: [0, 0.5], eye_close: [0.2, 2, 8], center_close: [0, 1, 0] }", "camera { eye: [200, 200, 1000], center: [200, 200, 0], up: [0, 2, 0], course: true }"]);
+.examples(&["camera { eye: [0, 2, 8], center: [0, 1, 0], up: Y, fov: 40deg, resolution: [640, 480], aperture: 0.05, focus: 7 }", "camera { eye: [0, 2, 8], shutter: [0, 0.5], eye_close: [0.2, 2, 8], center_close: [0, 1, 0] }", "camera { eye: [200, 200, 1000], center: [200, 200, 0], up: [0, 2, 0], course: true }", "camera { eye: [0, 2, 8], center: [0, 1, 0], projection: \"orthographic\", height: 4 }", "camera { eye: [0, 1, 0], center: [0, 1, -1], projection: \"equirectangular\", resolution: [720, 360] }", "camera { eye: [0, 1, 0], center: [0, 2, 0], up: Z, projection: \"fisheye\", fov: 180deg, resolution: [480, 480] }"]);
 fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &CAMERA, a)?;
     let (eye, es) = p.vec3(it, "eye")?;
@@ -102,7 +123,9 @@ fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         .with_help("remove `fov`, or `course: true` to size the view by the field of view")
         .into());
     }
-    let (fov, _) = p.angle(it, "fov")?;
+    // Which fields were written (read before the values are taken).
+    let given = (p.given("fov").is_some(), p.given("aperture"));
+    let (fov, fov_span) = p.angle(it, "fov")?;
     let (width, height) = match p.get("resolution") {
         None => p.default_ints("resolution").into(),
         Some((v, sp)) => match &v {
@@ -153,6 +176,14 @@ fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             d
         }
     };
+    let projection = super::projection::projection(
+        it,
+        &mut p,
+        course,
+        (fov, fov_span),
+        view,
+        (aperture, given),
+    )?;
     let shutter = crate::eval::motion::shutter(&mut p)?;
     let motion = crate::eval::motion::camera_motion(it, &mut p, eye, center, up)?;
     Ok(Value::Camera(Rc::new(ir::Camera {
@@ -161,11 +192,7 @@ fn camera(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         up,
         width: width as u32,
         height: height as u32,
-        projection: if course {
-            ir::Projection::Course
-        } else {
-            ir::Projection::Perspective { fov_y: fov }
-        },
+        projection,
         aperture,
         focus_distance: focus,
         shutter,

@@ -73,6 +73,9 @@ fn hit_range(
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for k in 0..first.samples {
             let ray = (first.ray)(x, y, k);
+            if crate::render::panorama::is_blind(&ray) {
+                continue;
+            }
             if let Some(hit) = scene.world().intersect(&ray, 0.0, f64::INFINITY) {
                 lo = lo.min(hit.t);
                 hi = hi.max(hit.t);

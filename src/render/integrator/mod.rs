@@ -85,6 +85,11 @@ impl<'a> Integrator<'a> {
         out: &mut [Color],
         rec: &mut R,
     ) {
+        if super::panorama::is_blind(ray) {
+            // A fisheye's pixel outside its circle: black, nothing traced (POV-Ray's rule).
+            out.fill(Color::ZERO);
+            return;
+        }
         out[0] = match self {
             Integrator::Whitted(w) => w.trace_with(ray, Path::CAMERA, ctx, rec),
             Integrator::Normal(n) => first_hit(n.scene(), ray, rec, |r| n.color(r)),
