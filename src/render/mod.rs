@@ -42,6 +42,8 @@ mod normal_map;
 pub mod offset;
 pub mod output;
 mod panorama;
+#[cfg(test)]
+mod panorama_tests;
 pub mod part;
 pub mod path;
 mod pixel;
