@@ -110,9 +110,9 @@ pub(crate) fn light(l: &Light) -> String {
             "spot_light",
             vec![
                 format!("position: {}", vector(position)),
-                format!("target: {}", vector(position + spot.axis)),
-                format!("radius: {}deg", number(spot.radius.to_degrees())),
-                format!("falloff: {}deg", number(spot.falloff.to_degrees())),
+                format!("target: {}", vector(spot.target)),
+                format!("radius: {}rad", number(spot.radius)),
+                format!("falloff: {}rad", number(spot.falloff)),
                 format!("tightness: {}", number(spot.tightness)),
             ],
         ),

@@ -42,7 +42,9 @@ impl Light {
 /// `cos^tightness` of the angle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spot {
-    /// The unit axis, from the light towards what it points at.
+    /// The point the axis goes through, as written.
+    pub target: DVec3,
+    /// The unit axis, from the light towards `target`.
     pub axis: DVec3,
     /// The half-angle of full strength, in radians.
     pub radius: f64,

@@ -236,6 +236,7 @@ fn spot_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (color, _) = p.color(it, "color")?;
     let mut light = shaped(it, &mut p, ir::LightKind::Point { position }, color, s)?;
     light.spot = Some(ir::Spot {
+        target,
         axis,
         radius,
         falloff,
