@@ -429,6 +429,18 @@ impl Params {
         number_in_range(self.sig, &self.sig.params[self.idx(name)], x, span)
     }
 
+    /// The declared range check of `name` for a parameter its built-in checks itself
+    /// (`checked_by_builtin`: the rule depends on other arguments), once it knows the rule
+    /// applies.
+    pub(crate) fn declared_range(&self, name: &str, x: f64, span: Span) -> R<()> {
+        let param = &self.sig.params[self.idx(name)];
+        if param.range.holds(x) && x.is_finite() {
+            Ok(())
+        } else {
+            Err(out_of_range(self.sig, param, x, span))
+        }
+    }
+
     /// The schema's default of the pair of `Int`s `name` (`resolution: [640, 480]`).
     pub(crate) fn default_ints(&self, name: &str) -> [i64; 2] {
         let param = &self.sig.params[self.idx(name)];

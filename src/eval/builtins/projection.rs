@@ -112,14 +112,14 @@ pub(super) fn projection(
     };
     match kind {
         "perspective" => {
-            p.in_range("fov", fov, fov_span)?;
+            p.declared_range("fov", fov, fov_span)?;
             Ok(Projection::Perspective { fov_y: fov })
         }
         "orthographic" => {
             let (h, sp) = match height {
                 Some(h) => h,
                 None => {
-                    p.in_range("fov", fov, fov_span)?;
+                    p.declared_range("fov", fov, fov_span)?;
                     (2.0 * view.norm() * libm::tan(0.5 * fov), fov_span)
                 }
             };
