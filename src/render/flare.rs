@@ -68,11 +68,6 @@ fn visible_fraction(scene: &Prepared, eye: DVec3, light: &PreparedLight, stats: 
     seen as f64 / points.len() as f64
 }
 
-/// The centre of a light (an area light's middle, a far point up a parallel light).
-fn centre(light: &PreparedLight) -> DVec3 {
-    light.kind.center()
-}
-
 /// The flare sources of `scene` through `camera`: the lights in front of the eye, inside the
 /// frame, and bright enough once hidden parts are taken off.
 pub(crate) fn sources(
@@ -84,7 +79,7 @@ pub(crate) fn sources(
     let (w, h) = (f64::from(camera.width()), f64::from(camera.height()));
     let mut out = Vec::new();
     for light in scene.lights() {
-        let Some((x, y)) = camera.project(centre(light)) else {
+        let Some((x, y)) = camera.project(light.kind.center()) else {
             continue;
         };
         if !(0.0..=w).contains(&x) || !(0.0..=h).contains(&y) {
