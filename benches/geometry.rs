@@ -68,6 +68,7 @@ fn scene_of(path: &Path, smooth: bool) -> Scene {
             transform: rtc::ir::Transform::IDENTITY,
             material: None,
             span: Span::default(),
+            visibility: Default::default(),
         }],
         settings: RenderSettings::default(),
         memory: Default::default(),

@@ -25,7 +25,7 @@ mod texture;
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;
-pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot};
+pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share};
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use placement::Transform;
@@ -177,6 +177,39 @@ pub struct Object {
     pub motion: Option<Box<Motion>>,
     /// Where it was defined.
     pub span: Span,
+    /// The rays that see it (all, unless `.no_shadow()`, `.no_image()` or `.no_reflection()`).
+    pub visibility: Visibility,
+}
+
+/// Which rays see an object (POV-Ray's `no_shadow`, `no_image` and `no_reflection`): a set of
+/// the kinds of ray that pass through it as if it were not there.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Visibility(u8);
+
+impl Visibility {
+    /// Seen by every ray.
+    pub const ALL: Visibility = Visibility(0);
+    /// Casts no shadow: shadow rays pass through it.
+    pub const NO_SHADOW: Visibility = Visibility(1);
+    /// Not in the image: camera rays, and rays refracted from them, pass through it.
+    pub const NO_IMAGE: Visibility = Visibility(2);
+    /// Not in reflections: rays that have been reflected pass through it.
+    pub const NO_REFLECTION: Visibility = Visibility(4);
+
+    /// Both sets' hidden ray kinds.
+    pub fn with(self, other: Visibility) -> Visibility {
+        Visibility(self.0 | other.0)
+    }
+
+    /// Whether the kinds of `flag` pass through it.
+    pub fn hides(self, flag: Visibility) -> bool {
+        self.0 & flag.0 != 0
+    }
+
+    /// Whether every ray sees it.
+    pub fn is_all(self) -> bool {
+        self.0 == 0
+    }
 }
 
 /// Every kind of geometry the renderer knows.

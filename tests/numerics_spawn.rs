@@ -173,6 +173,7 @@ fn plates(s: f64, thickness: f64, gap: f64) -> Vec<Object> {
                 material: None,
                 motion: None,
                 span: rtc::source::Span::default(),
+                visibility: Default::default(),
             }
         })
         .collect()

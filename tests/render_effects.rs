@@ -173,6 +173,8 @@ fn random_scene() -> Scene {
         u: DVec3::new(100.0, 0.0, 0.0),
         v: DVec3::new(0.0, 100.0, 0.0),
         samples: [3, 3],
+        circular: false,
+        orient: false,
     };
     s.settings.max_depth = 2;
     s.settings.sampling = Sampling::Grid { factor: 2 };
@@ -203,6 +205,8 @@ fn area_lights_soften_shadow_edges() {
         u: DVec3::new(200.0, 0.0, 0.0),
         v: DVec3::new(0.0, 200.0, 0.0),
         samples: [4, 4],
+        circular: false,
+        orient: false,
     };
     // On the grey backdrop a hard shadow leaves each pixel either fully lit (as without
     // shadows) or at the ambient level trunc(255·0.2·0.4) = 20; a penumbra lies in between.
@@ -260,6 +264,7 @@ fn missing_material_and_texture_ids_are_diagnosed_not_panics() {
         transform: rtc::ir::Transform::IDENTITY,
         material: Some(rtc::ir::MaterialId(9)),
         span: Span::default(),
+        visibility: Default::default(),
     });
     assert_eq!(
         render_image(&s, &opts(1)).unwrap_err().items[0].code,
@@ -381,6 +386,7 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
         transform: rtc::ir::Transform::IDENTITY,
         material: Some(m),
         span: Span::default(),
+        visibility: Default::default(),
     };
     let render_with = |wrap: &dyn Fn(Object) -> Object| {
         let mut s = empty([200.0, 200.0, 1000.0]);
@@ -403,12 +409,14 @@ fn a_textured_sphere_maps_the_same_inside_csg() {
                         transform: rtc::ir::Transform::IDENTITY,
                         material: None,
                         span: Span::default(),
+                        visibility: Default::default(),
                     },
                 ],
             },
             transform: rtc::ir::Transform::IDENTITY,
             material: None,
             span: Span::default(),
+            visibility: Default::default(),
         }
     };
     let alone = render_with(&|b| b);

@@ -47,6 +47,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         material: None,
         motion: None,
         span: Default::default(),
+        visibility: Default::default(),
     });
     if centre.is_finite() && reach.is_finite() {
         scene.camera.center = centre;

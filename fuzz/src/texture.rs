@@ -46,6 +46,7 @@ pub fn exercise(path: &Path) {
             material: None,
             motion: None,
             span: Default::default(),
+            visibility: Default::default(),
         });
         let tex = scene.add_texture(Texture::Image {
             path: path.to_path_buf(),

@@ -13,7 +13,7 @@ use glam::DVec3;
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::geometry::aabb::Aabb;
 use crate::geometry::shapes::{self, csg};
-use crate::ir::{Object, Scene, Shape};
+use crate::ir::{Object, Scene, Shape, Visibility};
 use crate::opt::objects::{inside_mesh, mesh_bounds};
 
 /// At most this many enclosing objects are kept for the end of the pass.
@@ -60,8 +60,10 @@ impl Enclosures {
         // Points outside the object's box are outside it: only what is left asks whether it is
         // a closed solid and what its inside holds (for a large mesh, both walk its faces).
         let near = |p: DVec3| world.is_none_or(|b| b.contains(p, 0.0));
+        // An object that casts no shadow (a light's `looks_like` bulb) blocks no light.
+        let blocks_light = !o.visibility.hides(Visibility::NO_SHADOW);
         let lights: Vec<usize> = (scene.lights.iter().enumerate())
-            .filter(|(_, l)| near(l.kind.center()))
+            .filter(|(_, l)| blocks_light && near(l.kind.center()))
             .map(|(i, _)| i)
             .collect();
         let eye = near(scene.camera.eye);

@@ -170,6 +170,7 @@ pub(crate) fn sphere_object(
             transform: crate::ir::Transform::IDENTITY,
             material,
             span,
+            visibility: crate::ir::Visibility::ALL,
         },
         Some((pole, angle)) => Object {
             motion: None,
@@ -180,6 +181,7 @@ pub(crate) fn sphere_object(
             transform: sphere_orientation(position, pole, angle).into(),
             material,
             span,
+            visibility: crate::ir::Visibility::ALL,
         },
     }
 }

@@ -68,6 +68,7 @@ pub(crate) fn object(
             transform: crate::ir::Transform::IDENTITY,
             material: Some(material),
             span: node.span,
+            visibility: crate::ir::Visibility::ALL,
         });
     }
 }
@@ -348,6 +349,7 @@ fn mesh(
         .into(),
         material,
         span: node.span,
+        visibility: crate::ir::Visibility::ALL,
     };
     parts.objects.push(mesh);
 }

@@ -10,6 +10,7 @@ use super::placement;
 use super::text::{color, number, string, unit_direction, vector};
 use crate::ir::{
     Arg, CsgOp, ImageFilter, Mapping, Material, Mix, Object, Scene, ShadingModel, Shape, Texture,
+    Visibility,
 };
 
 /// Longest line before an object's methods go on lines of their own.
@@ -231,6 +232,15 @@ fn calls(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Vec
     ));
     if let Some(m) = o.material {
         parts.push(format!(".material({})", names(m.0)));
+    }
+    for (flag, method) in [
+        (Visibility::NO_SHADOW, ".no_shadow()"),
+        (Visibility::NO_IMAGE, ".no_image()"),
+        (Visibility::NO_REFLECTION, ".no_reflection()"),
+    ] {
+        if o.visibility.hides(flag) {
+            parts.push(method.to_string());
+        }
     }
     parts
 }

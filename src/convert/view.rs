@@ -126,15 +126,43 @@ pub(crate) fn light(l: &Light) -> String {
                 u,
                 v,
                 samples,
+                circular,
+                orient,
             },
             _,
-        ) => (
-            "area_light",
-            vec![
+        ) => {
+            let mut fields = vec![
                 format!("corner: {}", vector(corner)),
                 format!("u: {}", vector(u)),
                 format!("v: {}", vector(v)),
                 format!("samples: [{}, {}]", samples[0], samples[1]),
+            ];
+            if circular {
+                fields.push("circular: true".into());
+            }
+            if orient {
+                fields.push("orient: true".into());
+            }
+            ("area_light", fields)
+        }
+        (
+            LightKind::Cylinder {
+                position,
+                target,
+                radius,
+                falloff,
+                tightness,
+                ..
+            },
+            _,
+        ) => (
+            "cylinder_light",
+            vec![
+                format!("position: {}", vector(position)),
+                format!("target: {}", vector(target)),
+                format!("radius: {}", number(radius)),
+                format!("falloff: {}", number(falloff)),
+                format!("tightness: {}", number(tightness)),
             ],
         ),
         (LightKind::Parallel { direction }, _) => (

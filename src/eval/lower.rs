@@ -43,6 +43,30 @@ pub(crate) struct Lowerer {
     tex_ids: super::fxhash::FxHashMap<u64, ir::TextureId>,
 }
 
+/// What an object inherits from the group or scene around it while it is lowered.
+#[derive(Clone, Copy)]
+struct Enclosing {
+    /// The placement of the enclosing group.
+    placement: DAffine3,
+    /// The material its members take when they name none.
+    material: Option<ir::MaterialId>,
+    /// The motion of the enclosing group.
+    motion: Option<ir::Motion>,
+    /// The rays the enclosing group hides from.
+    visibility: ir::Visibility,
+}
+
+impl Enclosing {
+    /// A CSG operand inherits nothing: its placement, material, motion and flags are the CSG
+    /// node's, applied to the node.
+    const OPERAND: Enclosing = Enclosing {
+        placement: DAffine3::IDENTITY,
+        material: None,
+        motion: None,
+        visibility: ir::Visibility::ALL,
+    };
+}
+
 /// Whether a value is something a scene file may emit.
 pub(crate) fn emittable(v: &Value) -> bool {
     match v {
@@ -79,7 +103,19 @@ impl Lowerer {
                     .with_help("emit fewer objects, e.g. with a coarser loop `step`"));
                 }
             }
-            Value::Light(l) => self.lights.push((**l).clone()),
+            Value::Light(l) => {
+                self.lights.push(l.light.clone());
+                if let Some(look) = &l.looks_like {
+                    // At the light's centre, and never in the way of any light (POV-Ray's rule:
+                    // the light shines from inside it).
+                    let at = DAffine3::from_translation(l.light.kind.center());
+                    let mut shown = look.clone();
+                    shown.transform = at * shown.transform;
+                    shown.motion = shown.motion.map(|m| m.transformed(at));
+                    shown.visibility = shown.visibility.with(ir::Visibility::NO_SHADOW);
+                    self.emit(&Value::Object(Rc::new(shown)), budget, span)?;
+                }
+            }
             Value::Camera(c) => self.cameras.push(c.clone()),
             Value::Render(r) => self.renders.push(r.clone()),
             Value::List(l) => {
@@ -204,19 +240,33 @@ impl Lowerer {
 
     fn object(&mut self, o: &Obj, parent: DAffine3, inherited: Option<ir::MaterialId>) {
         let mut out = std::mem::take(&mut self.objects);
-        self.lower_into(o, parent, inherited, None, &mut out, true);
+        self.lower_into(
+            o,
+            Enclosing {
+                placement: parent,
+                material: inherited,
+                motion: None,
+                visibility: ir::Visibility::ALL,
+            },
+            &mut out,
+            true,
+        );
         self.objects = out;
     }
 
     fn lower_into(
         &mut self,
         o: &Obj,
-        parent: DAffine3,
-        inherited: Option<ir::MaterialId>,
-        moving: Option<ir::Motion>,
+        from: Enclosing,
         out: &mut Vec<ir::Object>,
         scene_level: bool,
     ) {
+        let Enclosing {
+            placement: parent,
+            material: inherited,
+            motion: moving,
+            visibility: hidden,
+        } = from;
         // A scene-level object (not a CSG operand) gets its provenance entry.
         if scene_level
             && !matches!(o.shape, ObjShape::Group(_))
@@ -233,6 +283,8 @@ impl Lowerer {
             Some(m) => Some(self.material(m)),
             None => inherited,
         };
+        // A group's flags hold for its members.
+        let visibility = hidden.with(o.visibility);
         match &o.shape {
             ObjShape::Prim(s) => out.push(ir::Object {
                 shape: s.clone(),
@@ -240,6 +292,7 @@ impl Lowerer {
                 material: mat,
                 motion: motion.map(Box::new),
                 span: o.span,
+                visibility,
             }),
             ObjShape::Group(ch) => {
                 let placing = self.origins.is_some();
@@ -247,7 +300,17 @@ impl Lowerer {
                     self.placing.push(o.origin);
                 }
                 for c in ch.iter() {
-                    self.lower_into(c, t, mat, motion, out, scene_level);
+                    self.lower_into(
+                        c,
+                        Enclosing {
+                            placement: t,
+                            material: mat,
+                            motion,
+                            visibility,
+                        },
+                        out,
+                        scene_level,
+                    );
                 }
                 if placing {
                     self.placing.pop();
@@ -262,7 +325,7 @@ impl Lowerer {
                             let mut sub = Vec::new();
                             let cm = c.material.as_ref().map(|m| self.material(m));
                             for x in g.iter() {
-                                self.lower_into(x, DAffine3::IDENTITY, None, None, &mut sub, false);
+                                self.lower_into(x, Enclosing::OPERAND, &mut sub, false);
                             }
                             kids.push(ir::Object {
                                 shape: ir::Shape::Csg {
@@ -273,11 +336,15 @@ impl Lowerer {
                                 material: cm,
                                 motion: c.motion.map(Box::new),
                                 span: c.span,
+                                visibility: c.visibility,
                             });
                         }
-                        _ => self.lower_into(c, DAffine3::IDENTITY, None, None, &mut kids, false),
+                        _ => self.lower_into(c, Enclosing::OPERAND, &mut kids, false),
                     }
                 }
+                // The renderer hides whole top-level objects: an operand's flags hide the
+                // whole CSG object (documented, docs/language.md "Visibility").
+                let visibility = kids.iter().fold(visibility, |v, k| v.with(flags_within(k)));
                 out.push(ir::Object {
                     shape: ir::Shape::Csg {
                         op: *op,
@@ -287,6 +354,7 @@ impl Lowerer {
                     material: mat,
                     motion: motion.map(Box::new),
                     span: o.span,
+                    visibility,
                 });
             }
         }
@@ -463,4 +531,14 @@ pub(crate) enum Sink<'a> {
     List(&'a mut Vec<Value>),
     /// Emitted straight into the scene (top-level loops), with the statement's span.
     Emit(&'a mut Lowerer, Span),
+}
+
+/// The visibility flags of `o` and of everything inside it (CSG operands, at any depth).
+fn flags_within(o: &ir::Object) -> ir::Visibility {
+    match &o.shape {
+        ir::Shape::Csg { children, .. } => children
+            .iter()
+            .fold(o.visibility, |v, k| v.with(flags_within(k))),
+        _ => o.visibility,
+    }
 }

@@ -1,4 +1,4 @@
-//! Method calls: transforms and `.material(m)` on objects, transform chaining, applying a
+//! Method calls: transforms, `.material(m)` and the visibility flags on objects, transform chaining, applying a
 //! transform to a point or vector, RNG draws, list methods and vector methods.
 
 use std::rc::Rc;
@@ -22,7 +22,11 @@ use super::value::{Obj, Value};
 pub(crate) static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
     (
         "Object",
-        &[TRANSFORMS, &[&MATERIAL, &MOVING, &LOOK_AT_METHOD]],
+        &[
+            TRANSFORMS,
+            &[&MATERIAL, &MOVING, &LOOK_AT_METHOD],
+            super::visibility::METHODS,
+        ],
     ),
     ("Transform", &[TRANSFORMS, &[&POINT, &VECTOR]]),
     ("Texture", &[TRANSFORMS, super::texture_methods::METHODS]),
@@ -96,6 +100,9 @@ pub(crate) fn call_method(
         }
         Value::Object(o) if n == "moving" => {
             return super::motion::moving(it, o, site, args);
+        }
+        Value::Object(o) if super::visibility::is_method(n) => {
+            return super::visibility::hide(o, site, args);
         }
         Value::Object(mut o) if n == "look_at" => {
             let (to, up, ts) = super::motion::look_at_method(it, site, args)?;

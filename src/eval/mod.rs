@@ -34,6 +34,7 @@ mod texture_methods;
 mod transform;
 mod types;
 mod value;
+mod visibility;
 mod with;
 
 use std::path::Path;

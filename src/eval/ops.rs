@@ -403,5 +403,6 @@ fn csg(
         motion: None,
         span,
         origin: it.origin(),
+        visibility: crate::ir::Visibility::ALL,
     })))
 }

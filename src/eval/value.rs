@@ -47,8 +47,8 @@ pub(crate) enum Value {
     Material(Rc<Mat>),
     /// A texture.
     Texture(Rc<Tex>),
-    /// A light.
-    Light(Rc<ir::Light>),
+    /// A light, with the object that shows it.
+    Light(Rc<LightVal>),
     /// A camera.
     Camera(Rc<ir::Camera>),
     /// Render settings.
@@ -191,6 +191,18 @@ pub(crate) struct Obj {
     pub(crate) span: Span,
     /// Its origin in the provenance record (0 when none is kept: `eval::provenance`).
     pub(crate) origin: u32,
+    /// The rays that see it (`.no_shadow()`, `.no_image()`, `.no_reflection()`).
+    pub(crate) visibility: ir::Visibility,
+}
+
+/// A light value: the light and the object drawn where it is (POV-Ray's `looks_like`).
+#[derive(Clone, Debug)]
+pub(crate) struct LightVal {
+    /// The light.
+    pub(crate) light: ir::Light,
+    /// The object that shows it, in the light's own space (moved to its centre when emitted;
+    /// it casts no shadow), if any.
+    pub(crate) looks_like: Option<Obj>,
 }
 
 /// Bytes one list element is charged to the memory budget: the size of a value (what the

@@ -123,7 +123,55 @@ pub enum LightKind {
         v: DVec3,
         /// Stratified sample counts along `u` and `v` (each ≥ 1).
         samples: [u32; 2],
+        /// The light is the ellipse inscribed in the parallelogram (POV-Ray's `circular`): the
+        /// grid is carried onto it by the equal-area concentric map.
+        circular: bool,
+        /// The disk turns to face each point it lights, keeping its radius `|u| / 2` (POV-Ray's
+        /// `orient`; only with `circular`).
+        orient: bool,
     },
+    /// A cylinder light (POV-Ray's `cylinder`): light travelling along the unit `axis` in
+    /// parallel beams, within a cylinder about the axis through `position`, starting at the
+    /// plane through `position` across it.
+    Cylinder {
+        /// A point on the axis, where the light starts.
+        position: DVec3,
+        /// The point the axis goes through, as written.
+        target: DVec3,
+        /// The unit axis, from `position` towards `target`.
+        axis: DVec3,
+        /// Full strength within this distance of the axis.
+        radius: f64,
+        /// No light beyond this distance of the axis (≥ `radius`).
+        falloff: f64,
+        /// The exponent of `1 − distance / falloff` over the whole beam (0: none).
+        tightness: f64,
+    },
+}
+
+/// The share of a cylinder light of beam `radius`, `falloff` and `tightness` reaching a point at
+/// distance `off_axis` from its axis: POV-Ray's `Attenuate_Light` for a cylinder source.
+pub fn cylinder_share(radius: f64, falloff: f64, tightness: f64, off_axis: f64) -> f64 {
+    if off_axis >= falloff {
+        return 0.0;
+    }
+    let dist = 1.0 - off_axis / falloff;
+    let mut share = if tightness == 0.0 {
+        1.0
+    } else {
+        libm::pow(dist, tightness)
+    };
+    if radius > 0.0 && off_axis > radius {
+        // POV-Ray's cubic spline from 0 at the falloff to 1 at the radius.
+        let high = 1.0 - radius / falloff;
+        share *= if dist >= high {
+            1.0
+        } else {
+            let t = dist / high;
+            (3.0 - 2.0 * t) * t * t
+        };
+    }
+    share
 }
 
 /// How far away a parallel light's samples are placed (shadow rays aim there): far beyond any
@@ -136,6 +184,7 @@ impl LightKind {
         match *self {
             LightKind::Point { position } => position,
             LightKind::Area { corner, u, v, .. } => corner + 0.5 * (u + v),
+            LightKind::Cylinder { position, .. } => position,
             // A far point up the light, for the few who need a position (a lens flare).
             LightKind::Parallel { direction } => -PARALLEL_DISTANCE * direction,
         }

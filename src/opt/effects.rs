@@ -25,6 +25,8 @@ pub struct Effects {
     pub(crate) spot_lights: bool,
     /// Some light is a parallel light.
     pub(crate) parallel_lights: bool,
+    /// Some light is a cylinder light.
+    pub(crate) cylinder_lights: bool,
     /// Some light fades with distance.
     pub(crate) light_fading: bool,
     /// Some light casts no shadows (while the scene has shadows).
@@ -49,6 +51,9 @@ pub struct Effects {
     pub glass_shadows: bool,
     /// The lens flare post stage runs (`render { flare: ... }` and some light).
     pub flare: bool,
+    /// Some object is hidden from some rays (`.no_shadow()`, `.no_image()`,
+    /// `.no_reflection()`): hits on it are skipped, so rays are not traced in packets.
+    pub(crate) visibility_flags: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -63,6 +68,10 @@ pub(crate) struct Content {
     spot_lights: bool,
     /// Some light is a parallel light.
     parallel_lights: bool,
+    /// Some light is a cylinder light.
+    cylinder_lights: bool,
+    /// Some object is hidden from some kind of ray.
+    hidden_objects: bool,
     /// Some light fades with distance.
     fading_lights: bool,
     /// Some light casts no shadows.
@@ -108,6 +117,10 @@ impl Content {
                 .lights
                 .iter()
                 .any(|l| matches!(l.kind, LightKind::Parallel { .. })),
+            cylinder_lights: scene
+                .lights
+                .iter()
+                .any(|l| matches!(l.kind, LightKind::Cylinder { .. })),
             fading_lights: scene.lights.iter().any(|l| l.fade.is_some()),
             shadowless_lights: scene.lights.iter().any(|l| !l.shadows),
             lights: !scene.lights.is_empty(),
@@ -115,6 +128,7 @@ impl Content {
             hatching_material: material_model(|m| matches!(m, ShadingModel::Hatching)),
             csg: false,
             meshes: false,
+            hidden_objects: false,
             moving: scene.camera.motion.is_some(),
             glossy: mats
                 .iter()
@@ -125,6 +139,7 @@ impl Content {
     /// Adds what the object `o` (a top-level object or a CSG operand) holds.
     pub(crate) fn visit(&mut self, o: &Object) {
         self.moving |= o.motion.as_ref().is_some_and(|m| !m.is_still());
+        self.hidden_objects |= !o.visibility.is_all();
         match &o.shape {
             Shape::Csg { children, .. } => {
                 self.csg = true;
@@ -159,6 +174,7 @@ impl Effects {
             soft_shadows: shadows && content.area_lights,
             spot_lights: shaded && content.spot_lights,
             parallel_lights: shaded && content.parallel_lights,
+            cylinder_lights: shaded && content.cylinder_lights,
             light_fading: shaded && content.fading_lights,
             shadowless_lights: shadows && content.shadowless_lights,
             supersampling: match s.sampling {
@@ -180,6 +196,7 @@ impl Effects {
             glossy: bounces && content.glossy,
             glass_shadows: shadows && s.glass_shadows && content.refractive,
             flare: shaded && s.flare.is_some() && content.lights,
+            visibility_flags: content.hidden_objects,
         }
     }
 
@@ -190,6 +207,7 @@ impl Effects {
             (self.soft_shadows, "soft shadows"),
             (self.spot_lights, "spot lights"),
             (self.parallel_lights, "parallel lights"),
+            (self.cylinder_lights, "cylinder lights"),
             (self.light_fading, "light fading"),
             (self.shadowless_lights, "shadowless lights"),
             (self.reflection, "reflection"),
@@ -206,6 +224,7 @@ impl Effects {
             (self.glossy, "glossy"),
             (self.glass_shadows, "light through glass"),
             (self.flare, "lens flare"),
+            (self.visibility_flags, "visibility flags"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -20,7 +20,7 @@ use std::time::Instant;
 use crate::diag::Diagnostics;
 use crate::geometry::world::balls::WorldParts;
 use crate::geometry::{World, world::instanced_triangles};
-use crate::ir::{LightKind, Material, MaterialId, Object, Scene};
+use crate::ir::{LightKind, Material, MaterialId, Object, Scene, Visibility};
 
 pub(crate) use effects::Content;
 pub use effects::Effects;
@@ -58,11 +58,17 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     // form), so a million spheres never exist as a million full primitives.
     let mut parts = WorldParts::default();
     let mut instanced = 0;
+    // Filled once some object is hidden from some rays (earlier ones are seen by all).
+    let mut visibility: Vec<Visibility> = Vec::new();
     // One pass validates, surveys and prepares each object (and frees it, when owned).
     for (i, o) in objects.into_iter().enumerate() {
         let o = o.borrow();
         validate::object(scene, o, &mut diags);
         content.visit(o);
+        if !o.visibility.is_all() || !visibility.is_empty() {
+            visibility.resize(i, Visibility::ALL);
+            visibility.push(o.visibility);
+        }
         if let Some(ball) = b.ball(o, fallback, i as u32) {
             parts.push_ball(ball);
         } else if let Some(n) = b.object(o, fallback) {
@@ -89,7 +95,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
             fade: l.fade,
             shadows: l.shadows,
             samples: match l.kind {
-                LightKind::Point { .. } | LightKind::Parallel { .. } => 1,
+                LightKind::Point { .. }
+                | LightKind::Parallel { .. }
+                | LightKind::Cylinder { .. } => 1,
                 // Both at most MAX_LIGHT_SAMPLES_PER_AXIS (validated), so no overflow.
                 LightKind::Area { samples, .. } => samples[0].max(1) * samples[1].max(1),
             },
@@ -125,6 +133,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         effects,
         warnings: diags.items,
         stats,
+        visibility,
     })
 }
 

@@ -8,9 +8,10 @@ use super::effects::{Content, Effects};
 use super::textures::TextureMap;
 use super::validate;
 use crate::diag::Diagnostic;
-use crate::geometry::World;
+use crate::geometry::{Ray, SurfaceHit, World};
 use crate::ir::{
     Camera, Color, Fade, LightKind, Material, MaterialId, RenderSettings, Sampling, Spot,
+    Visibility,
 };
 
 /// A light prepared for shading: sample positions are generated per shading point.
@@ -77,6 +78,9 @@ pub struct Prepared {
     pub(super) effects: Effects,
     pub(super) warnings: Vec<Diagnostic>,
     pub(super) stats: Stats,
+    /// Which rays see each top-level object, by its index; empty when every ray sees every
+    /// object (the common case costs nothing).
+    pub(super) visibility: Vec<Visibility>,
     /// Each material's own `gloss_samples`, what [`Quality::gloss_samples`] `None` restores.
     pub(super) own_gloss_samples: Vec<u32>,
 }
@@ -116,6 +120,47 @@ impl Prepared {
     /// The intersection structure.
     pub fn world(&self) -> &World {
         &self.world
+    }
+
+    /// The nearest hit along `ray` in (`t_min`, `t_max`) on an object rays of the kind `kind`
+    /// see (objects hidden from them are passed through, POV-Ray's `no_image` and
+    /// `no_reflection`); [`World::intersect`] when no object is hidden.
+    pub fn seen_hit(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        kind: Visibility,
+    ) -> Option<SurfaceHit> {
+        let mut hit = self.world.intersect(ray, t_min, t_max)?;
+        while self.hides(&hit, kind) {
+            let next = self.world.intersect(ray, hit.t, t_max)?;
+            // The interval is open, so `t` grows; a hit that did not move would loop forever.
+            if next.t <= hit.t {
+                return None;
+            }
+            hit = next;
+        }
+        Some(hit)
+    }
+
+    /// Whether anything that casts shadows lies in (`t_min`, `t_max`) along `ray`.
+    pub fn shadowed(&self, ray: &Ray, t_min: f64, t_max: f64) -> bool {
+        if self.visibility.is_empty() {
+            self.world.occluded(ray, t_min, t_max)
+        } else {
+            self.seen_hit(ray, t_min, t_max, Visibility::NO_SHADOW)
+                .is_some()
+        }
+    }
+
+    /// Whether the object of `hit` is hidden from rays of the kind `kind`.
+    pub fn hides(&self, hit: &SurfaceHit, kind: Visibility) -> bool {
+        !self.visibility.is_empty()
+            && self
+                .visibility
+                .get(self.world.object(hit) as usize)
+                .is_some_and(|v| v.hides(kind))
     }
 
     /// The material behind a hit's id: the scene's, the fallback for objects that name none,
@@ -210,7 +255,9 @@ impl Prepared {
             .iter()
             .map(|l| match l.kind {
                 LightKind::Area { samples, .. } => samples,
-                LightKind::Point { .. } | LightKind::Parallel { .. } => [1, 1],
+                LightKind::Point { .. }
+                | LightKind::Parallel { .. }
+                | LightKind::Cylinder { .. } => [1, 1],
             })
             .collect()
     }

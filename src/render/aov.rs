@@ -7,7 +7,7 @@
 //! times), so the layers line up with the image; adaptive refinement does not refine them.
 
 use crate::geometry::Ray;
-use crate::ir::Color;
+use crate::ir::{Color, Visibility};
 use crate::num::Norm;
 use crate::opt::Prepared;
 
@@ -77,7 +77,7 @@ impl Default for PixelAovs {
 impl PixelAovs {
     /// Adds one camera sample: what its ray hits first.
     fn add(&mut self, scene: &Prepared, whitted: &Whitted<'_>, ray: &Ray) {
-        let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) else {
+        let Some(hit) = scene.seen_hit(ray, 0.0, f64::INFINITY, Visibility::NO_IMAGE) else {
             self.vote(0);
             return;
         };

@@ -17,6 +17,7 @@ use glam::{DVec2, DVec3};
 use super::camera::Camera;
 use super::film::Stats;
 use super::offset;
+use super::shading::disk_point;
 use crate::geometry::Ray;
 use crate::ir::{Color, Flare, LightKind};
 use crate::opt::{Prepared, PreparedLight};
@@ -33,19 +34,27 @@ pub(crate) struct Source {
 /// The fraction of `light` the eye sees: its samples not hidden behind something.
 fn visible_fraction(scene: &Prepared, eye: DVec3, light: &PreparedLight, stats: &mut Stats) -> f64 {
     let points: Vec<DVec3> = match light.kind {
-        LightKind::Point { .. } | LightKind::Parallel { .. } => vec![light.kind.center()],
+        LightKind::Point { .. } | LightKind::Parallel { .. } | LightKind::Cylinder { .. } => {
+            vec![light.kind.center()]
+        }
         LightKind::Area {
             corner,
             u,
             v,
             samples,
+            circular,
+            orient,
         } => {
             let (nu, nv) = (samples[0].max(1), samples[1].max(1));
             (0..nu * nv)
                 .map(|k| {
                     let a = (f64::from(k % nu) + 0.5) / f64::from(nu);
                     let b = (f64::from(k / nu) + 0.5) / f64::from(nv);
-                    corner + a * u + b * v
+                    if circular {
+                        disk_point(corner, u, v, orient, eye, a, b)
+                    } else {
+                        corner + a * u + b * v
+                    }
                 })
                 .collect()
         }

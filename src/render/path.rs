@@ -80,6 +80,9 @@ pub struct Path {
     /// The product of the scattering weights along the path (1 for a camera ray): what the
     /// insignificance cut-off compares.
     pub(crate) weight: f64,
+    /// Whether a mirror reflection lies behind the ray (POV-Ray's reflection rays: objects
+    /// marked `.no_reflection()` hide from them, `.no_image()` ones only from the others).
+    pub(crate) reflected: bool,
 }
 
 impl Path {
@@ -88,6 +91,7 @@ impl Path {
         depth: 0,
         media: Media::OUTSIDE,
         weight: 1.0,
+        reflected: false,
     };
 
     /// The path after one more bounce into `media`, scattered with weight `k`.
@@ -96,6 +100,24 @@ impl Path {
             depth: self.depth + 1,
             media,
             weight: self.weight * k,
+            reflected: self.reflected,
+        }
+    }
+
+    /// The path after a mirror reflection (glossy or not) into `media` with weight `k`.
+    pub(crate) fn reflect(self, media: Media, k: f64) -> Path {
+        Path {
+            reflected: true,
+            ..self.bounce(media, k)
+        }
+    }
+
+    /// The kind of ray, for objects hidden from some ([`crate::ir::Visibility`]).
+    pub(crate) fn ray_kind(&self) -> crate::ir::Visibility {
+        if self.reflected {
+            crate::ir::Visibility::NO_REFLECTION
+        } else {
+            crate::ir::Visibility::NO_IMAGE
         }
     }
 }

@@ -86,6 +86,7 @@ pub fn sphere(scene: &mut Scene, center: [f64; 3], radius: f64, m: Material) {
         transform: rtc::ir::Transform::IDENTITY,
         material: Some(id),
         span: Span::default(),
+        visibility: Default::default(),
     });
 }
 

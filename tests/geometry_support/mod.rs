@@ -63,6 +63,7 @@ pub fn object(shape: Shape, transform: DAffine3) -> Object {
         transform: transform.into(),
         material: None,
         span: Span::default(),
+        visibility: Default::default(),
     }
 }
 

@@ -1,4 +1,4 @@
-//! The light constructors: point, area, spot and parallel lights, each with the modifiers every
+//! The light constructors: point, area, spot, parallel and cylinder lights, each with the modifiers every
 //! light takes (fading with distance, shadows or none), after POV-Ray 3.7's `light_source`.
 
 use std::rc::Rc;
@@ -11,7 +11,8 @@ use crate::eval::error::{R, error};
 use crate::eval::host::BuiltinFn;
 use crate::eval::host::Host;
 use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
-use crate::eval::value::Value;
+use crate::eval::types;
+use crate::eval::value::{LightVal, Value};
 use crate::ir;
 use crate::ir::limits::MAX_LIGHT_SAMPLES_PER_AXIS;
 use crate::num::Norm;
@@ -22,6 +23,7 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&AREA_LIGHT, area_light),
     (&SPOT_LIGHT, spot_light),
     (&PARALLEL_LIGHT, parallel_light),
+    (&CYLINDER_LIGHT, cylinder_light),
 ];
 
 /// A light's intensity.
@@ -43,6 +45,7 @@ static POINT_LIGHT: Sig = Sig::new(
         FADE_DISTANCE,
         FADE_POWER,
         SHADOWS,
+        LOOKS_LIKE,
     ],
     "Light",
 )
@@ -52,7 +55,7 @@ fn point_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (position, _) = p.vec3(it, "position")?;
     let (color, _) = p.color(it, "color")?;
     let kind = ir::LightKind::Point { position };
-    Ok(Value::Light(Rc::new(shaped(it, &mut p, kind, color, s)?)))
+    shaped(it, &mut p, kind, color, s)
 }
 
 /// `area_light { corner, u, v, samples, color }`.
@@ -72,14 +75,19 @@ static AREA_LIGHT: Sig = Sig::new(
         .unit(Unit::Samples)
         .range(Range::Ints(1, MAX_LIGHT_SAMPLES_PER_AXIS as i64))
         .or(Lit::Ints([4, 4])),
+        Param::new("circular", Ty::Bool, "the light is the ellipse inscribed in the parallelogram, not the parallelogram (POV-Ray's `circular`)")
+            .or(Lit::Bool(false)),
+        Param::new("orient", Ty::Bool, "a circular light turns to face each point it lights, both radii `|u| / 2` (POV-Ray's `orient`: a round light seen from anywhere, e.g. a sphere's glow)")
+            .or(Lit::Bool(false)),
         LIGHT_COLOR,
         FADE_DISTANCE,
         FADE_POWER,
         SHADOWS,
+        LOOKS_LIKE,
     ],
     "Light",
 )
-.examples(&["area_light { corner: [-1, 6, -1], u: [2, 0, 0], v: [0, 0, 2], samples: [3, 3], color: rgb(0.4, 0.4, 0.5) }"]);
+.examples(&["area_light { corner: [-1, 6, -1], u: [2, 0, 0], v: [0, 0, 2], samples: [3, 3], color: rgb(0.4, 0.4, 0.5) }", "area_light { corner: [-1, 6, -1], u: [2, 0, 0], v: [0, 0, 2], samples: 5, circular: true, orient: true }"]);
 fn area_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &AREA_LIGHT, a)?;
     let (corner, _) = p.vec3(it, "corner")?;
@@ -113,14 +121,29 @@ fn area_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             .into());
         }
     };
+    let circular = p.bool(it, "circular")?;
+    let orient = p.bool(it, "orient")?;
+    if orient && !circular {
+        let at = p.given("orient").unwrap_or(s.span);
+        return Err(error(
+            "rtc::light::orient",
+            at,
+            "only a circular area light can be oriented",
+        )
+        .with_label("this area light is a parallelogram")
+        .with_help("add `circular: true` (the light becomes a disk facing each point it lights), or remove `orient`")
+        .into());
+    }
     let (color, _) = p.color(it, "color")?;
     let kind = ir::LightKind::Area {
         corner,
         u,
         v,
         samples,
+        circular,
+        orient,
     };
-    Ok(Value::Light(Rc::new(shaped(it, &mut p, kind, color, s)?)))
+    shaped(it, &mut p, kind, color, s)
 }
 
 /// Where a light fades (`fade_distance`).
@@ -150,14 +173,23 @@ const SHADOWS: Param = Param::new(
 )
 .or(Lit::Bool(true));
 
-/// A light of `kind` and `color` with the modifiers every light takes, read from `p`.
+/// The object that shows a light.
+const LOOKS_LIKE: Param = Param::new(
+    "looks_like",
+    Ty::Object,
+    "an object drawn at the light's centre (made about the origin), which casts no shadow: the bulb of a lamp (POV-Ray's `looks_like`)",
+)
+.optional();
+
+/// A light of `kind` and `color` with the modifiers every light at a place takes, read from
+/// `p`: fading, shadows and the object that shows it.
 fn shaped(
     it: &mut dyn Host,
     p: &mut Params,
     kind: ir::LightKind,
     color: DVec3,
     s: CallSite,
-) -> R<ir::Light> {
+) -> R<Value> {
     let mut light = ir::Light::new(kind, color, s.span);
     let power_given = p.given("fade_power");
     let (power, _) = p.float(it, "fade_power")?;
@@ -177,7 +209,12 @@ fn shaped(
         }
     }
     light.shadows = p.bool(it, "shadows")?;
-    Ok(light)
+    let looks_like = match p.get("looks_like") {
+        None => None,
+        Some((Value::Object(o), _)) => Some((*o).clone()),
+        Some((other, sp)) => return Err(types::mismatch(it, "Object", &other, sp).into()),
+    };
+    Ok(Value::Light(Rc::new(LightVal { light, looks_like })))
 }
 
 /// `spot_light { position, target, radius, falloff, tightness, color, .. }`.
@@ -204,6 +241,7 @@ static SPOT_LIGHT: Sig = Sig::new(
         FADE_DISTANCE,
         FADE_POWER,
         SHADOWS,
+        LOOKS_LIKE,
     ],
     "Light",
 )
@@ -234,15 +272,18 @@ fn spot_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     }
     let (tightness, _) = p.float(it, "tightness")?;
     let (color, _) = p.color(it, "color")?;
-    let mut light = shaped(it, &mut p, ir::LightKind::Point { position }, color, s)?;
-    light.spot = Some(ir::Spot {
+    let spot = ir::Spot {
         target,
         axis,
         radius,
         falloff,
         tightness,
-    });
-    Ok(Value::Light(Rc::new(light)))
+    };
+    let mut made = shaped(it, &mut p, ir::LightKind::Point { position }, color, s)?;
+    if let Value::Light(l) = &mut made {
+        Rc::make_mut(l).light.spot = Some(spot);
+    }
+    Ok(made)
 }
 
 /// `parallel_light { direction, color, .. }`.
@@ -261,8 +302,8 @@ static PARALLEL_LIGHT: Sig = Sig::new(
 .examples(&["parallel_light { direction: [-1, -2, -1], color: rgb(1, 0.95, 0.85) }"]);
 fn parallel_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &PARALLEL_LIGHT, a)?;
-    let (direction, ds) = p.vec3(it, "direction")?;
-    let Some(direction) = direction.try_unit() else {
+    let (written, ds) = p.vec3(it, "direction")?;
+    let Some(direction) = written.try_unit() else {
         return Err(
             error("rtc::light::aim", ds, "the parallel light has no direction")
                 .with_label("a zero vector")
@@ -270,8 +311,86 @@ fn parallel_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
                 .into(),
         );
     };
+    // A direction of unit length to rounding is kept bit for bit: normalising it again would
+    // move its last bits, and `rtc convert` writes the unit direction back out.
+    let direction = if (written.length_squared() - 1.0).abs() <= 4.0 * f64::EPSILON {
+        written
+    } else {
+        direction
+    };
     let (color, _) = p.color(it, "color")?;
     let mut light = ir::Light::new(ir::LightKind::Parallel { direction }, color, s.span);
     light.shadows = p.bool(it, "shadows")?;
-    Ok(Value::Light(Rc::new(light)))
+    Ok(Value::Light(Rc::new(LightVal {
+        light,
+        looks_like: None,
+    })))
+}
+
+/// `cylinder_light { position, target, radius, falloff, tightness, color, .. }`.
+static CYLINDER_LIGHT: Sig = Sig::new(
+    "cylinder_light",
+    Group::Light,
+    "A cylinder light: parallel beams from the plane through `position` towards `target`, within a cylinder about that axis (POV-Ray's `cylinder` light, a laser or a shaft of light).",
+    &[
+        Param::new("position", Ty::Vec3, "a point on the axis, where the light starts").unit(Unit::Length),
+        Param::new("target", Ty::Vec3, "the point the axis goes through (not `position`)")
+            .unit(Unit::Length),
+        Param::new("radius", Ty::Float, "the distance from the axis within which the light has full strength")
+            .unit(Unit::Length)
+            .range(Range::Positive)
+            .or(Lit::Float(0.75)),
+        Param::new("falloff", Ty::Float, "the distance from the axis where the light ends (≥ `radius`), reached along a smoothstep")
+            .unit(Unit::Length)
+            .range(Range::Positive)
+            .or(Lit::Float(1.0)),
+        Param::new("tightness", Ty::Float, "the exponent of `1 − distance / falloff` over the whole beam (0: none)")
+            .range(Range::NonNegative)
+            .or(Lit::Float(0.0)),
+        LIGHT_COLOR,
+        FADE_DISTANCE,
+        FADE_POWER,
+        SHADOWS,
+        LOOKS_LIKE,
+    ],
+    "Light",
+)
+.examples(&["cylinder_light { position: [0, 10, 0], target: [0, 0, 0], radius: 0.5, falloff: 0.8 }"]);
+fn cylinder_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &CYLINDER_LIGHT, a)?;
+    let (position, _) = p.vec3(it, "position")?;
+    let (target, ts) = p.vec3(it, "target")?;
+    let Some(axis) = (target - position).try_unit() else {
+        return Err(error(
+            "rtc::light::aim",
+            ts,
+            "the cylinder light is aimed at itself",
+        )
+        .with_label("`target` is the light's `position`")
+        .with_help("aim it at a point away from the light, e.g. `target: [0, 0, 0]`")
+        .into());
+    };
+    let (radius, _) = p.float(it, "radius")?;
+    let (falloff, fs) = p.float(it, "falloff")?;
+    if falloff < radius {
+        return Err(error(
+            "rtc::light::falloff",
+            fs,
+            "the cylinder light's `falloff` is inside its `radius`",
+        )
+        .with_label("the light would end before its full-strength beam does")
+        .with_help("make `falloff` at least `radius`, e.g. `radius: 0.5, falloff: 0.8`")
+        .into());
+    }
+    let (tightness, _) = p.float(it, "tightness")?;
+    let (color, _) = p.color(it, "color")?;
+    let kind = ir::LightKind::Cylinder {
+        position,
+        target,
+        axis,
+        radius,
+        falloff,
+        tightness,
+    };
+    shaped(it, &mut p, kind, color, s)
 }

@@ -65,6 +65,7 @@ pub(super) fn prim(shape: Shape, span: Span) -> Value {
         motion: None,
         span,
         origin: 0,
+        visibility: crate::ir::Visibility::ALL,
     }))
 }
 

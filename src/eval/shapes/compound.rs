@@ -72,6 +72,7 @@ fn group(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         motion: None,
         span: s.span,
         origin: 0,
+        visibility: crate::ir::Visibility::ALL,
     })))
 }
 
@@ -89,6 +90,7 @@ fn csg_node(it: &dyn Host, op: CsgOp, children: Vec<Obj>, sp: Span, s: CallSite)
         motion: None,
         span: s.span,
         origin: 0,
+        visibility: crate::ir::Visibility::ALL,
     })))
 }
 

@@ -8,7 +8,7 @@ use glam::DVec3;
 
 use crate::diag::Diagnostic;
 use crate::geometry::Ray;
-use crate::ir::{Color, DepthRange};
+use crate::ir::{Color, DepthRange, Visibility};
 use crate::opt::Prepared;
 use crate::render::progress::Silent;
 use crate::render::shard::Rows;
@@ -76,7 +76,7 @@ fn hit_range(
             if crate::render::panorama::is_blind(&ray) {
                 continue;
             }
-            if let Some(hit) = scene.world().intersect(&ray, 0.0, f64::INFINITY) {
+            if let Some(hit) = scene.seen_hit(&ray, 0.0, f64::INFINITY, Visibility::NO_IMAGE) {
                 lo = lo.min(hit.t);
                 hi = hi.max(hit.t);
             }

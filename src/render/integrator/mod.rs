@@ -9,7 +9,7 @@ pub mod whitted;
 
 use crate::diag::Diagnostic;
 use crate::geometry::Ray;
-use crate::ir::{Color, RenderMode};
+use crate::ir::{Color, RenderMode, Visibility};
 use crate::opt::Prepared;
 
 use super::context::Ctx;
@@ -108,7 +108,7 @@ fn first_hit<R: Recorder>(
 ) -> Color {
     if R::ON {
         rec.ray(ray, &Path::CAMERA);
-        if let Some(hit) = scene.world().intersect(ray, 0.0, f64::INFINITY) {
+        if let Some(hit) = scene.seen_hit(ray, 0.0, f64::INFINITY, Visibility::NO_IMAGE) {
             rec.hit(&hit);
         }
     }

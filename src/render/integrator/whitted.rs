@@ -106,7 +106,11 @@ impl<'a> Whitted<'a> {
         let scene = self.scene;
         // Borrowed where the world wrote it: moving the 176-byte hit out of its `Option` was a
         // `memcpy` per camera ray (5% of scene A's time).
-        let found = scene.world().intersect(ray, 0.0, f64::INFINITY);
+        let found = if self.effects.visibility_flags {
+            scene.seen_hit(ray, 0.0, f64::INFINITY, path.ray_kind())
+        } else {
+            scene.world().intersect(ray, 0.0, f64::INFINITY)
+        };
         let Some(hit) = &found else {
             return self.background;
         };
@@ -190,7 +194,7 @@ impl<'a> Whitted<'a> {
             }
         }
         if kr > 0.0 {
-            if self.significant(path.bounce(media, kr), ctx) {
+            if self.significant(path.reflect(media, kr), ctx) {
                 let lobe = scattering.mirror(kr);
                 let axis = reflect(ray.dir, facing);
                 let out = Outgoing {
@@ -208,7 +212,7 @@ impl<'a> Whitted<'a> {
                         false,
                     );
                 }
-                c += kr * self.bounce(&out, mat, path.bounce(media, kr), ctx, rec);
+                c += kr * self.bounce(&out, mat, path.reflect(media, kr), ctx, rec);
             } else if R::ON {
                 rec.branch(Branch::Reflected, kr, 0, true);
             }

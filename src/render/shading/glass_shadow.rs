@@ -8,7 +8,7 @@
 //! caustic.
 
 use super::surface::{LightSample, Surface};
-use crate::ir::Color;
+use crate::ir::{Color, Visibility};
 use crate::opt::Prepared;
 use crate::render::film::Stats;
 use crate::render::offset::SpawnPoint;
@@ -33,7 +33,7 @@ pub(crate) fn transmission(
     let mut pass = Color::ONE;
     for _ in 0..MAX_CROSSINGS {
         stats.shadow_rays += 1;
-        let Some(hit) = scene.world().intersect(&ray, 0.0, left) else {
+        let Some(hit) = scene.seen_hit(&ray, 0.0, left, Visibility::NO_SHADOW) else {
             return Some(pass);
         };
         // The glass passes what its scattering lets through along a straight line.

@@ -25,7 +25,7 @@ use glam::{DVec2, DVec3};
 
 use super::{Surface, light_sample, occluder, transmission};
 use crate::geometry::Ray;
-use crate::ir::Color;
+use crate::ir::{Color, Visibility};
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
 use crate::render::footprint;
@@ -215,7 +215,7 @@ fn screen_gradient(scene: &Prepared, s: &Surface<'_>) -> Option<glam::DMat2> {
 fn uv_at(scene: &Prepared, s: &Surface<'_>, eye: DVec3, target: DVec3) -> Option<DVec2> {
     let d = target - eye;
     let ray = Ray::new(eye, d.unit());
-    let hit = scene.world().intersect(&ray, 0.0, f64::INFINITY)?;
+    let hit = scene.seen_hit(&ray, 0.0, f64::INFINITY, Visibility::NO_IMAGE)?;
     let same = std::ptr::eq(scene.material(hit.material), s.mat)
         && hit.normal.dot(s.n).abs() > 0.5
         && (hit.point - s.p).dot(s.n).abs() < 4.0 * (target - s.p).norm() + s.spawn.error.norm();

@@ -8,10 +8,10 @@ pub(crate) mod phong;
 pub(crate) mod phong_packet;
 mod surface;
 
-pub(crate) use surface::{LightSample, Surface, highlight, light_sample, visible};
+pub(crate) use surface::{LightSample, Surface, disk_point, highlight, light_sample, visible};
 
 use crate::geometry::SurfaceHit;
-use crate::ir::Color;
+use crate::ir::{Color, Visibility};
 use crate::opt::Prepared;
 use crate::render::film::Stats;
 use crate::render::offset::SpawnPoint;
@@ -26,7 +26,7 @@ fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<Surfa
     }
     let (mut ray, mut left) = s.spawn.ray_to(ls.position)?;
     for _ in 0..glass_shadow::MAX_CROSSINGS {
-        let hit = scene.world().intersect(&ray.at_time(s.time), 0.0, left)?;
+        let hit = scene.seen_hit(&ray.at_time(s.time), 0.0, left, Visibility::NO_SHADOW)?;
         if !scene.effects().glass_shadows
             || straight_through(scene.material(hit.material)).is_none()
         {

@@ -54,6 +54,8 @@ impl PacketPath {
             depth: self.depth,
             media: self.media,
             weight: self.weight[i],
+            // Every bounce of a packet is a mirror reflection.
+            reflected: self.depth > 0,
         }
     }
 }
@@ -84,13 +86,14 @@ impl Default for Shading {
 impl Whitted<'_> {
     /// Whether [`Whitted::trace_batch`] can trace this scene's camera samples: nothing draws
     /// random numbers per sample (no lens, area light, open shutter or glossy lobe), every
-    /// sample takes every light cell, shadows are not tinted by glass, and every light is a
-    /// point light.
+    /// sample takes every light cell, shadows are not tinted by glass, every light is a
+    /// point light, and no object is hidden from some rays.
     pub fn batches(&self) -> bool {
         !self.scene.random()
             && !self.effects.glass_shadows
             && self.scene.settings().light_samples != LightSampling::Spread
             && phong_packet::applies(self.scene)
+            && !self.effects.visibility_flags
     }
 
     /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray, not mixed); others take
@@ -401,7 +404,7 @@ impl Whitted<'_> {
         }
         let mut bounce: Mask = 0;
         for i in lanes::each(sh.s.live) {
-            if sh.kr[i] > 0.0 && self.significant(path.lane(i).bounce(path.media, sh.kr[i]), ctx) {
+            if sh.kr[i] > 0.0 && self.significant(path.lane(i).reflect(path.media, sh.kr[i]), ctx) {
                 bounce |= 1 << i;
             }
         }
