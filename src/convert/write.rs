@@ -154,6 +154,9 @@ pub(crate) fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Pl
         course: doc.origin.is_some(),
         material: settings.default_material.map(|id| name(id.0)),
         output: settings.output.as_deref().map(doc.asset),
+        sky: settings
+            .sky
+            .map(|s| shapes::texture(&scene.textures[s.texture.0 as usize], doc.asset)),
     };
     let render = view::render(settings, &render);
     if !render.is_empty() {

@@ -431,6 +431,11 @@ impl Lowerer {
             Some(r) => {
                 let mut s = r.s.clone();
                 s.default_material = r.material.as_ref().map(|m| self.material(m));
+                s.sky = r.sky.as_ref().map(|(t, rotation, strength)| ir::Sky {
+                    texture: self.texture(t),
+                    rotation: *rotation,
+                    strength: *strength,
+                });
                 s
             }
             None => ir::RenderSettings::language_defaults(),

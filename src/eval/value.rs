@@ -67,6 +67,8 @@ pub(crate) enum Value {
     Encoding(ir::Encoding),
     /// Lens flare parameters (`flare { ... }`).
     Flare(ir::Flare),
+    /// Fog parameters (`fog { ... }`).
+    Fog(ir::Fog),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -256,6 +258,8 @@ pub(crate) struct RenderVal {
     pub(crate) s: ir::RenderSettings,
     /// The default material for objects without one.
     pub(crate) material: Option<Rc<Mat>>,
+    /// The sky's texture with its rotation and strength (lowered to `ir::Sky`).
+    pub(crate) sky: Option<(Rc<Tex>, f64, f64)>,
     /// Where it was made.
     pub(crate) span: Span,
 }
@@ -290,6 +294,7 @@ impl Value {
             Value::Ambient(_) => "Ambient",
             Value::Encoding(_) => "Encoding",
             Value::Flare(_) => "Flare",
+            Value::Fog(_) => "Fog",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }

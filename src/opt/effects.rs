@@ -4,6 +4,7 @@ use std::fmt;
 
 use crate::ir::{
     Camera, LightKind, Object, RenderMode, RenderSettings, Sampling, Scene, ShadingModel, Shape,
+    Texture,
 };
 
 /// Which effects a scene uses. Each flag gates work in the renderer.
@@ -49,6 +50,14 @@ pub struct Effects {
     pub glass_shadows: bool,
     /// The lens flare post stage runs (`render { flare: ... }` and some light).
     pub flare: bool,
+    /// Rays that meet nothing see a procedural sky (`render { sky: <pattern> }`).
+    pub sky: bool,
+    /// Rays that meet nothing see an image (`render { sky: image(..) }`).
+    pub environment_map: bool,
+    /// Constant fog along the rays.
+    pub fog: bool,
+    /// Ground fog along the rays.
+    pub ground_fog: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -74,6 +83,8 @@ pub(crate) struct Content {
     meshes: bool,
     moving: bool,
     glossy: bool,
+    /// The scene's sky is an image (an environment map), not a pattern.
+    sky_image: bool,
 }
 
 impl Content {
@@ -119,6 +130,12 @@ impl Content {
             glossy: mats
                 .iter()
                 .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
+            sky_image: scene.settings.sky.is_some_and(|s| {
+                matches!(
+                    scene.textures.get(s.texture.0 as usize),
+                    Some(Texture::Image { .. } | Texture::NormalMap { .. })
+                )
+            }),
         }
     }
 
@@ -180,6 +197,10 @@ impl Effects {
             glossy: bounces && content.glossy,
             glass_shadows: shadows && s.glass_shadows && content.refractive,
             flare: shaded && s.flare.is_some() && content.lights,
+            sky: shaded && s.sky.is_some() && !content.sky_image,
+            environment_map: shaded && s.sky.is_some() && content.sky_image,
+            fog: shaded && s.fog.is_some_and(|f| f.ground.is_none()),
+            ground_fog: shaded && s.fog.is_some_and(|f| f.ground.is_some()),
         }
     }
 
@@ -206,6 +227,10 @@ impl Effects {
             (self.glossy, "glossy"),
             (self.glass_shadows, "light through glass"),
             (self.flare, "lens flare"),
+            (self.sky, "sky"),
+            (self.environment_map, "environment map"),
+            (self.fog, "fog"),
+            (self.ground_fog, "ground fog"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -14,7 +14,7 @@ use glam::DVec3;
 
 use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::limits::MAX_GLOSS_SAMPLES;
-use crate::ir::{Color, Material, ShadingModel};
+use crate::ir::{Color, Fog, Material, ShadingModel, Sky};
 use crate::opt::{Effects, Prepared};
 use crate::render::context::Ctx;
 use crate::render::film::CUT_WEIGHT_UNIT;
@@ -24,7 +24,7 @@ use crate::render::record::{Branch, NoRecord, Recorder};
 use crate::render::sampler::Rng;
 use crate::render::scatter::{Lobe, Scattering, reflect};
 use crate::render::shading::{self, Surface};
-use crate::render::{bump, normal_map, texture};
+use crate::render::{bump, fog, normal_map, sky, texture};
 
 /// A secondary ray about to be cast: where from, its lobe and the lobe's ideal direction, and
 /// the normal facing the ray it continues.
@@ -62,6 +62,8 @@ pub struct Whitted<'a> {
     shading: ShadingModel,
     max_depth: u32,
     background: Color,
+    sky: Option<Sky>,
+    fog: Option<Fog>,
     cutoff: f64,
 }
 
@@ -75,6 +77,8 @@ impl<'a> Whitted<'a> {
             shading: s.shading,
             max_depth: s.max_depth,
             background: s.background,
+            sky: s.sky,
+            fog: s.fog,
             cutoff: s.cutoff,
         }
     }
@@ -108,9 +112,30 @@ impl<'a> Whitted<'a> {
         // `memcpy` per camera ray (5% of scene A's time).
         let found = scene.world().intersect(ray, 0.0, f64::INFINITY);
         let Some(hit) = &found else {
-            return self.background;
+            return self.missed(ray, path);
         };
-        self.shade_at(ray, hit, path, ctx, rec)
+        let c = self.shade_at(ray, hit, path, ctx, rec);
+        self.fogged(ray, hit.t, path, c)
+    }
+
+    /// What `ray` of `path` sees where it meets nothing: the background, or the sky, through
+    /// the fog.
+    fn missed(&self, ray: &Ray, path: Path) -> Color {
+        let c = match &self.sky {
+            None => self.background,
+            Some(s) => sky::color(self.scene, s, ray.dir, self.background),
+        };
+        self.fogged(ray, fog::MISS_DISTANCE, path, c)
+    }
+
+    /// `c`, seen at distance `t` along `ray`, as it arrives through the scene's fog (which fills
+    /// the space outside objects only, as POV-Ray's fills what is not inside a solid).
+    #[inline(always)]
+    fn fogged(&self, ray: &Ray, t: f64, path: Path, c: Color) -> Color {
+        match &self.fog {
+            Some(f) if path.media.is_outside() => fog::apply(f, ray, t, c),
+            _ => c,
+        }
     }
 
     /// The colour of `ray`'s nearest hit `hit` (everything [`Whitted::trace_with`] does after
