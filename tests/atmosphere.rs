@@ -275,3 +275,86 @@ fn bad_inputs_have_codes() {
         assert!(codes.iter().any(|c| c == code), "{fields}: {codes:?}");
     }
 }
+
+/// `render { alpha: true }`: the film gets an alpha channel, the share of each pixel's camera
+/// samples that meet something (1 inside the ball, 0 in the corners, between at its rim), the
+/// colour is premultiplied (0 where nothing is met, whatever the background), and the PNG is
+/// RGBA. Without it there is no alpha channel and no RGBA image.
+#[test]
+fn alpha_is_the_share_of_samples_that_hit() {
+    let dir = tempfile::tempdir().unwrap();
+    let source = |alpha: bool| {
+        format!(
+            r#"rtc 1.1
+camera {{ eye: [0, 0, 5], center: [0, 0, 0], fov: 30deg, resolution: [24, 24] }}
+point_light {{ position: [0, 0, 10] }}
+sphere(radius: 0.8).material(material {{ color: rgb(0.2, 0.6, 0.9), ka: 1, kd: 0, ks: 0 }})
+render {{ shadows: false, supersampling: 4, background: rgb(1, 0, 0), alpha: {alpha} }}
+"#
+        )
+    };
+    let plain = render_scene(&load(dir.path(), &source(false)).unwrap(), &options()).unwrap();
+    assert!(plain.to_rgba().is_none());
+    let film = render_scene(&load(dir.path(), &source(true)).unwrap(), &options()).unwrap();
+    let rgba = film.to_rgba().expect("an alpha channel");
+    assert_eq!(rgba.get_pixel(12, 12).0[3], 255);
+    assert_eq!(rgba.get_pixel(0, 0).0, [0, 0, 0, 0]);
+    assert_eq!(film.get(0, 0), glam::DVec3::ZERO);
+    // A rim pixel: partly covered, its straight colour the ball's (the background left out).
+    let rim = (0..24)
+        .map(|x| rgba.get_pixel(x, 12).0)
+        .find(|p| p[3] > 0 && p[3] < 255)
+        .expect("a partly covered pixel on the middle row");
+    let inside = rgba.get_pixel(12, 12).0;
+    for c in 0..3 {
+        assert!((i32::from(rim[c]) - i32::from(inside[c])).abs() <= 1, "{rim:?} vs {inside:?}");
+    }
+    // Covered pixels keep their bytes: the colour is the same as without alpha.
+    assert_eq!(plain.to_image().get_pixel(12, 12).0, [inside[0], inside[1], inside[2]]);
+}
+
+/// Shards of a render with a sky, fog and alpha merge into the single render, every channel
+/// byte for byte.
+#[test]
+fn sharded_sky_fog_and_alpha_merge_into_the_single_render() {
+    use rtc::render::merge::merge;
+    use rtc::render::part::Part;
+    use rtc::render::shard::Shard;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = load(
+        dir.path(),
+        r#"rtc 1.1
+camera { eye: [0, 1, 6], center: [0, 0.5, 0], fov: 40deg, resolution: [37, 29] }
+point_light { position: [3, 4, 5] }
+plane(point: [0, -1, 0], normal: Y).material(material { color: rgb(0.8, 0.8, 0.8), reflect: 0.3 })
+sphere(center: [0, 0.5, 0], radius: 0.6).material(material { color: rgb(0.9, 0.2, 0.2), reflect: 0.4 })
+render {
+    supersampling: 2
+    alpha: true
+    sky: bozo().colors([rgb(0.3, 0.5, 0.9), rgb(1, 1, 1)]).scale(0.3)
+    fog: fog { color: rgb(0.7, 0.7, 0.75), distance: 9, offset: 0, altitude: 1 }
+}
+"#,
+    )
+    .unwrap();
+    let single = render_scene(&scene, &options()).unwrap();
+    let fp = rtc::opt::fingerprint::scene(&scene);
+    for n in [2, 5] {
+        let parts: Vec<_> = (0..n)
+            .map(|k| {
+                let s = Shard::new(k, n).unwrap();
+                let opts = RenderOptions {
+                    shard: Some(s),
+                    ..options()
+                };
+                let film = render_scene(&scene, &opts).unwrap();
+                let bytes = Part::of_film(&film, s, fp.clone(), "settings".into()).to_bytes();
+                let path = std::path::PathBuf::from(format!("p{k}"));
+                (path.clone(), Part::from_bytes(&bytes, &path).unwrap())
+            })
+            .collect();
+        let merged = merge(&parts).unwrap();
+        assert_eq!(merged.to_rgba().unwrap().as_raw(), single.to_rgba().unwrap().as_raw());
+        assert_eq!(merged.color(), single.color());
+    }
+}

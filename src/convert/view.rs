@@ -225,6 +225,9 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
     if let Some(f) = s.fog {
         fields.push(format!("fog: {}", fog(&f)));
     }
+    if s.alpha {
+        fields.push("alpha: true".into());
+    }
     if s.seed != 0 {
         fields.push(format!("seed: {}", s.seed));
     }

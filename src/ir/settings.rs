@@ -28,6 +28,9 @@ pub struct RenderSettings {
     pub sky: Option<Sky>,
     /// Fog along the rays (`None`: clear air).
     pub fog: Option<Fog>,
+    /// The image gets an alpha channel, the share of a pixel's camera samples that meet
+    /// something (POV-Ray's `+UA`); camera rays that meet nothing are transparent black.
+    pub alpha: bool,
     /// Material for objects that name none.
     pub default_material: Option<MaterialId>,
     /// Seed for every random decision (area lights, lens, jitter); bytes depend only on it.
@@ -116,6 +119,7 @@ impl Default for RenderSettings {
             background: DVec3::ZERO,
             sky: None,
             fog: None,
+            alpha: false,
             default_material: None,
             seed: 0,
             output: None,

@@ -58,6 +58,8 @@ pub struct Effects {
     pub fog: bool,
     /// Ground fog along the rays.
     pub ground_fog: bool,
+    /// The output has an alpha channel (`render { alpha: true }`).
+    pub alpha: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -201,6 +203,7 @@ impl Effects {
             environment_map: shaded && s.sky.is_some() && content.sky_image,
             fog: shaded && s.fog.is_some_and(|f| f.ground.is_none()),
             ground_fog: shaded && s.fog.is_some_and(|f| f.ground.is_some()),
+            alpha: shaded && s.alpha,
         }
     }
 
@@ -231,6 +234,7 @@ impl Effects {
             (self.environment_map, "environment map"),
             (self.fog, "fog"),
             (self.ground_fog, "ground fog"),
+            (self.alpha, "alpha"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -161,7 +161,8 @@ pub fn render_region(
     } else {
         0
     };
-    let aov_rows = if options.aovs.is_empty() {
+    let aovs = with_alpha(&options.aovs, scene.settings().alpha);
+    let aov_rows = if aovs.is_empty() {
         0
     } else {
         own_rows.count(h)
@@ -208,24 +209,34 @@ pub fn render_region(
         flare::apply(&sources, &f, w, h, n, &mut values);
     }
     let mut film = Film::new(w, h, channels, values, stats, scene.settings().encoding);
-    if !options.aovs.is_empty() {
+    if !aovs.is_empty() {
         let (values, _) = aov::render(
             scene,
             &view,
             first,
-            &options.aovs,
+            &aovs,
             r,
             own_rows,
             &pool,
             progress,
         )?;
-        let n = options.aovs.len();
-        for (i, c) in options.aovs.iter().enumerate() {
+        let n = aovs.len();
+        for (i, c) in aovs.iter().enumerate() {
             film.push_channel(*c, values.iter().skip(i).step_by(n).copied().collect());
         }
     }
     progress.finish();
     Ok(film)
+}
+
+/// The AOV layers to render: those asked for, and the alpha channel when the scene asks for
+/// one (`render { alpha: true }`) and the caller did not.
+fn with_alpha(asked: &[Channel], alpha: bool) -> Vec<Channel> {
+    let mut aovs = asked.to_vec();
+    if alpha && !aovs.contains(&Channel::Alpha) {
+        aovs.push(Channel::Alpha);
+    }
+    aovs
 }
 
 /// The first sample number of a refined pixel's finer grid: past the first grid's numbers (so

@@ -417,6 +417,12 @@ pub(super) static RENDER: Sig = Sig::new(
         .range(Range::NonNegative)
         .or(Lit::Float(1.0)),
         Param::new("fog", Ty::Fog, "fog along the rays, `fog { .. }`").optional(),
+        Param::new(
+            "alpha",
+            Ty::Bool,
+            "an alpha channel in PNG and EXR output: the share of a pixel's camera samples that meet something",
+        )
+        .or(Lit::Bool(false)),
     ],
     "Render",
 )
@@ -522,6 +528,7 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.background = p.color(it, "background")?.0;
+    st.alpha = p.bool(it, "alpha")?;
     st.cutoff = p.float(it, "cutoff")?.0;
     if p.bool(it, "spread_light_samples")? {
         st.light_samples = ir::LightSampling::Spread;

@@ -64,6 +64,7 @@ pub struct Whitted<'a> {
     background: Color,
     sky: Option<Sky>,
     fog: Option<Fog>,
+    alpha: bool,
     cutoff: f64,
 }
 
@@ -79,6 +80,7 @@ impl<'a> Whitted<'a> {
             background: s.background,
             sky: s.sky,
             fog: s.fog,
+            alpha: s.alpha,
             cutoff: s.cutoff,
         }
     }
@@ -121,6 +123,10 @@ impl<'a> Whitted<'a> {
     /// What `ray` of `path` sees where it meets nothing: the background, or the sky, through
     /// the fog.
     fn missed(&self, ray: &Ray, path: Path) -> Color {
+        if self.alpha && path.depth == 0 {
+            // Transparent black: the film's colour is premultiplied by the alpha channel.
+            return Color::ZERO;
+        }
         let c = match &self.sky {
             None => self.background,
             Some(s) => sky::color(self.scene, s, ray.dir, self.background),

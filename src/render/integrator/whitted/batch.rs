@@ -90,6 +90,7 @@ impl Whitted<'_> {
     pub fn batches(&self) -> bool {
         self.sky.is_none()
             && self.fog.is_none()
+            && !self.alpha
             && !self.scene.random()
             && !self.effects.glass_shadows
             && self.scene.settings().light_samples != LightSampling::Spread
