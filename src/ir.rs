@@ -23,7 +23,7 @@ pub mod provenance;
 mod settings;
 mod texture;
 
-pub use atmosphere::{Fog, GroundFog, Sky};
+pub use atmosphere::{Fog, FogPattern, GroundFog, Sky};
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;

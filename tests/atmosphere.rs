@@ -156,6 +156,31 @@ render {{ shadows: false, max_depth: 0, fog: fog {{ color: rgb({}, {}, {}), dist
     }
 }
 
+/// A fog pattern thins a segment of length d as POV-Ray's turbulence does, to
+/// `d·(1 − exp(−d/D)·min(1, v·depth))`, `v` the pattern's value at the segment's midpoint: a
+/// `gradient(axis: Y)` reads the height 0.25 of a level ray.
+#[test]
+fn fog_pattern_thins_the_fog() {
+    let dir = tempfile::tempdir().unwrap();
+    let (d, big_d, depth) = (6.0f64, 4.0f64, 0.8f64);
+    let scene = load(
+        dir.path(),
+        &format!(
+            r#"rtc 1.1
+camera {{ eye: [0, 0.25, {d}], center: [0, 0.25, 0], up: Y, fov: 10deg, resolution: [3, 3] }}
+point_light {{ position: [0, 0, 50] }}
+plane(point: [0, 0, 0], normal: Z).material(material {{ color: rgb(1, 1, 1), ka: 1, kd: 0, ks: 0 }})
+render {{ shadows: false, max_depth: 0, fog: fog {{ color: rgb(0, 0, 0), distance: {big_d}, pattern: gradient(axis: Y), pattern_depth: {depth} }} }}
+"#
+        ),
+    )
+    .unwrap();
+    let got = render_scene(&scene, &options()).unwrap().get(1, 1).x;
+    let width = d * (1.0 - (-d / big_d).exp() * (0.25 * depth));
+    let want = (-width / big_d).exp();
+    assert!((got - want).abs() < 1e-12, "{got} vs {want}");
+}
+
 /// Fog fills the air, not glass: a refracted ray inside a solid is not fogged, so a camera
 /// looking through a clear slab sees only the fog in the air before and after it.
 #[test]
@@ -266,6 +291,18 @@ fn bad_inputs_have_codes() {
             "rtc::param::out_of_range",
         ),
         ("fog: 3", "rtc::type::mismatch"),
+        (
+            "fog: fog { color: rgb(1, 1, 1), distance: 1, pattern: checker() }",
+            "rtc::render::fog",
+        ),
+        (
+            "fog: fog { color: rgb(1, 1, 1), distance: 1, pattern: bozo().uv() }",
+            "rtc::render::fog",
+        ),
+        (
+            "fog: fog { color: rgb(1, 1, 1), distance: 1, pattern: bozo(), pattern_depth: 2 }",
+            "rtc::param::out_of_range",
+        ),
     ];
     for (fields, code) in cases {
         let source = format!(
@@ -307,10 +344,16 @@ render {{ shadows: false, supersampling: 4, background: rgb(1, 0, 0), alpha: {al
         .expect("a partly covered pixel on the middle row");
     let inside = rgba.get_pixel(12, 12).0;
     for c in 0..3 {
-        assert!((i32::from(rim[c]) - i32::from(inside[c])).abs() <= 1, "{rim:?} vs {inside:?}");
+        assert!(
+            (i32::from(rim[c]) - i32::from(inside[c])).abs() <= 1,
+            "{rim:?} vs {inside:?}"
+        );
     }
     // Covered pixels keep their bytes: the colour is the same as without alpha.
-    assert_eq!(plain.to_image().get_pixel(12, 12).0, [inside[0], inside[1], inside[2]]);
+    assert_eq!(
+        plain.to_image().get_pixel(12, 12).0,
+        [inside[0], inside[1], inside[2]]
+    );
 }
 
 /// Shards of a render with a sky, fog and alpha merge into the single render, every channel
@@ -354,7 +397,10 @@ render {
             })
             .collect();
         let merged = merge(&parts).unwrap();
-        assert_eq!(merged.to_rgba().unwrap().as_raw(), single.to_rgba().unwrap().as_raw());
+        assert_eq!(
+            merged.to_rgba().unwrap().as_raw(),
+            single.to_rgba().unwrap().as_raw()
+        );
         assert_eq!(merged.color(), single.color());
     }
 }

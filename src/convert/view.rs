@@ -163,6 +163,8 @@ pub(crate) struct RenderDoc {
     pub(crate) output: Option<String>,
     /// The sky's texture as rtc source, if the scene has a sky.
     pub(crate) sky: Option<String>,
+    /// The fog's pattern as rtc source, if its fog has one.
+    pub(crate) fog_pattern: Option<String>,
 }
 
 /// The `render { ... }` record: every setting that differs from the language's defaults, and
@@ -223,7 +225,7 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
         }
     }
     if let Some(f) = s.fog {
-        fields.push(format!("fog: {}", fog(&f)));
+        fields.push(format!("fog: {}", fog(&f, doc.fog_pattern.as_deref())));
     }
     if s.alpha {
         fields.push("alpha: true".into());
@@ -275,7 +277,7 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
 }
 
 /// Fog: its colour and distance, and the fields that differ from their defaults.
-fn fog(f: &Fog) -> String {
+fn fog(f: &Fog, pattern: Option<&str>) -> String {
     let mut fields = vec![
         format!("color: {}", color(f.color)),
         format!("distance: {}", number(f.distance)),
@@ -291,6 +293,12 @@ fn fog(f: &Fog) -> String {
             fields.push(format!("offset: {}", number(g.offset)));
         }
         fields.push(format!("altitude: {}", number(g.altitude)));
+    }
+    if let (Some(fp), Some(text)) = (f.pattern, pattern) {
+        fields.push(format!("pattern: {text}"));
+        if fp.depth.to_bits() != 0.5f64.to_bits() {
+            fields.push(format!("pattern_depth: {}", number(fp.depth)));
+        }
     }
     format!("fog {{ {} }}", fields.join(", "))
 }

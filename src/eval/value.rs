@@ -68,7 +68,7 @@ pub(crate) enum Value {
     /// Lens flare parameters (`flare { ... }`).
     Flare(ir::Flare),
     /// Fog parameters (`fog { ... }`).
-    Fog(ir::Fog),
+    Fog(Rc<FogVal>),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -251,6 +251,16 @@ pub(crate) struct Tex {
     pub(crate) made: u64,
 }
 
+/// Fog as a value: its IR with the modulating pattern not yet lowered (boxed: a fog is far
+/// larger than most values).
+#[derive(Clone, Debug)]
+pub(crate) struct FogVal {
+    /// The fog (its `pattern` filled when lowered).
+    pub(crate) fog: ir::Fog,
+    /// The modulating pattern and its depth.
+    pub(crate) pattern: Option<(Rc<Tex>, f64)>,
+}
+
 /// Render settings as a value.
 #[derive(Clone, Debug)]
 pub(crate) struct RenderVal {
@@ -260,6 +270,8 @@ pub(crate) struct RenderVal {
     pub(crate) material: Option<Rc<Mat>>,
     /// The sky's texture with its rotation and strength (lowered to `ir::Sky`).
     pub(crate) sky: Option<(Rc<Tex>, f64, f64)>,
+    /// The fog's modulating pattern and its depth (lowered into `s.fog`).
+    pub(crate) fog_pattern: Option<(Rc<Tex>, f64)>,
     /// Where it was made.
     pub(crate) span: Span,
 }

@@ -33,6 +33,18 @@ pub struct Fog {
     pub transmit: f64,
     /// Ground fog: the density falls off above an altitude (`None`: constant fog).
     pub ground: Option<GroundFog>,
+    /// A pattern that thins the fog where its value is high (POV-Ray's fog turbulence).
+    pub pattern: Option<FogPattern>,
+}
+
+/// A pattern modulating fog as POV-Ray's fog turbulence does: a segment of length `d` counts as
+/// `d·(1 − exp(−d/distance)·min(1, depth·v))` long, `v` the pattern's value at its midpoint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FogPattern {
+    /// The pattern texture (its colour map unused).
+    pub texture: TextureId,
+    /// How strongly the value thins the fog (POV-Ray's `turb_depth`).
+    pub depth: f64,
 }
 
 /// Ground fog's density: 1 at and below `offset` along +Y, `1 / (1 + h²)` at `h = (y −

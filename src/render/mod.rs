@@ -210,16 +210,7 @@ pub fn render_region(
     }
     let mut film = Film::new(w, h, channels, values, stats, scene.settings().encoding);
     if !aovs.is_empty() {
-        let (values, _) = aov::render(
-            scene,
-            &view,
-            first,
-            &aovs,
-            r,
-            own_rows,
-            &pool,
-            progress,
-        )?;
+        let (values, _) = aov::render(scene, &view, first, &aovs, r, own_rows, &pool, progress)?;
         let n = aovs.len();
         for (i, c) in aovs.iter().enumerate() {
             film.push_channel(*c, values.iter().skip(i).step_by(n).copied().collect());

@@ -10,7 +10,7 @@ use crate::eval::host::BuiltinFn;
 use crate::eval::host::Host;
 use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use crate::eval::types;
-use crate::eval::value::{RenderVal, Value};
+use crate::eval::value::{FogVal, RenderVal, Value};
 use crate::ir;
 use crate::ir::limits::{MAX_DEPTH, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::source::Span;
@@ -207,12 +207,26 @@ pub(super) static FOG: Sig = Sig::new(
         .unit(Unit::Length)
         .range(Range::Positive)
         .optional(),
+        Param::new(
+            "pattern",
+            Ty::Texture,
+            "a pattern thinning the fog where its value is high, read at the midpoint of each ray segment (POV-Ray's fog turbulence)",
+        )
+        .optional(),
+        Param::new(
+            "pattern_depth",
+            Ty::Float,
+            "how strongly the pattern thins the fog (POV-Ray's `turb_depth`)",
+        )
+        .range(Range::UnitInterval)
+        .or(Lit::Float(0.5)),
     ],
     "Fog",
 )
 .examples(&[
     "fog { color: rgb(0.7, 0.7, 0.8), distance: 20 }",
     "fog { color: rgb(1, 1, 1), distance: 5, transmit: 0.2, offset: 0.5, altitude: 1 }",
+    "fog { color: rgb(0.8, 0.8, 0.8), distance: 10, pattern: bozo().scale(2), pattern_depth: 0.7 }",
 ]);
 fn fog(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &FOG, a)?;
@@ -220,13 +234,38 @@ fn fog(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let ground = p
         .float_opt(it, "altitude")?
         .map(|(altitude, _)| ir::GroundFog { offset, altitude });
-    Ok(Value::Fog(ir::Fog {
-        color: p.color(it, "color")?.0,
-        distance: p.float(it, "distance")?.0,
-        filter: p.float(it, "filter")?.0,
-        transmit: p.float(it, "transmit")?.0,
-        ground,
-    }))
+    let depth = p.float(it, "pattern_depth")?.0;
+    let pattern = match p.get("pattern") {
+        Some((Value::Texture(t), sp)) => {
+            // Read at points in the world: an image or a uv-space pattern has nothing there.
+            let world =
+                matches!(&t.t, ir::Texture::Pattern(p) if p.space == ir::PatternSpace::Object);
+            if !world {
+                return Err(error(
+                    "rtc::render::fog",
+                    sp,
+                    "a fog's `pattern` must be a pattern read in space",
+                )
+                .with_label("not a pattern, or read in uv space")
+                .with_help("use a pattern such as `bozo()` or `granite()`, without `.uv()`")
+                .into());
+            }
+            Some((t, depth))
+        }
+        Some((other, sp)) => return Err(types::mismatch(it, "Texture", &other, sp).into()),
+        None => None,
+    };
+    Ok(Value::Fog(Rc::new(FogVal {
+        fog: ir::Fog {
+            color: p.color(it, "color")?.0,
+            distance: p.float(it, "distance")?.0,
+            filter: p.float(it, "filter")?.0,
+            transmit: p.float(it, "transmit")?.0,
+            ground,
+            pattern: None,
+        },
+        pattern,
+    })))
 }
 
 /// `adaptive(min, max, threshold)`.
@@ -539,9 +578,13 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         st.output = Some(crate::eval::modules::resolve(it.dir(), &rel));
         st.output_span = Some(sp);
     }
+    let mut fog_pattern = None;
     if let Some((v, sp)) = p.get("fog") {
         st.fog = match v {
-            Value::Fog(f) => Some(f),
+            Value::Fog(f) => {
+                fog_pattern = f.pattern.clone();
+                Some(f.fog)
+            }
             other => return Err(types::mismatch(it, "Fog", &other, sp).into()),
         };
     }
@@ -560,6 +603,7 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         span: s.span,
         material: None,
         sky,
+        fog_pattern,
     };
     if let Some((v, sp)) = p.get("material") {
         match v {

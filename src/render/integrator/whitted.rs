@@ -62,8 +62,8 @@ pub struct Whitted<'a> {
     shading: ShadingModel,
     max_depth: u32,
     background: Color,
-    sky: Option<Sky>,
-    fog: Option<Fog>,
+    sky: Option<&'a Sky>,
+    fog: Option<&'a Fog>,
     alpha: bool,
     cutoff: f64,
 }
@@ -78,8 +78,8 @@ impl<'a> Whitted<'a> {
             shading: s.shading,
             max_depth: s.max_depth,
             background: s.background,
-            sky: s.sky,
-            fog: s.fog,
+            sky: s.sky.as_ref(),
+            fog: s.fog.as_ref(),
             alpha: s.alpha,
             cutoff: s.cutoff,
         }
@@ -127,7 +127,7 @@ impl<'a> Whitted<'a> {
             // Transparent black: the film's colour is premultiplied by the alpha channel.
             return Color::ZERO;
         }
-        let c = match &self.sky {
+        let c = match self.sky {
             None => self.background,
             Some(s) => sky::color(self.scene, s, ray.dir, self.background),
         };
@@ -138,8 +138,8 @@ impl<'a> Whitted<'a> {
     /// the space outside objects only, as POV-Ray's fills what is not inside a solid).
     #[inline(always)]
     fn fogged(&self, ray: &Ray, t: f64, path: Path, c: Color) -> Color {
-        match &self.fog {
-            Some(f) if path.media.is_outside() => fog::apply(f, ray, t, c),
+        match self.fog {
+            Some(f) if path.media.is_outside() => fog::apply(self.scene, f, ray, t, c),
             _ => c,
         }
     }
