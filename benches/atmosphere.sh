@@ -11,8 +11,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=target/bench-atmosphere
 mkdir -p "$out"
-cargo build --release -q --locked
-rtc=$PWD/target/release/rtc
+# RTC=path/to/rtc uses that binary as it is (no build first).
+if [ -z "${RTC:-}" ]; then
+    cargo build --release -q --locked
+fi
+rtc=${RTC:-$PWD/target/release/rtc}
 hdr=$PWD/docs/images/sky.hdr
 variant() { # name render-fields
     cat >"$out/$1.rtc" <<RTC

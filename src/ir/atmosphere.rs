@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::TextureId;
+use super::texture::TextureId;
 
 /// The sky: a texture read along the direction of a ray that meets nothing, in place of the
 /// background colour (POV-Ray's `sky_sphere`).
