@@ -10,6 +10,7 @@ use glam::DVec3;
 
 use crate::source::Span;
 
+mod atmosphere;
 mod call;
 mod camera;
 mod flare;
@@ -22,6 +23,7 @@ pub mod provenance;
 mod settings;
 mod texture;
 
+pub use atmosphere::{Fog, FogPattern, GroundFog, Sky};
 pub(crate) use call::{Arg, ShapeCall};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;

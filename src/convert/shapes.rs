@@ -108,7 +108,8 @@ fn mapping_arg(mapping: Mapping) -> &'static str {
     }
 }
 
-fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
+/// A texture as the rtc expression that makes it.
+pub(crate) fn texture(t: &Texture, asset: AssetPath<'_>) -> String {
     match t {
         Texture::NormalMap { path, mapping, .. } => {
             let map = mapping_arg(*mapping);

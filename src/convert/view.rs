@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use super::shapes;
 use super::text::{color, direction, number, string, vector};
 use crate::ir::{
-    AmbientConvention, Camera, DepthRange, Encoding, Flare, Light, LightKind, LightSampling,
+    AmbientConvention, Camera, DepthRange, Encoding, Flare, Fog, Light, LightKind, LightSampling,
     Projection, RenderMode, RenderSettings, Sampling,
 };
 
@@ -189,6 +189,10 @@ pub(crate) struct RenderDoc {
     pub(crate) material: Option<String>,
     /// How the output file is referred to from the rtc file's directory.
     pub(crate) output: Option<String>,
+    /// The sky's texture as rtc source, if the scene has a sky.
+    pub(crate) sky: Option<String>,
+    /// The fog's pattern as rtc source, if its fog has one.
+    pub(crate) fog_pattern: Option<String>,
 }
 
 /// The `render { ... }` record: every setting that differs from the language's defaults, and
@@ -239,6 +243,21 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
     if s.background != glam::DVec3::ZERO {
         fields.push(format!("background: {}", color(s.background)));
     }
+    if let (Some(sky), Some(text)) = (s.sky, &doc.sky) {
+        fields.push(format!("sky: {text}"));
+        if sky.rotation != 0.0 {
+            fields.push(format!("sky_rotation: {}rad", number(sky.rotation)));
+        }
+        if sky.strength.to_bits() != 1f64.to_bits() {
+            fields.push(format!("sky_strength: {}", number(sky.strength)));
+        }
+    }
+    if let Some(f) = s.fog {
+        fields.push(format!("fog: {}", fog(&f, doc.fog_pattern.as_deref())));
+    }
+    if s.alpha {
+        fields.push("alpha: true".into());
+    }
     if s.seed != 0 {
         fields.push(format!("seed: {}", s.seed));
     }
@@ -283,6 +302,33 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
     } else {
         format!("{why}render {{\n  {}\n}}\n", fields.join("\n  "))
     }
+}
+
+/// Fog: its colour and distance, and the fields that differ from their defaults.
+fn fog(f: &Fog, pattern: Option<&str>) -> String {
+    let mut fields = vec![
+        format!("color: {}", color(f.color)),
+        format!("distance: {}", number(f.distance)),
+    ];
+    if f.filter != 0.0 {
+        fields.push(format!("filter: {}", number(f.filter)));
+    }
+    if f.transmit != 0.0 {
+        fields.push(format!("transmit: {}", number(f.transmit)));
+    }
+    if let Some(g) = f.ground {
+        if g.offset != 0.0 {
+            fields.push(format!("offset: {}", number(g.offset)));
+        }
+        fields.push(format!("altitude: {}", number(g.altitude)));
+    }
+    if let (Some(fp), Some(text)) = (f.pattern, pattern) {
+        fields.push(format!("pattern: {text}"));
+        if fp.depth.to_bits() != 0.5f64.to_bits() {
+            fields.push(format!("pattern_depth: {}", number(fp.depth)));
+        }
+    }
+    format!("fog {{ {} }}", fields.join(", "))
 }
 
 /// A lens flare: `flare` for the defaults, else the fields that differ from them.

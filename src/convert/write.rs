@@ -154,6 +154,13 @@ pub(crate) fn write(scene: &Scene, doc: &Doc<'_>, palette: &Palette, placed: &Pl
         course: doc.origin.is_some(),
         material: settings.default_material.map(|id| name(id.0)),
         output: settings.output.as_deref().map(doc.asset),
+        sky: settings
+            .sky
+            .map(|s| shapes::texture(&scene.textures[s.texture.0 as usize], doc.asset)),
+        fog_pattern: settings
+            .fog
+            .and_then(|f| f.pattern)
+            .map(|p| shapes::texture(&scene.textures[p.texture.0 as usize], doc.asset)),
     };
     let render = view::render(settings, &render);
     if !render.is_empty() {

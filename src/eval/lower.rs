@@ -499,6 +499,17 @@ impl Lowerer {
             Some(r) => {
                 let mut s = r.s.clone();
                 s.default_material = r.material.as_ref().map(|m| self.material(m));
+                if let (Some(f), Some((t, depth))) = (s.fog.as_mut(), r.fog_pattern.as_ref()) {
+                    f.pattern = Some(ir::FogPattern {
+                        texture: self.texture(t),
+                        depth: *depth,
+                    });
+                }
+                s.sky = r.sky.as_ref().map(|(t, rotation, strength)| ir::Sky {
+                    texture: self.texture(t),
+                    rotation: *rotation,
+                    strength: *strength,
+                });
                 s
             }
             None => ir::RenderSettings::language_defaults(),

@@ -171,6 +171,8 @@ pub(crate) enum Ty {
     Mapping,
     /// Lens flare parameters (`flare { .. }`).
     Flare,
+    /// Fog parameters (`fog { .. }`).
+    Fog,
     /// A sampling scheme (`adaptive(..)`).
     Sampling,
     /// Anything.
@@ -207,6 +209,7 @@ impl Ty {
             Ty::Encoding => "Encoding",
             Ty::Mapping => "Mapping",
             Ty::Flare => "Flare",
+            Ty::Fog => "Fog",
             Ty::Sampling => "Sampling",
             Ty::Any => "Any",
             Ty::OneOf(ts) => {

@@ -67,6 +67,8 @@ pub(crate) enum Value {
     Encoding(ir::Encoding),
     /// Lens flare parameters (`flare { ... }`).
     Flare(ir::Flare),
+    /// Fog parameters (`fog { ... }`).
+    Fog(Rc<FogVal>),
     /// A keyed random stream.
     Rng(u64),
     /// An imported module.
@@ -261,6 +263,16 @@ pub(crate) struct Tex {
     pub(crate) made: u64,
 }
 
+/// Fog as a value: its IR with the modulating pattern not yet lowered (boxed: a fog is far
+/// larger than most values).
+#[derive(Clone, Debug)]
+pub(crate) struct FogVal {
+    /// The fog (its `pattern` filled when lowered).
+    pub(crate) fog: ir::Fog,
+    /// The modulating pattern and its depth.
+    pub(crate) pattern: Option<(Rc<Tex>, f64)>,
+}
+
 /// Render settings as a value.
 #[derive(Clone, Debug)]
 pub(crate) struct RenderVal {
@@ -268,6 +280,10 @@ pub(crate) struct RenderVal {
     pub(crate) s: ir::RenderSettings,
     /// The default material for objects without one.
     pub(crate) material: Option<Rc<Mat>>,
+    /// The sky's texture with its rotation and strength (lowered to `ir::Sky`).
+    pub(crate) sky: Option<(Rc<Tex>, f64, f64)>,
+    /// The fog's modulating pattern and its depth (lowered into `s.fog`).
+    pub(crate) fog_pattern: Option<(Rc<Tex>, f64)>,
     /// Where it was made.
     pub(crate) span: Span,
 }
@@ -302,6 +318,7 @@ impl Value {
             Value::Ambient(_) => "Ambient",
             Value::Encoding(_) => "Encoding",
             Value::Flare(_) => "Flare",
+            Value::Fog(_) => "Fog",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",
         }

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::{Color, Flare, MaterialId};
+use super::{Color, Flare, Fog, MaterialId, Sky};
 
 /// How pixels become colours.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,8 +22,15 @@ pub struct RenderSettings {
     pub sampling: Sampling,
     /// How Phong's ambient term is counted.
     pub ambient: AmbientConvention,
-    /// Colour of rays that hit nothing.
+    /// Colour of rays that hit nothing (behind the sky's filter and transmit, if it has any).
     pub background: Color,
+    /// What rays that hit nothing see instead of `background` (`None`: the background).
+    pub sky: Option<Sky>,
+    /// Fog along the rays (`None`: clear air).
+    pub fog: Option<Fog>,
+    /// The image gets an alpha channel, the share of a pixel's camera samples that meet
+    /// something (POV-Ray's `+UA`); camera rays that meet nothing are transparent black.
+    pub alpha: bool,
     /// Material for objects that name none.
     pub default_material: Option<MaterialId>,
     /// Seed for every random decision (area lights, lens, jitter); bytes depend only on it.
@@ -110,6 +117,9 @@ impl Default for RenderSettings {
             sampling: Sampling::Grid { factor: 1 },
             ambient: AmbientConvention::PerLight,
             background: DVec3::ZERO,
+            sky: None,
+            fog: None,
+            alpha: false,
             default_material: None,
             seed: 0,
             output: None,

@@ -4,6 +4,7 @@ use std::fmt;
 
 use crate::ir::{
     Camera, LightKind, Object, RenderMode, RenderSettings, Sampling, Scene, ShadingModel, Shape,
+    Texture,
 };
 
 /// Which effects a scene uses. Each flag gates work in the renderer.
@@ -54,6 +55,16 @@ pub struct Effects {
     /// Some object is hidden from some rays (`.no_shadow()`, `.no_image()`,
     /// `.no_reflection()`): hits on it are skipped, so rays are not traced in packets.
     pub(crate) visibility_flags: bool,
+    /// Rays that meet nothing see a procedural sky (`render { sky: <pattern> }`).
+    pub sky: bool,
+    /// Rays that meet nothing see an image (`render { sky: image(..) }`).
+    pub environment_map: bool,
+    /// Constant fog along the rays.
+    pub fog: bool,
+    /// Ground fog along the rays.
+    pub ground_fog: bool,
+    /// The output has an alpha channel (`render { alpha: true }`).
+    pub alpha: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -83,6 +94,8 @@ pub(crate) struct Content {
     meshes: bool,
     moving: bool,
     glossy: bool,
+    /// The scene's sky is an image (an environment map), not a pattern.
+    sky_image: bool,
 }
 
 impl Content {
@@ -133,6 +146,12 @@ impl Content {
             glossy: mats
                 .iter()
                 .any(|m| m.gloss > 0.0 && (m.reflect > 0.0 || m.refract > 0.0)),
+            sky_image: scene.settings.sky.is_some_and(|s| {
+                matches!(
+                    scene.textures.get(s.texture.0 as usize),
+                    Some(Texture::Image { .. } | Texture::NormalMap { .. })
+                )
+            }),
         }
     }
 
@@ -197,6 +216,11 @@ impl Effects {
             glass_shadows: shadows && s.glass_shadows && content.refractive,
             flare: shaded && s.flare.is_some() && content.lights,
             visibility_flags: content.hidden_objects,
+            sky: shaded && s.sky.is_some() && !content.sky_image,
+            environment_map: shaded && s.sky.is_some() && content.sky_image,
+            fog: shaded && s.fog.is_some_and(|f| f.ground.is_none()),
+            ground_fog: shaded && s.fog.is_some_and(|f| f.ground.is_some()),
+            alpha: shaded && s.alpha,
         }
     }
 
@@ -225,6 +249,11 @@ impl Effects {
             (self.glass_shadows, "light through glass"),
             (self.flare, "lens flare"),
             (self.visibility_flags, "visibility flags"),
+            (self.sky, "sky"),
+            (self.environment_map, "environment map"),
+            (self.fog, "fog"),
+            (self.ground_fog, "ground fog"),
+            (self.alpha, "alpha"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -118,6 +118,7 @@ impl PixelAovs {
             Channel::Depth if self.hits == 0 => Color::new(f64::INFINITY, 0.0, 0.0),
             Channel::Depth => Color::new(self.distance / f64::from(self.hits), 0.0, 0.0),
             Channel::Normal => self.normal / n,
+            Channel::Alpha => Color::new(f64::from(self.hits) / n, 0.0, 0.0),
             Channel::Albedo => self.albedo / n,
             // The most samples win; among equals the first seen (the votes keep sample order).
             Channel::Object => {

@@ -8,6 +8,7 @@
 //! | normal | `normal.X`, `normal.Y`, `normal.Z` | world space, facing the viewer |
 //! | albedo | `albedo.R`, `albedo.G`, `albedo.B` | the surface colour |
 //! | object | `object.id` (`u32`) | scene object index + 1; 0 is the background |
+//! | alpha | `A` | the share of the pixel's samples that hit; the colour is premultiplied by it |
 
 use exr::prelude::{
     AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer, LayerAttributes, SmallVec, Vec2,
@@ -26,6 +27,7 @@ fn channel_names(c: Channel) -> &'static [&'static str] {
         Channel::Normal => &["normal.X", "normal.Y", "normal.Z"],
         Channel::Albedo => &["albedo.R", "albedo.G", "albedo.B"],
         Channel::Object => &["object.id"],
+        Channel::Alpha => &["A"],
     }
 }
 

@@ -27,24 +27,29 @@ pub enum Channel {
     /// AOV: the scene object hit by most of the pixel's samples, as `index + 1` in `x` (0: the
     /// background).
     Object,
+    /// AOV: the share of the pixel's samples whose camera ray meets something (`x`), the
+    /// image's alpha (`render { alpha: true }` adds it).
+    Alpha,
 }
 
 impl Channel {
     /// Every channel, for reading names back.
-    const ALL: [Channel; 5] = [
+    const ALL: [Channel; 6] = [
         Channel::Color,
         Channel::Depth,
         Channel::Normal,
         Channel::Albedo,
         Channel::Object,
+        Channel::Alpha,
     ];
 
     /// The channels `--aov` can ask for (every one but the colour).
-    pub const AOVS: [Channel; 4] = [
+    pub const AOVS: [Channel; 5] = [
         Channel::Depth,
         Channel::Normal,
         Channel::Albedo,
         Channel::Object,
+        Channel::Alpha,
     ];
 
     /// The channel's name in files and messages.
@@ -55,6 +60,7 @@ impl Channel {
             Channel::Normal => "normal",
             Channel::Albedo => "albedo",
             Channel::Object => "object",
+            Channel::Alpha => "alpha",
         }
     }
 
@@ -191,6 +197,30 @@ impl Film {
             .flat_map(|c| encode(*c, self.encoding))
             .collect();
         Image::from_raw(self.width, self.height, bytes).unwrap_or_default()
+    }
+}
+
+impl Film {
+    /// The 8-bit RGBA image of a film with an alpha channel (`None` without one): the alpha is
+    /// `round(255·a)`, the colour the premultiplied film colour divided by `a` (straight alpha,
+    /// as PNG stores it), encoded as [`Film::to_image`] encodes; black where `a` is 0.
+    pub fn to_rgba(&self) -> Option<image::RgbaImage> {
+        let alpha = self.channel(Channel::Alpha)?;
+        let bytes = self
+            .color()
+            .iter()
+            .zip(alpha)
+            .flat_map(|(c, a)| {
+                let a = a.x.clamp(0.0, 1.0);
+                let [r, g, b] = if a > 0.0 {
+                    encode(*c / a, self.encoding)
+                } else {
+                    [0; 3]
+                };
+                [r, g, b, libm::round(255.0 * a) as u8]
+            })
+            .collect();
+        image::RgbaImage::from_raw(self.width, self.height, bytes)
     }
 }
 

@@ -34,6 +34,7 @@ pub mod explain;
 mod exr;
 pub mod film;
 mod flare;
+mod fog;
 mod footprint;
 pub mod integrator;
 pub mod merge;
@@ -55,6 +56,7 @@ mod sampler;
 pub mod scatter;
 mod shading;
 pub mod shard;
+mod sky;
 mod texture;
 mod tiles;
 mod view;
@@ -159,7 +161,8 @@ pub fn render_region(
     } else {
         0
     };
-    let aov_rows = if options.aovs.is_empty() {
+    let aovs = with_alpha(&options.aovs, scene.settings().alpha);
+    let aov_rows = if aovs.is_empty() {
         0
     } else {
         own_rows.count(h)
@@ -206,24 +209,25 @@ pub fn render_region(
         flare::apply(&sources, &f, w, h, n, &mut values);
     }
     let mut film = Film::new(w, h, channels, values, stats, scene.settings().encoding);
-    if !options.aovs.is_empty() {
-        let (values, _) = aov::render(
-            scene,
-            &view,
-            first,
-            &options.aovs,
-            r,
-            own_rows,
-            &pool,
-            progress,
-        )?;
-        let n = options.aovs.len();
-        for (i, c) in options.aovs.iter().enumerate() {
+    if !aovs.is_empty() {
+        let (values, _) = aov::render(scene, &view, first, &aovs, r, own_rows, &pool, progress)?;
+        let n = aovs.len();
+        for (i, c) in aovs.iter().enumerate() {
             film.push_channel(*c, values.iter().skip(i).step_by(n).copied().collect());
         }
     }
     progress.finish();
     Ok(film)
+}
+
+/// The AOV layers to render: those asked for, and the alpha channel when the scene asks for
+/// one (`render { alpha: true }`) and the caller did not.
+fn with_alpha(asked: &[Channel], alpha: bool) -> Vec<Channel> {
+    let mut aovs = asked.to_vec();
+    if alpha && !aovs.contains(&Channel::Alpha) {
+        aovs.push(Channel::Alpha);
+    }
+    aovs
 }
 
 /// The first sample number of a refined pixel's finer grid: past the first grid's numbers (so

@@ -88,10 +88,24 @@ fn encode_exr(linear: &image::Rgb32FImage) -> Result<Vec<u8>, Diagnostic> {
 }
 
 /// Writes a film to `path`: every channel linear and unclamped for `*.exr` (`render::exr`),
-/// else the 8-bit image of its colour in the film's encoding (PNG or PPM).
+/// else the 8-bit image of its colour in the film's encoding (PNG or PPM); a PNG of a film
+/// with an alpha channel is RGBA (straight alpha, as PNG defines it).
 pub fn save_film(film: &super::film::Film, path: &Path) -> Result<(), Diagnostic> {
-    if ImageFormat::of(path) != Some(ImageFormat::Exr) {
-        return save(&film.to_image(), path);
+    match (ImageFormat::of(path), film.to_rgba()) {
+        (Some(ImageFormat::Png), Some(rgba)) => {
+            let mut bytes = Vec::new();
+            image::codecs::png::PngEncoder::new(&mut bytes)
+                .write_image(
+                    rgba.as_raw(),
+                    rgba.width(),
+                    rgba.height(),
+                    image::ExtendedColorType::Rgba8,
+                )
+                .map_err(|e| io_error(format!("cannot encode PNG: {e}"), "report this as a bug"))?;
+            return write_atomically(path, &bytes);
+        }
+        (Some(ImageFormat::Exr), _) => {}
+        _ => return save(&film.to_image(), path),
     }
     write_atomically(path, &super::exr::encode(film)?)
 }

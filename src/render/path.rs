@@ -28,6 +28,11 @@ impl Media {
         len: 0,
     };
 
+    /// Whether the ray travels outside every object (where fog is).
+    pub(crate) fn is_outside(&self) -> bool {
+        self.len == 0
+    }
+
     /// The index of the innermost medium.
     pub(crate) fn current(&self) -> f64 {
         if self.len == 0 {

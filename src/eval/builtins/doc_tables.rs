@@ -370,6 +370,7 @@ fn the_language_reference_tables_agree_with_the_schemas() {
     check_fields(&doc, "## 15.", "material", &mut problems);
     check_fields(&doc, "## 18.", "camera", &mut problems);
     check_fields(&doc, "## 19.", "render", &mut problems);
+    check_fields(&doc, "### 19.1", "fog", &mut problems);
     assert!(
         problems.is_empty(),
         "docs/language.md disagrees with the schemas (the code is the truth):\n{}",

@@ -1,16 +1,16 @@
-//! Render settings and their parts: `render { .. }`, `gooch`, `adaptive`, `depth`, `flare`, and
-//! the named values of their enumerations.
+//! Render settings and their parts: `render { .. }`, `gooch`, `adaptive`, `depth`, `flare`,
+//! `fog`, and the named values of their enumerations.
 
 use std::rc::Rc;
 
 use crate::eval::args::Params;
 use crate::eval::args::{ArgVal, CallSite, check};
-use crate::eval::error::R;
+use crate::eval::error::{R, error};
 use crate::eval::host::BuiltinFn;
 use crate::eval::host::Host;
 use crate::eval::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use crate::eval::types;
-use crate::eval::value::{RenderVal, Value};
+use crate::eval::value::{FogVal, RenderVal, Value};
 use crate::ir;
 use crate::ir::limits::{MAX_DEPTH, MAX_PIXEL_SAMPLES_PER_AXIS};
 use crate::source::Span;
@@ -22,6 +22,7 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&ADAPTIVE, adaptive),
     (&DEPTH, depth),
     (&FLARE, flare),
+    (&FOG, fog),
 ];
 
 /// Named enumeration values.
@@ -160,6 +161,111 @@ fn flare(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         threshold: p.float(it, "threshold")?.0,
         intensity: p.float(it, "intensity")?.0,
     }))
+}
+
+/// `fog { color:, distance:, filter:, transmit:, offset:, altitude: }`: POV-Ray's fog, constant
+/// or (with `altitude`) ground fog.
+pub(super) static FOG: Sig = Sig::new(
+    "fog",
+    Group::Render,
+    "Fog along every ray outside objects: after a distance `d` a ray keeps `max(exp(−d/distance), transmit)` of its light and takes the rest from `color` (POV-Ray's fog).",
+    &[
+        Param::new("color", Ty::Color, "the fog's colour"),
+        Param::new(
+            "distance",
+            Ty::Float,
+            "the distance over which a ray keeps 1/e of its light",
+        )
+        .unit(Unit::Length)
+        .range(Range::Positive),
+        Param::new(
+            "filter",
+            Ty::Float,
+            "the share of the light kept tinted by the fog's colour",
+        )
+        .range(Range::UnitInterval)
+        .or(Lit::Float(0.0)),
+        Param::new(
+            "transmit",
+            Ty::Float,
+            "the least share of the light kept, however far",
+        )
+        .range(Range::UnitInterval)
+        .or(Lit::Float(0.0)),
+        Param::new(
+            "offset",
+            Ty::Float,
+            "ground fog: the height (along +Y) up to which it is full",
+        )
+        .unit(Unit::Length)
+        .or(Lit::Float(0.0)),
+        Param::new(
+            "altitude",
+            Ty::Float,
+            "ground fog: the height scale of its falloff above `offset` (density `1/(1 + h²)`, `h = (y − offset)/altitude`); without it the fog is constant",
+        )
+        .unit(Unit::Length)
+        .range(Range::Positive)
+        .optional(),
+        Param::new(
+            "pattern",
+            Ty::Texture,
+            "a pattern thinning the fog where its value is high, read at the midpoint of each ray segment (POV-Ray's fog turbulence)",
+        )
+        .optional(),
+        Param::new(
+            "pattern_depth",
+            Ty::Float,
+            "how strongly the pattern thins the fog (POV-Ray's `turb_depth`)",
+        )
+        .range(Range::UnitInterval)
+        .or(Lit::Float(0.5)),
+    ],
+    "Fog",
+)
+.examples(&[
+    "fog { color: rgb(0.7, 0.7, 0.8), distance: 20 }",
+    "fog { color: rgb(1, 1, 1), distance: 5, transmit: 0.2, offset: 0.5, altitude: 1 }",
+    "fog { color: rgb(0.8, 0.8, 0.8), distance: 10, pattern: bozo().scale(2), pattern_depth: 0.7 }",
+]);
+fn fog(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &FOG, a)?;
+    let offset = p.float(it, "offset")?.0;
+    let ground = p
+        .float_opt(it, "altitude")?
+        .map(|(altitude, _)| ir::GroundFog { offset, altitude });
+    let depth = p.float(it, "pattern_depth")?.0;
+    let pattern = match p.get("pattern") {
+        Some((Value::Texture(t), sp)) => {
+            // Read at points in the world: an image or a uv-space pattern has nothing there.
+            let world =
+                matches!(&t.t, ir::Texture::Pattern(p) if p.space == ir::PatternSpace::Object);
+            if !world {
+                return Err(error(
+                    "rtc::render::fog",
+                    sp,
+                    "a fog's `pattern` must be a pattern read in space",
+                )
+                .with_label("not a pattern, or read in uv space")
+                .with_help("use a pattern such as `bozo()` or `granite()`, without `.uv()`")
+                .into());
+            }
+            Some((t, depth))
+        }
+        Some((other, sp)) => return Err(types::mismatch(it, "Texture", &other, sp).into()),
+        None => None,
+    };
+    Ok(Value::Fog(Rc::new(FogVal {
+        fog: ir::Fog {
+            color: p.color(it, "color")?.0,
+            distance: p.float(it, "distance")?.0,
+            filter: p.float(it, "filter")?.0,
+            transmit: p.float(it, "transmit")?.0,
+            ground,
+            pattern: None,
+        },
+        pattern,
+    })))
 }
 
 /// `adaptive(min, max, threshold)`.
@@ -329,10 +435,37 @@ pub(super) static RENDER: Sig = Sig::new(
             "deal an area light's cells out over a pixel's samples",
         )
         .or(Lit::Bool(false)),
+        Param::new(
+            "sky",
+            Ty::Texture,
+            "what rays that hit nothing see: a pattern read at the ray's direction, or an `image(..)` (PNG, HDR, EXR) as a latitude–longitude map",
+        )
+        .optional(),
+        Param::new(
+            "sky_rotation",
+            Ty::Angle,
+            "the sky turned about +Y (counter-clockwise seen from above)",
+        )
+        .unit(Unit::Angle)
+        .or(Lit::Degrees(0.0)),
+        Param::new(
+            "sky_strength",
+            Ty::Float,
+            "the sky's colour is multiplied by this",
+        )
+        .range(Range::NonNegative)
+        .or(Lit::Float(1.0)),
+        Param::new("fog", Ty::Fog, "fog along the rays, `fog { .. }`").optional(),
+        Param::new(
+            "alpha",
+            Ty::Bool,
+            "an alpha channel in PNG and EXR output: the share of a pixel's camera samples that meet something",
+        )
+        .or(Lit::Bool(false)),
     ],
     "Render",
 )
-.examples(&["render { shading: gooch, mode: normal, shadows: false, max_depth: 2, supersampling: 4, ambient: once, background: srgb(0.1, 0.1, 0.15), seed: 42 }", "render { output: \"out.png\", material: material { kd: 0.5 }, encoding: linear, glass_shadows: true, flare: flare { ghosts: 6 }, cutoff: 0, spread_light_samples: true }"]);
+.examples(&["render { shading: gooch, mode: normal, shadows: false, max_depth: 2, supersampling: 4, ambient: once, background: srgb(0.1, 0.1, 0.15), seed: 42 }", "render { output: \"out.png\", material: material { kd: 0.5 }, encoding: linear, glass_shadows: true, flare: flare { ghosts: 6 }, cutoff: 0, spread_light_samples: true }", "render { sky: gradient(axis: Y).colors([rgb(1, 1, 1), rgb(0.2, 0.4, 0.9)]), sky_rotation: 90deg, sky_strength: 1.5, fog: fog { color: rgb(0.8, 0.8, 0.8), distance: 30 } }"]);
 fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &RENDER, a)?;
     let mut st = ir::RenderSettings::language_defaults();
@@ -434,6 +567,7 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
     }
     st.background = p.color(it, "background")?.0;
+    st.alpha = p.bool(it, "alpha")?;
     st.cutoff = p.float(it, "cutoff")?.0;
     if p.bool(it, "spread_light_samples")? {
         st.light_samples = ir::LightSampling::Spread;
@@ -444,10 +578,32 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         st.output = Some(crate::eval::modules::resolve(it.dir(), &rel));
         st.output_span = Some(sp);
     }
+    let mut fog_pattern = None;
+    if let Some((v, sp)) = p.get("fog") {
+        st.fog = match v {
+            Value::Fog(f) => {
+                fog_pattern = f.pattern.clone();
+                Some(f.fog)
+            }
+            other => return Err(types::mismatch(it, "Fog", &other, sp).into()),
+        };
+    }
+    let rotation = p.angle(it, "sky_rotation")?.0;
+    let strength = p.float(it, "sky_strength")?.0;
+    let sky = match p.get("sky") {
+        Some((Value::Texture(t), sp)) => {
+            sky_readable(&t.t, sp)?;
+            Some((t, rotation, strength))
+        }
+        Some((other, sp)) => return Err(types::mismatch(it, "Texture", &other, sp).into()),
+        None => None,
+    };
     let mut rv = RenderVal {
         s: st,
         span: s.span,
         material: None,
+        sky,
+        fog_pattern,
     };
     if let Some((v, sp)) = p.get("material") {
         match v {
@@ -456,6 +612,24 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         }
     }
     Ok(Value::Render(Rc::new(rv)))
+}
+
+/// A sky is read along directions: a texture that needs a surface's coordinates (a normal map,
+/// a pattern read in uv space) has nothing to read there.
+fn sky_readable(t: &ir::Texture, sp: Span) -> R<()> {
+    let what = match t {
+        ir::Texture::NormalMap { .. } => "a normal map",
+        ir::Texture::Pattern(p) if p.space == ir::PatternSpace::Uv => "a pattern read in uv space",
+        _ => return Ok(()),
+    };
+    Err(error(
+        "rtc::render::sky",
+        sp,
+        format!("{what} cannot be a sky: a sky has no surface coordinates"),
+    )
+    .with_label("read along the ray's direction")
+    .with_help("use a pattern in its own space (without `.uv()`), or `image(..)` for a latitude–longitude picture")
+    .into())
 }
 
 fn enum_mismatch(

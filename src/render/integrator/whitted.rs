@@ -14,7 +14,7 @@ use glam::DVec3;
 
 use crate::geometry::{Ray, SurfaceHit};
 use crate::ir::limits::MAX_GLOSS_SAMPLES;
-use crate::ir::{Color, Material, ShadingModel};
+use crate::ir::{Color, Fog, Material, ShadingModel, Sky};
 use crate::opt::{Effects, Prepared};
 use crate::render::context::Ctx;
 use crate::render::film::CUT_WEIGHT_UNIT;
@@ -24,7 +24,7 @@ use crate::render::record::{Branch, NoRecord, Recorder};
 use crate::render::sampler::Rng;
 use crate::render::scatter::{Lobe, Scattering, reflect};
 use crate::render::shading::{self, Surface};
-use crate::render::{bump, normal_map, texture};
+use crate::render::{bump, fog, normal_map, sky, texture};
 
 /// A secondary ray about to be cast: where from, its lobe and the lobe's ideal direction, and
 /// the normal facing the ray it continues.
@@ -62,6 +62,9 @@ pub struct Whitted<'a> {
     shading: ShadingModel,
     max_depth: u32,
     background: Color,
+    sky: Option<&'a Sky>,
+    fog: Option<&'a Fog>,
+    alpha: bool,
     cutoff: f64,
 }
 
@@ -75,6 +78,9 @@ impl<'a> Whitted<'a> {
             shading: s.shading,
             max_depth: s.max_depth,
             background: s.background,
+            sky: s.sky.as_ref(),
+            fog: s.fog.as_ref(),
+            alpha: s.alpha,
             cutoff: s.cutoff,
         }
     }
@@ -112,9 +118,34 @@ impl<'a> Whitted<'a> {
             scene.world().intersect(ray, 0.0, f64::INFINITY)
         };
         let Some(hit) = &found else {
-            return self.background;
+            return self.missed(ray, path);
         };
-        self.shade_at(ray, hit, path, ctx, rec)
+        let c = self.shade_at(ray, hit, path, ctx, rec);
+        self.fogged(ray, hit.t, path, c)
+    }
+
+    /// What `ray` of `path` sees where it meets nothing: the background, or the sky, through
+    /// the fog.
+    fn missed(&self, ray: &Ray, path: Path) -> Color {
+        if self.alpha && path.depth == 0 {
+            // Transparent black: the film's colour is premultiplied by the alpha channel.
+            return Color::ZERO;
+        }
+        let c = match self.sky {
+            None => self.background,
+            Some(s) => sky::color(self.scene, s, ray.dir, self.background),
+        };
+        self.fogged(ray, fog::MISS_DISTANCE, path, c)
+    }
+
+    /// `c`, seen at distance `t` along `ray`, as it arrives through the scene's fog (which fills
+    /// the space outside objects only, as POV-Ray's fills what is not inside a solid).
+    #[inline(always)]
+    fn fogged(&self, ray: &Ray, t: f64, path: Path, c: Color) -> Color {
+        match self.fog {
+            Some(f) if path.media.is_outside() => fog::apply(self.scene, f, ray, t, c),
+            _ => c,
+        }
     }
 
     /// The colour of `ray`'s nearest hit `hit` (everything [`Whitted::trace_with`] does after

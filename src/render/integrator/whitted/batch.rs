@@ -87,9 +87,14 @@ impl Whitted<'_> {
     /// Whether [`Whitted::trace_batch`] can trace this scene's camera samples: nothing draws
     /// random numbers per sample (no lens, area light, open shutter or glossy lobe), every
     /// sample takes every light cell, shadows are not tinted by glass, every light is a
-    /// point light, and no object is hidden from some rays.
+    /// point light, and no object is hidden from some rays. A scene with a sky or fog traces
+    /// one ray at a time: the packet's misses and hits know neither, and one test here keeps
+    /// them out of every packet.
     pub fn batches(&self) -> bool {
-        !self.scene.random()
+        self.sky.is_none()
+            && self.fog.is_none()
+            && !self.alpha
+            && !self.scene.random()
             && !self.effects.glass_shadows
             && self.scene.settings().light_samples != LightSampling::Spread
             && phong_packet::applies(self.scene)
