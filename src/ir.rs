@@ -138,8 +138,41 @@ pub struct Material {
     pub gloss_samples: u32,
     /// Shading model for this material; `None` uses the scene's.
     pub shading: Option<ShadingModel>,
+    /// The share of the transmitted light tinted by the surface colour (POV-Ray's filter over
+    /// filter + transmit): refracted light is multiplied by `filter·C + (1 − filter)`. 0 (the
+    /// course rule) passes it untinted; the language's default is [`LANGUAGE_FILTER`].
+    pub filter: f64,
+    /// Beer–Lambert absorption per unit length inside the object, per channel: light crossing
+    /// `d` of it keeps `exp(−absorption·d)`.
+    pub absorption: Color,
+    /// The mirror weight follows the exact unpolarised dielectric Fresnel reflectance (times
+    /// `reflect`), and the refracted share is the rest.
+    pub fresnel: bool,
+    /// The reflected share is taken from the transmitted light (POV-Ray's `conserve_energy`).
+    pub conserve_energy: bool,
+    /// How much the highlight takes the surface colour (POV-Ray's `metallic`), in [0, 1].
+    pub metallic: f64,
+    /// The diffuse falloff exponent: the diffuse term goes with `(N·L)^brilliance`.
+    pub brilliance: f64,
+    /// Light the surface emits whatever the lights, times its colour C (POV-Ray's `emission`).
+    pub emission: Color,
     /// Where it was defined.
     pub span: Span,
+}
+
+/// The `filter` of a material written in the language: its colour tints what is seen through
+/// it, as it tints its glass shadow (red glass looks red).
+pub const LANGUAGE_FILTER: f64 = 1.0;
+
+impl Material {
+    /// Whether it uses none of the finish terms beyond Phong's (metallic, brilliance, emission,
+    /// Fresnel): a packet of its hits shades exactly as one ray does.
+    pub fn plain_finish(&self) -> bool {
+        self.metallic == 0.0
+            && self.brilliance == 1.0
+            && self.emission == Color::ZERO
+            && !self.fresnel
+    }
 }
 
 impl Default for Material {
@@ -159,6 +192,13 @@ impl Default for Material {
             gloss: 0.0,
             gloss_samples: 8,
             shading: None,
+            filter: 0.0,
+            absorption: Color::ZERO,
+            fresnel: false,
+            conserve_energy: false,
+            metallic: 0.0,
+            brilliance: 1.0,
+            emission: Color::ZERO,
             span: Span::default(),
         }
     }

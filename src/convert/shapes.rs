@@ -49,7 +49,34 @@ pub(crate) fn material(scene: &Scene, m: &Material, asset: AssetPath<'_>) -> Vec
     if let Some(s) = m.shading {
         fields.push(format!("shading: {}", shading(s)));
     }
+    finish(m, &defaults, &mut fields);
     fields
+}
+
+/// The finish fields of `m` that differ from a language material's (a course material's
+/// untinted `filter: 0` among them, so its converted glass stays clear).
+fn finish(m: &Material, defaults: &Material, fields: &mut Vec<String>) {
+    if m.filter != crate::ir::LANGUAGE_FILTER {
+        fields.push(format!("filter: {}", number(m.filter)));
+    }
+    if m.absorption != defaults.absorption {
+        fields.push(format!("absorption: {}", color(m.absorption)));
+    }
+    if m.fresnel {
+        fields.push("fresnel: true".to_string());
+    }
+    if m.conserve_energy {
+        fields.push("conserve_energy: true".to_string());
+    }
+    if m.metallic != defaults.metallic {
+        fields.push(format!("metallic: {}", number(m.metallic)));
+    }
+    if m.brilliance != defaults.brilliance {
+        fields.push(format!("brilliance: {}", number(m.brilliance)));
+    }
+    if m.emission != defaults.emission {
+        fields.push(format!("emission: {}", color(m.emission)));
+    }
 }
 
 /// A mixed material as its constructor: `material_map(..)` or `layers([..])`, its parts by the

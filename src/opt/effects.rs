@@ -65,6 +65,20 @@ pub struct Effects {
     pub ground_fog: bool,
     /// The output has an alpha channel (`render { alpha: true }`).
     pub alpha: bool,
+    /// Some reflecting material weighs its mirror by the Fresnel reflectance (`fresnel`).
+    pub fresnel: bool,
+    /// Some refracting material absorbs light inside it (`absorption`).
+    pub absorption: bool,
+    /// Some refracting material tints the light through it by its colour (`filter > 0`).
+    pub filtered_transmission: bool,
+    /// Some material's highlight takes its colour (`metallic > 0`).
+    pub metallic: bool,
+    /// Some material's diffuse falloff is not Lambert's (`brilliance ≠ 1`).
+    pub brilliance: bool,
+    /// Some material emits light (`emission`).
+    pub emission: bool,
+    /// Some reflecting and refracting material conserves energy (`conserve_energy`).
+    pub conserve_energy: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -96,6 +110,42 @@ pub(crate) struct Content {
     glossy: bool,
     /// The scene's sky is an image (an environment map), not a pattern.
     sky_image: bool,
+    /// Materials using each finish term (before the settings decide what is used).
+    finish: Finish,
+}
+
+/// Which finish terms a scene's materials use.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Finish {
+    fresnel: bool,
+    absorption: bool,
+    filtered: bool,
+    metallic: bool,
+    brilliance: bool,
+    emission: bool,
+    conserve_energy: bool,
+}
+
+impl Finish {
+    /// The finish terms `mats` use; a term that cannot change a pixel of its material (Fresnel
+    /// without a mirror, absorption or a filter without refraction) is not counted.
+    fn of(mats: &[crate::ir::Material]) -> Finish {
+        let any = |f: fn(&crate::ir::Material) -> bool| mats.iter().any(f);
+        Finish {
+            fresnel: any(|m| m.fresnel && m.reflect > 0.0),
+            absorption: any(|m| m.refract > 0.0 && m.absorption != glam::DVec3::ZERO),
+            // White glass passes `1·1 + 0`: exactly untinted.
+            filtered: any(|m| {
+                m.refract > 0.0
+                    && m.filter > 0.0
+                    && (m.color != glam::DVec3::ONE || m.texture.is_some() || m.mix.is_some())
+            }),
+            metallic: any(|m| m.metallic > 0.0 && m.ks > 0.0),
+            brilliance: any(|m| m.brilliance != 1.0 && m.kd > 0.0),
+            emission: any(|m| m.emission != glam::DVec3::ZERO),
+            conserve_energy: any(|m| m.conserve_energy && m.reflect > 0.0 && m.refract > 0.0),
+        }
+    }
 }
 
 impl Content {
@@ -152,6 +202,7 @@ impl Content {
                     Some(Texture::Image { .. } | Texture::NormalMap { .. })
                 )
             }),
+            finish: Finish::of(mats),
         }
     }
 
@@ -221,6 +272,13 @@ impl Effects {
             fog: shaded && s.fog.is_some_and(|f| f.ground.is_none()),
             ground_fog: shaded && s.fog.is_some_and(|f| f.ground.is_some()),
             alpha: shaded && s.alpha,
+            fresnel: bounces && content.reflective && content.finish.fresnel,
+            absorption: bounces && content.refractive && content.finish.absorption,
+            filtered_transmission: bounces && content.refractive && content.finish.filtered,
+            metallic: shaded && content.lights && content.finish.metallic,
+            brilliance: shaded && content.lights && content.finish.brilliance,
+            emission: shaded && content.finish.emission,
+            conserve_energy: bounces && content.finish.conserve_energy,
         }
     }
 
@@ -254,6 +312,13 @@ impl Effects {
             (self.fog, "fog"),
             (self.ground_fog, "ground fog"),
             (self.alpha, "alpha"),
+            (self.fresnel, "fresnel"),
+            (self.absorption, "absorption"),
+            (self.filtered_transmission, "filtered transmission"),
+            (self.metallic, "metallic"),
+            (self.brilliance, "brilliance"),
+            (self.emission, "emission"),
+            (self.conserve_energy, "conserve energy"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -125,6 +125,12 @@ fn blended(a: &Material, b: &Material, w: f64) -> Material {
         eta: lerp(a.eta, b.eta),
         gloss: lerp(a.gloss, b.gloss),
         gloss_samples: a.gloss_samples.max(b.gloss_samples),
+        filter: lerp(a.filter, b.filter),
+        absorption: a.absorption + (b.absorption - a.absorption) * w,
+        metallic: lerp(a.metallic, b.metallic),
+        brilliance: lerp(a.brilliance, b.brilliance),
+        emission: a.emission + (b.emission - a.emission) * w,
+        // `fresnel` and `conserve_energy` are the larger share's, like the shading model.
         ..major.clone()
     }
 }

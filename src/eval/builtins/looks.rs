@@ -196,6 +196,47 @@ pub(crate) static MATERIAL: Sig = Sig::new(
         .unit(Unit::Rays)
         .range(Range::Ints(1, crate::ir::limits::MAX_GLOSS_SAMPLES as i64))
         .or(Lit::Int(8)),
+        unit_coefficient(
+            "filter",
+            "the share of the refracted light tinted by the colour (POV-Ray's filter); 0 passes it untinted",
+            ir::LANGUAGE_FILTER,
+        ),
+        Param::new(
+            "absorption",
+            Ty::Color,
+            "Beer–Lambert absorption per unit length inside: light crossing `d` keeps `exp(−absorption·d)`",
+        )
+        .or(Lit::Color([0.0, 0.0, 0.0])),
+        Param::new(
+            "fresnel",
+            Ty::Bool,
+            "reflects `reflect` × the dielectric Fresnel reflectance of `eta`; refracts the rest",
+        )
+        .or(Lit::Bool(false)),
+        Param::new(
+            "conserve_energy",
+            Ty::Bool,
+            "takes the reflected share from the refracted light (POV-Ray's conserve_energy)",
+        )
+        .or(Lit::Bool(false)),
+        unit_coefficient(
+            "metallic",
+            "how much the highlight takes the surface colour (POV-Ray's metallic)",
+            0.0,
+        ),
+        Param::new(
+            "brilliance",
+            Ty::Float,
+            "the diffuse falloff exponent: diffuse light goes with `(N·L)^brilliance`",
+        )
+        .range(Range::Positive)
+        .or(Lit::Float(1.0)),
+        Param::new(
+            "emission",
+            Ty::Color,
+            "light emitted without any light source, times the colour (POV-Ray's emission)",
+        )
+        .or(Lit::Color([0.0, 0.0, 0.0])),
     ],
     "Material",
 )
@@ -242,6 +283,13 @@ pub(crate) fn set_mat_field(
         "eta" => m.m.eta = number()?,
         "gloss" => m.m.gloss = number()?,
         "gloss_samples" => m.m.gloss_samples = int_of(it, &MATERIAL, param, v, span)? as u32,
+        "filter" => m.m.filter = number()?,
+        "absorption" => m.m.absorption = non_negative_color(it, v, span, "absorption")?,
+        "fresnel" => m.m.fresnel = types::boolean(it, v, span)?,
+        "conserve_energy" => m.m.conserve_energy = types::boolean(it, v, span)?,
+        "metallic" => m.m.metallic = number()?,
+        "brilliance" => m.m.brilliance = number()?,
+        "emission" => m.m.emission = non_negative_color(it, v, span, "emission")?,
         "texture" => match v {
             Value::Texture(t) => m.texture = Some(t.clone()),
             other => return Err(types::mismatch(it, "Texture", other, span).into()),
@@ -278,6 +326,15 @@ pub(crate) fn set_mat_field(
     Ok(())
 }
 
+/// A colour of light per channel that cannot be negative (`absorption`, `emission`).
+fn non_negative_color(it: &dyn Host, v: &Value, span: Span, name: &str) -> R<DVec3> {
+    let c = types::color(it, v, span)?;
+    for x in c.to_array() {
+        check(x >= 0.0, name, "≥ 0 in every channel", x, span)?;
+    }
+    Ok(c)
+}
+
 /// The material fields' names, in order (for messages and members).
 pub(crate) fn fields() -> Vec<&'static str> {
     MATERIAL.names().collect()
@@ -292,7 +349,9 @@ pub(crate) fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
                 .with_help("lower `kd` or `ks` so the surface does not reflect more light than it receives"),
         );
     }
-    if m.m.reflect + m.m.refract > 1.0 + 1e-9 {
+    // With `fresnel` or `conserve_energy` the refraction keeps `refract·(1 − kr)`: never more
+    // than the mirror leaves.
+    if m.m.reflect + m.m.refract > 1.0 + 1e-9 && !m.m.fresnel && !m.m.conserve_energy {
         it.warn(
             Diagnostic::warning(
                 "rtc::material::energy",
@@ -315,6 +374,30 @@ pub(crate) fn mat_warnings(it: &mut dyn Host, m: &Mat, span: Span) {
             )
             .with_label("gloss blurs reflected and refracted rays; this material casts none")
             .with_help("give it `reflect` (e.g. `reflect: 0.3`) or `refract` for gloss to blur, or remove `gloss`; for a broader highlight lower `n`"),
+        );
+    }
+    if m.m.fresnel && m.m.reflect == 0.0 {
+        it.warn(
+            Diagnostic::warning(
+                "rtc::material::fresnel_unused",
+                span,
+                "`fresnel` does nothing on a material that does not reflect",
+            )
+            .with_label("fresnel scales the mirror weight `reflect`, which is 0 here")
+            .with_help(
+                "give it `reflect: 1` (a clear dielectric: glass, water), or remove `fresnel`",
+            ),
+        );
+    }
+    if m.m.absorption != DVec3::ZERO && m.m.refract == 0.0 {
+        it.warn(
+            Diagnostic::warning(
+                "rtc::material::absorption_unused",
+                span,
+                "`absorption` does nothing on a material that does not refract",
+            )
+            .with_label("absorption dims light travelling inside; no ray enters this material")
+            .with_help("give it `refract` (e.g. `refract: 0.9, eta: 1.5`), or remove `absorption`"),
         );
     }
     let c = m.m.color;
@@ -341,6 +424,7 @@ fn material(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut m = Mat {
         m: ir::Material {
             span: s.span,
+            filter: ir::LANGUAGE_FILTER,
             ..ir::Material::default()
         },
         texture: None,

@@ -105,6 +105,25 @@ fn material_defaults_are_the_irs() {
         default(sig, "gloss_samples"),
         Lit::Int(i64::from(m.gloss_samples))
     );
+    // The one exception: the language tints refracted light by the colour, the IR's default
+    // (the course formats') does not.
+    assert_eq!(
+        default(sig, "filter"),
+        Lit::Float(crate::ir::LANGUAGE_FILTER)
+    );
+    for (name, v) in [("metallic", m.metallic), ("brilliance", m.brilliance)] {
+        assert_eq!(default(sig, name), Lit::Float(v), "{name}");
+    }
+    assert_eq!(default(sig, "fresnel"), Lit::Bool(m.fresnel));
+    assert_eq!(
+        default(sig, "conserve_energy"),
+        Lit::Bool(m.conserve_energy)
+    );
+    assert_eq!(default(sig, "emission"), Lit::Color(m.emission.to_array()));
+    assert_eq!(
+        default(sig, "absorption"),
+        Lit::Color(m.absorption.to_array())
+    );
 }
 
 /// `render { }`'s defaults are `ir::RenderSettings::language_defaults()`'s.

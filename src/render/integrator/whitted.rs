@@ -22,7 +22,7 @@ use crate::render::offset::SpawnPoint;
 use crate::render::path::Path;
 use crate::render::record::{Branch, NoRecord, Recorder};
 use crate::render::sampler::Rng;
-use crate::render::scatter::{Lobe, Scattering, reflect};
+use crate::render::scatter::{self, Lobe, Scattering, reflect};
 use crate::render::shading::{self, Surface};
 use crate::render::{bump, fog, normal_map, sky, texture};
 
@@ -179,16 +179,23 @@ impl<'a> Whitted<'a> {
             ShadingModel::Gooch(g) => shading::gooch::shade(scene, &s, &g, ctx, rec),
             ShadingModel::Hatching => shading::hatching::shade(scene, &s, ctx, rec),
         };
+        if self.effects.emission {
+            c += shading::finish::emitted(mat, s.color);
+        }
         if R::ON {
             rec.local(c);
         }
         if path.depth >= self.max_depth {
-            return c;
+            return self.absorbed(c, mat, hit, inside);
         }
         let scattering = Scattering::of(mat, &self.effects);
-        let mut kr = scattering.reflect;
-        let kt = scattering.refract;
         let media = path.media;
+        let (mut kr, kt) = if scattering.varies() {
+            let (n1, after) = media.cross(scattering.eta, inside);
+            scattering.shares(-ray.dir.dot(s.n), n1, after.current())
+        } else {
+            (scattering.reflect, scattering.refract)
+        };
         if kt > 0.0 {
             let (n1, after) = media.cross(scattering.eta, inside);
             let lobe = scattering.refraction(n1, after.current());
@@ -209,7 +216,13 @@ impl<'a> Whitted<'a> {
                             false,
                         );
                     }
-                    c += kt * self.bounce(&out, mat, path.bounce(after, kt), ctx, rec);
+                    let through = kt * self.bounce(&out, mat, path.bounce(after, kt), ctx, rec);
+                    // The colour tints what is seen through the surface as it tints its
+                    // shadow (one rule: `scatter::tint`).
+                    c += match scatter::tint(mat, s.color) {
+                        Some(t) => t * through,
+                        None => through,
+                    };
                 }
                 Some(_) => {
                     if R::ON {
@@ -248,7 +261,19 @@ impl<'a> Whitted<'a> {
                 rec.branch(Branch::Reflected, kr, 0, true);
             }
         }
-        c
+        self.absorbed(c, mat, hit, inside)
+    }
+
+    /// The colour `c` found at `hit` as it arrives back at the ray's origin: dimmed by the
+    /// absorption of the object the ray travelled through when it hit the object from inside
+    /// (Beer–Lambert over the hit distance).
+    #[inline(always)]
+    fn absorbed(&self, c: Color, mat: &Material, hit: &SurfaceHit, inside: bool) -> Color {
+        if self.effects.absorption && inside && mat.absorption != Color::ZERO {
+            c * scatter::beer_lambert(mat.absorption, hit.t)
+        } else {
+            c
+        }
     }
 
     /// How much of the light `mat` reflects, when the scene reflects at all.

@@ -10,6 +10,7 @@
 //! (a perfect mirror or refraction) has no density: `sample` returns its one direction with
 //! `pdf` 1 and `delta` set, and `eval` and `pdf` are 0 for any pair of directions.
 
+mod fresnel;
 mod glossy;
 mod specular;
 
@@ -17,6 +18,7 @@ use glam::DVec3;
 
 use crate::ir::{Color, Material};
 use crate::opt::Effects;
+pub(crate) use fresnel::beer_lambert;
 pub use specular::refract;
 pub(crate) use specular::{reflect, reflect_lanes};
 
@@ -168,6 +170,10 @@ pub(crate) struct Scattering {
     pub(crate) eta: f64,
     /// How the lobes spread.
     spread: Spread,
+    /// The mirror weight follows the Fresnel reflectance (`fresnel`).
+    fresnel: bool,
+    /// The reflected share is taken from the refracted one (`conserve_energy`).
+    conserve: bool,
 }
 
 impl Scattering {
@@ -183,7 +189,33 @@ impl Scattering {
             } else {
                 Spread::Delta
             },
+            fresnel: effects.fresnel && mat.fresnel,
+            conserve: effects.conserve_energy && mat.conserve_energy,
         }
+    }
+
+    /// Whether the lobes' weights depend on the hit (Fresnel or energy conservation); when
+    /// not, [`Scattering::shares`] is `(reflect, refract)` everywhere.
+    #[inline(always)]
+    pub(crate) fn varies(&self) -> bool {
+        self.fresnel || self.conserve
+    }
+
+    /// The weights of the mirror and refraction lobes for light arriving at cosine `cos_i`
+    /// to the normal, from index `n1` into `n2`. With `fresnel` the mirror weighs
+    /// `reflect · F(cos_i, n2/n1)` (the exact dielectric reflectance); with `fresnel` or
+    /// `conserve_energy` the refraction lobe loses what the mirror takes, `refract · (1 − kr)`
+    /// (POV-Ray's `conserve_energy`). Otherwise `(reflect, refract)`.
+    pub(crate) fn shares(&self, cos_i: f64, n1: f64, n2: f64) -> (f64, f64) {
+        if !self.varies() {
+            return (self.reflect, self.refract);
+        }
+        let kr = if self.fresnel {
+            self.reflect * fresnel::reflectance(cos_i, n2 / n1)
+        } else {
+            self.reflect
+        };
+        (kr, self.refract * (1.0 - kr).max(0.0))
     }
 
     /// Whether light passes through the surface (a refraction lobe of positive weight).
@@ -211,11 +243,24 @@ impl Scattering {
     }
 }
 
+/// The tint of the light a surface of colour `color` transmits, per channel: the `filter`
+/// share of it passes through the colour, the rest untinted, `filter·C + (1 − filter)`
+/// (POV-Ray's `filter·C + transmit` over `filter + transmit`). `None` for `filter: 0`, which
+/// passes light untinted (the course rule). The one rule for what is seen through glass and
+/// for its shadow.
+#[inline(always)]
+pub(crate) fn tint(mat: &Material, color: Color) -> Option<Color> {
+    (mat.filter > 0.0).then(|| mat.filter * color + (1.0 - mat.filter))
+}
+
 /// What a surface of `mat` lets through along a straight line, per channel (glass shadows):
-/// `refract · colour`, or `None` for an opaque surface.
+/// `refract` times its [`tint`], or `None` for an opaque surface.
 #[inline(always)]
 pub(crate) fn straight_through(mat: &Material) -> Option<Color> {
-    (mat.refract > 0.0).then(|| mat.refract * mat.color)
+    (mat.refract > 0.0).then(|| match tint(mat, mat.color) {
+        Some(t) => mat.refract * t,
+        None => Color::splat(mat.refract),
+    })
 }
 
 #[cfg(test)]
@@ -269,6 +314,8 @@ mod tests {
             refract: 1.0,
             eta: 1.5,
             spread: Spread::Delta,
+            fresnel: false,
+            conserve: false,
         }
         .refraction(1.5, 1.0);
         let grazing = DVec3::new(1.0, -0.2, 0.0).unit();
@@ -296,7 +343,83 @@ mod tests {
         let none = Scattering::of(&mat, &Effects::default());
         assert_eq!((none.reflect, none.refract), (0.0, 0.0));
         assert_eq!(none.spread, Spread::Delta);
-        assert_eq!(straight_through(&mat), Some(0.4 * mat.color));
+        // The IR's default filter (the course rule) passes light untinted; the language's
+        // (filter 1) through the colour.
+        assert_eq!(straight_through(&mat), Some(Color::splat(0.4)));
+        let tinted = Material {
+            filter: crate::ir::LANGUAGE_FILTER,
+            ..mat.clone()
+        };
+        assert_eq!(straight_through(&tinted), Some(0.4 * mat.color));
         assert_eq!(straight_through(&Material::default()), None);
+    }
+
+    #[test]
+    fn filter_mixes_the_tinted_and_untinted_shares() {
+        let red = Color::new(1.0, 0.2, 0.1);
+        let half = Material {
+            filter: 0.25,
+            refract: 0.8,
+            color: red,
+            ..Material::default()
+        };
+        // POV-Ray's rgbft <1, 0.2, 0.1, 0.2, 0.6>: filter·C + transmit = <0.8, 0.64, 0.62>.
+        let t = straight_through(&half).unwrap();
+        let pov = 0.2 * red + Color::splat(0.6);
+        assert!((t - pov).abs().max_element() < 1e-15, "{t} vs {pov}");
+        assert_eq!(tint(&Material::default(), red), None);
+    }
+
+    #[test]
+    fn fresnel_shares_reflect_f_and_refract_the_rest() {
+        let glass = Material {
+            reflect: 1.0,
+            refract: 1.0,
+            eta: 1.5,
+            fresnel: true,
+            ..Material::default()
+        };
+        let all = Effects {
+            reflection: true,
+            refraction: true,
+            fresnel: true,
+            conserve_energy: true,
+            ..Effects::default()
+        };
+        let s = Scattering::of(&glass, &all);
+        let (kr, kt) = s.shares(1.0, 1.0, 1.5);
+        assert!((kr - 0.04).abs() < 1e-15 && (kt - 0.96).abs() < 1e-15);
+        let (kr, kt) = s.shares(0.0, 1.0, 1.5);
+        assert!((kr - 1.0).abs() < 1e-12 && kt.abs() < 1e-12);
+        // Half the mirror: half of F, and the refraction keeps the rest.
+        let half = Scattering::of(
+            &Material {
+                reflect: 0.5,
+                ..glass.clone()
+            },
+            &all,
+        );
+        let (kr, kt) = half.shares(1.0, 1.0, 1.5);
+        assert!((kr - 0.02).abs() < 1e-15 && (kt - 0.98).abs() < 1e-15);
+        // conserve_energy alone: the constant mirror weight comes out of the refraction.
+        let conserve = Material {
+            fresnel: false,
+            conserve_energy: true,
+            reflect: 0.3,
+            refract: 0.9,
+            ..glass.clone()
+        };
+        let (kr, kt) = Scattering::of(&conserve, &all).shares(0.7, 1.0, 1.5);
+        assert_eq!(kr, 0.3);
+        assert!((kt - 0.9 * 0.7).abs() < 1e-15);
+        // Neither: today's constant weights.
+        let plain = Material {
+            fresnel: false,
+            ..glass
+        };
+        assert_eq!(
+            Scattering::of(&plain, &all).shares(0.1, 1.0, 1.5),
+            (1.0, 1.0)
+        );
     }
 }

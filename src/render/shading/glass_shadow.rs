@@ -2,8 +2,10 @@
 //! refractive surfaces instead of stopping at them.
 //!
 //! Rule: every surface the shadow ray crosses multiplies the light by its material's
-//! `refract · colour` (a closed glass object is crossed twice, so it passes
-//! `(refract · colour)²`); an opaque surface (`refract = 0`) blocks it. The ray is not bent and
+//! `refract` times its tint (`scatter::tint`, the rule refracted light follows: `refract · colour`
+//! with the language's `filter: 1`; a closed glass object is crossed twice, so it passes
+//! `(refract · colour)²`), and a segment inside an absorbing object `exp(−absorption·d)`; an
+//! opaque surface (`refract = 0`) blocks it. The ray is not bent and
 //! Fresnel reflection is not counted: the shadow is the glass's tinted, lighter silhouette, not a
 //! caustic.
 
@@ -12,7 +14,7 @@ use crate::ir::{Color, Visibility};
 use crate::opt::Prepared;
 use crate::render::film::Stats;
 use crate::render::offset::SpawnPoint;
-use crate::render::scatter::straight_through;
+use crate::render::scatter::{beer_lambert, straight_through};
 
 /// Most surfaces one shadow ray passes through before it counts as blocked (a stack of glass
 /// panes deeper than this passes next to nothing anyway).
@@ -37,7 +39,15 @@ pub(crate) fn transmission(
             return Some(pass);
         };
         // The glass passes what its scattering lets through along a straight line.
-        pass *= straight_through(scene.material(hit.material))?;
+        let mat = scene.material(hit.material);
+        pass *= straight_through(mat)?;
+        // Leaving an absorbing object: what the segment inside it kept (Beer–Lambert).
+        if scene.effects().absorption
+            && mat.absorption != Color::ZERO
+            && hit.normal.dot(ray.dir) > 0.0
+        {
+            pass *= beer_lambert(mat.absorption, hit.t);
+        }
         if pass.max_element() <= 0.0 {
             return None;
         }

@@ -1,6 +1,7 @@
 //! Shading models: what a surface point looks like under the lights, before the scattering
 //! layer's reflection and refraction are added by the Whitted integrator.
 
+pub(crate) mod finish;
 mod glass_shadow;
 pub(crate) mod gooch;
 pub(crate) mod hatching;

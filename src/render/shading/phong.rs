@@ -1,9 +1,11 @@
 //! Phong shading exactly as COURSE.md §2.5 (reproduces the consensus renders):
 //! `I = Σ_lights [ka·C·Lc + kd·max(0,N·L)·C·Lc + ks·max(0,R·V)^n·Lc]`; the highlight is not tinted
 //! by C; a shadowed light keeps its ambient term. With [`AmbientConvention::Once`] the ambient term
-//! is `ka·C` once, without light colour.
+//! is `ka·C` once, without light colour. POV-Ray's finish terms change it only where a material
+//! asks ([`super::finish`]): the diffuse `N·L` becomes `(N·L)^brilliance` and a metallic
+//! highlight takes the colour.
 
-use super::{LightSample, Surface, highlight, light_sample, occluder, transmission};
+use super::{LightSample, Surface, finish, highlight, light_sample, occluder, transmission};
 use crate::ir::{AmbientConvention, Color};
 use crate::opt::Prepared;
 use crate::render::context::Ctx;
@@ -76,8 +78,14 @@ pub(crate) fn shade<R: Recorder>(
 fn lit(s: &Surface<'_>, ls: &LightSample, n_dot_l: f64, pass: Color) -> (Color, Color) {
     // `pass` is exactly ONE without glass in the way, so this is the plain sum then.
     let lc = ls.color * pass;
+    let spec = highlight(s, ls.l, n_dot_l);
+    let specular = if s.mat.metallic == 0.0 {
+        spec * lc
+    } else {
+        spec * finish::metallic_tint(s.mat.metallic, s.color, n_dot_l) * lc
+    };
     (
-        (s.mat.kd * n_dot_l) * s.color * lc,
-        highlight(s, ls.l, n_dot_l) * lc,
+        (s.mat.kd * finish::falloff(s.mat, n_dot_l)) * s.color * lc,
+        specular,
     )
 }

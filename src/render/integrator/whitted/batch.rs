@@ -101,12 +101,14 @@ impl Whitted<'_> {
             && !self.effects.visibility_flags
     }
 
-    /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray, not mixed); others take
+    /// Whether a hit on `mat` is shaded in the packet (Phong, no refracted ray, not mixed, no finish
+    /// term beyond Phong's: [`Material::plain_finish`]); others take
     /// [`Whitted::trace`]'s own path from their hit on.
     fn batched(&self, mat: &Material) -> bool {
         mat.mix.is_none()
             && mat.shading.unwrap_or(self.shading) == ShadingModel::Phong
             && !Scattering::of(mat, &self.effects).transmits()
+            && mat.plain_finish()
     }
 
     /// Whether a surface of `mat` needs its whole hit record (a texture or a bump map to
