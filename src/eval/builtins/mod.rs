@@ -4,6 +4,7 @@
 
 #[cfg(test)]
 mod doc_tables;
+mod fog;
 mod lights;
 pub(crate) mod lists;
 mod looks;
@@ -40,6 +41,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         scene::FNS,
         lights::FNS,
         settings::FNS,
+        fog::FNS,
         super::shapes::FNS,
         super::shapes::COMPOUND_FNS,
         super::transform::FNS,
