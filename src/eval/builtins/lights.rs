@@ -16,6 +16,7 @@ use crate::eval::value::{LightVal, Value};
 use crate::ir;
 use crate::ir::limits::MAX_LIGHT_SAMPLES_PER_AXIS;
 use crate::num::Norm;
+use crate::source::Span;
 
 /// The light constructors with their schemas.
 pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
@@ -248,28 +249,10 @@ static SPOT_LIGHT: Sig = Sig::new(
 .examples(&["spot_light { position: [0, 8, 0], target: [0, 0, 0], radius: 15deg, falloff: 25deg }"]);
 fn spot_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &SPOT_LIGHT, a)?;
-    let (position, _) = p.vec3(it, "position")?;
-    let (target, ts) = p.vec3(it, "target")?;
-    let Some(axis) = (target - position).try_unit() else {
-        return Err(
-            error("rtc::light::aim", ts, "the spot light is aimed at itself")
-                .with_label("`target` is the light's `position`")
-                .with_help("aim it at a point away from the light, e.g. `target: [0, 0, 0]`")
-                .into(),
-        );
-    };
+    let (position, target, axis) = aim(it, &mut p, "spot")?;
     let (radius, _) = p.angle(it, "radius")?;
     let (falloff, fs) = p.angle(it, "falloff")?;
-    if falloff < radius {
-        return Err(error(
-            "rtc::light::falloff",
-            fs,
-            "the spot light's `falloff` is inside its `radius`",
-        )
-        .with_label("the light would end before its full-strength cone does")
-        .with_help("make `falloff` at least `radius`, e.g. `radius: 20deg, falloff: 30deg`")
-        .into());
-    }
+    ends_outside(radius, falloff, fs, "spot", "radius: 20deg, falloff: 30deg")?;
     let (tightness, _) = p.float(it, "tightness")?;
     let (color, _) = p.color(it, "color")?;
     let spot = ir::Spot {
@@ -358,30 +341,10 @@ static CYLINDER_LIGHT: Sig = Sig::new(
 .examples(&["cylinder_light { position: [0, 10, 0], target: [0, 0, 0], radius: 0.5, falloff: 0.8 }"]);
 fn cylinder_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &CYLINDER_LIGHT, a)?;
-    let (position, _) = p.vec3(it, "position")?;
-    let (target, ts) = p.vec3(it, "target")?;
-    let Some(axis) = (target - position).try_unit() else {
-        return Err(error(
-            "rtc::light::aim",
-            ts,
-            "the cylinder light is aimed at itself",
-        )
-        .with_label("`target` is the light's `position`")
-        .with_help("aim it at a point away from the light, e.g. `target: [0, 0, 0]`")
-        .into());
-    };
+    let (position, target, axis) = aim(it, &mut p, "cylinder")?;
     let (radius, _) = p.float(it, "radius")?;
     let (falloff, fs) = p.float(it, "falloff")?;
-    if falloff < radius {
-        return Err(error(
-            "rtc::light::falloff",
-            fs,
-            "the cylinder light's `falloff` is inside its `radius`",
-        )
-        .with_label("the light would end before its full-strength beam does")
-        .with_help("make `falloff` at least `radius`, e.g. `radius: 0.5, falloff: 0.8`")
-        .into());
-    }
+    ends_outside(radius, falloff, fs, "cylinder", "radius: 0.5, falloff: 0.8")?;
     let (tightness, _) = p.float(it, "tightness")?;
     let (color, _) = p.color(it, "color")?;
     let kind = ir::LightKind::Cylinder {
@@ -393,4 +356,40 @@ fn cylinder_light(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         tightness,
     };
     shaped(it, &mut p, kind, color, s)
+}
+
+/// A beam light's `position`, `target` and the unit axis between them; `rtc::light::aim` when
+/// they coincide (`what` names the light: "spot", "cylinder").
+fn aim(it: &mut dyn Host, p: &mut Params, what: &str) -> R<(DVec3, DVec3, DVec3)> {
+    let (position, _) = p.vec3(it, "position")?;
+    let (target, ts) = p.vec3(it, "target")?;
+    let Some(axis) = (target - position).try_unit() else {
+        return Err(error(
+            "rtc::light::aim",
+            ts,
+            format!("the {what} light is aimed at itself"),
+        )
+        .with_label("`target` is the light's `position`")
+        .with_help("aim it at a point away from the light, e.g. `target: [0, 0, 0]`")
+        .into());
+    };
+    Ok((position, target, axis))
+}
+
+/// `rtc::light::falloff` (at `fs`) when a beam's `falloff` is inside its `radius`; `example`
+/// is a fix that works.
+fn ends_outside(radius: f64, falloff: f64, fs: Span, what: &str, example: &str) -> R<()> {
+    if falloff >= radius {
+        return Ok(());
+    }
+    Err(error(
+        "rtc::light::falloff",
+        fs,
+        format!("the {what} light's `falloff` is inside its `radius`"),
+    )
+    .with_label("the light would end before its full-strength part does")
+    .with_help(format!(
+        "make `falloff` at least `radius`, e.g. `{example}`"
+    ))
+    .into())
 }
