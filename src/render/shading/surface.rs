@@ -59,13 +59,30 @@ pub(crate) fn light_sample(
     s: &Surface<'_>,
     rng: &Rng,
 ) -> LightSample {
+    // A cylinder light's share at the point, found with its sample position.
+    let mut beam = None;
     let pos = match light.kind {
         LightKind::Point { position } => position,
         LightKind::Parallel { direction } => s.p - PARALLEL_DISTANCE * direction,
-        LightKind::Cylinder { position, axis, .. } => {
+        LightKind::Cylinder {
+            position,
+            axis,
+            radius,
+            falloff,
+            tightness,
+            ..
+        } => {
             // The beam reaching the point left the light's plane (through `position`, across
-            // the axis) straight up the axis from it; shadow rays go back there.
-            s.p - (s.p - position).dot(axis) * axis
+            // the axis) straight up the axis from it; shadow rays go back there. Behind the
+            // plane (or on it) the beam does not reach.
+            let along = (s.p - position).dot(axis);
+            let start = s.p - along * axis;
+            beam = Some(if along > 0.0 {
+                cylinder_share(radius, falloff, tightness, (start - position).norm())
+            } else {
+                0.0
+            });
+            start
         }
         LightKind::Area {
             corner,
@@ -102,22 +119,8 @@ pub(crate) fn light_sample(
     if let Some(spot) = light.spot {
         color *= spot.share(-l);
     }
-    if let LightKind::Cylinder {
-        position,
-        axis,
-        radius,
-        falloff,
-        tightness,
-        ..
-    } = light.kind
-    {
-        // Behind the light's plane (or on it) the beam does not reach.
-        let along = (s.p - position).dot(axis);
-        color *= if along > 0.0 {
-            cylinder_share(radius, falloff, tightness, (pos - position).norm())
-        } else {
-            0.0
-        };
+    if let Some(share) = beam {
+        color *= share;
     }
     if let Some(fade) = light.fade {
         color *= fade.share(dist);
