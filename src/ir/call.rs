@@ -5,6 +5,8 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
+use super::object::{BlobComponent, Shape};
+
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct ShapeCall {
@@ -32,4 +34,170 @@ pub enum Arg {
     List(Vec<Arg>),
     /// A record of named fields.
     Record(Vec<(&'static str, Arg)>),
+}
+
+impl Shape {
+    /// The constructor call that makes this shape (parameters at their defaults left out), for
+    /// `rtc convert`; `None` for CSG, whose operands are objects the back end writes itself.
+    /// Kept beside the variants so a new shape is one arm here, not one in the back end.
+    pub(crate) fn call(&self) -> Option<ShapeCall> {
+        use Arg::{Bool, Direction, List, Number, Point, Record};
+        let (name, args): (&'static str, Vec<(&'static str, Arg)>) = match self {
+            Shape::Sphere { center, radius } => {
+                let mut a = Vec::new();
+                if *center != DVec3::ZERO {
+                    a.push(("center", Point(*center)));
+                }
+                a.push(("radius", Number(*radius)));
+                ("sphere", a)
+            }
+            Shape::Plane { point, normal } => (
+                "plane",
+                vec![("point", Point(*point)), ("normal", Direction(*normal))],
+            ),
+            Shape::Box { min, max } => ("box", vec![("min", Point(*min)), ("max", Point(*max))]),
+            Shape::Triangle {
+                vertices: [a, b, c],
+            } => (
+                "triangle",
+                vec![("a", Point(*a)), ("b", Point(*b)), ("c", Point(*c))],
+            ),
+            Shape::Quad { corner, u, v } => (
+                "quad",
+                vec![
+                    ("corner", Point(*corner)),
+                    ("u", Point(*u)),
+                    ("v", Point(*v)),
+                ],
+            ),
+            Shape::Polygon { points } => (
+                "polygon",
+                vec![("points", List(points.iter().map(|p| Point(*p)).collect()))],
+            ),
+            Shape::Disk {
+                center,
+                normal,
+                radius,
+            } => (
+                "disk",
+                vec![
+                    ("center", Point(*center)),
+                    ("normal", Direction(*normal)),
+                    ("radius", Number(*radius)),
+                ],
+            ),
+            Shape::Ring {
+                center,
+                normal,
+                radius,
+                inner,
+            } => (
+                "ring",
+                vec![
+                    ("center", Point(*center)),
+                    ("normal", Direction(*normal)),
+                    ("radius", Number(*radius)),
+                    ("inner", Number(*inner)),
+                ],
+            ),
+            Shape::Cylinder {
+                base,
+                top,
+                radius,
+                capped,
+            } => {
+                let mut a = vec![
+                    ("base", Point(*base)),
+                    ("top", Point(*top)),
+                    ("radius", Number(*radius)),
+                ];
+                if !*capped {
+                    a.push(("capped", Bool(false)));
+                }
+                ("cylinder", a)
+            }
+            Shape::Cone {
+                base,
+                top,
+                base_radius,
+                top_radius,
+                capped,
+            } => {
+                let mut a = vec![
+                    ("base", Point(*base)),
+                    ("top", Point(*top)),
+                    ("base_radius", Number(*base_radius)),
+                    ("top_radius", Number(*top_radius)),
+                ];
+                if !*capped {
+                    a.push(("capped", Bool(false)));
+                }
+                ("cone", a)
+            }
+            Shape::Torus {
+                center,
+                major_radius,
+                minor_radius,
+            } => (
+                "torus",
+                vec![
+                    ("center", Point(*center)),
+                    ("major_radius", Number(*major_radius)),
+                    ("minor_radius", Number(*minor_radius)),
+                ],
+            ),
+            Shape::Quadric {
+                squares,
+                mixed,
+                linear,
+                constant,
+            } => (
+                "quadric",
+                vec![
+                    ("squares", Point(*squares)),
+                    ("mixed", Point(*mixed)),
+                    ("linear", Point(*linear)),
+                    ("constant", Number(*constant)),
+                ],
+            ),
+            Shape::Blob {
+                components,
+                threshold,
+            } => {
+                let component = |c: &BlobComponent| {
+                    Record(vec![
+                        ("center", Point(c.center)),
+                        ("radius", Number(c.radius)),
+                        ("strength", Number(c.strength)),
+                    ])
+                };
+                (
+                    "blob",
+                    vec![
+                        (
+                            "components",
+                            List(components.iter().map(component).collect()),
+                        ),
+                        ("threshold", Number(*threshold)),
+                    ],
+                )
+            }
+            Shape::Mesh {
+                path,
+                smooth,
+                use_mtl,
+            } => {
+                let mut a = vec![("path", Arg::Path(path.clone()))];
+                if *smooth {
+                    a.push(("smooth", Bool(true)));
+                }
+                if *use_mtl {
+                    a.push(("use_mtl", Bool(true)));
+                }
+                ("mesh", a)
+            }
+            Shape::Csg { .. } => return None,
+        };
+        Some(ShapeCall { name, args })
+    }
 }

@@ -1,0 +1,242 @@
+//! An object of the scene: its shape (every kind of geometry the renderer knows), placement,
+//! material and visibility, as plain data.
+
+use std::path::PathBuf;
+
+use glam::DVec3;
+
+use crate::source::Span;
+
+use super::motion::Motion;
+use super::placement::Transform;
+use super::texture::MaterialId;
+
+/// An object: a shape in its own space, placed by an affine transform, with a material.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Geometry in object space.
+    pub shape: Shape,
+    /// Object-to-world transform (applied after the shape's own parameters).
+    pub transform: Transform,
+    /// The material; `None` inherits from the enclosing CSG node, else [`RenderSettings::default_material`].
+    pub material: Option<MaterialId>,
+    /// How it moves while the shutter is open (`None`: it stands still; `transform` is its
+    /// placement at shutter open). Boxed: few objects move, and inline it would double the
+    /// size of every object.
+    pub motion: Option<Box<Motion>>,
+    /// Where it was defined.
+    pub span: Span,
+    /// The rays that see it (all, unless `.no_shadow()`, `.no_image()` or `.no_reflection()`).
+    pub visibility: Visibility,
+}
+
+/// Which rays see an object (POV-Ray's `no_shadow`, `no_image` and `no_reflection`): a set of
+/// the kinds of ray that pass through it as if it were not there.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Visibility(u8);
+
+impl Visibility {
+    /// Seen by every ray.
+    pub const ALL: Visibility = Visibility(0);
+    /// Casts no shadow: shadow rays pass through it.
+    pub const NO_SHADOW: Visibility = Visibility(1);
+    /// Not in the image: camera rays, and rays refracted from them, pass through it.
+    pub const NO_IMAGE: Visibility = Visibility(2);
+    /// Not in reflections: rays that have been reflected pass through it.
+    pub const NO_REFLECTION: Visibility = Visibility(4);
+
+    /// Both sets' hidden ray kinds.
+    pub fn with(self, other: Visibility) -> Visibility {
+        Visibility(self.0 | other.0)
+    }
+
+    /// Whether the kinds of `flag` pass through it.
+    pub fn hides(self, flag: Visibility) -> bool {
+        self.0 & flag.0 != 0
+    }
+
+    /// Whether every ray sees it.
+    pub fn is_all(self) -> bool {
+        self.0 == 0
+    }
+}
+
+/// Every kind of geometry the renderer knows.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+    },
+    /// An infinite plane through `point`; `normal` points to the outside of the half-space.
+    Plane {
+        /// A point on the plane.
+        point: DVec3,
+        /// Outward unit normal.
+        normal: DVec3,
+    },
+    /// An axis-aligned box.
+    Box {
+        /// Minimum corner.
+        min: DVec3,
+        /// Maximum corner.
+        max: DVec3,
+    },
+    /// A single triangle.
+    Triangle {
+        /// Corners, counter-clockwise seen from the front.
+        vertices: [DVec3; 3],
+    },
+    /// A parallelogram `corner + s·u + t·v`, s, t ∈ [0, 1].
+    Quad {
+        /// One corner.
+        corner: DVec3,
+        /// First edge.
+        u: DVec3,
+        /// Second edge.
+        v: DVec3,
+    },
+    /// A planar polygon (convex or concave), closed implicitly.
+    Polygon {
+        /// Vertices in order (≥ 3, coplanar).
+        points: Vec<DVec3>,
+    },
+    /// A flat disk.
+    Disk {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+    },
+    /// A flat ring: a disk with a round hole in its middle.
+    Ring {
+        /// Centre.
+        center: DVec3,
+        /// Unit normal.
+        normal: DVec3,
+        /// Outer radius (> 0).
+        radius: f64,
+        /// Radius of the hole (0 ≤ inner < radius).
+        inner: f64,
+    },
+    /// A cylinder between two points.
+    Cylinder {
+        /// Centre of the bottom cap.
+        base: DVec3,
+        /// Centre of the top cap.
+        top: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+        /// Whether the ends are closed.
+        capped: bool,
+    },
+    /// A cone or frustum between two points.
+    Cone {
+        /// Centre of the base.
+        base: DVec3,
+        /// Centre of the top.
+        top: DVec3,
+        /// Radius at `base` (≥ 0).
+        base_radius: f64,
+        /// Radius at `top` (≥ 0, not both 0).
+        top_radius: f64,
+        /// Whether the ends are closed.
+        capped: bool,
+    },
+    /// A torus about the +Y axis through `center`.
+    Torus {
+        /// Centre.
+        center: DVec3,
+        /// Distance from the centre to the tube's centre line.
+        major_radius: f64,
+        /// Tube radius.
+        minor_radius: f64,
+    },
+    /// A quadric surface `A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J = 0`,
+    /// inside where the polynomial is negative (POV-Ray's `quadric`; usually unbounded).
+    Quadric {
+        /// `A, B, C`: the coefficients of `x², y², z²`.
+        squares: DVec3,
+        /// `D, E, F`: the coefficients of `xy, xz, yz`.
+        mixed: DVec3,
+        /// `G, H, I`: the coefficients of `x, y, z`.
+        linear: DVec3,
+        /// `J`: the constant.
+        constant: f64,
+    },
+    /// Metaballs: the surface where the summed field equals `threshold`.
+    Blob {
+        /// Field sources.
+        components: Vec<BlobComponent>,
+        /// Iso-value.
+        threshold: f64,
+    },
+    /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
+    Mesh {
+        /// Resolved path.
+        path: PathBuf,
+        /// Interpolate normals.
+        smooth: bool,
+        /// Use the file's MTL materials where present.
+        use_mtl: bool,
+    },
+    /// Constructive solid geometry over closed children.
+    Csg {
+        /// The operation.
+        op: CsgOp,
+        /// Operands (two or more; for `Difference` the first is the base).
+        children: Vec<Object>,
+    },
+}
+
+impl Shape {
+    /// Short lower-case kind name used in messages and statistics.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Shape::Sphere { .. } => "sphere",
+            Shape::Plane { .. } => "plane",
+            Shape::Box { .. } => "box",
+            Shape::Triangle { .. } => "triangle",
+            Shape::Quad { .. } => "quad",
+            Shape::Polygon { .. } => "polygon",
+            Shape::Disk { .. } => "disk",
+            Shape::Ring { .. } => "ring",
+            Shape::Cylinder { .. } => "cylinder",
+            Shape::Cone { .. } => "cone",
+            Shape::Torus { .. } => "torus",
+            Shape::Quadric { .. } => "quadric",
+            Shape::Blob { .. } => "blob",
+            Shape::Mesh { .. } => "mesh",
+            Shape::Csg { .. } => "csg",
+        }
+    }
+}
+
+/// One metaball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlobComponent {
+    /// Centre.
+    pub center: DVec3,
+    /// Radius of influence (field is 0 beyond it).
+    pub radius: f64,
+    /// Field strength at the centre (negative subtracts).
+    pub strength: f64,
+}
+
+/// A CSG operation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    /// Inside any operand; internal surfaces kept.
+    Union,
+    /// Inside any operand; internal surfaces removed (POV-Ray's `merge`).
+    Merge,
+    /// Inside every operand.
+    Intersection,
+    /// Inside the first operand and outside all others.
+    Difference,
+}
