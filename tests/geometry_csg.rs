@@ -42,6 +42,8 @@ impl Solid {
                 CsgOp::Union | CsgOp::Merge => c.iter().any(|s| s.inside(p)),
                 CsgOp::Intersection => c.iter().all(|s| s.inside(p)),
                 CsgOp::Difference => c[0].inside(p) && !c[1..].iter().any(|s| s.inside(p)),
+                CsgOp::Inverse => !c[0].inside(p),
+                CsgOp::Clip => unreachable!("a clipped surface is not a solid"),
             },
         }
     }
@@ -182,6 +184,38 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                 vec![
                     Sphere(DVec3::ZERO, 1.0),
                     Half(DVec3::new(0.0, 0.3, 0.0), DVec3::new(0.3, -1.0, 0.2).unit()),
+                ],
+            ),
+        ),
+        (
+            "box and an inverted sphere (a difference spelled with inverse)",
+            Csg(
+                CsgOp::Intersection,
+                vec![
+                    Box(DVec3::splat(-1.0), DVec3::splat(1.0)),
+                    Csg(CsgOp::Inverse, vec![Sphere(DVec3::new(0.5, 0.6, 0.7), 0.9)]),
+                ],
+            ),
+        ),
+        (
+            "an inverted merge, turned and cut by a sphere",
+            Csg(
+                CsgOp::Intersection,
+                vec![
+                    Sphere(DVec3::ZERO, 1.3),
+                    Placed(
+                        mirrored_transform(),
+                        std::boxed::Box::new(Csg(
+                            CsgOp::Inverse,
+                            vec![Csg(
+                                CsgOp::Merge,
+                                vec![
+                                    Box(DVec3::new(-0.4, -2.0, -0.4), DVec3::new(0.4, 2.0, 0.4)),
+                                    Torus(0.9, 0.25),
+                                ],
+                            )],
+                        )),
+                    ),
                 ],
             ),
         ),
@@ -394,4 +428,88 @@ fn empty_intersection_is_never_hit_and_has_empty_bounds() {
     assert!(w.bounds().is_empty());
     let ray = Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X);
     assert!(w.intersect(&ray, 0.0, f64::INFINITY).is_none());
+}
+
+/// A clipped surface (`clipped_by`) against its definition, written here: the hits along a ray
+/// are the hits of the surface (a sphere, both roots of its quadratic) whose points lie inside
+/// the clipper (a turned box, membership by `Solid::inside`), in order; nothing else. The
+/// clipper's own faces never show, and the cut is left open (a ray through the opening meets
+/// the far wall from inside).
+#[test]
+fn a_clipped_surface_is_its_surface_inside_the_clipper() {
+    let (c, r) = (DVec3::new(0.1, -0.2, 0.05), 1.0);
+    let clipper = Solid::Placed(
+        rot(0.5, 0.3, -0.2, DVec3::new(0.0, 0.3, 0.0)),
+        std::boxed::Box::new(Solid::Box(
+            DVec3::new(-2.0, -2.0, -2.0),
+            DVec3::new(2.0, 0.2, 2.0),
+        )),
+    );
+    let sphere = Solid::Sphere(c, r).ir();
+    let clipped = object(
+        Shape::Csg {
+            op: CsgOp::Clip,
+            children: vec![sphere, clipper.ir()],
+        },
+        mirrored_transform(),
+    );
+    let w = world(vec![clipped]);
+    let b = w.bounds();
+    assert!(b.is_finite(), "bounds {b:?}");
+    let to_local = mirrored_transform().inverse();
+    let mut rng = Rng(4242);
+    let (mut through_opening, mut clipped_away) = (0, 0);
+    for i in 0..5_000 {
+        let ray = ray_at_box(&mut rng, b.min - 0.3, b.max + 0.3);
+        // The sphere's roots, in world t (the transform keeps t).
+        let o = to_local.transform_point3(ray.origin);
+        let d = to_local.transform_vector3(ray.dir);
+        let oc = o - c;
+        let (qa, qb, qc) = (d.dot(d), 2.0 * oc.dot(d), oc.dot(oc) - r * r);
+        let disc = qb * qb - 4.0 * qa * qc;
+        let mut want = Vec::new();
+        let mut near_a_face = false;
+        if disc > 0.0 {
+            for t in [
+                (-qb - disc.sqrt()) / (2.0 * qa),
+                (-qb + disc.sqrt()) / (2.0 * qa),
+            ] {
+                let p = o + t * d;
+                // Points within rounding of the clipper's faces may go either way: skip the ray.
+                let margin = DVec3::splat(1e-7);
+                near_a_face |= clipper.inside(p + margin) != clipper.inside(p - margin);
+                if t <= 1e-9 {
+                    continue;
+                }
+                if clipper.inside(p) {
+                    want.push(t);
+                } else {
+                    clipped_away += 1;
+                }
+            }
+        }
+        if near_a_face {
+            continue;
+        }
+        let got: Vec<f64> = all_hits(&w, &ray).iter().map(|h| h.t).collect();
+        assert_eq!(
+            got.len(),
+            want.len(),
+            "ray {i} {ray:?}: hits {got:?}, want {want:?}"
+        );
+        for (g, x) in got.iter().zip(&want) {
+            assert!(
+                (g - x).abs() <= 1e-9 * (1.0 + x.abs()),
+                "ray {i}: t {g} vs {x}"
+            );
+        }
+        // One root kept of two: the ray passes the open cut.
+        if disc > 0.0 && want.len() == 1 {
+            through_opening += 1;
+        }
+    }
+    assert!(
+        through_opening > 200 && clipped_away > 200,
+        "the rays do not exercise the cut: {through_opening} through the opening, {clipped_away} clipped roots"
+    );
 }

@@ -379,16 +379,19 @@ fn cases() -> Vec<Case> {
                 center: DVec3::new(-0.5, 0.0, 0.0),
                 radius: 1.0,
                 strength: 1.0,
+                end: None,
             },
             BlobComponent {
                 center: DVec3::new(0.6, 0.1, 0.0),
                 radius: 0.9,
                 strength: 1.0,
+                end: None,
             },
             BlobComponent {
                 center: DVec3::new(0.0, 0.6, 0.2),
                 radius: 0.5,
                 strength: -0.8,
+                end: None,
             },
         ];
         let threshold = 0.3;
@@ -419,6 +422,57 @@ fn cases() -> Vec<Case> {
                 (f - threshold).abs() / g.norm().max(1e-300)
             }),
             aim: (DVec3::new(-1.5, -1.0, -1.0), DVec3::new(1.5, 1.1, 1.0)),
+            size: 3.0,
+            min_hit_share: 0.3,
+        });
+    }
+    {
+        // A blob of a slanted cylinder component (round ends) and a ball. The field is written
+        // here from the segment distance: the nearest point of a segment a→b is
+        // a + clamp((q − a)·(b − a) / |b − a|², 0, 1)·(b − a).
+        let (a, b) = (DVec3::new(-0.8, -0.5, 0.1), DVec3::new(0.7, 0.6, -0.2));
+        let (rc, ball, rb) = (0.6, DVec3::new(0.6, -0.5, 0.0), 0.7);
+        let threshold = 0.4;
+        let field = move |q: DVec3| -> (f64, DVec3) {
+            let ab = b - a;
+            let h = ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0);
+            let mut f = 0.0;
+            let mut g = DVec3::ZERO;
+            for (w, r) in [(q - (a + h * ab), rc), (q - ball, rb)] {
+                let s = 1.0 - w.length_squared() / (r * r);
+                if s > 0.0 {
+                    f += s * s;
+                    g += 2.0 * s * (-2.0 * w / (r * r));
+                }
+            }
+            (f, g)
+        };
+        let f2 = field;
+        v.push(Case {
+            name: "blob with a cylinder component",
+            shape: Shape::Blob {
+                components: vec![
+                    BlobComponent {
+                        center: a,
+                        radius: rc,
+                        strength: 1.0,
+                        end: Some(b),
+                    },
+                    BlobComponent {
+                        center: ball,
+                        radius: rb,
+                        strength: 1.0,
+                        end: None,
+                    },
+                ],
+                threshold,
+            },
+            side: Box::new(move |q| threshold - field(q).0),
+            dist: Box::new(move |q| {
+                let (f, g) = f2(q);
+                (f - threshold).abs() / g.norm().max(1e-300)
+            }),
+            aim: (DVec3::new(-1.4, -1.2, -0.8), DVec3::new(1.4, 1.2, 0.8)),
             size: 3.0,
             min_hit_share: 0.3,
         });

@@ -179,6 +179,7 @@ fn cases() -> Vec<Case> {
                         center,
                         radius,
                         strength,
+                        end: None,
                     })
                     .collect(),
                 threshold: BLOB_THRESHOLD,

@@ -223,6 +223,8 @@ fn shape(o: &Object, names: &dyn Fn(u32) -> String, asset: AssetPath<'_>) -> Str
                 CsgOp::Difference => {
                     format!("difference({}, [{}])", kids[0], kids[1..].join(", "))
                 }
+                CsgOp::Inverse => format!("{}.inverse()", kids[0]),
+                CsgOp::Clip => format!("{}.clipped_by({})", kids[0], kids[1]),
             }
         }
         other => unreachable!("`Shape::call` writes every shape but CSG, not {other:?}"),

@@ -56,22 +56,24 @@ fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Aabb> {
 /// Bounds of `op` over `ch`, each placed by `t`.
 fn combined(op: CsgOp, ch: &[Obj], t: DAffine3, span: Span) -> R<Aabb> {
     // A difference is bounded by its base alone: the cutters need no bounds of their own.
-    let operands = if op == CsgOp::Difference {
-        &ch[..ch.len().min(1)]
-    } else {
-        ch
+    let operands = match op {
+        CsgOp::Difference => &ch[..ch.len().min(1)],
+        // An inverted solid is everything outside its operand: unbounded.
+        CsgOp::Inverse => return Err(unbounded(span)),
+        _ => ch,
     };
+    let overlap = matches!(op, CsgOp::Intersection | CsgOp::Clip);
     let mut boxes = Vec::with_capacity(operands.len());
     for c in operands {
         match bb(c, t, span) {
             Ok(b) => boxes.push(b),
-            // An intersection is bounded by its finite operands (an infinite one leaves the
-            // others' overlap as it is).
-            Err(_) if op == CsgOp::Intersection => {}
+            // An intersection (or a clip) is bounded by its finite operands (an infinite one
+            // leaves the others' overlap as it is).
+            Err(_) if overlap => {}
             Err(e) => return Err(e),
         }
     }
-    if op == CsgOp::Intersection && boxes.is_empty() {
+    if overlap && boxes.is_empty() {
         return Err(unbounded(span));
     }
     let b = csg::bounds(op, &boxes);

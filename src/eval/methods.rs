@@ -26,6 +26,7 @@ pub(crate) static RECEIVERS: &[(&str, &[&[&Sig]])] = &[
             TRANSFORMS,
             &[&MATERIAL, &MOVING, &LOOK_AT_METHOD],
             super::visibility::METHODS,
+            super::modifiers::METHODS,
         ],
     ),
     ("Transform", &[TRANSFORMS, &[&POINT, &VECTOR]]),
@@ -103,6 +104,9 @@ pub(crate) fn call_method(
         }
         Value::Object(o) if super::visibility::is_method(n) => {
             return super::visibility::hide(o, site, args);
+        }
+        Value::Object(o) if super::modifiers::is_method(n) => {
+            return super::modifiers::modify(it, o, site, args);
         }
         Value::Object(mut o) if n == "look_at" => {
             let (to, up, ts) = super::motion::look_at_method(it, site, args)?;

@@ -19,6 +19,7 @@ pub mod library;
 mod lower;
 mod members;
 mod methods;
+mod modifiers;
 pub mod modules;
 mod motion;
 mod operands;

@@ -21,7 +21,7 @@ mod mesh;
 
 use common::{checked, direction, point, radius, unit_dir};
 
-pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed};
+pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed, require_closed_to};
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
 /// geometry's shape rules once the shape is made (`checked`), which name the parameter to
@@ -362,9 +362,15 @@ static BLOB: Sig = Sig::new(
 pub(crate) static BLOB_COMPONENT: Sig = Sig::new(
     "blob component",
     Group::Record,
-    "One component of a `blob`: a sphere of influence.",
+    "One component of a `blob`: a sphere of influence, or a cylinder of influence with round ends when `end` is given.",
     &[
-        point("center", "the centre"),
+        point("center", "the centre (a cylinder's first end)"),
+        Param::new(
+            "end",
+            Ty::Vec3,
+            "a cylinder component's other end (POV-Ray's blob `cylinder`)",
+        )
+        .optional(),
         radius("radius", "how far its field reaches", 1.0),
         Param::new(
             "strength",
@@ -395,12 +401,14 @@ fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         };
         let mut cp = Params::new(site, &BLOB_COMPONENT, vec![arg])?;
         let (center, _) = cp.vec3(it, "center")?;
+        let end = cp.vec3_opt(it, "end")?.map(|(e, _)| e);
         let (radius, _) = cp.float(it, "radius")?;
         let (strength, _) = cp.float(it, "strength")?;
         components.push(BlobComponent {
             center,
             radius,
             strength,
+            end,
         });
     }
     let (threshold, ts) = p.float(it, "threshold")?;
@@ -412,6 +420,7 @@ fn blob(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         s,
         &[
             ("components", sp),
+            ("end", sp),
             ("radius", sp),
             ("strength", sp),
             ("threshold", ts),

@@ -454,6 +454,7 @@ fn show_material(m: &Mat) -> String {
 pub(crate) fn obj_kind(o: &Obj) -> &'static str {
     match &o.shape {
         ObjShape::Prim(s) => s.kind_name(),
+        ObjShape::Csg(ir::CsgOp::Clip, _) => "clipped surface",
         ObjShape::Csg(..) => "csg",
         ObjShape::Group(_) => "group",
     }

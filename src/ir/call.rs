@@ -165,11 +165,13 @@ impl Shape {
                 threshold,
             } => {
                 let component = |c: &BlobComponent| {
-                    Record(vec![
-                        ("center", Point(c.center)),
-                        ("radius", Number(c.radius)),
-                        ("strength", Number(c.strength)),
-                    ])
+                    let mut fields = vec![("center", Point(c.center))];
+                    if let Some(end) = c.end {
+                        fields.push(("end", Point(end)));
+                    }
+                    fields.push(("radius", Number(c.radius)));
+                    fields.push(("strength", Number(c.strength)));
+                    Record(fields)
                 };
                 (
                     "blob",

@@ -226,6 +226,10 @@ pub struct BlobComponent {
     pub radius: f64,
     /// Field strength at the centre (negative subtracts).
     pub strength: f64,
+    /// The other end of a cylinder component (POV-Ray's blob `cylinder`: the field falls off
+    /// with the distance to the segment from `center` to `end`, round at both ends); `None`
+    /// for a sphere component.
+    pub end: Option<DVec3>,
 }
 
 /// A CSG operation.
@@ -239,4 +243,9 @@ pub enum CsgOp {
     Intersection,
     /// Inside the first operand and outside all others.
     Difference,
+    /// Outside its one operand: the solid turned inside out (POV-Ray's `inverse`), for CSG.
+    Inverse,
+    /// The first operand's surface where it lies inside the second, a solid (POV-Ray's
+    /// `clipped_by`): an open surface, not a solid.
+    Clip,
 }

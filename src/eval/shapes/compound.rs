@@ -167,20 +167,27 @@ fn difference(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// CSG needs solids with an inside: open surfaces are rejected (geometry's rule,
 /// `geometry::shapes::encloses_volume`).
 pub(crate) fn require_closed(it: &dyn Host, o: &Obj, span: Span) -> R<()> {
+    require_closed_to(it, o, span, "take part in CSG")
+}
+
+/// [`require_closed`] for a use other than CSG: `purpose` completes "so it cannot ...".
+pub(crate) fn require_closed_to(it: &dyn Host, o: &Obj, span: Span, purpose: &str) -> R<()> {
     let _ = it;
     let open = match &o.shape {
         // A mesh file's closedness is checked when the preparation stage loads it.
         ObjShape::Prim(s) => !crate::geometry::shapes::encloses_volume(s, &|_, _| true),
+        // A clipped surface is left open.
+        ObjShape::Csg(CsgOp::Clip, _) => true,
         ObjShape::Group(ch) => {
             for c in ch.iter() {
-                require_closed(it, c, span)?;
+                require_closed_to(it, c, span, purpose)?;
             }
             false
         }
         _ => false,
     };
     if open {
-        let mut d = error("rtc::csg::open_operand", span, format!("a {} has no inside, so it cannot take part in CSG", obj_kind(o)))
+        let mut d = error("rtc::csg::open_operand", span, format!("a {} has no inside, so it cannot {purpose}", obj_kind(o)))
             .with_label("an open surface")
             .with_help("use a closed solid (sphere, box, capped cylinder, torus, ...), or a `group` instead of CSG");
         if o.span != span {

@@ -1,9 +1,12 @@
-//! Blobs (metaballs): the surface where `Σ sᵢ·(1 − |p − cᵢ|²/Rᵢ²)²` (over the components whose
-//! sphere of influence holds p) equals the threshold.
+//! Blobs (metaballs): the surface where `Σ sᵢ·(1 − dᵢ(p)²/Rᵢ²)²` (over the components whose
+//! region of influence holds p) equals the threshold; `dᵢ` is the distance to a sphere
+//! component's centre, or to a cylinder component's segment (POV-Ray's blob `cylinder`: round
+//! at both ends).
 //!
-//! Along a ray every component contributes a quartic in t inside its sphere, so between two
-//! consecutive sphere entry/exit events the field is one quartic: the roots are found exactly
-//! per segment by isolation ([`crate::geometry::shapes::quartic`]), never by marching with a step that could
+//! Along a ray every component contributes a quartic in t inside its region (a cylinder: one
+//! for its side, where the distance is to the axis line, and one for each round end), so
+//! between two consecutive entry/exit events the field is one quartic: the roots are found
+//! exactly per segment by isolation ([`crate::geometry::shapes::quartic`]), never by marching with a step that could
 //! jump over a thin feature.
 
 use crate::num::Norm;
@@ -38,7 +41,10 @@ impl Blob {
             .iter()
             .filter(|c| c.strength > 0.0)
             .fold(Aabb::EMPTY, |b, c| {
-                b.union(sphere::bounds(c.center, c.radius))
+                let round = sphere::bounds(c.center, c.radius);
+                // A capsule lies within the box of its two end balls.
+                let end = c.end.map_or(Aabb::EMPTY, |e| sphere::bounds(e, c.radius));
+                b.union(round).union(end)
             });
         (!bounds.is_empty()).then(|| Blob {
             parts: parts.to_vec(),
@@ -52,7 +58,7 @@ impl Blob {
         self.parts
             .iter()
             .map(|c| {
-                let q = 1.0 - (p - c.center).length_squared() / (c.radius * c.radius);
+                let q = 1.0 - (p - nearest(c, p)).length_squared() / (c.radius * c.radius);
                 if q > 0.0 { c.strength * q * q } else { 0.0 }
             })
             .sum()
@@ -70,7 +76,7 @@ impl Blob {
         let slope = self.gradient(p).norm();
         let mut size = self.threshold;
         for c in &self.parts {
-            let s = (p - c.center).length_squared() / (c.radius * c.radius);
+            let s = (p - nearest(c, p)).length_squared() / (c.radius * c.radius);
             if s < 1.0 {
                 size += c.strength.abs() * (1.0 + s) * (1.0 + s);
             }
@@ -92,7 +98,7 @@ impl Blob {
         self.parts
             .iter()
             .map(|c| {
-                let w = p - c.center;
+                let w = p - nearest(c, p);
                 let r2 = c.radius * c.radius;
                 let q = 1.0 - w.length_squared() / r2;
                 if q > 0.0 {
@@ -123,25 +129,17 @@ impl Blob {
         let mut spans: Vec<(f64, f64, [f64; 5])> = Vec::with_capacity(self.parts.len());
         let mut events: Vec<f64> = Vec::with_capacity(2 * self.parts.len());
         for c in &self.parts {
-            let w = o - c.center;
-            let inv = 1.0 / (c.radius * c.radius);
-            let (a, b, g) = (-inv, -2.0 * w.dot(d) * inv, 1.0 - w.length_squared() * inv);
-            let Some((s0, s1)) = crate::geometry::shapes::quartic::quadratic(-a, -b, -g) else {
+            let Some(end) = c.end else {
+                if let Some(span) = ball_span(c.center, c, o, d, f64::NEG_INFINITY, f64::INFINITY) {
+                    spans.push(span);
+                    events.extend([span.0, span.1]);
+                }
                 continue;
             };
-            if s0 >= s1 {
-                continue;
+            for span in capsule_spans(c, end, o, d).into_iter().flatten() {
+                spans.push(span);
+                events.extend([span.0, span.1]);
             }
-            let k = c.strength;
-            let poly = [
-                k * g * g,
-                k * 2.0 * b * g,
-                k * (b * b + 2.0 * a * g),
-                k * 2.0 * a * b,
-                k * a * a,
-            ];
-            spans.push((s0, s1, poly));
-            events.extend([s0, s1]);
         }
         events.sort_by(f64::total_cmp);
         events.dedup();
@@ -200,4 +198,100 @@ impl Blob {
             });
         });
     }
+}
+
+/// One component's field along the line `o + s·d` over `(s0, s1)`: the quartic's coefficients.
+type Span = (f64, f64, [f64; 5]);
+
+/// The point of component `c` nearest `p`: its centre, or a cylinder's nearest axis point.
+fn nearest(c: &BlobComponent, p: DVec3) -> DVec3 {
+    let Some(end) = c.end else {
+        return c.center;
+    };
+    let axis = end - c.center;
+    let len2 = axis.length_squared();
+    if len2 == 0.0 {
+        return c.center;
+    }
+    c.center + axis * ((p - c.center).dot(axis) / len2).clamp(0.0, 1.0)
+}
+
+/// The field `s·q(s)²` of a ball around `at` (radius and strength `c`'s) along the line
+/// `o + s·d` (unit `d`), where `q = 1 − |o + s·d − at|²/R²` is positive, cut to `(lo, hi)`.
+fn ball_span(at: DVec3, c: &BlobComponent, o: DVec3, d: DVec3, lo: f64, hi: f64) -> Option<Span> {
+    let w = o - at;
+    let inv = 1.0 / (c.radius * c.radius);
+    let (a, b, g) = (-inv, -2.0 * w.dot(d) * inv, 1.0 - w.length_squared() * inv);
+    quadratic_span(a, b, g, c.strength, lo, hi)
+}
+
+/// The field `k·q(s)²` for `q(s) = a·s² + b·s + g` (a < 0) where `q` is positive, cut to
+/// `(lo, hi)`; `None` when that is empty.
+fn quadratic_span(a: f64, b: f64, g: f64, k: f64, lo: f64, hi: f64) -> Option<Span> {
+    let (s0, s1) = crate::geometry::shapes::quartic::quadratic(-a, -b, -g)?;
+    let (s0, s1) = (s0.max(lo), s1.min(hi));
+    if s0 >= s1 {
+        return None;
+    }
+    let poly = [
+        k * g * g,
+        k * 2.0 * b * g,
+        k * (b * b + 2.0 * a * g),
+        k * 2.0 * a * b,
+        k * a * a,
+    ];
+    Some((s0, s1, poly))
+}
+
+/// A cylinder component's pieces along the line `o + s·d` (unit `d`): the side, where the
+/// nearest point is on the axis between the ends (the distance is to the axis line), and the
+/// round ends beyond them (the distance is to the end point).
+fn capsule_spans(c: &BlobComponent, end: DVec3, o: DVec3, d: DVec3) -> [Option<Span>; 3] {
+    let axis = end - c.center;
+    let len = axis.norm();
+    if len == 0.0 || !len.is_finite() {
+        return [
+            ball_span(c.center, c, o, d, f64::NEG_INFINITY, f64::INFINITY),
+            None,
+            None,
+        ];
+    }
+    let u = axis / len;
+    let w = o - c.center;
+    // Where along the axis the line's point projects: h(s) = h0 + s·hd.
+    let (h0, hd) = (w.dot(u), d.dot(u));
+    // The s range over which 0 ≤ h(s) ≤ len (all or nothing when the line is across the axis).
+    let (before, after) = if hd == 0.0 {
+        if (0.0..=len).contains(&h0) {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else if h0 < 0.0 {
+            (f64::INFINITY, f64::INFINITY)
+        } else {
+            (f64::NEG_INFINITY, f64::NEG_INFINITY)
+        }
+    } else {
+        let (s_start, s_end) = (-h0 / hd, (len - h0) / hd);
+        (s_start.min(s_end), s_start.max(s_end))
+    };
+    let inv = 1.0 / (c.radius * c.radius);
+    let (wp, dp) = (w - h0 * u, d - hd * u);
+    let side = quadratic_span(
+        -dp.length_squared() * inv,
+        -2.0 * wp.dot(dp) * inv,
+        1.0 - wp.length_squared() * inv,
+        c.strength,
+        before,
+        after,
+    );
+    // Beyond `before` the line is past one end, beyond `after` past the other.
+    let (first, last) = if hd >= 0.0 {
+        (c.center, end)
+    } else {
+        (end, c.center)
+    };
+    [
+        side,
+        ball_span(first, c, o, d, f64::NEG_INFINITY, before),
+        ball_span(last, c, o, d, after, f64::INFINITY),
+    ]
 }

@@ -19,6 +19,9 @@ pub(crate) fn combine(op: CsgOp, mut states: impl Iterator<Item = bool>) -> bool
         CsgOp::Union | CsgOp::Merge => states.any(|s| s),
         CsgOp::Intersection => states.all(|s| s),
         CsgOp::Difference => states.next().unwrap_or(false) && !states.any(|s| s),
+        CsgOp::Inverse => !states.next().unwrap_or(false),
+        // A clipped surface has no inside; inside both stands for "shown" where it is asked.
+        CsgOp::Clip => states.all(|s| s),
     }
 }
 
@@ -67,7 +70,7 @@ pub(crate) fn boundary<H: Copy>(
 /// Whether operand `i` entering (or leaving) moves the result of `op` into (out of) the solid
 /// when the result becomes `now`: a subtracted operand does so by leaving.
 fn drives(op: CsgOp, i: usize, entering: bool, now: bool) -> bool {
-    if op == CsgOp::Difference && i > 0 {
+    if flips_normal(op, i) {
         entering != now
     } else {
         entering == now
@@ -75,19 +78,25 @@ fn drives(op: CsgOp, i: usize, entering: bool, now: bool) -> bool {
 }
 
 /// Whether a boundary crossing on operand `i` shows that operand's surface turned inside out
-/// (a subtracted operand's surface faces the other way on the result).
+/// (a subtracted operand's surface, and an inverted one, faces the other way on the result).
 pub(crate) fn flips_normal(op: CsgOp, i: usize) -> bool {
-    op == CsgOp::Difference && i > 0
+    (op == CsgOp::Difference && i > 0) || op == CsgOp::Inverse
 }
 
 /// Bounds of a CSG node from its operands' bounds (all in the node's space): an intersection is
 /// bounded by the overlap of its operands, a difference by its base, a union or merge by all
-/// operands. An empty intersection gives [`Aabb::EMPTY`], which no ray meets.
+/// operands. An empty intersection gives [`Aabb::EMPTY`], which no ray meets. An inverted
+/// solid is unbounded (its surface is its operand's, but bounds here bound the solid, which an
+/// intersection or difference around it relies on); a clipped surface lies in the overlap of
+/// its surface and its clipper.
 pub(crate) fn bounds(op: CsgOp, children: &[Aabb]) -> Aabb {
     let infinite = Aabb::new(DVec3::NEG_INFINITY, DVec3::INFINITY);
     match op {
         CsgOp::Union | CsgOp::Merge => children.iter().fold(Aabb::EMPTY, |b, c| b.union(*c)),
-        CsgOp::Intersection => children.iter().fold(infinite, |b, c| b.intersection(*c)),
+        CsgOp::Intersection | CsgOp::Clip => {
+            children.iter().fold(infinite, |b, c| b.intersection(*c))
+        }
+        CsgOp::Inverse => infinite,
         CsgOp::Difference => children.first().copied().unwrap_or(Aabb::EMPTY),
     }
 }

@@ -44,7 +44,7 @@ use crate::geometry::shapes::ring::Ring;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::MappingFrame, ray::Ray};
-use crate::ir::Shape;
+use crate::ir::{CsgOp, Shape};
 
 mod flaw;
 mod rules;
@@ -58,6 +58,22 @@ pub(crate) use rules::leaf;
 pub(crate) fn check(shape: &Shape) -> Result<(), ShapeFlaw> {
     match shape {
         Shape::Mesh { .. } => Ok(()),
+        Shape::Csg {
+            op: CsgOp::Inverse,
+            children,
+        } => operand_count(
+            children.len(),
+            1,
+            "an inverse turns exactly one solid inside out",
+        ),
+        Shape::Csg {
+            op: CsgOp::Clip,
+            children,
+        } => operand_count(
+            children.len(),
+            2,
+            "a clip has one surface and one clipping solid",
+        ),
         Shape::Csg { children, .. } => csg_operands(children.len()),
         // A valid sphere, the commonest shape of large scenes (checked when it is made and again
         // when it is prepared), without building its `Leaf`: `leaf` accepts exactly these.
@@ -241,6 +257,21 @@ impl Leaf {
     }
 }
 
+/// Whether a one- or two-operand node (`inverse`, `clipped_by`) has exactly `want` operands;
+/// the IR of the front ends always has, so this guards hand-built scenes.
+fn operand_count(count: usize, want: usize, why: &str) -> Result<(), ShapeFlaw> {
+    if count == want {
+        return Ok(());
+    }
+    Err(ShapeFlaw::other(
+        "objects",
+        CSG_OPERANDS,
+        format!("{count} operand(s) where {want} belong"),
+        why.to_string(),
+        "build it with `.inverse()` or `.clipped_by(solid)`",
+    ))
+}
+
 /// Whether a CSG node with `count` operands can be built (it needs two or more).
 pub(crate) fn csg_operands(count: usize) -> Result<(), ShapeFlaw> {
     if count >= 2 {
@@ -263,7 +294,8 @@ pub(crate) fn bounds(shape: &Shape) -> Option<Aabb> {
 
 /// Whether a shape encloses a volume CSG can classify against: surfaces (triangle, quad,
 /// polygon, disk) and open cylinders and cones do not; a mesh does when `closed_mesh` says its
-/// file is closed; a CSG node when all its operands do.
+/// file is closed; a CSG node when all its operands do (an inverted solid is one; a clipped
+/// surface never).
 pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
     match shape {
         Shape::Triangle { .. }
@@ -273,6 +305,10 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Ring { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
         Shape::Mesh { path, smooth, .. } => closed_mesh(path, *smooth),
+        // A clipped surface is open: its clipper's faces are not shown.
+        Shape::Csg {
+            op: CsgOp::Clip, ..
+        } => false,
         Shape::Csg { children, .. } => children
             .iter()
             .all(|c| encloses_volume(&c.shape, closed_mesh)),

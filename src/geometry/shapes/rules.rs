@@ -223,6 +223,9 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 positive("radius", c.radius)?;
                 in_range(true, "strength", "finite", c.strength)?;
                 finite("components", &[c.center])?;
+                if let Some(end) = c.end {
+                    finite("end", &[end])?;
+                }
             }
             positive("threshold", *threshold)?;
             Leaf::Blob(Box::new(Blob::new(components, *threshold).ok_or_else(

@@ -551,6 +551,9 @@ fn csg_intersect(
     t_min: f64,
     t_max: f64,
 ) -> Option<GeoHit> {
+    if op == CsgOp::Clip {
+        return clip_intersect(children, ray, t_min, t_max);
+    }
     if op == CsgOp::Union {
         let mut best: Option<GeoHit> = None;
         let mut far = t_max;
@@ -567,6 +570,41 @@ fn csg_intersect(
     out.into_iter()
         .map(|c| c.hit)
         .find(|h| h.t > t_min && h.t < t_max)
+}
+
+/// How many of its surface's hits a clipped object tries along one ray before it gives up (a
+/// dense mesh clipped to a sliver); each try is one nearest-hit query of the surface.
+const CLIP_TRIES: usize = 4096;
+
+/// A clipped surface's nearest hit in (t_min, t_max): the first hit of the surface (the first
+/// operand) that lies inside the clipper (the second, a solid). The clipper's crossings along
+/// the whole line are gathered once, and only when the surface is hit at all; a hit exactly on
+/// the clipper's boundary counts as outside.
+fn clip_intersect(children: &[Primitive], ray: &Ray, t_min: f64, t_max: f64) -> Option<GeoHit> {
+    let (surface, clippers) = children.split_first()?;
+    let mut hit = surface.intersect(ray, t_min, t_max)?;
+    let clips: Vec<(bool, Vec<PrimitiveCrossing>)> = clippers
+        .iter()
+        .map(|c| {
+            let mut crossings = Vec::new();
+            c.crossings(ray, &mut crossings);
+            (c.inside_at_start(ray), crossings)
+        })
+        .collect();
+    for _ in 0..CLIP_TRIES {
+        let inside = clips.iter().all(|(start, crossings)| {
+            crossings
+                .iter()
+                .take_while(|c| c.hit.t < hit.t)
+                .last()
+                .map_or(*start, |c| c.entering)
+        });
+        if inside {
+            return Some(hit);
+        }
+        hit = surface.intersect(ray, hit.t, t_max)?;
+    }
+    None
 }
 
 impl Geom {
