@@ -9,7 +9,7 @@ mod geometry_support;
 use geometry_support::{Rng, mirrored_transform, object, ray_at_box, world};
 use glam::{DAffine3, DQuat, DVec2, DVec3};
 use rtc::geometry::{Ray, World};
-use rtc::ir::{CsgOp, MaterialId, Object, Shape};
+use rtc::ir::{CsgOp, MaterialId, Object, Shape, Spindle};
 use rtc::num::Norm;
 
 /// An independent model of a solid for membership tests.
@@ -21,6 +21,8 @@ enum Solid {
     CylY(f64, f64),
     /// Torus about Y through the origin.
     Torus(f64, f64),
+    /// Spindle torus (minor > major) about Y through the origin, with its mode.
+    SpindleTorus(f64, f64, Spindle),
     /// Half-space below a plane through a point.
     Half(DVec3, DVec3),
     Placed(DAffine3, Box<Solid>),
@@ -35,6 +37,17 @@ impl Solid {
             Solid::CylY(h, r) => (0.0..=*h).contains(&p.y) && p.x * p.x + p.z * p.z <= r * r,
             Solid::Torus(big, small) => {
                 DVec2::new(DVec2::new(p.x, p.z).norm() - big, p.y).norm() <= *small
+            }
+            Solid::SpindleTorus(big, small, mode) => {
+                // Distances to the near and the far point of the centre circle.
+                let ring = DVec2::new(p.x, p.z).norm();
+                let apple = DVec2::new(ring - big, p.y).norm() <= *small;
+                let lemon = DVec2::new(ring + big, p.y).norm() <= *small;
+                match mode {
+                    Spindle::Union | Spindle::Merge => apple,
+                    Spindle::Intersection => lemon,
+                    Spindle::Difference => apple && !lemon,
+                }
             }
             Solid::Half(q, n) => (p - *q).dot(*n) <= 0.0,
             Solid::Placed(m, s) => s.inside(m.inverse().transform_point3(p)),
@@ -76,6 +89,16 @@ impl Solid {
                     center: DVec3::ZERO,
                     major_radius: *big,
                     minor_radius: *small,
+                    spindle: Default::default(),
+                },
+                xf,
+            ),
+            Solid::SpindleTorus(big, small, mode) => object(
+                Shape::Torus {
+                    center: DVec3::ZERO,
+                    major_radius: *big,
+                    minor_radius: *small,
+                    spindle: *mode,
                 },
                 xf,
             ),
@@ -217,6 +240,39 @@ fn scenes() -> Vec<(&'static str, Solid)> {
                         )),
                     ),
                 ],
+            ),
+        ),
+        (
+            "spindle tori of every mode, cut open by half-spaces",
+            Csg(
+                CsgOp::Union,
+                [
+                    Spindle::Union,
+                    Spindle::Merge,
+                    Spindle::Intersection,
+                    Spindle::Difference,
+                ]
+                .into_iter()
+                .enumerate()
+                .map(|(k, mode)| {
+                    Placed(
+                        // Apart (3.2 > twice R + r): a union keeps the surfaces inside it.
+                        rot(
+                            0.3 * k as f64,
+                            0.5,
+                            0.1,
+                            DVec3::new(3.2 * k as f64, 0.0, 0.0),
+                        ),
+                        std::boxed::Box::new(Csg(
+                            CsgOp::Intersection,
+                            vec![
+                                SpindleTorus(0.5, 1.0, mode),
+                                Half(DVec3::new(0.0, 0.0, 0.2), DVec3::new(0.1, 0.2, 1.0).unit()),
+                            ],
+                        )),
+                    )
+                })
+                .collect(),
             ),
         ),
         (

@@ -66,6 +66,7 @@ fn torus_grazing_rays_hit_at_the_analytic_distance() {
             center: DVec3::ZERO,
             major_radius: big,
             minor_radius: small,
+            spindle: Default::default(),
         },
         DAffine3::IDENTITY,
     )]);
@@ -120,6 +121,7 @@ fn torus_rotated_and_far_away_stays_accurate() {
             center: DVec3::ZERO,
             major_radius: 2.0,
             minor_radius: 0.5,
+            spindle: Default::default(),
         },
         DAffine3::from_rotation_translation(glam::DQuat::from_rotation_x(0.4), c),
     )]);

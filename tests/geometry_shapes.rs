@@ -365,6 +365,7 @@ fn cases() -> Vec<Case> {
                 center: c,
                 major_radius: big,
                 minor_radius: small,
+                spindle: Default::default(),
             },
             side: Box::new(sdf),
             dist: Box::new(move |q| sdf(q).abs()),

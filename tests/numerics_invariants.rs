@@ -163,6 +163,7 @@ fn cases() -> Vec<Case> {
                 center: DVec3::ZERO,
                 major_radius: 1.0,
                 minor_radius: 0.3,
+                spindle: Default::default(),
             },
             distance: |q| (q.x.hypot(q.z) - 1.0).hypot(q.y) - 0.3,
             closed: true,

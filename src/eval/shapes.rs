@@ -11,7 +11,7 @@ use super::host::Host;
 use super::schema::{Group, Lit, Param, Range, Sig, Ty, Unit};
 use super::types;
 use super::value::Value;
-use crate::ir::{BlobComponent, Shape};
+use crate::ir::{BlobComponent, Shape, Spindle};
 use crate::source::Span;
 
 mod common;
@@ -263,29 +263,52 @@ static TORUS: Sig = Sig::new(
         Param::new(
             "minor_radius",
             Ty::Float,
-            "the tube's radius (< major_radius)",
+            "the tube's radius (larger than major_radius: a spindle torus)",
         )
         .unit(Unit::Length)
         .range(Range::Positive)
         .checked_by_builtin(),
         point("center", "the centre"),
+        Param::new(
+            "spindle",
+            Ty::String,
+            "a spindle torus's parts (minor_radius > major_radius): \"union\" (both surfaces, all inside), \"merge\" (the outer surface), \"intersection\" (the inner lemon alone) or \"difference\" (both surfaces, the lemon outside)",
+        )
+        .checked_by_builtin()
+        .or(Lit::Name("\"union\"")),
     ],
     "Object",
 )
-.examples(&["torus(major_radius: 1, minor_radius: 0.25, center: [0, 1, 0])"]);
+.examples(&[
+    "torus(major_radius: 1, minor_radius: 0.25, center: [0, 1, 0])",
+    "torus(major_radius: 0.5, minor_radius: 1, spindle: \"difference\")",
+]);
 fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &TORUS, a)?;
     let (major, ms) = p.float(it, "major_radius")?;
     let (minor, ns) = p.float(it, "minor_radius")?;
     let (center, _) = p.vec3(it, "center")?;
+    let (spindle, ss) = match p.get("spindle") {
+        None => (Spindle::default(), s.span),
+        Some((Value::Str(name), sp)) => match Spindle::NAMES.iter().find(|(n, _)| **n == *name) {
+            Some((_, mode)) => (*mode, sp),
+            None => {
+                let choices = Spindle::NAMES.map(|(n, _)| n);
+                let e = crate::eval::texture_methods::bad_choice("spindle", &name, &choices, sp);
+                return Err(e.into());
+            }
+        },
+        Some((other, sp)) => return Err(types::mismatch(it, "String", &other, sp).into()),
+    };
     checked(
         Shape::Torus {
             center,
             major_radius: major,
             minor_radius: minor,
+            spindle,
         },
         s,
-        &[("major_radius", ms), ("minor_radius", ns)],
+        &[("major_radius", ms), ("minor_radius", ns), ("spindle", ss)],
     )
 }
 

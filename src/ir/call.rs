@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape};
+use super::object::{BlobComponent, Shape, Spindle};
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,6 +28,8 @@ pub enum Arg {
     Direction(DVec3),
     /// A Boolean.
     Bool(bool),
+    /// A string naming one of a parameter's choices (written quoted).
+    Text(&'static str),
     /// An asset's path (written relative to the converted file).
     Path(PathBuf),
     /// A list.
@@ -138,14 +140,18 @@ impl Shape {
                 center,
                 major_radius,
                 minor_radius,
-            } => (
-                "torus",
-                vec![
+                spindle,
+            } => {
+                let mut a = vec![
                     ("center", Point(*center)),
                     ("major_radius", Number(*major_radius)),
                     ("minor_radius", Number(*minor_radius)),
-                ],
-            ),
+                ];
+                if *spindle != Spindle::default() {
+                    a.push(("spindle", Arg::Text(spindle.name())));
+                }
+                ("torus", a)
+            }
             Shape::Quadric {
                 squares,
                 mixed,

@@ -154,8 +154,10 @@ pub enum Shape {
         center: DVec3,
         /// Distance from the centre to the tube's centre line.
         major_radius: f64,
-        /// Tube radius.
+        /// Tube radius (larger than `major_radius`: a spindle torus, self-intersecting).
         minor_radius: f64,
+        /// What a spindle torus shows and holds (ignored unless `minor_radius > major_radius`).
+        spindle: Spindle,
     },
     /// A quadric surface `A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J = 0`,
     /// inside where the polynomial is negative (POV-Ray's `quadric`; usually unbounded).
@@ -248,4 +250,38 @@ pub enum CsgOp {
     /// The first operand's surface where it lies inside the second, a solid (POV-Ray's
     /// `clipped_by`): an open surface, not a solid.
     Clip,
+}
+
+/// The parts of a spindle torus (minor radius larger than major) that are seen and that are
+/// inside, after POV-Ray's spindle modes. The *spindle* is the lemon-shaped inner region the
+/// self-intersecting tube covers twice; the *apple* is the whole tube.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Spindle {
+    /// The apple's surface and the spindle's, the apple inside (POV-Ray's default).
+    #[default]
+    Union,
+    /// The apple alone: its outer surface and its inside.
+    Merge,
+    /// The spindle alone: its surface and its inside.
+    Intersection,
+    /// Both surfaces, the apple without the spindle inside.
+    Difference,
+}
+
+impl Spindle {
+    /// The language's names, in order of the variants.
+    pub const NAMES: [(&'static str, Spindle); 4] = [
+        ("union", Spindle::Union),
+        ("merge", Spindle::Merge),
+        ("intersection", Spindle::Intersection),
+        ("difference", Spindle::Difference),
+    ];
+
+    /// The language's name of this mode.
+    pub fn name(self) -> &'static str {
+        Spindle::NAMES
+            .iter()
+            .find(|(_, m)| *m == self)
+            .map_or("union", |(n, _)| n)
+    }
 }

@@ -6,7 +6,7 @@ use crate::num::Norm;
 use glam::DVec3;
 
 use crate::diag::number;
-use crate::ir::Shape;
+use crate::ir::{Shape, Spindle};
 
 use super::blob::Blob;
 use super::cone::Cone;
@@ -191,18 +191,23 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             center,
             major_radius,
             minor_radius,
+            spindle,
         } => {
             positive("major_radius", *major_radius)?;
             positive("minor_radius", *minor_radius)?;
+            // POV-Ray's rule: only the spindle's own mode is empty on a ring torus.
             in_range(
-                minor_radius < major_radius,
-                "minor_radius",
-                &format!("< major_radius ({})", number(*major_radius)),
+                *spindle != Spindle::Intersection || minor_radius > major_radius,
+                "spindle",
+                &format!(
+                    "\"intersection\" only with minor_radius > major_radius ({})",
+                    number(*major_radius)
+                ),
                 *minor_radius,
             )?;
             finite("center", &[*center])?;
             Leaf::Torus(
-                Torus::new(*center, *major_radius, *minor_radius)
+                Torus::new(*center, *major_radius, *minor_radius, *spindle)
                     .ok_or_else(|| ShapeFlaw::range("major_radius", "> 0", *major_radius))?,
             )
         }
