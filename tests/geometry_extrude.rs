@@ -172,7 +172,7 @@ fn cases() -> Vec<Case> {
     // A square frame (a square hole), linear spline: POV-Ray's even-odd rule.
     let sq = |r: f64| {
         [[-r, -r], [r, -r], [r, r], [-r, r], [-r, -r]]
-            .map(|p| DVec2::from(p))
+            .map(DVec2::from)
             .to_vec()
     };
     let mut pts = sq(1.0);

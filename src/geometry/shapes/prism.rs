@@ -33,7 +33,7 @@ pub(crate) fn outline(points: &[DVec2], spline: Spline) -> Result<Vec<Vec<Segmen
     let mut subs = Vec::new();
     let mut cur: Vec<Segment> = Vec::new();
     if spline == Spline::Bezier {
-        if n % 4 != 0 {
+        if !n.is_multiple_of(4) {
             return Err(OutlineError::NotFours);
         }
         let mut start = 0;
