@@ -83,6 +83,17 @@ impl Segment {
         (lo, hi)
     }
 
+    /// The control points of the curve as a cubic Bézier curve.
+    fn bezier(&self) -> [DVec2; 4] {
+        let c = |k: usize| DVec2::new(self.a[k], self.b[k]);
+        [
+            c(0),
+            c(0) + c(1) / 3.0,
+            c(0) + (2.0 * c(1) + c(2)) / 3.0,
+            c(0) + c(1) + c(2) + c(3),
+        ]
+    }
+
     /// Whether every coefficient is finite.
     pub(crate) fn is_finite(&self) -> bool {
         self.a.iter().chain(&self.b).all(|c| c.is_finite())
@@ -139,6 +150,8 @@ impl Axes {
 #[derive(Clone, Debug)]
 struct Edge {
     curve: Segment,
+    /// The curve's Bézier control points: its hull rejects the lines that miss it.
+    hull: [DVec2; 4],
     lo2: DVec2,
     hi2: DVec2,
     lo: DVec3,
@@ -226,6 +239,7 @@ impl Extrusion {
                 chi = chi.max(ehi);
                 out.edges.push(Edge {
                     curve: *s,
+                    hull: s.bezier(),
                     lo2: l,
                     hi2: h,
                     lo: elo,
@@ -307,6 +321,13 @@ impl Extrusion {
             }
             for e in &self.edges[c.edges.clone()] {
                 if q.y < e.lo2.y || q.y > e.hi2.y || q.x > e.hi2.x {
+                    continue;
+                }
+                if q.x < e.lo2.x {
+                    // Every crossing is to the right: their sum is the change of side from
+                    // one end to the other, with no root to find.
+                    let above = |s: f64| i32::from(eval(&e.curve.b, s) > q.y);
+                    winding += above(1.0) - above(0.0);
                     continue;
                 }
                 let mut b = e.curve.b;
@@ -401,6 +422,13 @@ impl Extrusion {
             Sweep::Linear => n.x * o.x + n.y * o.y,
             Sweep::Conic => 0.0,
         };
+        // The curve lies in its control points' hull: a plane with all of them on one side
+        // misses it.
+        let lift = if self.sweep == Sweep::Conic { n.z } else { 0.0 };
+        let side = |p: &DVec2| n.x * p.x + n.y * p.y + lift - offset;
+        if e.hull.iter().all(|p| side(p) > 0.0) || e.hull.iter().all(|p| side(p) < 0.0) {
+            return;
+        }
         let mut poly = [0.0; 4];
         for (i, p) in poly.iter_mut().enumerate() {
             *p = n.x * c.a[i] + n.y * c.b[i];
