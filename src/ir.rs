@@ -29,7 +29,10 @@ pub(crate) use flare::Flare;
 pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share};
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
-pub use object::{BlobComponent, CsgOp, Object, Shape, Spindle, Visibility};
+pub use object::{
+    BlobComponent, CsgOp, GlyphCurve, Object, PrismSweep, Shape, Spindle, Spline, TextAlign,
+    TextGlyphs, Visibility,
+};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{

@@ -1,6 +1,6 @@
 //! The asset service: every file a scene names besides its own text. Paths are resolved in one
 //! documented order for the scene language and the course formats ([`search`]); OBJ meshes with
-//! their MTL materials ([`obj`], [`mtl`]) and texture images ([`image`]) are read and decoded
+//! their MTL materials ([`obj`], [`mtl`]), texture images ([`image`]) and fonts ([`font`]) are read and decoded
 //! once per process ([`cache`]) whoever asks first: evaluation (a mesh's `.bounds`), `rtc check`
 //! or the preparation stage. Loading errors become diagnostics here, one kind per problem.
 //!
@@ -8,6 +8,7 @@
 //! nothing of BVHs or rendering: geometry builds its structures from the plain data loaded here.
 
 mod cache;
+mod font;
 mod image;
 mod mipmap;
 mod mtl;
@@ -22,6 +23,8 @@ pub(crate) mod search;
 use std::path::Path;
 use std::sync::Arc;
 
+pub use self::font::FontAsset;
+pub(crate) use self::font::{FontError, MAX_TEXT_CHARS};
 pub(crate) use self::image::ImageError;
 pub use self::image::Picture;
 pub use self::mipmap::MipChain;
@@ -33,6 +36,23 @@ use cache::{Cache, FileKey};
 static MESHES: Cache<MeshAsset> = Cache::new();
 static PICTURES: Cache<Picture> = Cache::new();
 static MIPS: Cache<MipChain> = Cache::new();
+static FONTS: Cache<FontAsset> = Cache::new();
+
+/// The font at `path` (the built-in DejaVu Sans for `None`), read and checked once per
+/// process (again when the file changes).
+pub(crate) fn font(path: Option<&Path>) -> Result<Arc<FontAsset>, FontError> {
+    static BUILTIN: std::sync::OnceLock<Arc<FontAsset>> = std::sync::OnceLock::new();
+    match path {
+        None => Ok(BUILTIN
+            .get_or_init(|| Arc::new(FontAsset::builtin()))
+            .clone()),
+        Some(path) => FONTS.get_or_load(
+            FileKey::of(path, false),
+            || FontAsset::load(path),
+            |_| Vec::new(),
+        ),
+    }
+}
 
 /// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
 /// when it or one of its material libraries changes).
@@ -80,16 +100,18 @@ pub fn forget(path: &Path) {
     MESHES.forget(path);
     PICTURES.forget(path);
     MIPS.forget(path);
+    FONTS.forget(path);
 }
 
 /// How many loads of `path` the process keeps (versions, and a mesh's smooth and flat
 /// variants): one per variant however often the file changed.
 pub fn cached_loads(path: &Path) -> usize {
-    MESHES.count(path) + PICTURES.count(path)
+    MESHES.count(path) + PICTURES.count(path) + FONTS.count(path)
 }
 
 /// Forgets every cached asset (benchmarks use it to time loading afresh).
 pub fn clear_cache() {
     MESHES.clear();
     PICTURES.clear();
+    FONTS.clear();
 }

@@ -238,8 +238,8 @@ fn argument(a: &Arg, asset: AssetPath<'_>) -> String {
         Arg::Point(p) => vector(*p),
         Arg::Direction(n) => unit_direction(*n),
         Arg::Bool(b) => b.to_string(),
-        Arg::Text(t) => string(t),
         Arg::Path(p) => string(&asset(p)),
+        Arg::Str(s) => string(s),
         Arg::List(items) => {
             let items: Vec<String> = items.iter().map(|x| argument(x, asset)).collect();
             format!("[{}]", items.join(", "))

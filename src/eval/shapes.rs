@@ -1,5 +1,5 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
-//! in `mesh`).
+//! in `mesh`, prisms and text in `extrude`).
 
 use glam::DVec3;
 
@@ -16,6 +16,7 @@ use crate::source::Span;
 
 mod common;
 mod compound;
+mod extrude;
 mod flat;
 mod mesh;
 
@@ -41,6 +42,8 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&QUADRIC, quadric),
     (&BLOB, blob),
     (&mesh::MESH, mesh::mesh),
+    (&extrude::PRISM, extrude::prism),
+    (&extrude::TEXT, extrude::text),
 ];
 
 /// `capped: Bool = true` of cylinders and cones.

@@ -28,10 +28,10 @@ pub enum Arg {
     Direction(DVec3),
     /// A Boolean.
     Bool(bool),
-    /// A string naming one of a parameter's choices (written quoted).
-    Text(&'static str),
     /// An asset's path (written relative to the converted file).
     Path(PathBuf),
+    /// A string (a name among a parameter's choices, a text's characters).
+    Str(String),
     /// A list.
     List(Vec<Arg>),
     /// A record of named fields.
@@ -148,7 +148,7 @@ impl Shape {
                     ("minor_radius", Number(*minor_radius)),
                 ];
                 if *spindle != Spindle::default() {
-                    a.push(("spindle", Arg::Text(spindle.name())));
+                    a.push(("spindle", Arg::Str(spindle.name().to_string())));
                 }
                 ("torus", a)
             }
@@ -203,6 +203,49 @@ impl Shape {
                     a.push(("use_mtl", Bool(true)));
                 }
                 ("mesh", a)
+            }
+            Shape::Prism {
+                points,
+                heights,
+                spline,
+                sweep,
+            } => {
+                let pair = |a: f64, b: f64| List(vec![Number(a), Number(b)]);
+                let mut a = vec![
+                    (
+                        "points",
+                        List(points.iter().map(|p| pair(p.x, p.y)).collect()),
+                    ),
+                    ("heights", pair(heights[0], heights[1])),
+                ];
+                if *spline != super::object::Spline::Linear {
+                    a.push(("spline", Arg::Str(spline.name().to_string())));
+                }
+                if *sweep == super::object::PrismSweep::Conic {
+                    a.push(("sweep", Arg::Str("conic".to_string())));
+                }
+                ("prism", a)
+            }
+            Shape::Text {
+                font,
+                string,
+                thickness,
+                spacing,
+                align,
+                ..
+            } => {
+                let mut a = vec![("string", Arg::Str(string.clone()))];
+                if let Some(f) = font {
+                    a.push(("font", Arg::Path(f.clone())));
+                }
+                a.push(("thickness", Number(*thickness)));
+                if *spacing != glam::DVec2::ZERO {
+                    a.push(("spacing", List(vec![Number(spacing.x), Number(spacing.y)])));
+                }
+                if *align != super::object::TextAlign::Left {
+                    a.push(("align", Arg::Str(align.name().to_string())));
+                }
+                ("text", a)
             }
             Shape::Csg { .. } => return None,
         };

@@ -2,8 +2,9 @@
 //! material and visibility, as plain data.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use crate::source::Span;
 
@@ -178,6 +179,34 @@ pub enum Shape {
         /// Iso-value.
         threshold: f64,
     },
+    /// POV-Ray's `prism`: a closed outline of spline segments in the ground plane (`[x, z]`
+    /// points), swept up `y` between two heights.
+    Prism {
+        /// The outline's points as the spline reads them.
+        points: Vec<DVec2>,
+        /// `[low, high]` (low < high; for a conic sweep low ≥ 0).
+        heights: [f64; 2],
+        /// How the points make segments.
+        spline: Spline,
+        /// Straight up, or scaled by the height from an apex at the origin.
+        sweep: PrismSweep,
+    },
+    /// A string set in a TrueType/OpenType font, facing +z, its baseline on `y = 0`, extruded
+    /// from `z = 0` back to `z = −thickness` (1 unit = 1 em).
+    Text {
+        /// The font file (resolved); `None`: the built-in DejaVu Sans.
+        font: Option<PathBuf>,
+        /// The string.
+        string: String,
+        /// How deep it is extruded (> 0).
+        thickness: f64,
+        /// Extra space after each character, `[x, y]` (POV-Ray's `offset`).
+        spacing: DVec2,
+        /// Which point of the string sits on the origin.
+        align: TextAlign,
+        /// The glyph outlines laid out (from the font when the text was made).
+        glyphs: Arc<TextGlyphs>,
+    },
     /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
     Mesh {
         /// Resolved path.
@@ -213,6 +242,8 @@ impl Shape {
             Shape::Torus { .. } => "torus",
             Shape::Quadric { .. } => "quadric",
             Shape::Blob { .. } => "blob",
+            Shape::Prism { .. } => "prism",
+            Shape::Text { .. } => "text",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }
@@ -284,4 +315,97 @@ impl Spindle {
             .find(|(_, m)| *m == self)
             .map_or("union", |(n, _)| n)
     }
+}
+
+/// How a prism's points make its outline's segments (POV-Ray's spline kinds).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spline {
+    /// Straight segments between consecutive points.
+    Linear,
+    /// A segment from `p[i+1]` to `p[i+2]`, shaped by `p[i]` (POV-Ray's quadratic spline).
+    Quadratic,
+    /// A segment from `p[i+1]` to `p[i+2]` with `p[i]` and `p[i+3]` as neighbours
+    /// (POV-Ray's Catmull-Rom-like cubic spline).
+    Cubic,
+    /// Groups of four points, each a cubic Bézier curve.
+    Bezier,
+}
+
+impl Spline {
+    /// The names the language reads, in this order.
+    pub const NAMES: [&str; 4] = ["linear", "quadratic", "cubic", "bezier"];
+
+    /// The spline called `name`.
+    pub fn named(name: &str) -> Option<Spline> {
+        Some(match name {
+            "linear" => Spline::Linear,
+            "quadratic" => Spline::Quadratic,
+            "cubic" => Spline::Cubic,
+            "bezier" => Spline::Bezier,
+            _ => return None,
+        })
+    }
+
+    /// Its name in the language.
+    pub fn name(self) -> &'static str {
+        Spline::NAMES[self as usize]
+    }
+
+    /// The fewest points an outline needs (POV-Ray's counts).
+    pub fn min_points(self) -> usize {
+        match self {
+            Spline::Linear => 3,
+            Spline::Quadratic => 5,
+            Spline::Cubic => 6,
+            Spline::Bezier => 4,
+        }
+    }
+}
+
+/// How a prism's outline is swept.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PrismSweep {
+    /// Unchanged from the low height to the high one.
+    Linear,
+    /// Scaled by the height (`[x·y, y, z·y]`): a cone from the apex at the origin.
+    Conic,
+}
+
+/// Which point of a text's line sits on the origin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextAlign {
+    /// The start of the first glyph's advance (POV-Ray's placement).
+    Left,
+    /// The middle of the line's advance.
+    Center,
+    /// The end of the last glyph's advance.
+    Right,
+}
+
+impl TextAlign {
+    /// The names the language reads, in this order.
+    pub const NAMES: [&str; 3] = ["left", "center", "right"];
+
+    /// Its name in the language.
+    pub fn name(self) -> &'static str {
+        TextAlign::NAMES[self as usize]
+    }
+}
+
+/// One curve of a glyph's outline, in em units, placed on the line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GlyphCurve {
+    /// A straight segment.
+    Line([DVec2; 2]),
+    /// A quadratic Bézier curve (TrueType).
+    Quad([DVec2; 3]),
+    /// A cubic Bézier curve (CFF / OpenType).
+    Cubic([DVec2; 4]),
+}
+
+/// A text's outlines: per glyph, its closed contours as one list of curves (nonzero fill).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TextGlyphs {
+    /// The glyphs with an outline (a space has none), in order.
+    pub glyphs: Vec<Vec<GlyphCurve>>,
 }

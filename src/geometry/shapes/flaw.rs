@@ -12,6 +12,8 @@ pub(crate) const OUT_OF_RANGE: &str = "rtc::param::out_of_range";
 pub(crate) const DEGENERATE: &str = "rtc::param::degenerate";
 /// Code of a polygon whose points are not in one plane.
 pub(crate) const NOT_PLANAR: &str = "rtc::param::not_planar";
+/// Code of a prism outline that does not come back to its start.
+pub(crate) const NOT_CLOSED: &str = "rtc::param::not_closed";
 /// Code of a CSG node with fewer than two operands.
 pub(crate) const CSG_OPERANDS: &str = "rtc::csg::operands";
 

@@ -18,13 +18,16 @@ pub(crate) mod csg;
 mod cuboid;
 mod cylinder;
 mod disk;
+pub(crate) mod extrusion;
 mod parallelogram;
 pub(crate) mod plane;
 mod polygon;
+mod prism;
 mod quadric;
 mod quartic;
 mod ring;
 pub(crate) mod sphere;
+mod text;
 mod torus;
 pub(crate) mod triangle;
 
@@ -37,6 +40,7 @@ use crate::geometry::shapes::cone::Cone;
 use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
+use crate::geometry::shapes::extrusion::Extrusion;
 use crate::geometry::shapes::parallelogram::Quad;
 use crate::geometry::shapes::polygon::Polygon;
 use crate::geometry::shapes::quadric::Quadric;
@@ -49,7 +53,7 @@ use crate::ir::{CsgOp, Shape};
 mod flaw;
 mod rules;
 
-pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
+pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 pub(crate) use rules::leaf;
 
 /// Whether `shape` can be drawn: `Ok` for every valid shape, a mesh (its file is checked when
@@ -126,6 +130,8 @@ pub(crate) enum Leaf {
     Blob(Box<Blob>),
     /// A quadric surface.
     Quadric(Box<Quadric>),
+    /// A swept outline: a prism or a text.
+    Extrusion(Box<Extrusion>),
 }
 
 impl Leaf {
@@ -145,6 +151,7 @@ impl Leaf {
             Leaf::Torus(x) => x.bounds(),
             Leaf::Blob(x) => x.bounds(),
             Leaf::Quadric(x) => x.bounds(),
+            Leaf::Extrusion(x) => x.bounds(),
         }
     }
 
@@ -165,6 +172,7 @@ impl Leaf {
             Leaf::Torus(x) => x.intersect(r, t_min, t_max),
             Leaf::Blob(x) => x.intersect(r, t_min, t_max),
             Leaf::Quadric(x) => x.intersect(r, t_min, t_max),
+            Leaf::Extrusion(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -185,6 +193,7 @@ impl Leaf {
             Leaf::Torus(x) => x.point_error(p),
             Leaf::Blob(x) => x.point_error(p),
             Leaf::Quadric(x) => x.point_error(p),
+            Leaf::Extrusion(x) => x.point_error(p),
         }
     }
 
@@ -208,6 +217,7 @@ impl Leaf {
             Leaf::Torus(x) => x.crossings(r, out),
             Leaf::Blob(x) => x.crossings(r, out),
             Leaf::Quadric(x) => x.crossings(r, out),
+            Leaf::Extrusion(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -227,6 +237,7 @@ impl Leaf {
             Leaf::Torus(t) => t.contains(q),
             Leaf::Blob(b) => b.contains(q),
             Leaf::Quadric(x) => x.contains(q),
+            Leaf::Extrusion(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -317,6 +328,8 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Box { .. }
         | Shape::Torus { .. }
         | Shape::Quadric { .. }
-        | Shape::Blob { .. } => true,
+        | Shape::Blob { .. }
+        | Shape::Prism { .. }
+        | Shape::Text { .. } => true,
     }
 }

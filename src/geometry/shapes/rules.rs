@@ -3,24 +3,27 @@
 
 use crate::num::Norm;
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use crate::diag::number;
-use crate::ir::{Shape, Spindle};
+use crate::ir::{PrismSweep, Shape, Spindle, Spline};
 
 use super::blob::Blob;
 use super::cone::Cone;
 use super::cuboid::Cuboid;
 use super::cylinder::Cylinder;
 use super::disk::Disk;
+use super::extrusion::Sweep;
 use super::flaw::{finite, in_range, positive, vec3};
 use super::parallelogram::Quad;
 use super::polygon::{Polygon, PolygonError};
+use super::prism::{self, OutlineError};
 use super::quadric::Quadric;
 use super::ring::Ring;
+use super::text;
 use super::torus::Torus;
 use super::triangle::Triangle;
-use super::{DEGENERATE, Leaf, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
+use super::{DEGENERATE, Leaf, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 
 /// The intersectable form of a shape other than a mesh or a CSG node (which the preparation
 /// stage assembles from loaded files and prepared operands), or its flaw.
@@ -269,6 +272,27 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 constant: *constant,
             }))
         }
+        Shape::Prism {
+            points,
+            heights,
+            spline,
+            sweep,
+        } => prism_leaf(points, *heights, *spline, *sweep)?,
+        Shape::Text {
+            thickness, glyphs, ..
+        } => {
+            positive("thickness", *thickness)?;
+            Leaf::Extrusion(Box::new(text::build(glyphs, *thickness).ok_or_else(
+                || {
+                    ShapeFlaw::degenerate(
+                        "string",
+                        "the text has no glyph with an outline",
+                        "only spaces, or glyphs the font draws empty",
+                        "give a string with at least one visible character",
+                    )
+                },
+            )?))
+        }
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
@@ -288,4 +312,94 @@ fn ends_coincide() -> ShapeFlaw {
         "zero height",
         "move `top` away from `base`",
     )
+}
+
+/// A prism's rules: heights in order (and not below the apex for a conic sweep), enough points
+/// for the spline, every sub-outline closed, some area.
+fn prism_leaf(
+    points: &[DVec2],
+    heights: [f64; 2],
+    spline: Spline,
+    sweep: PrismSweep,
+) -> Result<Leaf, ShapeFlaw> {
+    let [h0, h1] = heights;
+    in_range(h0.is_finite(), "heights", "finite", h0)?;
+    in_range(h1.is_finite(), "heights", "finite", h1)?;
+    if h1 <= h0 {
+        return Err(ShapeFlaw::other(
+            "heights",
+            OUT_OF_RANGE,
+            "a prism's `heights` must be `[low, high]` with low < high",
+            format!("[{}, {}]", number(h0), number(h1)),
+            format!(
+                "write `heights: [{}, {}]`",
+                number(h1.min(h0)),
+                number(h1.max(h0) + if h1 == h0 { 1.0 } else { 0.0 })
+            ),
+        ));
+    }
+    let conic = sweep == PrismSweep::Conic;
+    if conic && h0 < 0.0 {
+        return Err(ShapeFlaw::other(
+            "heights",
+            OUT_OF_RANGE,
+            "a conic prism's heights must be at least 0 (the apex is at the origin)",
+            format!("low height {}", number(h0)),
+            "write `heights: [0, 1]` and place the prism with `.translate(..)`",
+        ));
+    }
+    if points.iter().any(|p| !p.is_finite()) {
+        return Err(ShapeFlaw::range("points", "finite", f64::NAN));
+    }
+    let subs = prism::outline(points, spline).map_err(|e| {
+        let name = spline.name();
+        match e {
+            OutlineError::TooFew => ShapeFlaw::other(
+                "points",
+                OUT_OF_RANGE,
+                format!(
+                    "a {name} prism needs at least {} points, found {}",
+                    spline.min_points(),
+                    points.len()
+                ),
+                "too few points",
+                match spline {
+                    Spline::Linear => "list three or more corners and repeat the first at the end",
+                    Spline::Quadratic => "add a control point before the first corner and repeat the first corner at the end",
+                    Spline::Cubic => "add a control point before the first corner, repeat the first corner, then one control point after it",
+                    Spline::Bezier => "give four points per segment: start, two controls, end",
+                },
+            ),
+            OutlineError::NotFours => ShapeFlaw::other(
+                "points",
+                OUT_OF_RANGE,
+                format!("a bezier prism needs four points per segment, found {}", points.len()),
+                format!("{} points is not a multiple of 4", points.len()),
+                "give each segment as start, control, control, end",
+            ),
+            OutlineError::NotClosed => ShapeFlaw::other(
+                "points",
+                NOT_CLOSED,
+                format!("the {name} prism's outline does not close"),
+                "a sub-outline does not come back to its first point",
+                match spline {
+                    Spline::Linear => "repeat the first point of each sub-outline at its end",
+                    Spline::Quadratic => "end each sub-outline with its first corner (the point after its control point)",
+                    Spline::Cubic => "end each sub-outline with its first corner (the point after its control point), then one more control point",
+                    Spline::Bezier => "end the last segment of each sub-outline on the first segment's start point",
+                },
+            ),
+        }
+    })?;
+    let how = if conic { Sweep::Conic } else { Sweep::Linear };
+    Ok(Leaf::Extrusion(Box::new(
+        prism::build(&subs, how, h0, h1).ok_or_else(|| {
+            ShapeFlaw::degenerate(
+                "points",
+                "the prism's outline encloses no area",
+                "its points lie on one line",
+                "spread the points out so they enclose an area",
+            )
+        })?,
+    )))
 }
