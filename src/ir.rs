@@ -29,7 +29,7 @@ pub(crate) use flare::Flare;
 pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share};
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
-pub use object::{BlobComponent, CsgOp, Object, Shape, Visibility};
+pub use object::{BlobComponent, CsgOp, Object, Shape, Spline, Visibility, poly_terms};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{

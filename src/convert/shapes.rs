@@ -237,6 +237,7 @@ fn argument(a: &Arg, asset: AssetPath<'_>) -> String {
         Arg::Direction(n) => unit_direction(*n),
         Arg::Bool(b) => b.to_string(),
         Arg::Path(p) => string(&asset(p)),
+        Arg::Word(w) => string(w),
         Arg::List(items) => {
             let items: Vec<String> = items.iter().map(|x| argument(x, asset)).collect();
             format!("[{}]", items.join(", "))

@@ -1,5 +1,5 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
-//! in `mesh`).
+//! in `mesh`, lathes, superellipsoids and polynomial surfaces in `revolve`).
 
 use glam::DVec3;
 
@@ -18,10 +18,12 @@ mod common;
 mod compound;
 mod flat;
 mod mesh;
+mod revolve;
 
 use common::{checked, direction, point, radius, unit_dir};
 
 pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed};
+pub(crate) use revolve::FNS as REVOLVE_FNS;
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
 /// geometry's shape rules once the shape is made (`checked`), which name the parameter to

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape};
+use super::object::{BlobComponent, Shape, Spline};
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,6 +34,8 @@ pub enum Arg {
     List(Vec<Arg>),
     /// A record of named fields.
     Record(Vec<(&'static str, Arg)>),
+    /// A name from a fixed set (a lathe's `spline`), written as a string.
+    Word(&'static str),
 }
 
 impl Shape {
@@ -182,6 +184,31 @@ impl Shape {
                     ],
                 )
             }
+            Shape::Lathe { points, spline } => {
+                let pair = |p: &[f64; 2]| List(vec![Number(p[0]), Number(p[1])]);
+                let mut a = vec![("points", List(points.iter().map(pair).collect()))];
+                if *spline != Spline::Linear {
+                    a.push(("spline", Arg::Word(spline.name())));
+                }
+                ("lathe", a)
+            }
+            Shape::Superellipsoid { e, n } => (
+                "superellipsoid",
+                vec![("e", Number(*e)), ("n", Number(*n))],
+            ),
+            Shape::Poly {
+                order,
+                coefficients,
+            } => (
+                "poly",
+                vec![
+                    ("order", Number(f64::from(*order))),
+                    (
+                        "coefficients",
+                        List(coefficients.iter().map(|c| Number(*c)).collect()),
+                    ),
+                ],
+            ),
             Shape::Mesh {
                 path,
                 smooth,

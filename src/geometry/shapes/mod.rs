@@ -18,13 +18,16 @@ pub(crate) mod csg;
 mod cuboid;
 mod cylinder;
 mod disk;
+mod lathe;
 mod parallelogram;
 pub(crate) mod plane;
+mod poly;
 mod polygon;
 mod quadric;
 mod quartic;
 mod ring;
 pub(crate) mod sphere;
+mod superellipsoid;
 mod torus;
 pub(crate) mod triangle;
 
@@ -37,10 +40,13 @@ use crate::geometry::shapes::cone::Cone;
 use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
+use crate::geometry::shapes::lathe::Lathe;
 use crate::geometry::shapes::parallelogram::Quad;
+use crate::geometry::shapes::poly::Poly;
 use crate::geometry::shapes::polygon::Polygon;
 use crate::geometry::shapes::quadric::Quadric;
 use crate::geometry::shapes::ring::Ring;
+use crate::geometry::shapes::superellipsoid::Superellipsoid;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::MappingFrame, ray::Ray};
@@ -110,6 +116,12 @@ pub(crate) enum Leaf {
     Blob(Box<Blob>),
     /// A quadric surface.
     Quadric(Box<Quadric>),
+    /// A lathe.
+    Lathe(Box<Lathe>),
+    /// A superellipsoid.
+    Superellipsoid(Superellipsoid),
+    /// An algebraic surface.
+    Poly(Box<Poly>),
 }
 
 impl Leaf {
@@ -129,6 +141,9 @@ impl Leaf {
             Leaf::Torus(x) => x.bounds(),
             Leaf::Blob(x) => x.bounds(),
             Leaf::Quadric(x) => x.bounds(),
+            Leaf::Lathe(x) => x.bounds(),
+            Leaf::Superellipsoid(x) => x.bounds(),
+            Leaf::Poly(x) => x.bounds(),
         }
     }
 
@@ -149,6 +164,9 @@ impl Leaf {
             Leaf::Torus(x) => x.intersect(r, t_min, t_max),
             Leaf::Blob(x) => x.intersect(r, t_min, t_max),
             Leaf::Quadric(x) => x.intersect(r, t_min, t_max),
+            Leaf::Lathe(x) => x.intersect(r, t_min, t_max),
+            Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
+            Leaf::Poly(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -169,6 +187,9 @@ impl Leaf {
             Leaf::Torus(x) => x.point_error(p),
             Leaf::Blob(x) => x.point_error(p),
             Leaf::Quadric(x) => x.point_error(p),
+            Leaf::Lathe(x) => x.point_error(p),
+            Leaf::Superellipsoid(x) => x.point_error(p),
+            Leaf::Poly(x) => x.point_error(p),
         }
     }
 
@@ -192,6 +213,9 @@ impl Leaf {
             Leaf::Torus(x) => x.crossings(r, out),
             Leaf::Blob(x) => x.crossings(r, out),
             Leaf::Quadric(x) => x.crossings(r, out),
+            Leaf::Lathe(x) => x.crossings(r, out),
+            Leaf::Superellipsoid(x) => x.crossings(r, out),
+            Leaf::Poly(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -211,6 +235,9 @@ impl Leaf {
             Leaf::Torus(t) => t.contains(q),
             Leaf::Blob(b) => b.contains(q),
             Leaf::Quadric(x) => x.contains(q),
+            Leaf::Lathe(x) => x.contains(q),
+            Leaf::Superellipsoid(x) => x.contains(q),
+            Leaf::Poly(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -220,7 +247,7 @@ impl Leaf {
     }
 
     /// Whether the line of `r` starts (at t → −∞) inside (only a half-space or an unbounded
-    /// quadric can).
+    /// quadric or polynomial surface can).
     pub(crate) fn inside_at_start(&self, r: &Ray) -> bool {
         match self {
             Leaf::Plane { point, normal } => {
@@ -228,6 +255,7 @@ impl Leaf {
                 dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
             }
             Leaf::Quadric(x) => x.inside_at_start(r),
+            Leaf::Poly(x) => x.inside_at_start(r),
             _ => false,
         }
     }
@@ -281,6 +309,9 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Box { .. }
         | Shape::Torus { .. }
         | Shape::Quadric { .. }
+        | Shape::Lathe { .. }
+        | Shape::Superellipsoid { .. }
+        | Shape::Poly { .. }
         | Shape::Blob { .. } => true,
     }
 }
