@@ -1,15 +1,17 @@
 //! Issue 38's shapes (lathe, superellipsoid, poly) over 10 000 random rays each, with and
 //! without a mirrored, non-uniformly scaled transform: no NaN, the hit lies on the surface
 //! (checked against formulas written here, independent of the library), the normal is unit and
-//! faces out, and the bounds hold every hit; and a scene of them renders the same image scaled
+//! faces out, a ray leaving the hit does not meet the surface again nearby, and the bounds hold
+//! every hit; and a scene of them renders the same image scaled
 //! by a transform from 10⁻⁶ to 10⁸.
 
 mod geometry_support;
 mod numerics_support;
 
-use geometry_support::{Rng, mirrored_transform, object, ray_at_box, world};
+use geometry_support::{Rng, hemisphere, mirrored_transform, object, ray_at_box, world};
 use glam::{DAffine3, DVec2, DVec3};
 use numerics_support::{differing_by, render_rtc, share};
+use rtc::geometry::Ray;
 use rtc::ir::{Shape, Spline, poly_terms};
 use rtc::num::Norm;
 
@@ -219,6 +221,18 @@ fn check(case: &Case, xf: DAffine3, seed: u64) {
                 bounds.contains(h.point, 1e-9 * world_scale),
                 "{ctx}: outside the bounds {bounds:?}"
             );
+        }
+        // A ray leaving the surface (~12° or more above its tangent plane) from the point
+        // spawned as the renderer spawns it does not meet the surface again nearby.
+        let dir = loop {
+            let d = hemisphere(&mut rng, h.normal);
+            if d.dot(h.normal) > 0.2 {
+                break d;
+            }
+        };
+        let again = Ray::new(h.point + 1e-7 * world_scale * h.normal, dir);
+        if let Some(h2) = w.intersect(&again, 0.0, 1e-4 * world_scale) {
+            panic!("{ctx}: re-hit its own surface at t = {:e}", h2.t);
         }
     }
     let share = hits as f64 / RAYS as f64;

@@ -192,10 +192,9 @@ impl Shape {
                 }
                 ("lathe", a)
             }
-            Shape::Superellipsoid { e, n } => (
-                "superellipsoid",
-                vec![("e", Number(*e)), ("n", Number(*n))],
-            ),
+            Shape::Superellipsoid { e, n } => {
+                ("superellipsoid", vec![("e", Number(*e)), ("n", Number(*n))])
+            }
             Shape::Poly {
                 order,
                 coefficients,

@@ -112,14 +112,10 @@ static SUPERELLIPSOID: Sig = Sig::new(
         .range(Range::Between(0.001, 10.0))
         .checked_by_builtin()
         .or(Lit::Float(1.0)),
-        Param::new(
-            "n",
-            Ty::Float,
-            "the squareness along z (in 0.001..=10)",
-        )
-        .range(Range::Between(0.001, 10.0))
-        .checked_by_builtin()
-        .or(Lit::Float(1.0)),
+        Param::new("n", Ty::Float, "the squareness along z (in 0.001..=10)")
+            .range(Range::Between(0.001, 10.0))
+            .checked_by_builtin()
+            .or(Lit::Float(1.0)),
     ],
     "Object",
 )
@@ -153,9 +149,7 @@ static POLY: Sig = Sig::new(
     ],
     "Object",
 )
-.examples(&[
-    "poly(order: 2, coefficients: [1, 0, 0, 0, 1, 0, 0, 1, 0, -1])  // the unit sphere",
-]);
+.examples(&["poly(order: 2, coefficients: [1, 0, 0, 0, 1, 0, 0, 1, 0, -1])  // the unit sphere"]);
 fn poly(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &POLY, a)?;
     let (order, os) = p.int(it, "order")?;

@@ -167,8 +167,7 @@ impl Lathe {
         let start = DVec2::new(eval(&first.r, 0.0), eval(&first.y, 0.0));
         let end = DVec2::new(eval(&last.r, 1.0), eval(&last.y, 1.0));
         area2 += end.perp_dot(start);
-        if !(r_max > 0.0 && y_hi > y_lo && area2 != 0.0 && r_max.is_finite() && y_hi.is_finite())
-        {
+        if !(r_max > 0.0 && y_hi > y_lo && area2 != 0.0 && r_max.is_finite() && y_hi.is_finite()) {
             return None;
         }
         Some(Lathe {
@@ -187,7 +186,11 @@ impl Lathe {
     }
 
     fn size(&self) -> f64 {
-        self.bounds.max.x.max(self.bounds.max.y.abs()).max(self.bounds.min.y.abs())
+        self.bounds
+            .max
+            .x
+            .max(self.bounds.max.y.abs())
+            .max(self.bounds.min.y.abs())
     }
 
     /// Every root along the whole line of `ray`: `f(t, segment, s)`, unordered.
@@ -221,9 +224,8 @@ impl Lathe {
             let mut yy = seg.y;
             yy[0] -= o.y;
             // Two t on the circle of radius r(s) in the ray's horizontal plane.
-            let circle = |r: f64| {
-                crate::geometry::shapes::quartic::quadratic(hd2, 2.0 * hod, ho2 - r * r)
-            };
+            let circle =
+                |r: f64| crate::geometry::shapes::quartic::quadratic(hd2, 2.0 * hod, ho2 - r * r);
             if d.y.abs() <= FLAT {
                 each_root(&yy, -1e-9, 1.0 + 1e-9, |s| {
                     if keep(s) {
@@ -368,7 +370,10 @@ impl Lathe {
             // Off every segment's lines (a point at a profile's extreme): the box is a bound.
             dist = size;
         }
-        rounding::from_residual(dist, 64, size)
+        // The roots in s are found to about 1e-12 of the segment, but a degree-6 polynomial's
+        // conditioning turns that into up to ~1e-10 of the shape's size along the ray: a
+        // spawned ray must start beyond it or it meets its own surface again (acne).
+        rounding::from_residual(dist, 64, size) + DVec3::splat(1e-9 * size)
     }
 }
 

@@ -289,7 +289,12 @@ mod tests {
         p.crossings(&r, &mut out);
         let ts: Vec<f64> = out.iter().map(|c| c.hit.t).collect();
         let x = (0.25f64 - 0.01).sqrt();
-        let want = [10.0 - 2.0 - x, 10.0 - 2.0 + x, 10.0 + 2.0 - x, 10.0 + 2.0 + x];
+        let want = [
+            10.0 - 2.0 - x,
+            10.0 - 2.0 + x,
+            10.0 + 2.0 - x,
+            10.0 + 2.0 + x,
+        ];
         assert_eq!(ts.len(), 4, "{ts:?}");
         for (got, w) in ts.iter().zip(want) {
             assert!((got - w).abs() < 1e-10, "{got} vs {w}");

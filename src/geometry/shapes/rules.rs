@@ -12,9 +12,9 @@ use super::blob::Blob;
 use super::cone::Cone;
 use super::cuboid::Cuboid;
 use super::cylinder::Cylinder;
-use super::lathe::{Lathe, segment_count};
 use super::disk::Disk;
 use super::flaw::{finite, in_range, positive, vec3};
+use super::lathe::{Lathe, segment_count};
 use super::parallelogram::Quad;
 use super::poly::Poly;
 use super::polygon::{Polygon, PolygonError};
@@ -334,7 +334,12 @@ fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFlaw> {
                 "use finite `[r, y]` pairs",
             ));
         }
-        in_range(p[0] >= 0.0, "points", "r >= 0 (the profile is right of the axis)", p[0])?;
+        in_range(
+            p[0] >= 0.0,
+            "points",
+            "r >= 0 (the profile is right of the axis)",
+            p[0],
+        )?;
     }
     debug_assert!(segment_count(spline, points.len()) > 0);
     Ok(Leaf::Lathe(Box::new(Lathe::new(points, spline).ok_or_else(
@@ -352,7 +357,12 @@ fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFlaw> {
 /// A polynomial surface's rules: an order from 2 to 15, one finite coefficient per term, and
 /// a non-zero one besides the constant.
 fn poly(order: u32, coefficients: &[f64]) -> Result<Leaf, ShapeFlaw> {
-    in_range((2..=15).contains(&order), "order", "in 2..=15", f64::from(order))?;
+    in_range(
+        (2..=15).contains(&order),
+        "order",
+        "in 2..=15",
+        f64::from(order),
+    )?;
     let terms = poly_terms(order);
     if coefficients.len() != terms.len() {
         return Err(ShapeFlaw::other(
