@@ -228,13 +228,14 @@ impl Lathe {
                 |r: f64| crate::geometry::shapes::quartic::quadratic(hd2, 2.0 * hod, ho2 - r * r);
             if d.y.abs() <= FLAT {
                 each_root(&yy, -1e-9, 1.0 + 1e-9, |s| {
-                    if keep(s) {
-                        if let Some((ta, tb)) = circle(eval(&seg.r, s)) {
-                            if ta < tb {
-                                f(t0 + ta / len, k, s);
-                                f(t0 + tb / len, k, s);
-                            }
-                        }
+                    if !keep(s) {
+                        return;
+                    }
+                    if let Some((ta, tb)) = circle(eval(&seg.r, s))
+                        && ta < tb
+                    {
+                        f(t0 + ta / len, k, s);
+                        f(t0 + tb / len, k, s);
                     }
                 });
                 continue;

@@ -308,7 +308,7 @@ fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFlaw> {
         Spline::Bezier => (4, "4 points per segment"),
     };
     let name = spline.name();
-    if points.len() < least || (spline == Spline::Bezier && points.len() % 4 != 0) {
+    if points.len() < least || (spline == Spline::Bezier && !points.len().is_multiple_of(4)) {
         return Err(ShapeFlaw::other(
             "points",
             OUT_OF_RANGE,
