@@ -31,7 +31,7 @@ pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use object::{
     BlobComponent, CsgOp, GlyphCurve, Object, PrismSweep, Shape, Spindle, Spline, TextAlign,
-    TextGlyphs, Visibility,
+    TextGlyphs, Visibility, poly_terms,
 };
 pub use placement::Transform;
 pub use provenance::Provenance;

@@ -1,5 +1,6 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
-//! in `mesh`, prisms and text in `extrude`).
+//! in `mesh`, prisms and text in `extrude`, lathes, superellipsoids and polynomial surfaces in
+//! `revolve`).
 
 use glam::DVec3;
 
@@ -19,10 +20,12 @@ mod compound;
 mod extrude;
 mod flat;
 mod mesh;
+mod revolve;
 
 use common::{checked, direction, point, radius, unit_dir};
 
 pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed, require_closed_to};
+pub(crate) use revolve::FNS as REVOLVE_FNS;
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
 /// geometry's shape rules once the shape is made (`checked`), which name the parameter to
@@ -293,14 +296,13 @@ fn torus(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (center, _) = p.vec3(it, "center")?;
     let (spindle, ss) = match p.get("spindle") {
         None => (Spindle::default(), s.span),
-        Some((Value::Str(name), sp)) => match Spindle::NAMES.iter().find(|(n, _)| **n == *name) {
-            Some((_, mode)) => (*mode, sp),
-            None => {
-                let choices = Spindle::NAMES.map(|(n, _)| n);
-                let e = crate::eval::texture_methods::bad_choice("spindle", &name, &choices, sp);
-                return Err(e.into());
-            }
-        },
+        Some((Value::Str(name), sp)) => {
+            let names = Spindle::NAMES.map(|(n, _)| n);
+            (
+                Spindle::NAMES[common::choice(&name, &names, "spindle", sp)?].1,
+                sp,
+            )
+        }
         Some((other, sp)) => return Err(types::mismatch(it, "String", &other, sp).into()),
     };
     checked(

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape, Spindle};
+use super::object::{BlobComponent, Shape, Spindle, Spline};
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -190,6 +190,30 @@ impl Shape {
                     ],
                 )
             }
+            Shape::Lathe { points, spline } => {
+                let pair = |p: &[f64; 2]| List(vec![Number(p[0]), Number(p[1])]);
+                let mut a = vec![("points", List(points.iter().map(pair).collect()))];
+                if *spline != Spline::Linear {
+                    a.push(("spline", Arg::Str(spline.name().to_string())));
+                }
+                ("lathe", a)
+            }
+            Shape::Superellipsoid { e, n } => {
+                ("superellipsoid", vec![("e", Number(*e)), ("n", Number(*n))])
+            }
+            Shape::Poly {
+                order,
+                coefficients,
+            } => (
+                "poly",
+                vec![
+                    ("order", Number(f64::from(*order))),
+                    (
+                        "coefficients",
+                        List(coefficients.iter().map(|c| Number(*c)).collect()),
+                    ),
+                ],
+            ),
             Shape::Mesh {
                 path,
                 smooth,

@@ -172,6 +172,30 @@ pub enum Shape {
         /// `J`: the constant.
         constant: f64,
     },
+    /// A lathe (POV-Ray's `lathe`): a profile of `[r, y]` points joined by `spline`, revolved
+    /// about the +Y axis.
+    Lathe {
+        /// Profile points `[r, y]` (r ≥ 0).
+        points: Vec<[f64; 2]>,
+        /// How the points are joined.
+        spline: Spline,
+    },
+    /// A superellipsoid (POV-Ray's `superellipsoid { <e, n> }`) in the cube [-1, 1]³:
+    /// `(|x|^(2/e) + |z|^(2/e))^(e/n) + |y|^(2/n) = 1`, its round sections about the Y axis.
+    Superellipsoid {
+        /// East-west exponent (the sections' squareness).
+        e: f64,
+        /// North-south exponent (the profile's squareness).
+        n: f64,
+    },
+    /// An algebraic surface (POV-Ray's `poly`, `cubic`, `quartic`): the zeros of a polynomial
+    /// of `order` in x, y, z, inside where it is negative (usually unbounded).
+    Poly {
+        /// The total degree (2 to 15).
+        order: u32,
+        /// The coefficients in POV-Ray's order (see [`crate::ir::poly_terms`]).
+        coefficients: Vec<f64>,
+    },
     /// Metaballs: the surface where the summed field equals `threshold`.
     Blob {
         /// Field sources.
@@ -244,10 +268,85 @@ impl Shape {
             Shape::Blob { .. } => "blob",
             Shape::Prism { .. } => "prism",
             Shape::Text { .. } => "text",
+            Shape::Lathe { .. } => "lathe",
+            Shape::Superellipsoid { .. } => "superellipsoid",
+            Shape::Poly { .. } => "poly",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }
     }
+}
+
+/// How a prism's outline or a lathe's profile points are joined (POV-Ray's spline kinds).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spline {
+    /// Straight segments between neighbours.
+    Linear,
+    /// A segment from `p[i+1]` to `p[i+2]`, shaped by `p[i]` (POV-Ray's quadratic spline); the
+    /// first point only steers.
+    Quadratic,
+    /// A segment from `p[i+1]` to `p[i+2]` with `p[i]` and `p[i+3]` as neighbours (POV-Ray's
+    /// Catmull-Rom-like cubic spline); the first and last points only steer.
+    Cubic,
+    /// Cubic Bézier segments, four points each.
+    Bezier,
+}
+
+impl Spline {
+    /// The names the language reads, in the variants' order.
+    pub const NAMES: [&str; 4] = ["linear", "quadratic", "cubic", "bezier"];
+
+    /// The spline called `name`.
+    pub fn named(name: &str) -> Option<Spline> {
+        Spline::NAMED
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, s)| *s)
+    }
+
+    /// The fewest points a prism's outline needs (POV-Ray's counts).
+    pub fn min_points(self) -> usize {
+        match self {
+            Spline::Linear => 3,
+            Spline::Quadratic => 5,
+            Spline::Cubic => 6,
+            Spline::Bezier => 4,
+        }
+    }
+
+    /// Every kind with its name, as the language spells it.
+    pub const NAMED: [(&'static str, Spline); 4] = [
+        ("linear", Spline::Linear),
+        ("quadratic", Spline::Quadratic),
+        ("cubic", Spline::Cubic),
+        ("bezier", Spline::Bezier),
+    ];
+
+    /// Its name in the language.
+    pub fn name(self) -> &'static str {
+        Spline::NAMED
+            .iter()
+            .find(|(_, s)| *s == self)
+            .map_or("linear", |(n, _)| n)
+    }
+}
+
+/// The exponents `[i, j, k]` of x, y, z of each coefficient of a POV-Ray `poly` of `order`, in
+/// POV-Ray's order: total degree falling, then the x exponent falling, then y's (so order 2
+/// is x², xy, xz, x, y², yz, y, z², z, 1). The variables are rtc's own x, y, z (like
+/// `quadric`'s): a POV-Ray scene's coefficients carry over after negating those of odd powers
+/// of z, POV-Ray's z being rtc's −z.
+pub fn poly_terms(order: u32) -> Vec<[u32; 3]> {
+    let n = order;
+    let mut out = Vec::new();
+    for i in (0..=n).rev() {
+        for j in (0..=n - i).rev() {
+            for k in (0..=n - i - j).rev() {
+                out.push([i, j, k]);
+            }
+        }
+    }
+    out
 }
 
 /// One metaball.
@@ -314,51 +413,6 @@ impl Spindle {
             .iter()
             .find(|(_, m)| *m == self)
             .map_or("union", |(n, _)| n)
-    }
-}
-
-/// How a prism's points make its outline's segments (POV-Ray's spline kinds).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Spline {
-    /// Straight segments between consecutive points.
-    Linear,
-    /// A segment from `p[i+1]` to `p[i+2]`, shaped by `p[i]` (POV-Ray's quadratic spline).
-    Quadratic,
-    /// A segment from `p[i+1]` to `p[i+2]` with `p[i]` and `p[i+3]` as neighbours
-    /// (POV-Ray's Catmull-Rom-like cubic spline).
-    Cubic,
-    /// Groups of four points, each a cubic Bézier curve.
-    Bezier,
-}
-
-impl Spline {
-    /// The names the language reads, in this order.
-    pub const NAMES: [&str; 4] = ["linear", "quadratic", "cubic", "bezier"];
-
-    /// The spline called `name`.
-    pub fn named(name: &str) -> Option<Spline> {
-        Some(match name {
-            "linear" => Spline::Linear,
-            "quadratic" => Spline::Quadratic,
-            "cubic" => Spline::Cubic,
-            "bezier" => Spline::Bezier,
-            _ => return None,
-        })
-    }
-
-    /// Its name in the language.
-    pub fn name(self) -> &'static str {
-        Spline::NAMES[self as usize]
-    }
-
-    /// The fewest points an outline needs (POV-Ray's counts).
-    pub fn min_points(self) -> usize {
-        match self {
-            Spline::Linear => 3,
-            Spline::Quadratic => 5,
-            Spline::Cubic => 6,
-            Spline::Bezier => 4,
-        }
     }
 }
 

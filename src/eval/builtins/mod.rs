@@ -44,6 +44,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         fog::FNS,
         super::shapes::FNS,
         super::shapes::COMPOUND_FNS,
+        super::shapes::REVOLVE_FNS,
         super::transform::FNS,
         super::rng::FNS,
     ]

@@ -3,12 +3,13 @@
 
 use std::rc::Rc;
 
-use glam::{DAffine3, DVec3};
+use glam::{DAffine3, DVec2, DVec3};
 
 use crate::eval::args::{CallSite, Params};
-use crate::eval::error::R;
+use crate::eval::error::{R, error, suggest};
 use crate::eval::host::Host;
 use crate::eval::schema::{Lit, Param, Range, Ty, Unit};
+use crate::eval::types;
 use crate::eval::value::{Obj, ObjShape, Value};
 use crate::ir::Shape;
 use crate::num::Norm;
@@ -72,4 +73,38 @@ pub(super) fn prim(shape: Shape, span: Span) -> Value {
 /// The direction `name`, normalised (its default `Y` is a unit vector: `unit` keeps it).
 pub(super) fn unit_dir(it: &dyn Host, p: &mut Params, name: &str) -> R<DVec3> {
     Ok(p.vec3(it, name)?.0.unit())
+}
+
+/// A `[a, b]` pair of numbers.
+pub(super) fn pair(it: &dyn Host, v: &Value, span: Span) -> R<DVec2> {
+    match v {
+        Value::List(l) if l.len() == 2 => Ok(DVec2::new(
+            types::num(it, &l[0], span)?,
+            types::num(it, &l[1], span)?,
+        )),
+        other => Err(types::mismatch(it, "[Float, Float]", other, span).into()),
+    }
+}
+
+/// The index of `name` among `names`, or `rtc::param::choice` naming them.
+pub(super) fn choice(name: &str, names: &[&str], param: &str, span: Span) -> R<usize> {
+    if let Some(k) = names.iter().position(|n| *n == name) {
+        return Ok(k);
+    }
+    let list = names
+        .iter()
+        .map(|n| format!("\"{n}\""))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let help = suggest(name, names.iter().copied())
+        .map(|h| format!("{h}; `{param}` is one of {list}"))
+        .unwrap_or_else(|| format!("write one of {list}"));
+    Err(error(
+        "rtc::param::choice",
+        span,
+        format!("`{param}` cannot be \"{name}\""),
+    )
+    .with_label(format!("one of {list}"))
+    .with_help(help)
+    .into())
 }

@@ -9,19 +9,17 @@ use glam::DVec2;
 use crate::diag::Diagnostic;
 use crate::eval::args::Params;
 use crate::eval::args::{ArgVal, CallSite};
-use crate::eval::error::{R, error, suggest};
+use crate::eval::error::{R, error};
 use crate::eval::host::Host;
 use crate::eval::schema::{Lit, Param, Range, Sig, Ty, Unit};
 use crate::eval::types;
 use crate::eval::value::Value;
 use crate::ir::{PrismSweep, Shape, Spline, TextAlign};
-use crate::source::Span;
 
-use super::common::checked;
+use super::common::{checked, choice, pair};
 use crate::eval::schema::Group;
 
 /// Code of a string parameter that names none of its choices.
-const CHOICE: &str = "rtc::param::choice";
 
 /// `prism(points, heights, spline, sweep)`.
 pub(super) static PRISM: Sig = Sig::new(
@@ -220,37 +218,5 @@ pub(super) fn text(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         },
         s,
         &[("string", ss)],
-    )
-}
-
-/// A `[a, b]` pair of numbers.
-fn pair(it: &dyn Host, v: &Value, span: Span) -> R<DVec2> {
-    match v {
-        Value::List(l) if l.len() == 2 => Ok(DVec2::new(
-            types::num(it, &l[0], span)?,
-            types::num(it, &l[1], span)?,
-        )),
-        other => Err(types::mismatch(it, "[Float, Float]", other, span).into()),
-    }
-}
-
-/// The index of `name` among `names`, or `rtc::param::choice` naming them.
-fn choice(name: &str, names: &[&str], param: &str, span: Span) -> R<usize> {
-    if let Some(k) = names.iter().position(|n| *n == name) {
-        return Ok(k);
-    }
-    let list = names
-        .iter()
-        .map(|n| format!("\"{n}\""))
-        .collect::<Vec<_>>()
-        .join(", ");
-    let help = suggest(name, names.iter().copied())
-        .map(|h| format!("{h}; `{param}` is one of {list}"))
-        .unwrap_or_else(|| format!("write one of {list}"));
-    Err(
-        error(CHOICE, span, format!("`{param}` cannot be \"{name}\""))
-            .with_label(format!("one of {list}"))
-            .with_help(help)
-            .into(),
     )
 }

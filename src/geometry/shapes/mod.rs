@@ -19,14 +19,17 @@ mod cuboid;
 mod cylinder;
 mod disk;
 pub(crate) mod extrusion;
+mod lathe;
 mod parallelogram;
 pub(crate) mod plane;
+mod poly;
 mod polygon;
 mod prism;
 mod quadric;
 mod quartic;
 mod ring;
 pub(crate) mod sphere;
+mod superellipsoid;
 mod text;
 mod torus;
 pub(crate) mod triangle;
@@ -41,10 +44,13 @@ use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::extrusion::Extrusion;
+use crate::geometry::shapes::lathe::Lathe;
 use crate::geometry::shapes::parallelogram::Quad;
+use crate::geometry::shapes::poly::Poly;
 use crate::geometry::shapes::polygon::Polygon;
 use crate::geometry::shapes::quadric::Quadric;
 use crate::geometry::shapes::ring::Ring;
+use crate::geometry::shapes::superellipsoid::Superellipsoid;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::MappingFrame, ray::Ray};
@@ -132,6 +138,12 @@ pub(crate) enum Leaf {
     Quadric(Box<Quadric>),
     /// A swept outline: a prism or a text.
     Extrusion(Box<Extrusion>),
+    /// A lathe.
+    Lathe(Box<Lathe>),
+    /// A superellipsoid.
+    Superellipsoid(Superellipsoid),
+    /// An algebraic surface.
+    Poly(Box<Poly>),
 }
 
 impl Leaf {
@@ -152,6 +164,9 @@ impl Leaf {
             Leaf::Blob(x) => x.bounds(),
             Leaf::Quadric(x) => x.bounds(),
             Leaf::Extrusion(x) => x.bounds(),
+            Leaf::Lathe(x) => x.bounds(),
+            Leaf::Superellipsoid(x) => x.bounds(),
+            Leaf::Poly(x) => x.bounds(),
         }
     }
 
@@ -173,6 +188,9 @@ impl Leaf {
             Leaf::Blob(x) => x.intersect(r, t_min, t_max),
             Leaf::Quadric(x) => x.intersect(r, t_min, t_max),
             Leaf::Extrusion(x) => x.intersect(r, t_min, t_max),
+            Leaf::Lathe(x) => x.intersect(r, t_min, t_max),
+            Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
+            Leaf::Poly(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -194,6 +212,9 @@ impl Leaf {
             Leaf::Blob(x) => x.point_error(p),
             Leaf::Quadric(x) => x.point_error(p),
             Leaf::Extrusion(x) => x.point_error(p),
+            Leaf::Lathe(x) => x.point_error(p),
+            Leaf::Superellipsoid(x) => x.point_error(p),
+            Leaf::Poly(x) => x.point_error(p),
         }
     }
 
@@ -218,6 +239,9 @@ impl Leaf {
             Leaf::Blob(x) => x.crossings(r, out),
             Leaf::Quadric(x) => x.crossings(r, out),
             Leaf::Extrusion(x) => x.crossings(r, out),
+            Leaf::Lathe(x) => x.crossings(r, out),
+            Leaf::Superellipsoid(x) => x.crossings(r, out),
+            Leaf::Poly(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -238,6 +262,9 @@ impl Leaf {
             Leaf::Blob(b) => b.contains(q),
             Leaf::Quadric(x) => x.contains(q),
             Leaf::Extrusion(x) => x.contains(q),
+            Leaf::Lathe(x) => x.contains(q),
+            Leaf::Superellipsoid(x) => x.contains(q),
+            Leaf::Poly(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -247,7 +274,7 @@ impl Leaf {
     }
 
     /// Whether the line of `r` starts (at t → −∞) inside (only a half-space or an unbounded
-    /// quadric can).
+    /// quadric or polynomial surface can).
     pub(crate) fn inside_at_start(&self, r: &Ray) -> bool {
         match self {
             Leaf::Plane { point, normal } => {
@@ -255,6 +282,7 @@ impl Leaf {
                 dn > 0.0 || (dn == 0.0 && (r.origin - *point).dot(*normal) < 0.0)
             }
             Leaf::Quadric(x) => x.inside_at_start(r),
+            Leaf::Poly(x) => x.inside_at_start(r),
             _ => false,
         }
     }
@@ -330,6 +358,9 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Quadric { .. }
         | Shape::Blob { .. }
         | Shape::Prism { .. }
-        | Shape::Text { .. } => true,
+        | Shape::Text { .. }
+        | Shape::Lathe { .. }
+        | Shape::Superellipsoid { .. }
+        | Shape::Poly { .. } => true,
     }
 }

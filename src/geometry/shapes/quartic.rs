@@ -1,4 +1,5 @@
-//! Real roots of polynomials up to degree 4 on an interval, in f64.
+//! Real roots of polynomials up to degree 15 on an interval, in f64 (tori and blobs use
+//! degree 4, surfaces of revolution 6, algebraic surfaces up to 15).
 //!
 //! Closed-form quartic formulas lose most of their digits on grazing rays (two nearly equal
 //! roots), which shows as speckle. Instead the roots are isolated by the critical points of the
@@ -6,8 +7,9 @@
 //! neighbouring critical points the polynomial is monotone, so a sign change brackets exactly one
 //! root, which safeguarded Newton steps then polish to full precision.
 
-/// Maximum degree handled.
-const MAX_DEGREE: usize = 4;
+/// Maximum degree handled. A polynomial of degree `n` has at most `n` real roots, so every
+/// fixed-size list below holds them all; higher coefficients are ignored.
+pub(crate) const MAX_DEGREE: usize = 15;
 
 /// A root where the polynomial changes sign; `rising` is true when it goes from − to +.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -67,7 +69,7 @@ fn eval_d(c: &[f64], x: f64) -> (f64, f64) {
 }
 
 /// The sign-changing real roots of the polynomial with coefficients `c` (lowest degree first,
-/// at most degree 4) strictly inside `(a, b)`, in increasing order. Roots of even multiplicity
+/// at most degree [`MAX_DEGREE`]) strictly inside `(a, b)`, in increasing order. Roots of even multiplicity
 /// (a ray touching a surface) do not change the sign and are not reported.
 pub(crate) fn roots_in(c: &[f64], a: f64, b: f64) -> Roots {
     let mut deg = c.len().min(MAX_DEGREE + 1);
@@ -159,6 +161,20 @@ fn polish(c: &[f64], mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
         x = next;
     }
     x
+}
+
+/// A bound on the magnitude of every root (Cauchy's: `1 + max |c_i / c_deg|`), so the whole real
+/// line's roots are those in `(−bound, bound)`; `None` for a constant or non-finite polynomial.
+pub(crate) fn root_bound(c: &[f64]) -> Option<f64> {
+    let deg = c.iter().rposition(|&k| k != 0.0)?;
+    if deg == 0 {
+        return None;
+    }
+    let lead = c[deg].abs();
+    let m = c[..deg].iter().fold(0.0f64, |m, &k| m.max(k.abs() / lead));
+    let b = 1.0 + m;
+    // Doubling keeps the roots strictly inside, away from the open interval's ends.
+    (b.is_finite()).then_some(2.0 * b)
 }
 
 /// Both real roots of `a·t² + b·t + c` in increasing order (equal for a double root), using the
@@ -259,6 +275,75 @@ mod tests {
         let r: Vec<_> = roots_in(&c, 0.0, 3.5).iter().map(|r| r.t).collect();
         assert_eq!(r.len(), 1, "{r:?}");
         assert!((r[0] - 3.0).abs() < 1e-12);
+    }
+
+    fn found(c: &[f64], a: f64, b: f64) -> Vec<f64> {
+        roots_in(c, a, b).iter().map(|r| r.t).collect()
+    }
+
+    #[test]
+    fn degree_fifteen_with_integer_roots() {
+        let want: Vec<f64> = (-7..=7).map(f64::from).collect();
+        let c = from_roots(&want);
+        assert_eq!(c.len(), 16);
+        let r = found(&c, -20.0, 20.0);
+        assert_eq!(r.len(), 15, "{r:?}");
+        for (got, w) in r.iter().zip(&want) {
+            assert!((got - w).abs() < 1e-9, "{got} vs {w}");
+        }
+        // Signs alternate, the last one rising (positive leading coefficient, odd degree).
+        let rs: Vec<bool> = roots_in(&c, -20.0, 20.0).iter().map(|r| r.rising).collect();
+        assert!(rs.windows(2).all(|w| w[0] != w[1]) && rs[14]);
+    }
+
+    #[test]
+    fn clustered_roots_of_a_high_degree_polynomial() {
+        // Five roots within 0.04 of each other, plus far ones. (Closer clusters fall below
+        // what f64 coefficients can resolve: between roots 1e-3 apart the polynomial is ~1e-14,
+        // under the ~1e-13 rounding of evaluating it.)
+        let want = [0.99, 0.995, 1.0, 1.01, 1.03, -2.0, 4.0, 9.0];
+        let c = from_roots(&want);
+        let r = found(&c, -10.0, 10.0);
+        assert_eq!(r.len(), 8, "{r:?}");
+        let mut sorted = want;
+        sorted.sort_by(f64::total_cmp);
+        for (got, w) in r.iter().zip(sorted) {
+            // The cluster's roots are conditioned by p' ~ 3e-9 against ~1e-13 of rounding.
+            let tol = if (w - 1.0).abs() < 0.05 { 1e-6 } else { 1e-9 };
+            assert!((got - w).abs() < tol, "{got} vs {w}");
+        }
+    }
+
+    #[test]
+    fn roots_spanning_twelve_orders_of_magnitude() {
+        let want = [1e-6, 1e-3, 1.0, 1e3, 1e6, -1e-6, -5e5];
+        let c = from_roots(&want);
+        let bound = root_bound(&c).unwrap();
+        let r = found(&c, -bound, bound);
+        assert_eq!(r.len(), 7, "{r:?}");
+        let mut sorted = want;
+        sorted.sort_by(f64::total_cmp);
+        for (got, w) in r.iter().zip(sorted) {
+            assert!((got - w).abs() <= 1e-9 * w.abs(), "{got} vs {w}");
+        }
+    }
+
+    #[test]
+    fn the_root_bound_holds_and_even_roots_are_skipped() {
+        // (x² + 1)·(x − 3)²·(x + 0.5): one sign-changing root, the double one touches.
+        let c = from_roots(&[3.0, 3.0, -0.5]);
+        let c: Vec<f64> = {
+            let mut out = vec![0.0; c.len() + 2];
+            for (i, &k) in c.iter().enumerate() {
+                out[i] += k;
+                out[i + 2] += k;
+            }
+            out
+        };
+        let b = root_bound(&c).unwrap();
+        assert!(b > 3.0);
+        assert_eq!(found(&c, -b, b), vec![-0.5]);
+        assert_eq!(root_bound(&[2.0, 0.0]), None);
     }
 
     #[test]

@@ -6,7 +6,7 @@ use crate::num::Norm;
 use glam::{DVec2, DVec3};
 
 use crate::diag::number;
-use crate::ir::{PrismSweep, Shape, Spindle, Spline};
+use crate::ir::{PrismSweep, Shape, Spindle, Spline, poly_terms};
 
 use super::blob::Blob;
 use super::cone::Cone;
@@ -15,11 +15,14 @@ use super::cylinder::Cylinder;
 use super::disk::Disk;
 use super::extrusion::Sweep;
 use super::flaw::{finite, in_range, positive, vec3};
+use super::lathe::{Lathe, segment_count};
 use super::parallelogram::Quad;
+use super::poly::Poly;
 use super::polygon::{Polygon, PolygonError};
 use super::prism::{self, OutlineError};
 use super::quadric::Quadric;
 use super::ring::Ring;
+use super::superellipsoid::Superellipsoid;
 use super::text;
 use super::torus::Torus;
 use super::triangle::Triangle;
@@ -293,6 +296,19 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 },
             )?))
         }
+        Shape::Lathe { points, spline } => lathe(points, *spline)?,
+        Shape::Superellipsoid { e, n } => {
+            for (name, v) in [("e", *e), ("n", *n)] {
+                in_range((0.001..=10.0).contains(&v), name, "in 0.001..=10", v)?;
+            }
+            Leaf::Superellipsoid(
+                Superellipsoid::new(*e, *n).ok_or_else(|| ShapeFlaw::range("e", "> 0", *e))?,
+            )
+        }
+        Shape::Poly {
+            order,
+            coefficients,
+        } => poly(*order, coefficients)?,
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
@@ -399,6 +415,103 @@ fn prism_leaf(
                 "the prism's outline encloses no area",
                 "its points lie on one line",
                 "spread the points out so they enclose an area",
+            )
+        })?,
+    )))
+}
+
+/// A lathe's rules: enough points for its spline, each finite with `r >= 0`, and a profile
+/// with some extent.
+fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFlaw> {
+    let (least, what) = match spline {
+        Spline::Linear => (2, "2 points"),
+        Spline::Quadratic => (3, "3 points (the first only steers)"),
+        Spline::Cubic => (4, "4 points (the first and last only steer)"),
+        Spline::Bezier => (4, "4 points per segment"),
+    };
+    let name = spline.name();
+    if points.len() < least || (spline == Spline::Bezier && !points.len().is_multiple_of(4)) {
+        return Err(ShapeFlaw::other(
+            "points",
+            OUT_OF_RANGE,
+            format!(
+                "a `{name}` lathe needs at least {what}, found {}",
+                points.len()
+            ),
+            format!("{} points", points.len()),
+            if spline == Spline::Bezier {
+                "give 4 points per Bézier segment (end, control, control, end)".to_owned()
+            } else {
+                format!("add points until there are at least {least}")
+            },
+        ));
+    }
+    for p in points {
+        if !(p[0].is_finite() && p[1].is_finite()) {
+            return Err(ShapeFlaw::other(
+                "points",
+                OUT_OF_RANGE,
+                "a lathe point is not finite",
+                "a coordinate is infinite or not a number",
+                "use finite `[r, y]` pairs",
+            ));
+        }
+        in_range(
+            p[0] >= 0.0,
+            "points",
+            "r >= 0 (the profile is right of the axis)",
+            p[0],
+        )?;
+    }
+    debug_assert!(segment_count(spline, points.len()) > 0);
+    Ok(Leaf::Lathe(Box::new(Lathe::new(points, spline).ok_or_else(
+        || {
+            ShapeFlaw::degenerate(
+                "points",
+                "the lathe's profile encloses no area",
+                "its points lie on one line or on the axis",
+                "move points away from the axis and off one line, e.g. `[[0, 0], [1, 0], [1, 1], [0, 1]]`",
+            )
+        },
+    )?)))
+}
+
+/// A polynomial surface's rules: an order from 2 to 15, one finite coefficient per term, and
+/// a non-zero one besides the constant.
+fn poly(order: u32, coefficients: &[f64]) -> Result<Leaf, ShapeFlaw> {
+    in_range(
+        (2..=15).contains(&order),
+        "order",
+        "in 2..=15",
+        f64::from(order),
+    )?;
+    let terms = poly_terms(order);
+    if coefficients.len() != terms.len() {
+        return Err(ShapeFlaw::other(
+            "coefficients",
+            OUT_OF_RANGE,
+            format!(
+                "a poly of order {order} has {} coefficients, found {}",
+                terms.len(),
+                coefficients.len()
+            ),
+            format!("{} coefficients", coefficients.len()),
+            format!(
+                "list all {} coefficients, 0 for absent terms (x^{order} first, the constant last)",
+                terms.len()
+            ),
+        ));
+    }
+    for &c in coefficients {
+        in_range(true, "coefficients", "finite", c)?;
+    }
+    Ok(Leaf::Poly(Box::new(
+        Poly::new(order as usize, &terms, coefficients).ok_or_else(|| {
+            ShapeFlaw::degenerate(
+                "coefficients",
+                "a poly needs a non-zero coefficient besides the constant",
+                "every coefficient of a term in x, y or z is 0",
+                "give a term in x, y or z a non-zero coefficient",
             )
         })?,
     )))
