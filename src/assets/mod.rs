@@ -1,6 +1,6 @@
 //! The asset service: every file a scene names besides its own text. Paths are resolved in one
 //! documented order for the scene language and the course formats ([`search`]); OBJ meshes with
-//! their MTL materials ([`obj`], [`mtl`]) and texture images ([`image`]) are read and decoded
+//! their MTL materials ([`obj`], [`mtl`]), STL and PLY meshes ([`indexed`]) and texture images ([`image`]) are read and decoded
 //! once per process ([`cache`]) whoever asks first: evaluation (a mesh's `.bounds`), `rtc check`
 //! or the preparation stage. Loading errors become diagnostics here, one kind per problem.
 //!
@@ -9,6 +9,7 @@
 
 mod cache;
 mod image;
+pub(crate) mod indexed;
 mod mipmap;
 mod mtl;
 mod obj;
@@ -17,7 +18,10 @@ mod obj_error;
 pub mod obj_fast;
 pub(crate) mod obj_file;
 mod obj_inside;
+mod ply;
+mod ply_header;
 pub(crate) mod search;
+mod stl;
 
 use std::path::Path;
 use std::sync::Arc;
@@ -34,8 +38,8 @@ static MESHES: Cache<MeshAsset> = Cache::new();
 static PICTURES: Cache<Picture> = Cache::new();
 static MIPS: Cache<MipChain> = Cache::new();
 
-/// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
-/// when it or one of its material libraries changes).
+/// The mesh file at `path` (OBJ, STL or PLY by its extension; with smoothed normals if
+/// `smooth`), loaded once per process (again when it or one of its material libraries changes).
 pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
     MESHES.get_or_load(
         FileKey::of(path, smooth),

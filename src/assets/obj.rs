@@ -51,24 +51,32 @@ pub struct MeshAsset {
     closed: OnceLock<bool>,
 }
 
-/// What either reader gives before the common finish: triangles with area, per-triangle
+/// What every reader gives before the common finish: triangles with area, per-triangle
 /// attributes alongside.
-struct Faces {
-    vertices: Vec<Vec3>,
-    triangles: Vec<[u32; 3]>,
+pub(super) struct Faces {
+    pub(super) vertices: Vec<Vec3>,
+    pub(super) triangles: Vec<[u32; 3]>,
     /// Per-triangle normals from the file (smooth only; `None` where a corner has none).
-    file_normals: Vec<Option<[Vec3; 3]>>,
-    uvs: Vec<[Vec2; 3]>,
-    material_of: Vec<u32>,
-    materials: Vec<Material>,
-    warnings: Vec<String>,
-    libraries: Vec<PathBuf>,
+    pub(super) file_normals: Vec<Option<[Vec3; 3]>>,
+    pub(super) uvs: Vec<[Vec2; 3]>,
+    pub(super) material_of: Vec<u32>,
+    pub(super) materials: Vec<Material>,
+    pub(super) warnings: Vec<String>,
+    pub(super) libraries: Vec<PathBuf>,
 }
 
 impl MeshAsset {
-    /// Reads an OBJ file (and its MTL library); `smooth` computes per-corner normals.
+    /// Reads a mesh file, its format chosen by its extension: OBJ (and its MTL library), STL
+    /// or PLY; `smooth` computes per-corner normals (where the file has none).
     pub fn load(path: &Path, smooth: bool) -> Result<MeshAsset, MeshError> {
-        Self::load_by(path, smooth, true)
+        match super::indexed::Format::of(path) {
+            super::indexed::Format::Obj => Self::load_by(path, smooth, true),
+            format => {
+                let start = std::time::Instant::now();
+                let faces = super::indexed::read(path, format, smooth)?;
+                Self::finish(path, faces, smooth, start)
+            }
+        }
     }
 
     /// [`MeshAsset::load`] through tobj alone (what the parallel reader must agree with).
@@ -417,9 +425,9 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
     })
 }
 
-/// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget).
+/// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget):
 /// `count` of `what` (bytes of the file, triangles) within the budget `max`.
-fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
+pub(super) fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
     if count <= max {
         return Ok(());
     }

@@ -1,0 +1,147 @@
+//! Mesh formats besides OBJ, chosen by the file's extension: STL ([`super::stl`]) and PLY
+//! ([`super::ply`]). Each reader gives an indexed mesh (shared vertices, triangles, optional
+//! per-vertex normals and texture coordinates); this module reads the file within the asset
+//! budgets and turns that into the per-corner data every reader hands to `MeshAsset`'s common
+//! finish, with the rules of the OBJ readers (faces without area dropped, a coordinate that is
+//! not finite refused).
+
+use std::path::Path;
+
+use glam::{Vec2, Vec3, Vec3A};
+
+use super::obj::{Faces, within_budget};
+use super::obj_error::MeshError;
+use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
+
+/// A mesh file's format, by its extension (any case).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Format {
+    /// Wavefront OBJ (`.obj`).
+    Obj,
+    /// STL, ASCII or binary (`.stl`).
+    Stl,
+    /// PLY, ASCII or binary of either byte order (`.ply`).
+    Ply,
+}
+
+impl Format {
+    /// The format `path`'s extension names (OBJ for any other: `mesh(path)` refuses those
+    /// before anything is loaded).
+    pub(crate) fn of(path: &Path) -> Format {
+        match Self::known(path) {
+            Some(f) => f,
+            None => Format::Obj,
+        }
+    }
+
+    /// The format `path`'s extension names, if rtc reads it.
+    pub(crate) fn known(path: &Path) -> Option<Format> {
+        let ext = path.extension()?.to_string_lossy().to_ascii_lowercase();
+        match ext.as_str() {
+            "obj" => Some(Format::Obj),
+            "stl" => Some(Format::Stl),
+            "ply" => Some(Format::Ply),
+            _ => None,
+        }
+    }
+}
+
+/// A mesh as STL and PLY store it: shared vertices and triangles indexing them.
+#[derive(Debug, Default, PartialEq)]
+pub struct Indexed {
+    /// Vertex positions.
+    pub vertices: Vec<Vec3>,
+    /// Triangles (faces fanned from their first corner), every index below `vertices.len()`.
+    pub triangles: Vec<[u32; 3]>,
+    /// Per-vertex normals (empty when the file has none).
+    pub normals: Vec<Vec3>,
+    /// Per-vertex texture coordinates (empty when the file has none).
+    pub uvs: Vec<Vec2>,
+}
+
+/// Reads the STL or PLY file `path` (within the file-size budget) into the common form.
+pub(super) fn read(path: &Path, format: Format, smooth: bool) -> Result<Faces, MeshError> {
+    if let Ok(meta) = std::fs::metadata(path) {
+        within_budget(meta.len(), MAX_MESH_FILE_BYTES, "bytes")?;
+    }
+    let bytes = crate::source::read_regular(path, MAX_MESH_FILE_BYTES).map_err(|e| {
+        let message = if e.kind() == std::io::ErrorKind::NotFound {
+            "the file cannot be read".to_owned()
+        } else {
+            format!("the file cannot be read: {e}")
+        };
+        MeshError {
+            missing: true,
+            ..MeshError::new(message, None)
+        }
+    })?;
+    let indexed = parse(&bytes, format)?;
+    drop(bytes);
+    faces(indexed, smooth)
+}
+
+/// The mesh in a file's bytes, read as `format` (STL or PLY).
+pub fn parse(bytes: &[u8], format: Format) -> Result<Indexed, MeshError> {
+    match format {
+        Format::Stl => super::stl::parse(bytes, MAX_TRIANGLES),
+        Format::Ply => super::ply::parse(bytes, MAX_TRIANGLES),
+        Format::Obj => Err(MeshError::new("an OBJ file is not an indexed mesh", None)),
+    }
+}
+
+/// The per-corner form of `mesh`: triangles with area only, file normals (for `smooth`) and
+/// texture coordinates per corner.
+pub(super) fn faces(mesh: Indexed, smooth: bool) -> Result<Faces, MeshError> {
+    let Indexed {
+        vertices,
+        triangles,
+        normals,
+        uvs,
+    } = mesh;
+    let mut kept = Vec::with_capacity(triangles.len());
+    for t in triangles {
+        let [a, b, c] = t.map(|v| Vec3A::from(vertices[v as usize]));
+        if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+            return Err(MeshError::new("a vertex coordinate is not finite", None));
+        }
+        // Faces without area can never be hit; dropping them keeps normals clean.
+        if (b - a).cross(c - a) != Vec3A::ZERO {
+            kept.push(t);
+        }
+    }
+    let file_normals = if !smooth {
+        Vec::new()
+    } else if normals.is_empty() {
+        vec![None; kept.len()]
+    } else {
+        kept.iter()
+            .map(|t| Some(t.map(|v| normals[v as usize])))
+            .collect()
+    };
+    let uvs = if uvs.is_empty() {
+        Vec::new()
+    } else {
+        kept.iter().map(|t| t.map(|v| uvs[v as usize])).collect()
+    };
+    Ok(Faces {
+        vertices,
+        triangles: kept,
+        file_normals,
+        uvs,
+        material_of: Vec::new(),
+        materials: Vec::new(),
+        warnings: Vec::new(),
+        libraries: Vec::new(),
+    })
+}
+
+/// A budget error: a file that says it holds more triangles than one mesh may have.
+pub(super) fn too_many_triangles(count: u64, max: usize) -> MeshError {
+    MeshError {
+        too_large: true,
+        ..MeshError::new(
+            format!("it has {count} triangles; at most {max} are supported in one file"),
+            None,
+        )
+    }
+}
