@@ -116,6 +116,68 @@ fn ply(obj: &Obj, format: &str) -> Vec<u8> {
     out
 }
 
+/// The duck as glTF: one node, one triangle primitive (POSITION, TEXCOORD_0, u32 indices), a
+/// material with a base colour; `buffer` is the `buffers` entry's `uri` (absent for GLB).
+fn gltf_json(obj: &Obj, uri: Option<&str>) -> (String, Vec<u8>) {
+    let (verts, faces) = ply_vertices(obj);
+    let mut bin = Vec::new();
+    for &(p, _) in &verts {
+        bin.extend(f32s(&obj.positions[p]).iter().flat_map(|c| c.to_le_bytes()));
+    }
+    let uv_at = bin.len();
+    for &(_, t) in &verts {
+        let [u, v] = f32s(&obj.texcoords[t]);
+        bin.extend([u, 1.0 - v].iter().flat_map(|c| c.to_le_bytes()));
+    }
+    let idx_at = bin.len();
+    let tris: Vec<u32> = faces
+        .iter()
+        .flat_map(|f| (1..f.len() - 1).flat_map(move |k| [f[0], f[k], f[k + 1]]))
+        .collect();
+    bin.extend(tris.iter().flat_map(|i| i.to_le_bytes()));
+    let n = verts.len();
+    let uri = uri.map_or(String::new(), |u| format!(r#", "uri": "{u}""#));
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+"nodes": [{{"mesh": 0}}],
+"meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0, "TEXCOORD_0": 1}}, "indices": 2, "material": 0}}]}}],
+"materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.2, 0.4, 0.6, 1.0]}}}}],
+"buffers": [{{"byteLength": {len}{uri}}}],
+"bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": {uv_at}}}, {{"buffer": 0, "byteOffset": {uv_at}, "byteLength": {uvs}}}, {{"buffer": 0, "byteOffset": {idx_at}, "byteLength": {idx}}}],
+"accessors": [{{"bufferView": 0, "componentType": 5126, "count": {n}, "type": "VEC3", "min": [-1e9, -1e9, -1e9], "max": [1e9, 1e9, 1e9]}},
+  {{"bufferView": 1, "componentType": 5126, "count": {n}, "type": "VEC2"}},
+  {{"bufferView": 2, "componentType": 5125, "count": {nt}, "type": "SCALAR"}}]}}"#,
+        len = bin.len(),
+        uvs = idx_at - uv_at,
+        idx = bin.len() - idx_at,
+        nt = tris.len(),
+    );
+    (json, bin)
+}
+
+/// The duck as one GLB file: header, JSON chunk, BIN chunk (each padded to 4 bytes).
+fn glb(obj: &Obj) -> Vec<u8> {
+    let (json, mut bin) = gltf_json(obj, None);
+    let mut json = json.into_bytes();
+    while json.len() % 4 != 0 {
+        json.push(b' ');
+    }
+    while bin.len() % 4 != 0 {
+        bin.push(0);
+    }
+    let total = 12 + 8 + json.len() + 8 + bin.len();
+    let mut out = b"glTF".to_vec();
+    out.extend(2u32.to_le_bytes());
+    out.extend((total as u32).to_le_bytes());
+    out.extend((json.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(json);
+    out.extend((bin.len() as u32).to_le_bytes());
+    out.extend(b"BIN\0");
+    out.extend(bin);
+    out
+}
+
 /// Triangles fanned from each face's first corner, as the OBJ readers fan them.
 fn triangles(obj: &Obj) -> Vec<[usize; 3]> {
     obj.faces
@@ -191,7 +253,19 @@ fn the_duck_renders_the_same_from_every_format() {
     let source =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/course/models/devilduk.obj");
     std::fs::copy(&source, dir.join("duck.obj")).expect("copy the duck");
-    let files: [(&str, Vec<u8>); 5] = [
+    let (json, bin) = gltf_json(&obj, Some("duck.bin"));
+    std::fs::write(dir.join("duck.bin"), bin).expect("write the buffer");
+    let (_, bin) = gltf_json(&obj, None);
+    use base64::Engine as _;
+    let data = base64::engine::general_purpose::STANDARD.encode(&bin);
+    let (embedded, _) = gltf_json(
+        &obj,
+        Some(&format!("data:application/octet-stream;base64,{data}")),
+    );
+    let files: [(&str, Vec<u8>); 8] = [
+        ("duck.gltf", json.into_bytes()),
+        ("duck_embedded.gltf", embedded.into_bytes()),
+        ("duck.glb", glb(&obj)),
         ("duck_ascii.ply", ply(&obj, "ascii")),
         ("duck_le.ply", ply(&obj, "binary_little_endian")),
         ("duck_be.PLY", ply(&obj, "binary_big_endian")),
@@ -217,6 +291,7 @@ fn the_duck_renders_the_same_from_every_format() {
             render(&dir, name, plain) == reference,
             "{name} differs from the OBJ"
         );
+        // glTF's v runs the other way: 1 − (1 − v) need not give v back, so not compared.
         if name.to_ascii_lowercase().ends_with(".ply") {
             let got = render(&dir, name, &textured);
             assert!(
@@ -233,6 +308,15 @@ fn the_duck_renders_the_same_from_every_format() {
         assert_eq!(a.triangles.len(), reference.triangles.len(), "{name}");
         assert_eq!(a.is_closed(), reference.is_closed(), "{name}");
         assert_eq!((a.min, a.max), (reference.min, reference.max), "{name}");
+        if name.contains("gl") {
+            assert_eq!(a.materials.len(), 1, "{name}");
+            assert_eq!(
+                a.materials[0].color,
+                glam::DVec3::new(0.2f32 as f64, 0.4f32 as f64, 0.6f32 as f64)
+            );
+            assert_eq!(a.material_of.len(), a.triangles.len(), "{name}");
+            assert_eq!(a.uvs.len(), a.triangles.len(), "{name}");
+        }
     }
     std::fs::remove_dir_all(&dir).ok();
 }

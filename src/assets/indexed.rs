@@ -1,5 +1,5 @@
-//! Mesh formats besides OBJ, chosen by the file's extension: STL ([`super::stl`]) and PLY
-//! ([`super::ply`]). Each reader gives an indexed mesh (shared vertices, triangles, optional
+//! Mesh formats besides OBJ, chosen by the file's extension: STL ([`super::stl`]), PLY
+//! ([`super::ply`]) and glTF 2.0 ([`super::gltf`]). Each reader gives an indexed mesh (shared vertices, triangles, optional
 //! per-vertex normals and texture coordinates); this module reads the file within the asset
 //! budgets and turns that into the per-corner data every reader hands to `MeshAsset`'s common
 //! finish, with the rules of the OBJ readers (faces without area dropped, a coordinate that is
@@ -22,6 +22,8 @@ pub(crate) enum Format {
     Stl,
     /// PLY, ASCII or binary of either byte order (`.ply`).
     Ply,
+    /// glTF 2.0, JSON with its buffers (`.gltf`) or binary (`.glb`).
+    Gltf,
 }
 
 impl Format {
@@ -41,6 +43,7 @@ impl Format {
             "obj" => Some(Format::Obj),
             "stl" => Some(Format::Stl),
             "ply" => Some(Format::Ply),
+            "gltf" | "glb" => Some(Format::Gltf),
             _ => None,
         }
     }
@@ -75,9 +78,18 @@ pub(super) fn read(path: &Path, format: Format, smooth: bool) -> Result<Faces, M
             ..MeshError::new(message, None)
         }
     })?;
+    if format == Format::Gltf {
+        let g = super::gltf::parse(path, &bytes, MAX_TRIANGLES)?;
+        drop(bytes);
+        let mut f = faces(g.mesh, g.material_of, smooth)?;
+        f.materials = g.materials;
+        f.libraries = g.buffers;
+        f.warnings = g.warnings;
+        return Ok(f);
+    }
     let indexed = parse(&bytes, format)?;
     drop(bytes);
-    faces(indexed, smooth)
+    faces(indexed, Vec::new(), smooth)
 }
 
 /// The mesh in a file's bytes, read as `format` (STL or PLY).
@@ -85,13 +97,21 @@ pub fn parse(bytes: &[u8], format: Format) -> Result<Indexed, MeshError> {
     match format {
         Format::Stl => super::stl::parse(bytes, MAX_TRIANGLES),
         Format::Ply => super::ply::parse(bytes, MAX_TRIANGLES),
-        Format::Obj => Err(MeshError::new("an OBJ file is not an indexed mesh", None)),
+        Format::Obj | Format::Gltf => Err(MeshError::new(
+            "only STL and PLY files are read from bytes alone",
+            None,
+        )),
     }
 }
 
 /// The per-corner form of `mesh`: triangles with area only, file normals (for `smooth`) and
-/// texture coordinates per corner.
-pub(super) fn faces(mesh: Indexed, smooth: bool) -> Result<Faces, MeshError> {
+/// texture coordinates per corner, and each triangle's material slot from `material_of` (one
+/// per triangle, or empty).
+pub(super) fn faces(
+    mesh: Indexed,
+    material_of: Vec<u32>,
+    smooth: bool,
+) -> Result<Faces, MeshError> {
     let Indexed {
         vertices,
         triangles,
@@ -99,7 +119,8 @@ pub(super) fn faces(mesh: Indexed, smooth: bool) -> Result<Faces, MeshError> {
         uvs,
     } = mesh;
     let mut kept = Vec::with_capacity(triangles.len());
-    for t in triangles {
+    let mut materials = Vec::with_capacity(material_of.len());
+    for (k, t) in triangles.into_iter().enumerate() {
         let [a, b, c] = t.map(|v| Vec3A::from(vertices[v as usize]));
         if !(a.is_finite() && b.is_finite() && c.is_finite()) {
             return Err(MeshError::new("a vertex coordinate is not finite", None));
@@ -107,6 +128,9 @@ pub(super) fn faces(mesh: Indexed, smooth: bool) -> Result<Faces, MeshError> {
         // Faces without area can never be hit; dropping them keeps normals clean.
         if (b - a).cross(c - a) != Vec3A::ZERO {
             kept.push(t);
+            if let Some(&m) = material_of.get(k) {
+                materials.push(m);
+            }
         }
     }
     let file_normals = if !smooth {
@@ -128,7 +152,7 @@ pub(super) fn faces(mesh: Indexed, smooth: bool) -> Result<Faces, MeshError> {
         triangles: kept,
         file_normals,
         uvs,
-        material_of: Vec::new(),
+        material_of: materials,
         materials: Vec::new(),
         warnings: Vec::new(),
         libraries: Vec::new(),

@@ -1,6 +1,6 @@
 //! The asset service: every file a scene names besides its own text. Paths are resolved in one
 //! documented order for the scene language and the course formats ([`search`]); OBJ meshes with
-//! their MTL materials ([`obj`], [`mtl`]), STL and PLY meshes ([`indexed`]) and texture images ([`image`]) are read and decoded
+//! their MTL materials ([`obj`], [`mtl`]), STL, PLY and glTF meshes ([`indexed`]) and texture images ([`image`]) are read and decoded
 //! once per process ([`cache`]) whoever asks first: evaluation (a mesh's `.bounds`), `rtc check`
 //! or the preparation stage. Loading errors become diagnostics here, one kind per problem.
 //!
@@ -8,6 +8,7 @@
 //! nothing of BVHs or rendering: geometry builds its structures from the plain data loaded here.
 
 mod cache;
+mod gltf;
 mod image;
 pub(crate) mod indexed;
 mod mipmap;
@@ -38,7 +39,7 @@ static MESHES: Cache<MeshAsset> = Cache::new();
 static PICTURES: Cache<Picture> = Cache::new();
 static MIPS: Cache<MipChain> = Cache::new();
 
-/// The mesh file at `path` (OBJ, STL or PLY by its extension; with smoothed normals if
+/// The mesh file at `path` (OBJ, STL, PLY or glTF by its extension; with smoothed normals if
 /// `smooth`), loaded once per process (again when it or one of its material libraries changes).
 pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
     MESHES.get_or_load(

@@ -138,7 +138,14 @@ impl MeshAsset {
             libraries,
         } = faces;
         if triangles.is_empty() {
-            return Err(MeshError::new("the file has no faces with area", None));
+            return Err(MeshError {
+                fix: Some(
+                    "a mesh needs at least one face of three corners that are not in a line; \
+                     check that the file holds the model"
+                        .into(),
+                ),
+                ..MeshError::new("the file has no faces with area", None)
+            });
         }
         within_budget(triangles.len() as u64, MAX_TRIANGLES as u64, "triangles")?;
         let usable = |n: &Option<[Vec3; 3]>| {

@@ -1,5 +1,5 @@
-//! `mesh(path)`: a shape read from a file, which must exist and be Wavefront OBJ, STL or PLY
-//! (its extension picks the reader).
+//! `mesh(path)`: a shape read from a file, which must exist and be Wavefront OBJ, STL, PLY or
+//! glTF 2.0 (its extension picks the reader).
 
 use crate::eval::args::Params;
 use crate::eval::args::{ArgVal, CallSite};
@@ -14,7 +14,7 @@ use crate::source::Span;
 pub(super) static MESH: Sig = Sig::new(
     "mesh",
     Group::Shape,
-    "A triangle mesh from a Wavefront OBJ, STL or PLY file (by its extension).",
+    "A triangle mesh from a Wavefront OBJ, STL, PLY or glTF 2.0 file (by its extension).",
     &[
         Param::new(
             "path",
@@ -25,7 +25,7 @@ pub(super) static MESH: Sig = Sig::new(
         Param::new(
             "use_mtl",
             Ty::Bool,
-            "use an OBJ file's `.mtl` materials where present",
+            "use the file's materials where present (OBJ: its `.mtl`; glTF: base colours)",
         )
         .or(Lit::Bool(false)),
     ],
@@ -49,7 +49,7 @@ pub(super) fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     ))
 }
 
-/// Meshes are OBJ, STL or PLY: another format (glTF, 3DS...) is refused by its extension
+/// Meshes are OBJ, STL, PLY or glTF: another format (3DS, FBX...) is refused by its extension
 /// before anyone tries to read it as one of those.
 fn known_format(path: &std::path::Path, span: Span) -> R<()> {
     if crate::assets::indexed::Format::known(path).is_some() {
@@ -65,12 +65,12 @@ fn known_format(path: &std::path::Path, span: Span) -> R<()> {
         format!("`{}` is not a mesh format rtc reads", path.display()),
     )
     .with_label(if ext.is_empty() {
-        "no `.obj`, `.stl` or `.ply` extension".to_owned()
+        "no `.obj`, `.stl`, `.ply`, `.gltf` or `.glb` extension".to_owned()
     } else {
         format!("a `.{ext}` file")
     })
     .with_help(
-        "meshes are read from `.obj`, `.stl` and `.ply` files; convert the model to one of them (e.g. with Blender or MeshLab)",
+        "meshes are read from `.obj`, `.stl`, `.ply`, `.gltf` and `.glb` files; convert the model to one of them (e.g. with Blender or MeshLab)",
     )
     .into())
 }
