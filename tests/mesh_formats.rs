@@ -159,10 +159,10 @@ fn gltf_json(obj: &Obj, uri: Option<&str>) -> (String, Vec<u8>) {
 fn glb(obj: &Obj) -> Vec<u8> {
     let (json, mut bin) = gltf_json(obj, None);
     let mut json = json.into_bytes();
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
-    while bin.len() % 4 != 0 {
+    while !bin.len().is_multiple_of(4) {
         bin.push(0);
     }
     let total = 12 + 8 + json.len() + 8 + bin.len();

@@ -178,3 +178,127 @@ fn the_seeds_load() {
         }
     }
 }
+
+/// A one-primitive GLB: the PLY's five positions, u16 indices of its four triangles, a
+/// material, under a node with a transform.
+fn glb() -> Vec<u8> {
+    let mut bin: Vec<u8> = Vec::new();
+    for p in [
+        [0f32, 0., 0.],
+        [1., 0., 0.],
+        [1., 1., 0.],
+        [0., 1., 0.],
+        [0., 0., 1.],
+    ] {
+        bin.extend(p.iter().flat_map(|c| c.to_le_bytes()));
+    }
+    for i in [0u16, 1, 2, 0, 2, 3, 0, 1, 4, 1, 2, 4] {
+        bin.extend(i.to_le_bytes());
+    }
+    let json = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+"nodes": [{"children": [1], "rotation": [0, 0.7071068, 0, 0.7071068]}, {"mesh": 0, "scale": [2, 2, -2]}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+"materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.25, 1]}}],
+"buffers": [{"byteLength": 84}],
+"bufferViews": [{"buffer": 0, "byteLength": 60}, {"buffer": 0, "byteOffset": 60, "byteLength": 24}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 5, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 1]},
+  {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"}]}"#;
+    let mut json = json.as_bytes().to_vec();
+    while !json.len().is_multiple_of(4) {
+        json.push(b' ');
+    }
+    let mut out = b"glTF".to_vec();
+    out.extend(2u32.to_le_bytes());
+    out.extend(((12 + 8 + json.len() + 8 + bin.len()) as u32).to_le_bytes());
+    out.extend((json.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(json);
+    out.extend((bin.len() as u32).to_le_bytes());
+    out.extend(b"BIN\0");
+    out.extend(bin);
+    out
+}
+
+/// The GLB seed loads: its four triangles, transformed, with the material.
+#[test]
+fn the_glb_seed_loads() {
+    let path = scratch().join("seed.glb");
+    std::fs::write(&path, glb()).unwrap();
+    let m = MeshAsset::load(&path, false).unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(m.triangles.len(), 4);
+    assert_eq!(m.materials.len(), 1);
+    load_and_trace(&glb(), "g.glb", true);
+}
+
+/// Random mutations of every seed straight through the readers (no files): the binary
+/// formats' counts, offsets and lengths, the text formats' words. `RTC_MUTATIONS` inputs
+/// (default 10⁶); ignored in CI, run with `--ignored` (about a minute in release).
+#[test]
+#[ignore]
+fn a_million_mutations() {
+    use rtc::assets::indexed::{Format, triangles_in};
+    let n: u64 = std::env::var("RTC_MUTATIONS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1_000_000);
+    let seeds: Vec<(Format, Vec<u8>)> = vec![
+        (Format::Ply, PLY.as_bytes().to_vec()),
+        (Format::Ply, binary_ply(false)),
+        (Format::Ply, binary_ply(true)),
+        (Format::Stl, STL.as_bytes().to_vec()),
+        (Format::Stl, binary_stl()),
+        (Format::Gltf, glb()),
+    ];
+    let tokens: [&[u8]; 12] = [
+        b"element",
+        b"property",
+        b"list",
+        b"uchar",
+        b"double",
+        b"face",
+        b"vertex",
+        b"\n",
+        b"4294967295",
+        b"-1",
+        b"facet",
+        b"\"count\": 0",
+    ];
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move |m: usize| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state % m.max(1) as u64) as usize
+    };
+    let (mut ok, mut refused) = (0u64, 0u64);
+    for _ in 0..n {
+        let (format, seed) = &seeds[next(seeds.len())];
+        let mut b = seed.clone();
+        for _ in 0..1 + next(4) {
+            let at = next(b.len() + 1);
+            match next(6) {
+                0 if at < b.len() => b[at] ^= 1 << next(8),
+                1 if at < b.len() => b[at] = next(256) as u8,
+                2 => {
+                    let t = tokens[next(tokens.len())];
+                    b.splice(at..at, t.iter().copied());
+                }
+                3 => {
+                    let end = (at + next(16)).min(b.len());
+                    b.drain(at..end);
+                }
+                4 => b.truncate(at),
+                _ if at + 4 <= b.len() => {
+                    let v = [0u32, 1, 255, 65535, u32::MAX, next(1 << 20) as u32][next(6)];
+                    b[at..at + 4].copy_from_slice(&v.to_le_bytes());
+                }
+                _ => {}
+            }
+        }
+        match triangles_in(&b, *format) {
+            Ok(_) => ok += 1,
+            Err(_) => refused += 1,
+        }
+    }
+    eprintln!("{n} mutated inputs: {ok} loaded, {refused} refused, no panic");
+}

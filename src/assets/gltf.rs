@@ -39,6 +39,15 @@ pub(super) struct GltfMesh {
     pub(super) warnings: Vec<String>,
 }
 
+impl GltfMesh {
+    /// Adds the warning `w` once (a file may have it on every primitive).
+    fn warn(&mut self, w: String) {
+        if !self.warnings.contains(&w) {
+            self.warnings.push(w);
+        }
+    }
+}
+
 fn malformed(message: impl Into<String>) -> MeshError {
     MeshError {
         fix: Some("check the file with the Khronos glTF validator, or export it again".to_owned()),
@@ -96,6 +105,28 @@ pub(super) fn parse(
     Ok(out)
 }
 
+/// The files the buffers of the glTF file `path` (its bytes `bytes`) are read from.
+pub(super) fn buffer_paths(path: &Path, bytes: &[u8]) -> Vec<PathBuf> {
+    let Ok(gltf) = gltf::Gltf::from_slice(bytes) else {
+        return Vec::new();
+    };
+    gltf.document
+        .buffers()
+        .filter_map(|b| match b.source() {
+            gltf::buffer::Source::Uri(uri) if !uri.starts_with("data:") => {
+                Some(buffer_file(path, uri))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// Where a buffer's relative URI points: beside the glTF file.
+fn buffer_file(path: &Path, uri: &str) -> PathBuf {
+    path.parent()
+        .map_or_else(|| PathBuf::from(uri), |d| d.join(uri))
+}
+
 /// The bytes of buffer `b`: the GLB's binary chunk, a `data:` URI, or a file next to `path`.
 fn buffer(
     path: &Path,
@@ -117,9 +148,7 @@ fn buffer(
                 .map_err(|e| malformed(format!("a buffer's base64 data is malformed: {e}")))?
         }
         gltf::buffer::Source::Uri(uri) => {
-            let file = path
-                .parent()
-                .map_or_else(|| PathBuf::from(uri), |d| d.join(uri));
+            let file = buffer_file(path, uri);
             paths.push(file.clone());
             crate::source::read_regular(&file, MAX_MESH_FILE_BYTES).map_err(|e| MeshError {
                 fix: Some(format!(
@@ -182,7 +211,7 @@ impl Walk<'_> {
 
     fn primitive(&mut self, p: &gltf::Primitive<'_>, m: DMat4) -> Result<(), MeshError> {
         if p.mode() != Mode::Triangles {
-            self.out.warnings.push(format!(
+            self.out.warn(format!(
                 "a primitive of mode {:?} is skipped (only triangles are read)",
                 p.mode()
             ));
@@ -288,7 +317,7 @@ impl Walk<'_> {
             out.refract = (1.0 - f64::from(a)).clamp(0.0, 1.0);
         }
         if m.pbr_metallic_roughness().base_color_texture().is_some() {
-            self.out.warnings.push(
+            self.out.warn(
                 "a material's base colour texture is not read: its base colour factor is used"
                     .to_owned(),
             );

@@ -10,7 +10,7 @@
 mod cache;
 mod gltf;
 mod image;
-pub(crate) mod indexed;
+pub mod indexed;
 mod mipmap;
 mod mtl;
 mod obj;
@@ -47,6 +47,12 @@ pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshErro
         || MeshAsset::load(path, smooth),
         |m| m.libraries.clone(),
     )
+}
+
+/// The `.bin` buffer files the glTF file `path` (its bytes `bytes`) names, resolved beside it
+/// as the loader resolves them (none when it does not parse).
+pub(crate) fn gltf_buffer_paths(path: &Path, bytes: &[u8]) -> Vec<std::path::PathBuf> {
+    gltf::buffer_paths(path, bytes)
 }
 
 /// Bytes the image at `path` takes decoded: from the cache if it is there, else from its
