@@ -61,8 +61,7 @@ pub(super) fn parse(
     bytes: &[u8],
     max_triangles: usize,
 ) -> Result<GltfMesh, MeshError> {
-    let gltf = gltf::Gltf::from_slice(bytes)
-        .map_err(|e| malformed(format!("not a valid glTF 2.0 file: {e}")))?;
+    let gltf = validated(bytes)?;
     let mut paths = Vec::new();
     let buffers = gltf
         .document
@@ -105,9 +104,33 @@ pub(super) fn parse(
     Ok(out)
 }
 
+/// The file parsed and validated. gltf-json 1.4.1's validation indexes the accessors by a
+/// primitive's `POSITION` before checking that index (a panic, found by the mutation run in
+/// tests/mesh_formats_fuzz.rs): every attribute's accessor is checked here first.
+fn validated(bytes: &[u8]) -> Result<gltf::Gltf, MeshError> {
+    let invalid = |e: gltf::Error| malformed(format!("not a valid glTF 2.0 file: {e}"));
+    let raw = gltf::Gltf::from_slice_without_validation(bytes).map_err(invalid)?;
+    let blob = raw.blob;
+    let root = raw.document.into_json();
+    let accessors = root.accessors.len();
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for p in &mesh.primitives {
+            if let Some(i) = p.attributes.values().find(|i| i.value() >= accessors) {
+                return Err(malformed(format!(
+                    "mesh {m} names accessor {}, but the file has {accessors}",
+                    i.value()
+                )));
+            }
+        }
+    }
+    let document = gltf::Document::from_json(root).map_err(invalid)?;
+    Ok(gltf::Gltf { document, blob })
+}
+
 /// The files the buffers of the glTF file `path` (its bytes `bytes`) are read from.
 pub(super) fn buffer_paths(path: &Path, bytes: &[u8]) -> Vec<PathBuf> {
-    let Ok(gltf) = gltf::Gltf::from_slice(bytes) else {
+    // Without validation (no index is followed: the buffers are listed as written).
+    let Ok(gltf) = gltf::Gltf::from_slice_without_validation(bytes) else {
         return Vec::new();
     };
     gltf.document
@@ -494,5 +517,15 @@ mod tests {
                 .too_large
         );
         assert!(parse(Path::new("t.gltf"), b"{not json", 10).is_err());
+        // A POSITION naming an accessor the file lacks (gltf-json's validation indexed it).
+        let text = String::from_utf8(file(3, one)).unwrap();
+        let e = parse(
+            Path::new("t.gltf"),
+            text.replace(r#""POSITION": 0"#, r#""POSITION": 5"#)
+                .as_bytes(),
+            10,
+        )
+        .expect_err("refused");
+        assert!(e.message.contains("accessor 5"), "{e:?}");
     }
 }
