@@ -8,12 +8,14 @@
 #
 #   benches/mesh_formats.sh                # 1M triangles, 5 runs each
 #   SIZE=200000 RUNS=3 benches/mesh_formats.sh
+#   RTC_BIN=/path/to/rtc benches/mesh_formats.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${TMPDIR:-/tmp}/rtc-mesh-formats"
 mkdir -p "$out"
-cargo build --release -q
-rtc=$PWD/target/release/rtc
+# RTC_BIN: an rtc binary already built (no cargo build).
+[ -n "${RTC_BIN:-}" ] || cargo build --release -q
+rtc=${RTC_BIN:-$PWD/target/release/rtc}
 size="${SIZE:-1000000}"
 runs="${RUNS:-5}"
 python3 benches/mesh_formats.py "$size" "$out/sphere"
@@ -41,7 +43,8 @@ for line in sys.stdin:
     f, t = line.split()
     times.setdefault(f, []).append(float(t))
 for f, ts in times.items():
-    print(f"{f}: first ray at {s.median(ts):.3f} s (median of {len(ts)}: {\" \".join(f\"{t:.3f}\" for t in ts)})")
+    shown = " ".join("%.3f" % t for t in ts)
+    print(f"{f}: first ray at {s.median(ts):.3f} s (median of {len(ts)}: {shown})")
 obj, ply = s.median(times["obj"]), s.median(times["ply"])
 print(f"PLY / OBJ = {ply / obj:.2f}", "(PLY at least as fast: met)" if ply <= obj else "(PLY slower: missed)")
 '
