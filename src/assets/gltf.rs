@@ -16,7 +16,7 @@ use glam::{DMat4, DVec3, Vec2, Vec3};
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
 
-use super::indexed::{Indexed, too_many_triangles};
+use super::mesh_data::{Indexed, too_many_triangles};
 use super::obj_error::MeshError;
 use crate::ir::Material;
 use crate::ir::limits::MAX_MESH_FILE_BYTES;

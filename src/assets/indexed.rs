@@ -7,9 +7,10 @@
 
 use std::path::Path;
 
-use glam::{Vec2, Vec3, Vec3A};
+use glam::Vec3A;
 
-use super::obj::{Faces, within_budget};
+pub use super::mesh_data::Indexed;
+use super::mesh_data::{Faces, within_budget};
 use super::obj_error::MeshError;
 use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
 
@@ -47,19 +48,6 @@ impl Format {
             _ => None,
         }
     }
-}
-
-/// A mesh as STL and PLY store it: shared vertices and triangles indexing them.
-#[derive(Debug, Default, PartialEq)]
-pub struct Indexed {
-    /// Vertex positions.
-    pub vertices: Vec<Vec3>,
-    /// Triangles (faces fanned from their first corner), every index below `vertices.len()`.
-    pub triangles: Vec<[u32; 3]>,
-    /// Per-vertex normals (empty when the file has none).
-    pub normals: Vec<Vec3>,
-    /// Per-vertex texture coordinates (empty when the file has none).
-    pub uvs: Vec<Vec2>,
 }
 
 /// Reads the STL or PLY file `path` (within the file-size budget) into the common form.
@@ -166,15 +154,4 @@ pub(super) fn faces(
         warnings: Vec::new(),
         libraries: Vec::new(),
     })
-}
-
-/// A budget error: a file that says it holds more triangles than one mesh may have.
-pub(super) fn too_many_triangles(count: u64, max: usize) -> MeshError {
-    MeshError {
-        too_large: true,
-        ..MeshError::new(
-            format!("it has {count} triangles; at most {max} are supported in one file"),
-            None,
-        )
-    }
 }

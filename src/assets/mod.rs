@@ -11,6 +11,7 @@ mod cache;
 mod gltf;
 mod image;
 pub mod indexed;
+mod mesh_data;
 mod mipmap;
 mod mtl;
 mod obj;

@@ -13,6 +13,7 @@ use glam::{DVec3, Vec2, Vec3, Vec3A};
 
 use rayon::prelude::*;
 
+use super::mesh_data::{Faces, within_budget};
 use super::obj_error::{MeshError, locate};
 use crate::ir::Material;
 use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
@@ -49,20 +50,6 @@ pub struct MeshAsset {
     /// Time `load` took.
     pub(crate) load_time: Duration,
     closed: OnceLock<bool>,
-}
-
-/// What every reader gives before the common finish: triangles with area, per-triangle
-/// attributes alongside.
-pub(super) struct Faces {
-    pub(super) vertices: Vec<Vec3>,
-    pub(super) triangles: Vec<[u32; 3]>,
-    /// Per-triangle normals from the file (smooth only; `None` where a corner has none).
-    pub(super) file_normals: Vec<Option<[Vec3; 3]>>,
-    pub(super) uvs: Vec<[Vec2; 3]>,
-    pub(super) material_of: Vec<u32>,
-    pub(super) materials: Vec<Material>,
-    pub(super) warnings: Vec<String>,
-    pub(super) libraries: Vec<PathBuf>,
 }
 
 impl MeshAsset {
@@ -429,21 +416,6 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         materials,
         warnings,
         libraries,
-    })
-}
-
-/// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget):
-/// `count` of `what` (bytes of the file, triangles) within the budget `max`.
-pub(super) fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
-    if count <= max {
-        return Ok(());
-    }
-    Err(MeshError {
-        too_large: true,
-        ..MeshError::new(
-            format!("it has {count} {what}; at most {max} are supported in one file"),
-            None,
-        )
     })
 }
 

@@ -12,7 +12,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::indexed::{Indexed, too_many_triangles};
+use super::mesh_data::{Indexed, too_many_triangles};
 use super::obj_error::MeshError;
 use super::ply_header::{Element, Encoding, Header, Kind, Scalar, header};
 use super::stl::Words;

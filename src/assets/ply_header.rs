@@ -4,7 +4,7 @@
 //! budget and the file's length, so the body's reader never sizes anything from an untrusted
 //! number.
 
-use super::indexed::too_many_triangles;
+use super::mesh_data::too_many_triangles;
 use super::obj_error::MeshError;
 
 /// Lines a header may have: a real one has a few dozen.

@@ -11,7 +11,7 @@ use std::collections::HashMap;
 
 use glam::Vec3;
 
-use super::indexed::{Indexed, too_many_triangles};
+use super::mesh_data::{Indexed, too_many_triangles};
 use super::obj_error::MeshError;
 
 /// Bytes of a binary STL header (80 free bytes, then the little-endian triangle count).
