@@ -6,7 +6,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/.." && pwd)
 out="$here/seeds"
 rm -rf "$out"
-mkdir -p "$out"/{rtc_eval,legacy_in,course_yaml,obj_mtl,texture}
+mkdir -p "$out"/{rtc_eval,legacy_in,course_yaml,obj_mtl,mesh_formats,texture}
 cd "$repo"
 
 # .rtc: the diagnostics corpus, language tests, example and course scenes, the standard library,
@@ -42,6 +42,44 @@ for f in tests/data/course/models/*.obj; do
     } > "$out/obj_mtl/${base}_$flags"
   done
 done
+
+# STL and PLY: flag byte (bit 0 smooth, bit 1 PLY), then the file: the small course models
+# written as ASCII and binary STL and as ASCII, little- and big-endian PLY (with uvs where the
+# model has them, and vertex colours), cut to 64 KiB.
+python3 - "$out/mesh_formats" tests/data/course/models/{cube,tetrahedron,dolphins}.obj <<'PY'
+import struct, sys
+out = sys.argv[1]
+for path in sys.argv[2:]:
+    name = path.rsplit("/", 1)[1][:-4]
+    v, faces = [], []
+    for line in open(path):
+        w = line.split()
+        if w[:1] == ["v"]:
+            v.append([float(x) for x in w[1:4]])
+        elif w[:1] == ["f"]:
+            faces.append([int(c.split("/")[0]) - 1 for c in w[1:]])
+    tris = [(f[0], f[k], f[k + 1]) for f in faces for k in range(1, len(f) - 1)]
+    ascii_stl = "solid %s\n" % name + "".join(
+        "facet normal 0 0 0\nouter loop\n" + "".join("vertex %r %r %r\n" % tuple(v[i]) for i in t) + "endloop\nendfacet\n"
+        for t in tris) + "endsolid %s\n" % name
+    binary_stl = b"\0" * 80 + struct.pack("<I", len(tris)) + b"".join(
+        struct.pack("<12fH", 0, 0, 0, *[c for i in t for c in v[i]], 0) for t in tris)
+    def ply(fmt, e):
+        head = ("ply\nformat %s 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n"
+                "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face %d\n"
+                "property list uchar int vertex_indices\nend_header\n" % (fmt, len(v), len(faces))).encode()
+        if fmt == "ascii":
+            return head + "".join("%r %r %r 200 100 50\n" % tuple(p) for p in v).encode() + "".join(
+                "%d %s\n" % (len(f), " ".join(map(str, f))) for f in faces).encode()
+        return head + b"".join(struct.pack(e + "3f3B", *p, 200, 100, 50) for p in v) + b"".join(
+            struct.pack(e + "B%di" % len(f), len(f), *f) for f in faces)
+    files = {"stl_ascii": (0, ascii_stl.encode()), "stl_binary": (1, binary_stl),
+             "ply_ascii": (2, ply("ascii", "<")), "ply_le": (3, ply("binary_little_endian", "<")),
+             "ply_be": (2, ply("binary_big_endian", ">"))}
+    for kind, (flag, data) in files.items():
+        with open("%s/%s_%s" % (out, name, kind), "wb") as f:
+            f.write(bytes([flag]) + data[:65536])
+PY
 
 # The hostile probe's shapes of input (issue 35), cut to the fuzzers' input sizes: brackets
 # nested past the budget, long postfix chains, a long `else if` chain, a union grown by

@@ -9,7 +9,7 @@ use rtc::geometry::mesh::{Mesh, MeshParts};
 use rtc::ir::{Object, Shape};
 use rtc::num::Norm;
 
-/// Loads the OBJ at `path` and uses it every way the renderer does.
+/// Loads the mesh (OBJ, STL or PLY) at `path` and uses it every way the renderer does.
 pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
     let Ok(asset) = MeshAsset::load(path, smooth) else {
         return;

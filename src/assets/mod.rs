@@ -1,6 +1,6 @@
 //! The asset service: every file a scene names besides its own text. Paths are resolved in one
 //! documented order for the scene language and the course formats ([`search`]); OBJ meshes with
-//! their MTL materials ([`obj`], [`mtl`]), texture images ([`image`]) and fonts ([`font`]) are read and decoded
+//! their MTL materials ([`obj`], [`mtl`]), STL, PLY and glTF meshes ([`indexed`]), texture images ([`image`]) and fonts ([`font`]) are read and decoded
 //! once per process ([`cache`]) whoever asks first: evaluation (a mesh's `.bounds`), `rtc check`
 //! or the preparation stage. Loading errors become diagnostics here, one kind per problem.
 //!
@@ -9,7 +9,10 @@
 
 mod cache;
 mod font;
+mod gltf;
 mod image;
+pub mod indexed;
+mod mesh_data;
 mod mipmap;
 mod mtl;
 mod obj;
@@ -18,7 +21,10 @@ mod obj_error;
 pub mod obj_fast;
 pub(crate) mod obj_file;
 mod obj_inside;
+mod ply;
+mod ply_header;
 pub(crate) mod search;
+mod stl;
 
 use std::path::Path;
 use std::sync::Arc;
@@ -54,14 +60,20 @@ pub(crate) fn font(path: Option<&Path>) -> Result<Arc<FontAsset>, FontError> {
     }
 }
 
-/// The OBJ file at `path` (with smoothed normals if `smooth`), loaded once per process (again
-/// when it or one of its material libraries changes).
+/// The mesh file at `path` (OBJ, STL, PLY or glTF by its extension; with smoothed normals if
+/// `smooth`), loaded once per process (again when it or one of its material libraries changes).
 pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
     MESHES.get_or_load(
         FileKey::of(path, smooth),
         || MeshAsset::load(path, smooth),
         |m| m.libraries.clone(),
     )
+}
+
+/// The `.bin` buffer files the glTF file `path` (its bytes `bytes`) names, resolved beside it
+/// as the loader resolves them (none when it does not parse).
+pub(crate) fn gltf_buffer_paths(path: &Path, bytes: &[u8]) -> Vec<std::path::PathBuf> {
+    gltf::buffer_paths(path, bytes)
 }
 
 /// Bytes the image at `path` takes decoded: from the cache if it is there, else from its

@@ -13,6 +13,7 @@ use glam::{DVec3, Vec2, Vec3, Vec3A};
 
 use rayon::prelude::*;
 
+use super::mesh_data::{Faces, within_budget};
 use super::obj_error::{MeshError, locate};
 use crate::ir::Material;
 use crate::ir::limits::{MAX_MESH_FILE_BYTES, MAX_TRIANGLES};
@@ -51,24 +52,18 @@ pub struct MeshAsset {
     closed: OnceLock<bool>,
 }
 
-/// What either reader gives before the common finish: triangles with area, per-triangle
-/// attributes alongside.
-struct Faces {
-    vertices: Vec<Vec3>,
-    triangles: Vec<[u32; 3]>,
-    /// Per-triangle normals from the file (smooth only; `None` where a corner has none).
-    file_normals: Vec<Option<[Vec3; 3]>>,
-    uvs: Vec<[Vec2; 3]>,
-    material_of: Vec<u32>,
-    materials: Vec<Material>,
-    warnings: Vec<String>,
-    libraries: Vec<PathBuf>,
-}
-
 impl MeshAsset {
-    /// Reads an OBJ file (and its MTL library); `smooth` computes per-corner normals.
+    /// Reads a mesh file, its format chosen by its extension: OBJ (and its MTL library), STL
+    /// or PLY; `smooth` computes per-corner normals (where the file has none).
     pub fn load(path: &Path, smooth: bool) -> Result<MeshAsset, MeshError> {
-        Self::load_by(path, smooth, true)
+        match super::indexed::Format::of(path) {
+            super::indexed::Format::Obj => Self::load_by(path, smooth, true),
+            format => {
+                let start = std::time::Instant::now();
+                let faces = super::indexed::read(path, format, smooth)?;
+                Self::finish(path, faces, smooth, start)
+            }
+        }
     }
 
     /// [`MeshAsset::load`] through tobj alone (what the parallel reader must agree with).
@@ -130,7 +125,14 @@ impl MeshAsset {
             libraries,
         } = faces;
         if triangles.is_empty() {
-            return Err(MeshError::new("the file has no faces with area", None));
+            return Err(MeshError {
+                fix: Some(
+                    "a mesh needs at least one face of three corners that are not in a line; \
+                     check that the file holds the model"
+                        .into(),
+                ),
+                ..MeshError::new("the file has no faces with area", None)
+            });
         }
         within_budget(triangles.len() as u64, MAX_TRIANGLES as u64, "triangles")?;
         let usable = |n: &Option<[Vec3; 3]>| {
@@ -414,21 +416,6 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         materials,
         warnings,
         libraries,
-    })
-}
-
-/// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget).
-/// `count` of `what` (bytes of the file, triangles) within the budget `max`.
-fn within_budget(count: u64, max: u64, what: &str) -> Result<(), MeshError> {
-    if count <= max {
-        return Ok(());
-    }
-    Err(MeshError {
-        too_large: true,
-        ..MeshError::new(
-            format!("it has {count} {what}; at most {max} are supported in one file"),
-            None,
-        )
     })
 }
 

@@ -17,6 +17,10 @@ pub struct MeshError {
     pub(crate) missing: bool,
     /// True when the file is valid but over the triangle budget.
     pub too_large: bool,
+    /// 0-based byte offset in a binary file (STL, PLY), where known and there is no line.
+    pub(crate) byte: Option<u64>,
+    /// A concrete fix, where the reader knows one.
+    pub(crate) fix: Option<String>,
 }
 
 impl MeshError {
@@ -27,6 +31,33 @@ impl MeshError {
             line,
             missing: false,
             too_large: false,
+            byte: None,
+            fix: None,
+        }
+    }
+
+    /// An error at byte `byte` of a binary file, with the fix `fix`.
+    pub(crate) fn at_byte(
+        message: impl Into<String>,
+        byte: u64,
+        fix: impl Into<String>,
+    ) -> MeshError {
+        MeshError {
+            byte: Some(byte),
+            fix: Some(fix.into()),
+            ..MeshError::new(message, None)
+        }
+    }
+
+    /// An error on 1-based line `line` of a text file, with the fix `fix`.
+    pub(crate) fn at_line(
+        message: impl Into<String>,
+        line: usize,
+        fix: impl Into<String>,
+    ) -> MeshError {
+        MeshError {
+            fix: Some(fix.into()),
+            ..MeshError::new(message, Some(line))
         }
     }
 }
@@ -55,12 +86,13 @@ impl MeshError {
                 ),
             )
             .with_label("this mesh")
-            .with_help("simplify the model or split it into several OBJ files");
+            .with_help("simplify the model or split it into several files");
         }
-        let at = self
-            .line
-            .map(|l| format!(" at line {l}"))
-            .unwrap_or_default();
+        let at = match (self.line, self.byte) {
+            (Some(l), _) => format!(" at line {l}"),
+            (None, Some(b)) => format!(" at byte {b}"),
+            (None, None) => String::new(),
+        };
         let mut d = Diagnostic::new(
             Severity::Error,
             "rtc::mesh::malformed",
@@ -71,6 +103,9 @@ impl MeshError {
         .with_note(self.message.clone());
         if let Some(l) = self.line {
             d = d.with_note(format!("{}:{l}", path.display()));
+        }
+        if let Some(fix) = &self.fix {
+            d = d.with_help(fix.clone());
         }
         d
     }
@@ -85,6 +120,8 @@ pub(crate) fn locate(path: &Path, e: tobj::LoadError) -> MeshError {
             line: None,
             missing: true,
             too_large: false,
+            byte: None,
+            fix: None,
         };
     }
     let text = std::fs::read_to_string(path).unwrap_or_default();

@@ -68,9 +68,18 @@ fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
 
 /// The `mtllib` files an OBJ names, resolved beside it as the OBJ loader does (one rule:
 /// `assets::obj_file::library_paths`).
+/// A glTF file's other files are its `.bin` buffers; STL and PLY files have none.
 fn material_libraries(obj: &Path) -> Vec<PathBuf> {
+    use crate::assets::indexed::Format;
+    let format = Format::of(obj);
+    if matches!(format, Format::Stl | Format::Ply) {
+        return Vec::new();
+    }
     let Ok(text) = crate::source::read_regular(obj, crate::ir::limits::MAX_MESH_FILE_BYTES) else {
         return Vec::new();
     };
-    crate::assets::obj_file::library_paths(obj, &text)
+    match format {
+        Format::Gltf => crate::assets::gltf_buffer_paths(obj, &text),
+        _ => crate::assets::obj_file::library_paths(obj, &text),
+    }
 }

@@ -259,14 +259,22 @@ impl Builder {
                     self.diagnostics.push(over.diagnostic(o.span, &what));
                     return None;
                 }
+                // An OBJ file's warnings are about its material library; a glTF file's about
+                // parts rtc does not read (a base colour texture, points and lines).
+                let (code, label) = match assets::indexed::Format::of(path) {
+                    assets::indexed::Format::Gltf => {
+                        ("rtc::mesh::partial", "drawn without what is not read")
+                    }
+                    _ => ("rtc::mesh::missing_mtl", "drawn with the object's material"),
+                };
                 for w in &asset.warnings {
                     self.diagnostics.push(
                         Diagnostic::warning(
-                            "rtc::mesh::missing_mtl",
+                            code,
                             o.span,
                             format!("the mesh `{}` loads, but {w}", path.display()),
                         )
-                        .with_label("drawn with the object's material"),
+                        .with_label(label),
                     );
                 }
                 let mesh = Arc::new(Mesh::build(MeshParts {

@@ -19,8 +19,6 @@ use crate::ir::{PrismSweep, Shape, Spline, TextAlign};
 use super::common::{checked, choice, pair};
 use crate::eval::schema::Group;
 
-/// Code of a string parameter that names none of its choices.
-
 /// `prism(points, heights, spline, sweep)`.
 pub(super) static PRISM: Sig = Sig::new(
     "prism",

@@ -1,4 +1,5 @@
-//! `mesh(path)`: a shape read from a file, which must exist and be Wavefront OBJ.
+//! `mesh(path)`: a shape read from a file, which must exist and be Wavefront OBJ, STL, PLY or
+//! glTF 2.0 (its extension picks the reader).
 
 use crate::eval::args::Params;
 use crate::eval::args::{ArgVal, CallSite};
@@ -13,7 +14,7 @@ use crate::source::Span;
 pub(super) static MESH: Sig = Sig::new(
     "mesh",
     Group::Shape,
-    "A Wavefront OBJ mesh (triangulated).",
+    "A triangle mesh from a Wavefront OBJ, STL, PLY or glTF 2.0 file (by its extension).",
     &[
         Param::new(
             "path",
@@ -24,7 +25,7 @@ pub(super) static MESH: Sig = Sig::new(
         Param::new(
             "use_mtl",
             Ty::Bool,
-            "use the file's `.mtl` materials where present",
+            "use the file's materials where present (OBJ: its `.mtl`; glTF: base colours)",
         )
         .or(Lit::Bool(false)),
     ],
@@ -35,7 +36,7 @@ pub(super) fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &MESH, a)?;
     let (rel, ps) = p.string(it, "path")?;
     let path = crate::eval::assets::existing(it, &rel, ps, "mesh")?;
-    only_obj(&path, ps)?;
+    known_format(&path, ps)?;
     let smooth = p.bool(it, "smooth")?;
     let use_mtl = p.bool(it, "use_mtl")?;
     Ok(super::common::prim(
@@ -48,28 +49,28 @@ pub(super) fn mesh(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     ))
 }
 
-/// Meshes are Wavefront OBJ: another format (STL, PLY, glTF...) is refused by its extension
-/// before anyone tries to read it as OBJ.
-fn only_obj(path: &std::path::Path, span: Span) -> R<()> {
+/// Meshes are OBJ, STL, PLY or glTF: another format (3DS, FBX...) is refused by its extension
+/// before anyone tries to read it as one of those.
+fn known_format(path: &std::path::Path, span: Span) -> R<()> {
+    if crate::assets::indexed::Format::known(path).is_some() {
+        return Ok(());
+    }
     let ext = path
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase())
         .unwrap_or_default();
-    if ext == "obj" {
-        return Ok(());
-    }
     Err(error(
         "rtc::asset::format",
         span,
-        format!("`{}` is not a Wavefront OBJ file", path.display()),
+        format!("`{}` is not a mesh format rtc reads", path.display()),
     )
     .with_label(if ext.is_empty() {
-        "no `.obj` extension".to_owned()
+        "no `.obj`, `.stl`, `.ply`, `.gltf` or `.glb` extension".to_owned()
     } else {
         format!("a `.{ext}` file")
     })
     .with_help(
-        "only OBJ meshes are read; convert the model to `.obj` (e.g. with Blender or MeshLab)",
+        "meshes are read from `.obj`, `.stl`, `.ply`, `.gltf` and `.glb` files; convert the model to one of them (e.g. with Blender or MeshLab)",
     )
     .into())
 }

@@ -1,0 +1,18 @@
+//! STL and PLY loading. Input: one flag byte (bit 0: smooth normals, bit 1: PLY, else STL),
+//! then the file's bytes, written to the scratch directory in memory as `m.ply` or `m.stl`
+//! (rtc reads meshes by path and picks the reader by the extension). The mesh is loaded,
+//! ray-cast from 14 directions, tested for closedness, and rendered 4×4 as a scene object, as
+//! for `obj_mtl`.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|data: &[u8]| {
+    let Some((&flags, file)) = data.split_first() else {
+        return;
+    };
+    let name = if flags & 2 != 0 { "m.ply" } else { "m.stl" };
+    let path = rtc_fuzz::scratch().join(name);
+    std::fs::write(&path, file).expect("write the mesh");
+    rtc_fuzz::mesh::exercise(&path, flags & 1 != 0, false);
+});
