@@ -171,13 +171,19 @@ fn quartic(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
 /// Reads `coefficients` and makes the checked poly of `order` (its span `os`).
 fn made(it: &mut dyn Host, p: &mut Params, s: CallSite, order: u32, os: Span) -> R<Value> {
     let (v, cs) = p.req("coefficients")?;
-    let Value::List(items) = &v else {
-        return Err(types::mismatch(it, "List", &v, cs).into());
+    let coefficients = match &v {
+        Value::List(items) => {
+            let mut c = Vec::with_capacity(items.len());
+            for x in items.iter() {
+                c.push(types::num(it, x, cs)?);
+            }
+            c
+        }
+        // Three numbers in brackets read as a vector: still a (too short) coefficient list,
+        // which the shape's rules report with the count it needs.
+        Value::Vec3(x) => x.to_array().to_vec(),
+        _ => return Err(types::mismatch(it, "List", &v, cs).into()),
     };
-    let mut coefficients = Vec::with_capacity(items.len());
-    for x in items.iter() {
-        coefficients.push(types::num(it, x, cs)?);
-    }
     checked(
         Shape::Poly {
             order,
