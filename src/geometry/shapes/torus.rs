@@ -63,12 +63,12 @@ impl Torus {
         // Falling through zero enters the apple-minus-lemon region: the apple at its surface,
         // and leaves the lemon at its surface.
         match (mode, lemon) {
-            (Spindle::Union, false) | (Spindle::Merge, false) => (true, Some(true)),
+            (Spindle::Difference, _) | (Spindle::Union | Spindle::Merge, false) => {
+                (true, Some(true))
+            }
             (Spindle::Union, true) => (true, None),
             (Spindle::Merge, true) | (Spindle::Intersection, false) => (false, None),
             (Spindle::Intersection, true) => (true, Some(false)),
-            (Spindle::Difference, false) => (true, Some(true)),
-            (Spindle::Difference, true) => (true, Some(true)),
         }
     }
 
