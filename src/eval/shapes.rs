@@ -20,6 +20,7 @@ mod compound;
 mod extrude;
 mod flat;
 mod mesh;
+mod mesh_inline;
 mod revolve;
 
 use common::{checked, direction, point, radius, unit_dir};

@@ -215,11 +215,14 @@ impl Shape {
                 ],
             ),
             Shape::Mesh {
-                path,
+                source,
                 smooth,
                 use_mtl,
             } => {
-                let mut a = vec![("path", Arg::Path(path.clone()))];
+                let mut a = match source {
+                    super::mesh::MeshSource::File(path) => vec![("path", Arg::Path(path.clone()))],
+                    super::mesh::MeshSource::Inline(m) => inline_mesh_args(m),
+                };
                 if *smooth {
                     a.push(("smooth", Bool(true)));
                 }
@@ -275,4 +278,38 @@ impl Shape {
         };
         Some(ShapeCall { name, args })
     }
+}
+
+/// An inline mesh's lists as `mesh(vertices:, faces:, normals:, uv:)` reads them (the empty
+/// optional lists left out).
+fn inline_mesh_args(m: &super::mesh::InlineMesh) -> Vec<(&'static str, Arg)> {
+    let number_list = |xs: &[f64]| Arg::List(xs.iter().map(|x| Arg::Number(*x)).collect());
+    let mut a = vec![
+        (
+            "vertices",
+            Arg::List(m.vertices.iter().map(|v| Arg::Point(*v)).collect()),
+        ),
+        (
+            "faces",
+            Arg::List(
+                m.triangles
+                    .iter()
+                    .map(|t| number_list(&t.map(f64::from)))
+                    .collect(),
+            ),
+        ),
+    ];
+    if !m.normals.is_empty() {
+        a.push((
+            "normals",
+            Arg::List(m.normals.iter().map(|v| Arg::Point(*v)).collect()),
+        ));
+    }
+    if !m.uvs.is_empty() {
+        a.push((
+            "uv",
+            Arg::List(m.uvs.iter().map(|v| number_list(&v.to_array())).collect()),
+        ));
+    }
+    a
 }

@@ -231,10 +231,11 @@ pub enum Shape {
         /// The glyph outlines laid out (from the font when the text was made).
         glyphs: Arc<TextGlyphs>,
     },
-    /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
+    /// A triangle mesh from a file (loaded when the scene is prepared; instanced by path) or
+    /// written inline.
     Mesh {
-        /// Resolved path.
-        path: PathBuf,
+        /// Where its data comes from.
+        source: super::mesh::MeshSource,
         /// Interpolate normals.
         smooth: bool,
         /// Use the file's MTL materials where present.

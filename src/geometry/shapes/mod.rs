@@ -34,8 +34,6 @@ mod text;
 mod torus;
 pub(crate) mod triangle;
 
-use std::path::Path;
-
 use glam::DVec3;
 
 use crate::geometry::shapes::blob::Blob;
@@ -335,7 +333,10 @@ pub(crate) fn bounds(shape: &Shape) -> Option<Aabb> {
 /// polygon, disk) and open cylinders and cones do not; a mesh does when `closed_mesh` says its
 /// file is closed; a CSG node when all its operands do (an inverted solid is one; a clipped
 /// surface never).
-pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
+pub(crate) fn encloses_volume(
+    shape: &Shape,
+    closed_mesh: &dyn Fn(&crate::ir::MeshSource, bool) -> bool,
+) -> bool {
     match shape {
         Shape::Triangle { .. }
         | Shape::Quad { .. }
@@ -343,7 +344,7 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Disk { .. }
         | Shape::Ring { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
-        Shape::Mesh { path, smooth, .. } => closed_mesh(path, *smooth),
+        Shape::Mesh { source, smooth, .. } => closed_mesh(source, *smooth),
         // A clipped surface is open: its clipper's faces are not shown.
         Shape::Csg {
             op: CsgOp::Clip, ..
