@@ -475,8 +475,9 @@ mod tests {
                 "{}",
                 out[1].hit.t
             );
+            // The first centre is at x = 1 (radius 0.5): x = 0.4 is beyond its cap.
             assert!(s.contains(DVec3::new(2.5, 0.0, 0.45)));
-            assert!(!s.contains(DVec3::new(0.6, 0.0, 0.0)));
+            assert!(!s.contains(DVec3::new(0.4, 0.0, 0.0)));
         }
     }
 }
