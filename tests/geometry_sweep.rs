@@ -40,8 +40,9 @@ fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
         b.swap(col, piv);
         for row in col + 1..4 {
             let k = m[row][col] / m[col][col];
-            for c in col..4 {
-                m[row][c] -= k * m[col][c];
+            let pivot = m[col];
+            for (v, p) in m[row].iter_mut().zip(pivot).skip(col) {
+                *v -= k * p;
             }
             b[row] -= k * b[col];
         }

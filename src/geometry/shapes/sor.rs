@@ -89,14 +89,14 @@ fn compose(c: &[f64; 4], u0: f64, du: f64) -> [f64; 4] {
     // Horner on polynomials: p ← p·(u0 + du·t) + c_i.
     let mut p = [0.0; 4];
     for &k in c.iter().rev() {
-        let mut q = [0.0; 4];
-        for i in 0..4 {
-            q[i] += p[i] * u0;
-            if i + 1 < 4 {
-                q[i + 1] += p[i] * du;
+        let mut q = [k, 0.0, 0.0, 0.0];
+        for (i, &pi) in p.iter().enumerate() {
+            q[i] += pi * u0;
+            // p has degree at most 2 before the last step: its t³ term is never dropped.
+            if let Some(next) = q.get_mut(i + 1) {
+                *next += pi * du;
             }
         }
-        q[0] += k;
         p = q;
     }
     p

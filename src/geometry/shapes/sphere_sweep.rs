@@ -78,8 +78,8 @@ fn mul_add(a: &[f64], b: &[f64], k: f64, out: &mut [f64]) {
 /// The derivative of a polynomial of degree `N − 1`, in an array as long.
 fn derivative<const N: usize>(c: &[f64; N]) -> [f64; N] {
     let mut d = [0.0; N];
-    for i in 1..N {
-        d[i - 1] = c[i] * i as f64;
+    for (i, &k) in c.iter().enumerate().skip(1) {
+        d[i - 1] = k * i as f64;
     }
     d
 }
@@ -221,10 +221,10 @@ impl SphereSweep {
                 for w in spheres.windows(4) {
                     let mut c = [DVec3::ZERO; 4];
                     let mut r = [0.0; 4];
-                    for i in 0..4 {
-                        for j in 0..4 {
-                            c[i] += m[i][j] * w[j].0;
-                            r[i] += m[i][j] * w[j].1;
+                    for (i, row) in m.iter().enumerate() {
+                        for (k, (center, radius)) in row.iter().zip(w) {
+                            c[i] += k * *center;
+                            r[i] += k * radius;
                         }
                     }
                     pieces.push(Piece::Spline(Segment::new(c, r)));
@@ -318,9 +318,8 @@ impl SphereSweep {
 
     /// Nearest hit in (t_min, t_max).
     pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        if self.bounds.hit_interval(ray, t_min, t_max).is_none() {
-            return None;
-        }
+        // Rays that miss the whole sweep's box cost one slab test.
+        self.bounds.hit_interval(ray, t_min, t_max)?;
         self.merged(ray)
             .into_iter()
             .flat_map(|(a, b)| [a, b])
