@@ -79,7 +79,7 @@ pub(super) fn sor(points: &[[f64; 2]], open: bool) -> Result<Leaf, ShapeFlaw> {
             ShapeFlaw::degenerate(
                 "points",
                 "the sor has no extent",
-                "every radius is 0",
+                "every radius is 0 (or too large to square)",
                 "give the profile points a radius above 0, e.g. `[[0, -1], [1, 0], [1, 1], [0, 2]]`",
             )
         },
