@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape, Spindle, Spline};
+use super::object::{BlobComponent, Shape, Spindle, Spline, SweepSpline};
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -197,6 +197,30 @@ impl Shape {
                     a.push(("spline", Arg::Str(spline.name().to_string())));
                 }
                 ("lathe", a)
+            }
+            Shape::Sor { points, open } => {
+                let pair = |p: &[f64; 2]| List(vec![Number(p[0]), Number(p[1])]);
+                let mut a = vec![("points", List(points.iter().map(pair).collect()))];
+                if *open {
+                    a.push(("open", Bool(true)));
+                }
+                ("sor", a)
+            }
+            Shape::SphereSweep { spline, spheres } => {
+                let mut a = vec![
+                    (
+                        "points",
+                        List(spheres.iter().map(|(c, _)| Point(*c)).collect()),
+                    ),
+                    (
+                        "radii",
+                        List(spheres.iter().map(|(_, r)| Number(*r)).collect()),
+                    ),
+                ];
+                if *spline != SweepSpline::Linear {
+                    a.push(("spline", Arg::Str(spline.name().to_string())));
+                }
+                ("sphere_sweep", a)
             }
             Shape::Superellipsoid { e, n } => {
                 ("superellipsoid", vec![("e", Number(*e)), ("n", Number(*n))])
