@@ -309,6 +309,21 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             order,
             coefficients,
         } => poly(*order, coefficients)?,
+        Shape::Isosurface {
+            function,
+            container,
+            threshold,
+            max_gradient,
+            accuracy,
+            open,
+        } => super::isosurface::leaf(
+            function,
+            container,
+            *threshold,
+            *max_gradient,
+            *accuracy,
+            *open,
+        )?,
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
