@@ -200,7 +200,9 @@ impl Builder {
                                 Shape::Mesh { path, .. } => {
                                     format!("the mesh `{}` is not closed", path.display())
                                 }
-                                Shape::Cylinder { .. } | Shape::Cone { .. } => {
+                                Shape::Cylinder { .. }
+                                | Shape::Cone { .. }
+                                | Shape::Isosurface { .. } => {
                                     format!("this {} is open", c.shape.kind_name())
                                 }
                                 other => {
@@ -217,6 +219,7 @@ impl Builder {
                                 .with_secondary(o.span, "in this CSG operation")
                                 .with_help(match &c.shape {
                                     Shape::Cylinder { .. } | Shape::Cone { .. } => "set `capped: true`",
+                                    Shape::Isosurface { .. } => "leave out `open: true`: the container's walls close it",
                                     Shape::Mesh { .. } => "use a watertight mesh (every edge shared by two faces)",
                                     _ => "use a closed solid such as a box, sphere or capped cylinder",
                                 }),

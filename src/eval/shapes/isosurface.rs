@@ -101,7 +101,7 @@ fn isosurface(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let (container, spans) = match (radius, center, box_given) {
         (Some((_, rs)), _, Some(bs)) => {
             return Err(error(
-                "rtc::param::value",
+                "rtc::isosurface::container",
                 rs,
                 "an isosurface's container is a box or a sphere, not both",
             )
@@ -170,7 +170,7 @@ fn too_small(given: f64, slope: f64, span: crate::source::Span) -> Diagnostic {
         format!(
             "`max_gradient` {} is below the slope {} sampled in the container: the search may step over the surface",
             number(given),
-            number(slope)
+            suggested(slope)
         ),
     )
     .with_label("too small for this function")

@@ -31,9 +31,10 @@ use super::{Leaf, OUT_OF_RANGE, ShapeFlaw, sphere};
 
 /// The most function evaluations one search along a ray may take.
 pub(crate) const MAX_EVALUATIONS: u64 = 200_000;
-/// The most steps of length `accuracy` a container's diagonal may hold, so the shortest steps
-/// alone stay well inside [`MAX_EVALUATIONS`].
-pub(crate) const MAX_STEPS_ACROSS: f64 = 50_000.0;
+/// The most steps of length `accuracy` a container's diagonal may hold: finer steps would be
+/// lost in the rounding of the ray parameter. (The search takes its shortest steps only near
+/// the surface; [`MAX_EVALUATIONS`] bounds a ray that runs along it.)
+pub(crate) const MAX_STEPS_ACROSS: f64 = 1e9;
 /// Grid cells per axis over the container when the gradient is estimated.
 pub(crate) const GRID: usize = 12;
 /// The estimated bound: this many times the steepest slope sampled (a grid can miss peaks).
@@ -246,10 +247,13 @@ pub(super) fn leaf(
             "accuracy",
             OUT_OF_RANGE,
             format!(
-                "`accuracy` is too fine for the container: at most {MAX_STEPS_ACROSS} steps across it"
+                "`accuracy` is too fine for the container: at most {MAX_STEPS_ACROSS:e} steps across it"
             ),
-            format!("accuracy = {accuracy:e}, container {diagonal:e} across"),
-            format!("write `accuracy: {}` or more", crate::diag::number(least)),
+            format!(
+                "accuracy = {accuracy:e}, container {} across",
+                crate::diag::number(diagonal)
+            ),
+            format!("write `accuracy: {}` or more", suggested(least)),
         ));
     }
     let sampled = sampled_slope(f, &walls);
