@@ -194,7 +194,7 @@ pub(crate) fn suggested(x: f64) -> String {
     if (-3.0..15.0).contains(&e) {
         crate::diag::number(v)
     } else {
-        format!("{v:e}")
+        format!("{v:.2e}")
     }
 }
 
