@@ -90,7 +90,10 @@ fn cases() -> Vec<Case> {
             name: "torus function",
             src: "isosurface(f: fn(p) { length([length([p.x, 0, p.z]) - 0.6, p.y, 0]) - 0.25 }, min: [-0.9, -0.3, -0.9], max: [0.9, 0.3, 0.9], max_gradient: 1)",
             side: |q| torus_side(q, 0.6, 0.25),
-            aim: (DVec3::new(-0.85, -0.25, -0.85), DVec3::new(0.85, 0.25, 0.85)),
+            aim: (
+                DVec3::new(-0.85, -0.25, -0.85),
+                DVec3::new(0.85, 0.25, 0.85),
+            ),
             size: 1.8,
             min_hit_share: 0.3,
         },
@@ -361,10 +364,7 @@ fn a_search_stops_at_its_budget_and_says_so() {
     let (_, _, render) = render_findings(
         "(isosurface(f: fn(p) { sin(20000rad * p.x) }, max_gradient: 20000, accuracy: 0.0001) & box(min: [-2, -2, -2], max: [2, 2, 2])).scale(0.5)",
     );
-    assert!(
-        render.contains(&"rtc::isosurface::budget"),
-        "{render:?}"
-    );
+    assert!(render.contains(&"rtc::isosurface::budget"), "{render:?}");
 }
 
 #[test]

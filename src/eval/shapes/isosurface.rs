@@ -86,7 +86,7 @@ static ISOSURFACE: Sig = Sig::new(
 )
 .examples(&[
     "isosurface(f: fn(p) { length(p) - 0.8 })  // a sphere",
-    "isosurface(f: fn(p) { p.y + 0.2 * sin(4 * p.x) }, min: [-2, -1, -2], max: [2, 1, 2], max_gradient: 1.2)",
+    "isosurface(f: fn(p) { p.y + 0.2 * sin(4rad * p.x) }, min: [-2, -1, -2], max: [2, 1, 2], max_gradient: 1.2)",
     "isosurface(f: fn(p) { abs(p.x) + abs(p.y) + abs(p.z) }, threshold: 1, radius: 1.2, center: [0, 0, 0], accuracy: 0.0005, open: true)",
 ]);
 fn isosurface(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
@@ -107,7 +107,9 @@ fn isosurface(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
             )
             .with_label("a sphere's radius")
             .with_secondary(bs, "a box's corner")
-            .with_help("drop `radius` (and `center`) for the box, or `min` and `max` for the sphere")
+            .with_help(
+                "drop `radius` (and `center`) for the box, or `min` and `max` for the sphere",
+            )
             .into());
         }
         (None, Some((_, cs)), _) => {

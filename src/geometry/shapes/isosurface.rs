@@ -499,11 +499,7 @@ impl Watch {
         let (over, slope, gave_up) = self.log.read();
         let mut out = Vec::new();
         if over > 0 {
-            let how = if self.estimated {
-                "estimated"
-            } else {
-                "given"
-            };
+            let how = if self.estimated { "estimated" } else { "given" };
             out.push(
                 Diagnostic::warning(
                     "rtc::isosurface::max_gradient",
