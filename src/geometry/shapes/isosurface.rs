@@ -242,7 +242,8 @@ pub(super) fn leaf(
     let b = walls.bounds();
     let diagonal = (b.max - b.min).norm();
     let least = diagonal / MAX_STEPS_ACROSS;
-    if !(accuracy >= least) {
+    // `accuracy` is positive and finite here (`positive`), `least` finite.
+    if accuracy < least {
         return Err(ShapeFlaw::other(
             "accuracy",
             OUT_OF_RANGE,
@@ -324,7 +325,7 @@ impl Isosurface {
             return;
         };
         let (a, b) = (enter.t.max(t_min), exit.t.min(t_max));
-        if !(a < b) {
+        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
             return;
         }
         // Work from the start, so points stay small however far the ray's origin is.
