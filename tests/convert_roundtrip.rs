@@ -118,7 +118,10 @@ fn canon(scene: &Scene) -> Canon {
         out.span = Span::default();
         out.material = o.material.map(&mut *number);
         match &mut out.shape {
-            Shape::Mesh { path, .. } => *path = canonical(path),
+            Shape::Mesh {
+                source: rtc::ir::MeshSource::File(path),
+                ..
+            } => *path = canonical(path),
             Shape::Csg { children, .. } => {
                 *children = children.iter().map(|c| object(c, number)).collect();
             }
@@ -187,7 +190,7 @@ fn round_trip(path: &Path, dir: &Path) -> Outcome {
     };
     let text = rtc::convert::to_source(&scene, dir);
     // A compiled function (an isosurface's `f`) is written as a string naming why, so the text
-    // stops with a type error there: nothing to compare (docs/language.md §13.7).
+    // stops with a type error there: nothing to compare (docs/language.md §13.9).
     if scene.objects.iter().any(has_isosurface) {
         let why = "a compiled function cannot be written back as source";
         assert!(text.contains(why), "{}: {text}", path.display());

@@ -60,7 +60,10 @@ pub fn files_read(scene: &Scene) -> Vec<PathBuf> {
 
 fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
     match &o.shape {
-        Shape::Mesh { path, .. } => out.push(path.clone()),
+        Shape::Mesh {
+            source: crate::ir::MeshSource::File(path),
+            ..
+        } => out.push(path.clone()),
         Shape::Csg { children, .. } => children.iter().for_each(|c| collect_meshes(c, out)),
         _ => {}
     }

@@ -204,7 +204,7 @@ impl Prepared {
 
     /// What the renders of this scene so far found about its isosurfaces: steps where a
     /// function changed faster than its `max_gradient`, and searches stopped by the budget of
-    /// evaluations per ray (docs/language.md §13.7). Empty when all went well.
+    /// evaluations per ray (docs/language.md §13.9). Empty when all went well.
     pub fn render_warnings(&self) -> Vec<Diagnostic> {
         self.isosurfaces
             .iter()

@@ -1,5 +1,5 @@
 //! `isosurface(f, ...)`: POV-Ray's isosurface, its function compiled once by the compiler of
-//! `pattern(f)` (docs/language.md §13.7).
+//! `pattern(f)` (docs/language.md §13.9).
 
 use std::sync::Arc;
 
