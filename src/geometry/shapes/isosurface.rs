@@ -26,8 +26,8 @@ use crate::pattern::Program;
 use crate::source::Span;
 
 use super::cuboid::Cuboid;
-use super::flaw::{finite, in_range, positive, vec3};
-use super::{Leaf, OUT_OF_RANGE, ShapeFlaw, sphere};
+use super::flaw::{OUT_OF_RANGE, ShapeFlaw, finite, in_range, positive, vec3};
+use super::sphere;
 
 /// The most function evaluations one search along a ray may take.
 pub(crate) const MAX_EVALUATIONS: u64 = 200_000;
@@ -223,16 +223,16 @@ fn walls(container: &Container) -> Result<Walls, ShapeFlaw> {
 }
 
 /// An isosurface's rules (a finite threshold, a positive `max_gradient` and `accuracy`, a
-/// container no more than [`MAX_STEPS_ACROSS`] accuracy steps across), then its [`Leaf`]; the
+/// container no more than [`MAX_STEPS_ACROSS`] accuracy steps across), then the shape; the
 /// gradient bound estimated when none is given.
-pub(super) fn leaf(
+pub(super) fn build(
     f: &Arc<Program>,
     container: &Container,
     threshold: f64,
     max_gradient: Option<f64>,
     accuracy: f64,
     open: bool,
-) -> Result<Leaf, ShapeFlaw> {
+) -> Result<Isosurface, ShapeFlaw> {
     let walls = walls(container)?;
     in_range(threshold.is_finite(), "threshold", "finite", threshold)?;
     if let Some(g) = max_gradient {
@@ -264,7 +264,7 @@ pub(super) fn leaf(
         None => ((SAFETY * sampled).max(f64::MIN_POSITIVE.sqrt()), true),
     };
     let extent = 0.5 * diagonal;
-    Ok(Leaf::Isosurface(Box::new(Isosurface {
+    Ok(Isosurface {
         f: f.clone(),
         walls,
         threshold,
@@ -274,7 +274,7 @@ pub(super) fn leaf(
         open,
         h: (1e-5 * extent).min(0.25 * accuracy),
         log: Arc::new(GradientLog::default()),
-    })))
+    })
 }
 
 /// One surface met along a ray: its `t`, whether the ray enters the solid there, and the

@@ -319,14 +319,14 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             max_gradient,
             accuracy,
             open,
-        } => super::isosurface::leaf(
+        } => Leaf::Isosurface(Box::new(super::isosurface::build(
             function,
             container,
             *threshold,
             *max_gradient,
             *accuracy,
             *open,
-        )?,
+        )?)),
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
