@@ -151,13 +151,22 @@ fn canon(scene: &Scene) -> Canon {
     }
 }
 
+/// Whether `o` is, or holds in CSG, an isosurface.
+fn has_isosurface(o: &Object) -> bool {
+    match &o.shape {
+        Shape::Isosurface { .. } => true,
+        Shape::Csg { children, .. } => children.iter().any(has_isosurface),
+        _ => false,
+    }
+}
+
 /// What became of one file.
 enum Outcome {
     /// Its IR came back the same.
     Same,
     /// It does not evaluate to a scene (errors are its point, or it is a module).
     NotAScene,
-    /// An asset it needs is not in the repository.
+    /// An asset it needs is not in the repository, or it holds what cannot be written back.
     Skipped(String),
     /// Its IR came back different: where.
     Differs(String),
@@ -180,6 +189,13 @@ fn round_trip(path: &Path, dir: &Path) -> Outcome {
         return Outcome::NotAScene;
     };
     let text = rtc::convert::to_source(&scene, dir);
+    // A compiled function (an isosurface's `f`) is written as a string naming why, so the text
+    // stops with a type error there: nothing to compare (docs/language.md §13.9).
+    if scene.objects.iter().any(has_isosurface) {
+        let why = "a compiled function cannot be written back as source";
+        assert!(text.contains(why), "{}: {text}", path.display());
+        return Outcome::Skipped(format!("an isosurface: {why}"));
+    }
     let name = path
         .strip_prefix(root())
         .unwrap()
@@ -245,7 +261,7 @@ fn every_scene_of_the_repository_round_trips_through_rtc_source() {
         differ.join("\n\n")
     );
     eprintln!(
-        "{} scenes round-trip, {} skipped (missing assets), {not_scenes} files are no scene",
+        "{} scenes round-trip, {} skipped (missing assets, compiled functions), {not_scenes} files are no scene",
         same.len(),
         skipped.len()
     );

@@ -227,6 +227,8 @@ fn render(
             _ => d,
         })
     };
+    // What the render saw that the scene should change (an isosurface's `max_gradient`).
+    print(&prepared.render_warnings(), &sources);
     let result = film.and_then(|film| {
         if show_stats {
             eprintln!(

@@ -5,7 +5,11 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape, Spindle, Spline, SweepSpline};
+use super::object::{BlobComponent, Container, Shape, Spindle, Spline, SweepSpline};
+
+/// What `rtc convert` writes for a compiled function (an isosurface's `f`): a string, so the
+/// written scene stops with a type error on `f` naming why (as `pattern(f)` does).
+pub(crate) const COMPILED_FUNCTION: &str = "a compiled function cannot be written back as source";
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -238,6 +242,45 @@ impl Shape {
                     ),
                 ],
             ),
+            Shape::Isosurface {
+                container,
+                threshold,
+                max_gradient,
+                accuracy,
+                open,
+                ..
+            } => {
+                let mut a = vec![("f", Arg::Str(COMPILED_FUNCTION.to_string()))];
+                match *container {
+                    Container::Box { min, max } => {
+                        if min != DVec3::splat(-1.0) {
+                            a.push(("min", Point(min)));
+                        }
+                        if max != DVec3::splat(1.0) {
+                            a.push(("max", Point(max)));
+                        }
+                    }
+                    Container::Sphere { center, radius } => {
+                        if center != DVec3::ZERO {
+                            a.push(("center", Point(center)));
+                        }
+                        a.push(("radius", Number(radius)));
+                    }
+                }
+                if *threshold != 0.0 {
+                    a.push(("threshold", Number(*threshold)));
+                }
+                if let Some(g) = max_gradient {
+                    a.push(("max_gradient", Number(*g)));
+                }
+                if *accuracy != 0.001 {
+                    a.push(("accuracy", Number(*accuracy)));
+                }
+                if *open {
+                    a.push(("open", Bool(true)));
+                }
+                ("isosurface", a)
+            }
             Shape::Mesh {
                 source,
                 smooth,

@@ -214,6 +214,24 @@ pub enum Shape {
         /// The coefficients in POV-Ray's order (see [`crate::ir::poly_terms`]).
         coefficients: Vec<f64>,
     },
+    /// An isosurface (POV-Ray's `isosurface`): where a compiled function of the point equals
+    /// `threshold` inside a container, inside where it is below; the container's walls close
+    /// it where the function is inside (unless `open`).
+    Isosurface {
+        /// The function of the point, compiled once (the same program as `pattern(f)`).
+        function: Arc<crate::pattern::Program>,
+        /// The box or sphere the surface is searched in.
+        container: Container,
+        /// The function's value on the surface.
+        threshold: f64,
+        /// A bound on the function's rate of change (per unit length); `None`: estimated
+        /// when the shape is prepared.
+        max_gradient: Option<f64>,
+        /// The shortest step of the search along a ray (features thinner may be missed).
+        accuracy: f64,
+        /// Whether the container's walls are left open (a surface, not a solid).
+        open: bool,
+    },
     /// Metaballs: the surface where the summed field equals `threshold`.
     Blob {
         /// Field sources.
@@ -292,6 +310,7 @@ impl Shape {
             Shape::SphereSweep { .. } => "sphere_sweep",
             Shape::Superellipsoid { .. } => "superellipsoid",
             Shape::Poly { .. } => "poly",
+            Shape::Isosurface { .. } => "isosurface",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }
@@ -408,6 +427,25 @@ pub fn poly_terms(order: u32) -> Vec<[u32; 3]> {
         }
     }
     out
+}
+
+/// The region an isosurface is searched in (POV-Ray's `contained_by`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Container {
+    /// An axis-aligned box.
+    Box {
+        /// Minimum corner.
+        min: DVec3,
+        /// Maximum corner.
+        max: DVec3,
+    },
+    /// A sphere.
+    Sphere {
+        /// Centre.
+        center: DVec3,
+        /// Radius (> 0).
+        radius: f64,
+    },
 }
 
 /// One metaball.

@@ -94,6 +94,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     let mesh_stats = b.stats();
     materials.extend(std::mem::take(&mut b.extra_materials));
     diags.extend(std::mem::take(&mut b.diagnostics));
+    let isosurfaces = std::mem::take(&mut b.isosurfaces);
     let textures = match textures {
         Some(t) if !diags.has_errors() => t,
         _ => return Err(diags),
@@ -145,6 +146,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         content,
         effects,
         warnings: diags.items,
+        isosurfaces,
         stats,
         visibility,
     })

@@ -13,13 +13,14 @@ use std::time::Duration;
 use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::geometry::mesh::{Mesh, MeshParts};
-use crate::geometry::shapes;
+use crate::geometry::shapes::{self, Leaf, isosurface::Watch};
 use crate::geometry::world::balls::Ball;
 use crate::geometry::world::primitive::{Geom, MeshRef, Primitive};
 use crate::ir::limits::Memory;
 use crate::ir::{
     ImageFilter, Mapping, Material, MaterialId, MeshSource, Object, Shape, Texture, TextureId,
 };
+use crate::source::Span;
 
 /// What the meshes placed so far took.
 #[derive(Clone, Copy, Debug, Default)]
@@ -55,6 +56,9 @@ pub(crate) struct Builder {
     /// The load's memory budget: each mesh placed is charged once (its file's data, then its
     /// triangles and BVH), and the textures after the objects.
     pub(crate) memory: Memory,
+    /// Every isosurface prepared, by its object's span: what its searches see is reported
+    /// after the render.
+    pub(crate) isosurfaces: Vec<(Span, Watch)>,
 }
 
 impl Builder {
@@ -70,6 +74,7 @@ impl Builder {
             mtl_ids: HashMap::new(),
             diagnostics: Diagnostics::default(),
             memory,
+            isosurfaces: Vec::new(),
         }
     }
 
@@ -133,7 +138,11 @@ impl Builder {
     /// a single shape is checked, not made into a primitive (its bounds, inverse transform)
     /// only to be dropped, as `rtc check` of a million spheres did.
     pub(crate) fn check(&mut self, o: &Object, inherited: MaterialId) {
-        if matches!(o.shape, Shape::Mesh { .. } | Shape::Csg { .. }) {
+        // An isosurface is prepared too: the note of an estimated gradient bound comes from it.
+        if matches!(
+            o.shape,
+            Shape::Mesh { .. } | Shape::Csg { .. } | Shape::Isosurface { .. }
+        ) {
             drop(self.object(o, inherited));
             return;
         }
@@ -199,7 +208,9 @@ impl Builder {
                                 Shape::Mesh { source, .. } => {
                                     format!("{} is not closed", source.describe())
                                 }
-                                Shape::Cylinder { .. } | Shape::Cone { .. } => {
+                                Shape::Cylinder { .. }
+                                | Shape::Cone { .. }
+                                | Shape::Isosurface { .. } => {
                                     format!("this {} is open", c.shape.kind_name())
                                 }
                                 other => {
@@ -216,6 +227,7 @@ impl Builder {
                                 .with_secondary(o.span, "in this CSG operation")
                                 .with_help(match &c.shape {
                                     Shape::Cylinder { .. } | Shape::Cone { .. } => "set `capped: true`",
+                                    Shape::Isosurface { .. } => "leave out `open: true`: the container's walls close it",
                                     Shape::Mesh { .. } => "use a watertight mesh (every edge shared by two faces)",
                                     _ => "use a closed solid such as a box, sphere or capped cylinder",
                                 }),
@@ -238,7 +250,16 @@ impl Builder {
                 }
             }
             leaf_shape => match shapes::leaf(leaf_shape) {
-                Ok(l) => Geom::Leaf(l),
+                Ok(l) => {
+                    if let Leaf::Isosurface(iso) = &l {
+                        let watch = iso.watch();
+                        if let Some(note) = watch.note(o.span) {
+                            self.diagnostics.push(note);
+                        }
+                        self.isosurfaces.push((o.span, watch));
+                    }
+                    Geom::Leaf(l)
+                }
                 Err(flaw) => {
                     self.diagnostics.push(flaw.diagnostic(o.span));
                     return None;

@@ -8,6 +8,7 @@ use super::effects::{Content, Effects};
 use super::textures::TextureMap;
 use super::validate;
 use crate::diag::Diagnostic;
+use crate::geometry::shapes::isosurface::Watch;
 use crate::geometry::{Ray, SurfaceHit, World};
 use crate::ir::{
     Camera, Color, Fade, LightKind, Material, MaterialId, RenderSettings, Sampling, Spot,
@@ -77,6 +78,8 @@ pub struct Prepared {
     pub(super) content: Content,
     pub(super) effects: Effects,
     pub(super) warnings: Vec<Diagnostic>,
+    /// Every isosurface's gradient bound and search counts, by its object's span.
+    pub(super) isosurfaces: Vec<(crate::source::Span, Watch)>,
     pub(super) stats: Stats,
     /// Which rays see each top-level object, by its index; empty when every ray sees every
     /// object (the common case costs nothing).
@@ -197,6 +200,16 @@ impl Prepared {
     /// Warnings found while preparing (a mesh whose MTL file is missing).
     pub fn warnings(&self) -> &[Diagnostic] {
         &self.warnings
+    }
+
+    /// What the renders of this scene so far found about its isosurfaces: steps where a
+    /// function changed faster than its `max_gradient`, and searches stopped by the budget of
+    /// evaluations per ray (docs/language.md §13.9). Empty when all went well.
+    pub fn render_warnings(&self) -> Vec<Diagnostic> {
+        self.isosurfaces
+            .iter()
+            .flat_map(|(span, w)| w.report(*span))
+            .collect()
     }
 
     /// What preparing took.

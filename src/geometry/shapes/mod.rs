@@ -19,6 +19,7 @@ mod cuboid;
 mod cylinder;
 mod disk;
 pub(crate) mod extrusion;
+pub(crate) mod isosurface;
 mod lathe;
 mod parallelogram;
 pub(crate) mod plane;
@@ -44,6 +45,7 @@ use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::extrusion::Extrusion;
+use crate::geometry::shapes::isosurface::Isosurface;
 use crate::geometry::shapes::lathe::Lathe;
 use crate::geometry::shapes::parallelogram::Quad;
 use crate::geometry::shapes::poly::Poly;
@@ -151,6 +153,8 @@ pub(crate) enum Leaf {
     Superellipsoid(Superellipsoid),
     /// An algebraic surface.
     Poly(Box<Poly>),
+    /// An isosurface of a compiled function.
+    Isosurface(Box<Isosurface>),
 }
 
 impl Leaf {
@@ -176,6 +180,7 @@ impl Leaf {
             Leaf::SphereSweep(x) => x.bounds(),
             Leaf::Superellipsoid(x) => x.bounds(),
             Leaf::Poly(x) => x.bounds(),
+            Leaf::Isosurface(x) => x.bounds(),
         }
     }
 
@@ -202,6 +207,7 @@ impl Leaf {
             Leaf::SphereSweep(x) => x.intersect(r, t_min, t_max),
             Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
             Leaf::Poly(x) => x.intersect(r, t_min, t_max),
+            Leaf::Isosurface(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -228,6 +234,7 @@ impl Leaf {
             Leaf::SphereSweep(x) => x.point_error(p),
             Leaf::Superellipsoid(x) => x.point_error(p),
             Leaf::Poly(x) => x.point_error(p),
+            Leaf::Isosurface(x) => x.point_error(p),
         }
     }
 
@@ -257,6 +264,7 @@ impl Leaf {
             Leaf::SphereSweep(x) => x.crossings(r, out),
             Leaf::Superellipsoid(x) => x.crossings(r, out),
             Leaf::Poly(x) => x.crossings(r, out),
+            Leaf::Isosurface(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -282,6 +290,7 @@ impl Leaf {
             Leaf::SphereSweep(x) => x.contains(q),
             Leaf::Superellipsoid(x) => x.contains(q),
             Leaf::Poly(x) => x.contains(q),
+            Leaf::Isosurface(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -363,6 +372,7 @@ pub(crate) fn encloses_volume(
         | Shape::Disk { .. }
         | Shape::Ring { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
+        Shape::Isosurface { open, .. } => !*open,
         Shape::Sor { open, .. } => !*open,
         Shape::Mesh { source, smooth, .. } => closed_mesh(source, *smooth),
         // A clipped surface is open: its clipper's faces are not shown.

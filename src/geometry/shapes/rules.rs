@@ -312,6 +312,21 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             order,
             coefficients,
         } => poly(*order, coefficients)?,
+        Shape::Isosurface {
+            function,
+            container,
+            threshold,
+            max_gradient,
+            accuracy,
+            open,
+        } => Leaf::Isosurface(Box::new(super::isosurface::build(
+            function,
+            container,
+            *threshold,
+            *max_gradient,
+            *accuracy,
+            *open,
+        )?)),
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
