@@ -30,8 +30,8 @@ pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share}
 pub use loaded::Loaded;
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use object::{
-    BlobComponent, CsgOp, GlyphCurve, Object, PrismSweep, Shape, Spindle, Spline, TextAlign,
-    TextGlyphs, Visibility, poly_terms,
+    BlobComponent, CsgOp, GlyphCurve, HeightGrid, Object, PrismSweep, Shape, Spindle, Spline,
+    TextAlign, TextGlyphs, Visibility, poly_terms,
 };
 pub use placement::Transform;
 pub use provenance::Provenance;

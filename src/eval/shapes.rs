@@ -19,12 +19,14 @@ mod common;
 mod compound;
 mod extrude;
 mod flat;
+mod height_field;
 mod mesh;
 mod revolve;
 
 use common::{checked, direction, point, radius, unit_dir};
 
 pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed, require_closed_to};
+pub(crate) use height_field::FNS as HEIGHT_FIELD_FNS;
 pub(crate) use revolve::FNS as REVOLVE_FNS;
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by

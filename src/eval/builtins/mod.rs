@@ -45,6 +45,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         super::shapes::FNS,
         super::shapes::COMPOUND_FNS,
         super::shapes::REVOLVE_FNS,
+        super::shapes::HEIGHT_FIELD_FNS,
         super::transform::FNS,
         super::rng::FNS,
     ]

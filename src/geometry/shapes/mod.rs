@@ -19,6 +19,8 @@ mod cuboid;
 mod cylinder;
 mod disk;
 pub(crate) mod extrusion;
+mod height_field;
+mod height_field_walk;
 mod lathe;
 mod parallelogram;
 pub(crate) mod plane;
@@ -44,6 +46,7 @@ use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::extrusion::Extrusion;
+use crate::geometry::shapes::height_field::HeightField;
 use crate::geometry::shapes::lathe::Lathe;
 use crate::geometry::shapes::parallelogram::Quad;
 use crate::geometry::shapes::poly::Poly;
@@ -144,6 +147,8 @@ pub(crate) enum Leaf {
     Superellipsoid(Superellipsoid),
     /// An algebraic surface.
     Poly(Box<Poly>),
+    /// A height field.
+    HeightField(Box<HeightField>),
 }
 
 impl Leaf {
@@ -167,6 +172,7 @@ impl Leaf {
             Leaf::Lathe(x) => x.bounds(),
             Leaf::Superellipsoid(x) => x.bounds(),
             Leaf::Poly(x) => x.bounds(),
+            Leaf::HeightField(x) => x.bounds(),
         }
     }
 
@@ -191,6 +197,7 @@ impl Leaf {
             Leaf::Lathe(x) => x.intersect(r, t_min, t_max),
             Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
             Leaf::Poly(x) => x.intersect(r, t_min, t_max),
+            Leaf::HeightField(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -215,6 +222,7 @@ impl Leaf {
             Leaf::Lathe(x) => x.point_error(p),
             Leaf::Superellipsoid(x) => x.point_error(p),
             Leaf::Poly(x) => x.point_error(p),
+            Leaf::HeightField(x) => x.point_error(p),
         }
     }
 
@@ -242,6 +250,7 @@ impl Leaf {
             Leaf::Lathe(x) => x.crossings(r, out),
             Leaf::Superellipsoid(x) => x.crossings(r, out),
             Leaf::Poly(x) => x.crossings(r, out),
+            Leaf::HeightField(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -265,6 +274,7 @@ impl Leaf {
             Leaf::Lathe(x) => x.contains(q),
             Leaf::Superellipsoid(x) => x.contains(q),
             Leaf::Poly(x) => x.contains(q),
+            Leaf::HeightField(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -361,6 +371,7 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Text { .. }
         | Shape::Lathe { .. }
         | Shape::Superellipsoid { .. }
-        | Shape::Poly { .. } => true,
+        | Shape::Poly { .. }
+        | Shape::HeightField { .. } => true,
     }
 }
