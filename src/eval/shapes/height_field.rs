@@ -56,7 +56,7 @@ static HEIGHT_FIELD: Sig = Sig::new(
         .optional(),
         Param::new(
             "heights",
-            Ty::ListOf(&Ty::List),
+            Ty::ListOf(&Ty::ListOf(&Ty::Float)),
             "instead of `image`: rows of heights in [0, 1], the first row at z = 0, the first \
              height of a row at x = 0",
         )
@@ -74,7 +74,7 @@ static HEIGHT_FIELD: Sig = Sig::new(
 )
 .examples(&[
     "height_field(image: \"../tests/data/pov_twins/height_field_map.png\", smooth: true, water_level: 0.1)",
-    "height_field(f: fn(p) { 0.5 + 0.4 * sin(6 * p.x) * cos(6 * p.z) }, resolution: [64, 64])",
+    "height_field(f: fn(p) { 0.5 + 0.4 * sin(6rad * p.x) * cos(6rad * p.z) }, resolution: [64, 64])",
     "height_field(heights: [[0, 0.5], [0.5, 1]])",
 ]);
 
@@ -268,8 +268,17 @@ fn from_rows(it: &dyn Host, v: &Value, span: Span) -> R<HeightGrid> {
     let mut nx = 0;
     let mut h = Vec::new();
     for (j, row) in rows.iter().enumerate() {
-        let Value::List(row) = row else {
-            return Err(types::mismatch(it, "List", row, span).into());
+        let row: Vec<f64> = match row {
+            Value::List(items) => {
+                let mut r = Vec::with_capacity(items.len());
+                for x in items.iter() {
+                    r.push(types::num(it, x, span)?);
+                }
+                r
+            }
+            // A row of three numbers in brackets reads as a vector.
+            Value::Vec3(x) => x.to_array().to_vec(),
+            other => return Err(types::mismatch(it, "List", other, span).into()),
         };
         if j == 0 {
             nx = row.len();
@@ -290,15 +299,15 @@ fn from_rows(it: &dyn Host, v: &Value, span: Span) -> R<HeightGrid> {
             return Err(error(
                 "rtc::param::out_of_range",
                 span,
-                format!("`heights` has more than the {MAX_HEIGHT_FIELD_POINTS} points a height field may have"),
+                format!(
+                    "`heights` has more than the {MAX_HEIGHT_FIELD_POINTS} points a height field may have"
+                ),
             )
             .with_label("too many points")
             .with_help("use an image for a grid this large")
             .into());
         }
-        for x in row.iter() {
-            h.push(types::num(it, x, span)? as f32);
-        }
+        h.extend(row.iter().map(|&x| x as f32));
     }
     Ok(grid(nx, nz, h))
 }
