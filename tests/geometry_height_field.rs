@@ -341,3 +341,51 @@ fn the_height_field_scene_renders_the_same_at_every_scale() {
     println!("{}", report.join("\n"));
     assert!(worst <= 0.001, "{}", report.join("\n"));
 }
+
+/// Rays straight down and up (their shadow on the ground is one point): on the terrain from
+/// above, on the bottom from below, alone and as a CSG operand (whose crossings span the
+/// whole line).
+#[test]
+fn rays_straight_down_and_up_meet_the_top_and_the_bottom() {
+    let g = terrain();
+    let plain = world(vec![object(field(&g, false, 0.0), DAffine3::IDENTITY)]);
+    let csg = world(vec![object(
+        Shape::Csg {
+            op: CsgOp::Intersection,
+            children: vec![
+                object(field(&g, false, 0.0), DAffine3::IDENTITY),
+                object(
+                    Shape::Box {
+                        min: DVec3::splat(-1.0),
+                        max: DVec3::splat(2.0),
+                    },
+                    DAffine3::IDENTITY,
+                ),
+            ],
+        },
+        DAffine3::IDENTITY,
+    )]);
+    let mut rng = Rng(11);
+    for _ in 0..500 {
+        let (x, z) = (rng.range(0.0, 1.0), rng.range(0.0, 1.0));
+        let top = surface(&g, x, z, 0.0);
+        let down = Ray::new(DVec3::new(x, 5.0, z), -DVec3::Y);
+        for w in [&plain, &csg] {
+            let h = w
+                .intersect(&down, 0.0, f64::INFINITY)
+                .expect("hits from above");
+            assert!(
+                (h.point.y - top).abs() < 1e-12 && h.normal.y > 0.0,
+                "{x}, {z}"
+            );
+        }
+        // From below: the plain field shows no bottom (as POV-Ray's); the solid does.
+        let up = Ray::new(DVec3::new(x, -5.0, z), DVec3::Y);
+        let h = plain
+            .intersect(&up, 0.0, f64::INFINITY)
+            .expect("the top from below");
+        assert!((h.point.y - top).abs() < 1e-12, "{x}, {z}");
+        let h = csg.intersect(&up, 0.0, f64::INFINITY).expect("the bottom");
+        assert!(h.point.y.abs() < 1e-12 && h.normal == -DVec3::Y, "{x}, {z}");
+    }
+}

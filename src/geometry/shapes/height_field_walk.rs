@@ -79,15 +79,21 @@ pub(super) fn walk(
     t1: f64,
     mut visit: impl FnMut(usize, usize, f64, f64) -> bool,
 ) {
-    if !(t0 <= t1) || cols == 0 || rows == 0 {
+    let ordered = matches!(
+        t0.partial_cmp(&t1),
+        Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+    );
+    if !ordered || cols == 0 || rows == 0 {
         return;
     }
     // The start cell from the point a little into the interval, so a start on a cell border
-    // picks the cell the ray goes into.
-    let tm = if t1.is_finite() && t0.is_finite() {
-        t0 + (t1 - t0) * 1e-9
-    } else {
-        t0
+    // picks the cell the ray goes into. An unbounded interval is a line straight up or down
+    // (the caller clips every other to the grid): any t gives its one point.
+    let tm = match (t0.is_finite(), t1.is_finite()) {
+        (true, true) => t0 + (t1 - t0) * 1e-9,
+        (true, false) => t0,
+        (false, true) => t1,
+        (false, false) => 0.0,
     };
     let start = p + tm * d;
     let cell = |x: f64, n: usize| -> usize {
