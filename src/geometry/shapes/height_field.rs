@@ -50,6 +50,9 @@ struct TriHit {
     bary: [f64; 3],
 }
 
+/// A triangle's corners and their grid points.
+type Corners = ([DVec3; 3], [(usize, usize); 3]);
+
 /// Which surface a query reads: the one a ray sees (the triangles as given) or the solid's top
 /// (every height raised to the water level, as POV-Ray's inside test reads it).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,7 +131,7 @@ impl HeightField {
     /// The two triangles of cell `(i, j)`, counter-clockwise seen from above, with their grid
     /// points: `[(0,0), (0,1), (1,0)]` and `[(1,1), (1,0), (0,1)]`.
     #[inline]
-    fn triangles(&self, i: usize, j: usize, top: Top) -> [([DVec3; 3], [(usize, usize); 3]); 2] {
+    fn triangles(&self, i: usize, j: usize, top: Top) -> [Corners; 2] {
         let a = [(i, j), (i, j + 1), (i + 1, j)];
         let b = [(i + 1, j + 1), (i + 1, j), (i, j + 1)];
         let pts = |k: [(usize, usize); 3]| k.map(|(x, z)| self.corner(x, z, top));
