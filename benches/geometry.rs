@@ -61,7 +61,7 @@ fn scene_of(path: &Path, smooth: bool) -> Scene {
         objects: vec![Object {
             motion: None,
             shape: Shape::Mesh {
-                path: path.to_path_buf(),
+                source: rtc::ir::MeshSource::File(path.to_path_buf()),
                 smooth,
                 use_mtl: true,
             },

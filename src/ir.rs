@@ -15,6 +15,7 @@ mod flare;
 mod light;
 pub mod limits;
 mod loaded;
+mod mesh;
 mod motion;
 mod object;
 mod placement;
@@ -28,9 +29,10 @@ pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;
 pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share};
 pub use loaded::Loaded;
+pub use mesh::{InlineMesh, MeshSource};
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use object::{
-    BlobComponent, CsgOp, GlyphCurve, HeightGrid, Object, PrismSweep, Shape, Spindle, Spline,
+    BlobComponent, CsgOp, GlyphCurve, HeightGrid, Object, PrismSweep, Shape, Spindle, Spline, SweepSpline,
     TextAlign, TextGlyphs, Visibility, poly_terms,
 };
 pub use placement::Transform;

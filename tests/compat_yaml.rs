@@ -222,7 +222,7 @@ fn student_geometry_spellings_map_onto_ir_shapes() {
     assert!(matches!(plane.objects[4].shape, Shape::Plane { normal, .. } if normal == DVec3::Y));
     let mesh = scene_of("student-extensions/scene05-dolphins__jes.yaml");
     assert!(
-        matches!(&mesh.objects[1].shape, Shape::Mesh { path, .. } if path.ends_with("dolphins.obj"))
+        matches!(&mesh.objects[1].shape, Shape::Mesh { source: rtc::ir::MeshSource::File(path), .. } if path.ends_with("dolphins.obj"))
     );
 }
 

@@ -103,7 +103,11 @@ fn resolved(scene: &Scene) -> Vec<Resolved> {
             let mut object = o.clone();
             object.span = Span::default();
             object.material = None;
-            if let Shape::Mesh { path, .. } = &mut object.shape {
+            if let Shape::Mesh {
+                source: rtc::ir::MeshSource::File(path),
+                ..
+            } = &mut object.shape
+            {
                 *path = canonical(path);
             }
             let material = o.material.map(|id| {

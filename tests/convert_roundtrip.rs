@@ -118,7 +118,10 @@ fn canon(scene: &Scene) -> Canon {
         out.span = Span::default();
         out.material = o.material.map(&mut *number);
         match &mut out.shape {
-            Shape::Mesh { path, .. } => *path = canonical(path),
+            Shape::Mesh {
+                source: rtc::ir::MeshSource::File(path),
+                ..
+            } => *path = canonical(path),
             Shape::Csg { children, .. } => {
                 *children = children.iter().map(|c| object(c, number)).collect();
             }

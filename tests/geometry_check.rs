@@ -45,7 +45,7 @@ fn obj_file(name: &str, text: &str) -> std::path::PathBuf {
 fn mesh(path: std::path::PathBuf) -> Object {
     object(
         Shape::Mesh {
-            path,
+            source: rtc::ir::MeshSource::File(path),
             smooth: false,
             use_mtl: false,
         },

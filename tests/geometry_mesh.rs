@@ -80,7 +80,7 @@ fn sphere_obj(levels: u32) -> (String, Vec<Vec3>, Vec<[usize; 3]>) {
 
 fn mesh(path: PathBuf, smooth: bool) -> Shape {
     Shape::Mesh {
-        path,
+        source: rtc::ir::MeshSource::File(path),
         smooth,
         use_mtl: false,
     }
@@ -240,7 +240,7 @@ fn mtl_materials_become_rtc_materials() {
     let path = PathBuf::from("tests/data/course/models/devilduk.obj");
     let sc = scene(vec![object(
         Shape::Mesh {
-            path,
+            source: rtc::ir::MeshSource::File(path),
             smooth: true,
             use_mtl: true,
         },

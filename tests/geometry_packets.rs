@@ -18,8 +18,9 @@ use rtc::ir::Shape;
 
 fn duck() -> Shape {
     Shape::Mesh {
-        path: PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/data/course/models/devilduk.obj"),
+        source: rtc::ir::MeshSource::File(
+            PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/course/models/devilduk.obj"),
+        ),
         smooth: true,
         use_mtl: false,
     }

@@ -39,7 +39,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
     rtc::assets::clear_cache();
     let mut scene = crate::texture::one_object_scene(Object {
         shape: Shape::Mesh {
-            path: path.to_path_buf(),
+            source: rtc::ir::MeshSource::File(path.to_path_buf()),
             smooth,
             use_mtl,
         },

@@ -35,6 +35,8 @@ pub(super) struct GltfMesh {
     /// Per triangle, an index into `materials` (`u32::MAX`: none); empty when none has one.
     pub(super) material_of: Vec<u32>,
     pub(super) materials: Vec<Material>,
+    /// Per material, its base colour texture's image file (beside the glTF file).
+    pub(super) images: Vec<Option<PathBuf>>,
     pub(super) buffers: Vec<PathBuf>,
     pub(super) warnings: Vec<String>,
 }
@@ -80,10 +82,12 @@ pub(super) fn parse(
         mesh: Indexed::default(),
         material_of: Vec::new(),
         materials: Vec::new(),
+        images: Vec::new(),
         buffers: paths,
         warnings: Vec::new(),
     };
     let mut walk = Walk {
+        path,
         buffers: &buffers,
         out: &mut out,
         visits: 0,
@@ -197,6 +201,8 @@ fn buffer(
 
 /// The scene walk's state.
 struct Walk<'a> {
+    /// The glTF file (images are resolved beside it).
+    path: &'a Path,
     buffers: &'a [Vec<u8>],
     out: &'a mut GltfMesh,
     visits: usize,
@@ -339,18 +345,45 @@ impl Walk<'_> {
         if a < 1.0 {
             out.refract = (1.0 - f64::from(a)).clamp(0.0, 1.0);
         }
-        if m.pbr_metallic_roughness().base_color_texture().is_some() {
+        let image = self.base_color_image(&m);
+        if image.is_some() && [r, g, b] != [1.0; 3] {
             self.out.warn(
-                "a material's base colour texture is not read: its base colour factor is used"
+                "a material's base colour factor is not applied over its texture: the texture is shown as it is"
                     .to_owned(),
             );
         }
         self.out.materials.push(out);
+        self.out.images.push(image);
         let slot = self.out.materials.len() as u32 - 1;
         if let Some(s) = self.material_slots.get_mut(i) {
             *s = Some(slot);
         }
         slot
+    }
+
+    /// The image file of material `m`'s base colour texture: an external image beside the
+    /// file, read through `TEXCOORD_0` (others, and images inside the file, are warned of).
+    fn base_color_image(&mut self, m: &gltf::Material<'_>) -> Option<PathBuf> {
+        let info = m.pbr_metallic_roughness().base_color_texture()?;
+        if info.tex_coord() != 0 {
+            self.out.warn(format!(
+                "a base colour texture on TEXCOORD_{} is not read (only TEXCOORD_0): its base colour factor is used",
+                info.tex_coord()
+            ));
+            return None;
+        }
+        match info.texture().source().source() {
+            gltf::image::Source::Uri { uri, .. } if !uri.starts_with("data:") => {
+                Some(buffer_file(self.path, uri))
+            }
+            _ => {
+                self.out.warn(
+                    "a base colour texture stored inside the file is not read (only image files beside it): its base colour factor is used"
+                        .to_owned(),
+                );
+                None
+            }
+        }
     }
 
     /// The bytes of each element of accessor `a` (checked), with its element size.

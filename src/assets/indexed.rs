@@ -71,12 +71,24 @@ pub(super) fn read(path: &Path, format: Format, smooth: bool) -> Result<Faces, M
         drop(bytes);
         let mut f = faces(g.mesh, g.material_of, smooth)?;
         f.materials = g.materials;
+        f.images = g.images;
         f.libraries = g.buffers;
         f.warnings = g.warnings;
         return Ok(f);
     }
     let indexed = parse(&bytes, format)?;
     drop(bytes);
+    faces(indexed, Vec::new(), smooth)
+}
+
+/// An inline mesh in the common form (its coordinates in single precision, as a file's).
+pub(super) fn inline(mesh: &crate::ir::InlineMesh, smooth: bool) -> Result<Faces, MeshError> {
+    let indexed = Indexed {
+        vertices: mesh.vertices.iter().map(|v| v.as_vec3()).collect(),
+        triangles: mesh.triangles.clone(),
+        normals: mesh.normals.iter().map(|v| v.as_vec3()).collect(),
+        uvs: mesh.uvs.iter().map(|v| v.as_vec2()).collect(),
+    };
     faces(indexed, Vec::new(), smooth)
 }
 
@@ -151,6 +163,7 @@ pub(super) fn faces(
         uvs,
         material_of: materials,
         materials: Vec::new(),
+        images: Vec::new(),
         warnings: Vec::new(),
         libraries: Vec::new(),
     })

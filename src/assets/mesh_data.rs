@@ -19,6 +19,9 @@ pub(crate) struct Faces {
     pub(crate) uvs: Vec<[Vec2; 3]>,
     pub(crate) material_of: Vec<u32>,
     pub(crate) materials: Vec<Material>,
+    /// Per material, the image file of its base colour (MTL `map_Kd`, glTF
+    /// `baseColorTexture`), resolved beside the mesh file.
+    pub(crate) images: Vec<Option<PathBuf>>,
     pub(crate) warnings: Vec<String>,
     pub(crate) libraries: Vec<PathBuf>,
 }

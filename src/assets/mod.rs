@@ -70,6 +70,45 @@ pub(crate) fn mesh(path: &Path, smooth: bool) -> Result<Arc<MeshAsset>, MeshErro
     )
 }
 
+/// The mesh `source` names (with smoothed normals if `smooth`): a file through [`mesh`], an
+/// inline mesh built once per value (objects placing one value share it; a value no object
+/// holds any more is forgotten).
+pub(crate) fn mesh_of(
+    source: &crate::ir::MeshSource,
+    smooth: bool,
+) -> Result<Arc<MeshAsset>, MeshError> {
+    match source {
+        crate::ir::MeshSource::File(path) => mesh(path, smooth),
+        crate::ir::MeshSource::Inline(m) => inline_mesh(m, smooth),
+    }
+}
+
+/// Inline meshes built so far, by value: the weak reference tells whether the address still
+/// holds the same value (while it can be upgraded, the allocation is alive and unmoved).
+type InlineEntry = (std::sync::Weak<crate::ir::InlineMesh>, bool, Arc<MeshAsset>);
+static INLINE: std::sync::Mutex<Vec<InlineEntry>> = std::sync::Mutex::new(Vec::new());
+
+fn inline_mesh(m: &Arc<crate::ir::InlineMesh>, smooth: bool) -> Result<Arc<MeshAsset>, MeshError> {
+    let found = |cache: &mut Vec<InlineEntry>| {
+        cache.retain(|(w, _, _)| w.strong_count() > 0);
+        cache
+            .iter()
+            .find(|(w, s, _)| *s == smooth && w.upgrade().is_some_and(|v| Arc::ptr_eq(&v, m)))
+            .map(|(_, _, a)| a.clone())
+    };
+    if let Some(a) = found(&mut INLINE.lock().unwrap_or_else(|e| e.into_inner())) {
+        return Ok(a);
+    }
+    // Built outside the lock: a large mesh must not stall other threads' lookups.
+    let asset = Arc::new(MeshAsset::inline(m, smooth)?);
+    let mut cache = INLINE.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(a) = found(&mut cache) {
+        return Ok(a);
+    }
+    cache.push((Arc::downgrade(m), smooth, asset.clone()));
+    Ok(asset)
+}
+
 /// The `.bin` buffer files the glTF file `path` (its bytes `bytes`) names, resolved beside it
 /// as the loader resolves them (none when it does not parse).
 pub(crate) fn gltf_buffer_paths(path: &Path, bytes: &[u8]) -> Vec<std::path::PathBuf> {
@@ -133,6 +172,7 @@ pub fn cached_loads(path: &Path) -> usize {
 /// Forgets every cached asset (benchmarks use it to time loading afresh).
 pub fn clear_cache() {
     MESHES.clear();
+    INLINE.lock().unwrap_or_else(|e| e.into_inner()).clear();
     PICTURES.clear();
     FONTS.clear();
 }

@@ -38,6 +38,10 @@ pub struct MeshAsset {
     pub material_of: Vec<u32>,
     /// The file's MTL materials converted to rtc materials.
     pub materials: Vec<Material>,
+    /// Per material, the image file of its base colour, if it names one (`map_Kd`, glTF's
+    /// `baseColorTexture`): the preparation stage gives the material that image on the
+    /// mesh's texture coordinates.
+    pub images: Vec<Option<PathBuf>>,
     /// Warnings met while loading (a missing `.mtl`).
     pub warnings: Vec<String>,
     /// The material libraries its `mtllib` lines name, read or not (the cache reloads the mesh
@@ -64,6 +68,14 @@ impl MeshAsset {
                 Self::finish(path, faces, smooth, start)
             }
         }
+    }
+
+    /// The mesh a scene writes inline, through the same finish as a file's (faces without
+    /// area dropped, smooth normals, bounds); `path` stays empty.
+    pub fn inline(mesh: &crate::ir::InlineMesh, smooth: bool) -> Result<MeshAsset, MeshError> {
+        let start = std::time::Instant::now();
+        let faces = super::indexed::inline(mesh, smooth)?;
+        Self::finish(Path::new(""), faces, smooth, start)
     }
 
     /// [`MeshAsset::load`] through tobj alone (what the parallel reader must agree with).
@@ -121,6 +133,7 @@ impl MeshAsset {
             uvs,
             material_of,
             materials,
+            images,
             warnings,
             libraries,
         } = faces;
@@ -169,6 +182,7 @@ impl MeshAsset {
             uvs,
             material_of,
             materials,
+            images,
             warnings,
             libraries,
             min,
@@ -197,13 +211,24 @@ impl MeshAsset {
     }
 }
 
-/// The material libraries' result as the asset keeps it: rtc materials, or a warning.
-fn convert_materials(mtl: super::obj_file::Materials, warnings: &mut Vec<String>) -> Vec<Material> {
+/// The material libraries' result as the asset keeps it: rtc materials and their `map_Kd`
+/// images (resolved beside the OBJ file `path`), or a warning.
+fn convert_materials(
+    path: &Path,
+    mtl: super::obj_file::Materials,
+    warnings: &mut Vec<String>,
+) -> (Vec<Material>, Vec<Option<PathBuf>>) {
     match mtl {
-        Ok(m) => m.iter().map(super::mtl::convert).collect(),
+        Ok(m) => {
+            let dir = path.parent().unwrap_or(Path::new(""));
+            (
+                m.iter().map(super::mtl::convert).collect(),
+                m.iter().map(|m| super::mtl::image(m, dir)).collect(),
+            )
+        }
         Err(e) => {
             warnings.push(format!("its material library could not be read: {e}"));
-            Vec::new()
+            (Vec::new(), Vec::new())
         }
     }
 }
@@ -216,7 +241,7 @@ fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, Mes
         libs.borrow().find(name)
     })?;
     let mut warnings = Vec::new();
-    let materials = convert_materials(libs.borrow_mut().merged(), &mut warnings);
+    let (materials, images) = convert_materials(path, libs.borrow_mut().merged(), &mut warnings);
     let libraries = libs.borrow().files();
     let super::obj_fast::ObjData {
         positions,
@@ -285,6 +310,7 @@ fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, Mes
         uvs,
         material_of,
         materials,
+        images,
         warnings,
         libraries,
     }))
@@ -304,7 +330,7 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         super::obj_file::read_text(&libs, text, &opts).map_err(|e| locate(path, e))?;
     let libraries = libs.files();
     let mut warnings = Vec::new();
-    let materials = convert_materials(mtl, &mut warnings);
+    let (materials, images) = convert_materials(path, mtl, &mut warnings);
     let mut vertices: Vec<Vec3> = Vec::new();
     let mut tris: Vec<[u32; 3]> = Vec::new();
     let mut file_normals: Vec<Option<[Vec3; 3]>> = Vec::new();
@@ -414,6 +440,7 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         uvs,
         material_of,
         materials,
+        images,
         warnings,
         libraries,
     })

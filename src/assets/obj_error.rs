@@ -63,8 +63,33 @@ impl MeshError {
 }
 
 impl MeshError {
-    /// The diagnostic for this error on the mesh `path` placed at `span`:
+    /// The diagnostic for this error on the mesh `source` placed at `span`:
     /// `rtc::mesh::{not_found, too_large, malformed}`.
+    pub(crate) fn diagnostic_of(&self, span: Span, source: &crate::ir::MeshSource) -> Diagnostic {
+        match source {
+            crate::ir::MeshSource::File(path) => self.diagnostic(span, path),
+            // The constructor's checks leave an inline mesh nothing to fail on but its budget
+            // and faces that lose their area in single precision.
+            crate::ir::MeshSource::Inline(_) => {
+                let mut d = Diagnostic::error(
+                    if self.too_large {
+                        "rtc::mesh::too_large"
+                    } else {
+                        "rtc::mesh::malformed"
+                    },
+                    span,
+                    format!("this inline mesh cannot be used: {}", self.message),
+                )
+                .with_label("this mesh");
+                if let Some(fix) = &self.fix {
+                    d = d.with_help(fix.clone());
+                }
+                d
+            }
+        }
+    }
+
+    /// The diagnostic for a mesh file at `path` that failed to load, on `span`.
     pub(crate) fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {
         if self.missing {
             return Diagnostic::error(

@@ -161,8 +161,8 @@ fn opaque(scene: &Scene, o: &Object) -> bool {
 /// Whether `o` encloses a volume whose inside `contains` can tell (a mesh when its file is a
 /// closed surface).
 fn closed(o: &Object) -> bool {
-    shapes::encloses_volume(&o.shape, &|path: &std::path::Path, smooth: bool| {
-        mesh_bounds(path, smooth).is_some_and(|(_, closed)| closed)
+    shapes::encloses_volume(&o.shape, &|source: &crate::ir::MeshSource, smooth: bool| {
+        mesh_bounds(source, smooth).is_some_and(|(_, closed)| closed)
     })
 }
 
@@ -180,7 +180,7 @@ fn contains(o: &Object, p: DVec3) -> bool {
     };
     match &o.shape {
         Shape::Csg { op, children } => csg::combine(*op, children.iter().map(|c| contains(c, q))),
-        Shape::Mesh { path, smooth, .. } => inside_mesh(path, *smooth, q),
+        Shape::Mesh { source, smooth, .. } => inside_mesh(source, *smooth, q),
         s => shapes::leaf(s).is_ok_and(|l| l.contains(q)),
     }
 }
@@ -200,7 +200,7 @@ fn representative(o: &Object, world: Option<Aabb>) -> Option<DVec3> {
 /// do not load.
 fn local_bounds(s: &Shape) -> Option<Aabb> {
     match s {
-        Shape::Mesh { path, smooth, .. } => mesh_bounds(path, *smooth).map(|(b, _)| b),
+        Shape::Mesh { source, smooth, .. } => mesh_bounds(source, *smooth).map(|(b, _)| b),
         Shape::Csg { op, children } => {
             let boxes: Option<Vec<Aabb>> = children
                 .iter()

@@ -337,7 +337,7 @@ fn mesh(
     let mesh = Object {
         motion: None,
         shape: Shape::Mesh {
-            path,
+            source: crate::ir::MeshSource::File(path),
             smooth: false,
             use_mtl: material.is_none(),
         },

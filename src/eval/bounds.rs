@@ -19,8 +19,8 @@ use super::value::{Obj, ObjShape, Value};
 
 /// A mesh's vertex bounds, through the asset service (which keeps the load for the render; no
 /// BVH is built to answer).
-fn mesh_bounds(path: &std::path::Path, smooth: bool, span: Span) -> R<Aabb> {
-    let mesh = crate::assets::mesh(path, smooth).map_err(|e| e.diagnostic(span, path))?;
+fn mesh_bounds(source: &crate::ir::MeshSource, smooth: bool, span: Span) -> R<Aabb> {
+    let mesh = crate::assets::mesh_of(source, smooth).map_err(|e| e.diagnostic_of(span, source))?;
     Ok(Aabb::new(mesh.min, mesh.max))
 }
 
@@ -39,8 +39,8 @@ fn unbounded(span: Span) -> super::error::EvalError {
 fn bb(o: &Obj, parent: DAffine3, span: Span) -> R<Aabb> {
     let t = parent * o.transform;
     match &o.shape {
-        ObjShape::Prim(Shape::Mesh { path, smooth, .. }) => {
-            Ok(mesh_bounds(path, *smooth, span)?.transformed(&t))
+        ObjShape::Prim(Shape::Mesh { source, smooth, .. }) => {
+            Ok(mesh_bounds(source, *smooth, span)?.transformed(&t))
         }
         ObjShape::Prim(s) => {
             let local = shapes::bounds(s).filter(Aabb::is_finite);

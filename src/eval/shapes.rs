@@ -1,6 +1,6 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
-//! in `mesh`, prisms and text in `extrude`, lathes, superellipsoids and polynomial surfaces in
-//! `revolve`).
+//! in `mesh`, prisms and text in `extrude`, lathes, sors, superellipsoids and polynomial surfaces in
+//! `revolve`, sphere sweeps in `sweep`).
 
 use glam::DVec3;
 
@@ -21,13 +21,16 @@ mod extrude;
 mod flat;
 mod height_field;
 mod mesh;
+mod mesh_inline;
 mod revolve;
+mod sweep;
 
 use common::{checked, direction, point, radius, unit_dir};
 
 pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed, require_closed_to};
 pub(crate) use height_field::FNS as HEIGHT_FIELD_FNS;
 pub(crate) use revolve::FNS as REVOLVE_FNS;
+pub(crate) use sweep::FNS as SWEEP_FNS;
 
 /// Shape constructors with their schemas (groups and CSG are in `compound`). The ranges of a shape's numbers are checked by
 /// geometry's shape rules once the shape is made (`checked`), which name the parameter to

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Shape, Spindle, Spline};
+use super::object::{BlobComponent, Shape, Spindle, Spline, SweepSpline};
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
 #[derive(Clone, Debug, PartialEq)]
@@ -198,6 +198,30 @@ impl Shape {
                 }
                 ("lathe", a)
             }
+            Shape::Sor { points, open } => {
+                let pair = |p: &[f64; 2]| List(vec![Number(p[0]), Number(p[1])]);
+                let mut a = vec![("points", List(points.iter().map(pair).collect()))];
+                if *open {
+                    a.push(("open", Bool(true)));
+                }
+                ("sor", a)
+            }
+            Shape::SphereSweep { spline, spheres } => {
+                let mut a = vec![
+                    (
+                        "points",
+                        List(spheres.iter().map(|(c, _)| Point(*c)).collect()),
+                    ),
+                    (
+                        "radii",
+                        List(spheres.iter().map(|(_, r)| Number(*r)).collect()),
+                    ),
+                ];
+                if *spline != SweepSpline::Linear {
+                    a.push(("spline", Arg::Str(spline.name().to_string())));
+                }
+                ("sphere_sweep", a)
+            }
             Shape::Superellipsoid { e, n } => {
                 ("superellipsoid", vec![("e", Number(*e)), ("n", Number(*n))])
             }
@@ -245,11 +269,14 @@ impl Shape {
                 ("height_field", a)
             }
             Shape::Mesh {
-                path,
+                source,
                 smooth,
                 use_mtl,
             } => {
-                let mut a = vec![("path", Arg::Path(path.clone()))];
+                let mut a = match source {
+                    super::mesh::MeshSource::File(path) => vec![("path", Arg::Path(path.clone()))],
+                    super::mesh::MeshSource::Inline(m) => inline_mesh_args(m),
+                };
                 if *smooth {
                     a.push(("smooth", Bool(true)));
                 }
@@ -305,4 +332,38 @@ impl Shape {
         };
         Some(ShapeCall { name, args })
     }
+}
+
+/// An inline mesh's lists as `mesh(vertices:, faces:, normals:, uv:)` reads them (the empty
+/// optional lists left out).
+fn inline_mesh_args(m: &super::mesh::InlineMesh) -> Vec<(&'static str, Arg)> {
+    let number_list = |xs: &[f64]| Arg::List(xs.iter().map(|x| Arg::Number(*x)).collect());
+    let mut a = vec![
+        (
+            "vertices",
+            Arg::List(m.vertices.iter().map(|v| Arg::Point(*v)).collect()),
+        ),
+        (
+            "faces",
+            Arg::List(
+                m.triangles
+                    .iter()
+                    .map(|t| number_list(&t.map(f64::from)))
+                    .collect(),
+            ),
+        ),
+    ];
+    if !m.normals.is_empty() {
+        a.push((
+            "normals",
+            Arg::List(m.normals.iter().map(|v| Arg::Point(*v)).collect()),
+        ));
+    }
+    if !m.uvs.is_empty() {
+        a.push((
+            "uv",
+            Arg::List(m.uvs.iter().map(|v| number_list(&v.to_array())).collect()),
+        ));
+    }
+    a
 }

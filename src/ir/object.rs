@@ -180,6 +180,24 @@ pub enum Shape {
         /// How the points are joined.
         spline: Spline,
     },
+    /// A surface of revolution (POV-Ray's `sor`): about the +Y axis, its radius² a cubic of
+    /// the height on each segment, interpolating the `[r, y]` points (the first and last only
+    /// steer).
+    Sor {
+        /// Profile points `[r, y]` (r ≥ 0, heights increasing from the second to the last
+        /// but one).
+        points: Vec<[f64; 2]>,
+        /// Without the base and cap disks (a surface, not a solid).
+        open: bool,
+    },
+    /// A sphere sweep (POV-Ray's `sphere_sweep`): the union of the spheres whose centre and
+    /// radius run along a spline through `spheres`.
+    SphereSweep {
+        /// How the spheres are interpolated.
+        spline: SweepSpline,
+        /// The modelling spheres `(centre, radius)`, in order.
+        spheres: Vec<(DVec3, f64)>,
+    },
     /// A superellipsoid (POV-Ray's `superellipsoid { <e, n> }`) in the cube [-1, 1]³:
     /// `(|x|^(2/e) + |z|^(2/e))^(e/n) + |y|^(2/n) = 1`, its round sections about the Y axis.
     Superellipsoid {
@@ -244,10 +262,11 @@ pub enum Shape {
         /// Parts below this height are cut away (0: none).
         water_level: f64,
     },
-    /// A triangle mesh from an OBJ file (loaded when the scene is prepared; instanced by path).
+    /// A triangle mesh from a file (loaded when the scene is prepared; instanced by path) or
+    /// written inline.
     Mesh {
-        /// Resolved path.
-        path: PathBuf,
+        /// Where its data comes from.
+        source: super::mesh::MeshSource,
         /// Interpolate normals.
         smooth: bool,
         /// Use the file's MTL materials where present.
@@ -282,6 +301,8 @@ impl Shape {
             Shape::Prism { .. } => "prism",
             Shape::Text { .. } => "text",
             Shape::Lathe { .. } => "lathe",
+            Shape::Sor { .. } => "sor",
+            Shape::SphereSweep { .. } => "sphere_sweep",
             Shape::Superellipsoid { .. } => "superellipsoid",
             Shape::Poly { .. } => "poly",
             Shape::HeightField { .. } => "height_field",
@@ -354,6 +375,46 @@ impl Spline {
             .iter()
             .find(|(_, s)| *s == self)
             .map_or("linear", |(n, _)| n)
+    }
+}
+
+/// How a sphere sweep interpolates its spheres (POV-Ray's `sphere_sweep` splines).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SweepSpline {
+    /// Straight between neighbours: spheres joined by cones tangent to both.
+    Linear,
+    /// Through every sphere but the first and last, which only steer (POV-Ray's
+    /// `cubic_spline`, a Catmull-Rom spline).
+    CatmullRom,
+    /// A uniform cubic B-spline: near the spheres, through none of them.
+    BSpline,
+}
+
+impl SweepSpline {
+    /// Every kind with its name, as the language spells it.
+    pub const NAMED: [(&'static str, SweepSpline); 3] = [
+        ("linear", SweepSpline::Linear),
+        ("catmull_rom", SweepSpline::CatmullRom),
+        ("b_spline", SweepSpline::BSpline),
+    ];
+
+    /// The names the language reads, in the variants' order.
+    pub const NAMES: [&str; 3] = ["linear", "catmull_rom", "b_spline"];
+
+    /// Its name in the language.
+    pub fn name(self) -> &'static str {
+        SweepSpline::NAMED
+            .iter()
+            .find(|(_, s)| *s == self)
+            .map_or("linear", |(n, _)| n)
+    }
+
+    /// The fewest spheres it needs (POV-Ray's counts).
+    pub fn min_spheres(self) -> usize {
+        match self {
+            SweepSpline::Linear => 2,
+            SweepSpline::CatmullRom | SweepSpline::BSpline => 4,
+        }
     }
 }
 

@@ -206,6 +206,11 @@ impl Content {
         }
     }
 
+    /// Records that meshes' own materials show images (found when the meshes load).
+    pub(crate) fn add_mesh_textures(&mut self) {
+        self.textured = true;
+    }
+
     /// Adds what the object `o` (a top-level object or a CSG operand) holds.
     pub(crate) fn visit(&mut self, o: &Object) {
         self.moving |= o.motion.as_ref().is_some_and(|m| !m.is_still());

@@ -62,7 +62,10 @@ pub fn files_read(scene: &Scene) -> Vec<PathBuf> {
 
 fn collect_meshes(o: &Object, meshes: &mut Vec<PathBuf>, maps: &mut Vec<PathBuf>) {
     match &o.shape {
-        Shape::Mesh { path, .. } => meshes.push(path.clone()),
+        Shape::Mesh {
+            source: crate::ir::MeshSource::File(path),
+            ..
+        } => meshes.push(path.clone()),
         Shape::HeightField {
             image: Some(path), ..
         } => maps.push(path.clone()),

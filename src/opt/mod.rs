@@ -53,7 +53,11 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     let mut diags = Diagnostics::default();
     let mut content = Content::without_objects(scene);
     let (mut materials, fallback) = material_table(scene);
-    let mut b = objects::Builder::new(materials.len() as u32, scene.memory);
+    let mut b = objects::Builder::new(
+        materials.len() as u32,
+        scene.textures.len() as u32,
+        scene.memory,
+    );
     // Each object goes straight into the world's storage (a plain sphere into its compact
     // form), so a million spheres never exist as a million full primitives.
     let mut parts = WorldParts::default();
@@ -77,7 +81,16 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         }
     }
     validate::scene(scene, &mut diags);
-    let textures = textures::load_all(&scene.textures, &mut diags, &mut b.memory);
+    let mut textures = textures::load_all(&scene.textures, &mut diags, &mut b.memory);
+    if !b.extra_textures.is_empty() {
+        // The meshes' base colour images, numbered after the scene's textures.
+        content.add_mesh_textures();
+        let extra = textures::load_all(&b.extra_textures, &mut diags, &mut b.memory);
+        textures = textures.zip(extra).map(|(mut t, e)| {
+            t.extend(e);
+            t
+        });
+    }
     let mesh_stats = b.stats();
     materials.extend(std::mem::take(&mut b.extra_materials));
     diags.extend(std::mem::take(&mut b.diagnostics));
@@ -195,7 +208,11 @@ impl<'a> Validator<'a> {
             scene,
             diags: Diagnostics::default(),
             fallback,
-            b: objects::Builder::new(materials.len() as u32, scene.memory),
+            b: objects::Builder::new(
+                materials.len() as u32,
+                scene.textures.len() as u32,
+                scene.memory,
+            ),
         }
     }
 

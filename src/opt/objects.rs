@@ -17,7 +17,9 @@ use crate::geometry::shapes;
 use crate::geometry::world::balls::Ball;
 use crate::geometry::world::primitive::{Geom, MeshRef, Primitive};
 use crate::ir::limits::Memory;
-use crate::ir::{Material, MaterialId, Object, Shape};
+use crate::ir::{
+    ImageFilter, Mapping, Material, MaterialId, MeshSource, Object, Shape, Texture, TextureId,
+};
 
 /// What the meshes placed so far took.
 #[derive(Clone, Copy, Debug, Default)]
@@ -40,9 +42,13 @@ pub(crate) struct Builder {
     base: u32,
     /// MTL materials added by meshes, in id order after the scene's.
     pub(crate) extra_materials: Vec<Material>,
+    /// Textures the meshes' materials add (their base colour images), numbered after the
+    /// scene's own from `texture_base`.
+    pub(crate) extra_textures: Vec<Texture>,
+    texture_base: u32,
     /// Meshes this world placed already: a file placed N times is asked of the process-wide
     /// cache once, and its load warnings are reported once.
-    cache: HashMap<(PathBuf, bool), (Arc<MeshAsset>, Arc<Mesh>)>,
+    cache: HashMap<(MeshKey, bool), (Arc<MeshAsset>, Arc<Mesh>)>,
     mtl_ids: HashMap<PathBuf, Vec<MaterialId>>,
     /// Findings so far.
     pub(crate) diagnostics: Diagnostics,
@@ -54,10 +60,12 @@ pub(crate) struct Builder {
 impl Builder {
     /// A builder for a scene whose loading charged `memory` so far; MTL materials get ids
     /// from `first_extra` on.
-    pub(crate) fn new(first_extra: u32, memory: Memory) -> Builder {
+    pub(crate) fn new(first_extra: u32, first_texture: u32, memory: Memory) -> Builder {
         Builder {
             base: first_extra,
             extra_materials: Vec::new(),
+            extra_textures: Vec::new(),
+            texture_base: first_texture,
             cache: HashMap::new(),
             mtl_ids: HashMap::new(),
             diagnostics: Diagnostics::default(),
@@ -172,12 +180,12 @@ impl Builder {
     fn geom(&mut self, o: &Object, material: MaterialId) -> Option<Geom> {
         let g = match &o.shape {
             Shape::Mesh {
-                path,
+                source,
                 smooth,
                 use_mtl,
             } => {
-                let (asset, data) = self.mesh(o, path, *smooth)?;
-                let mtl = (*use_mtl && !asset.materials.is_empty()).then(|| self.mtl(&asset));
+                let (asset, data) = self.mesh(o, source, *smooth)?;
+                let mtl = (*use_mtl && !asset.materials.is_empty()).then(|| self.mtl(o, &asset));
                 Geom::Mesh(MeshRef { data, mtl })
             }
             Shape::Csg { op, children } => {
@@ -188,8 +196,8 @@ impl Builder {
                         Some(_) if !shapes::encloses_volume(&c.shape, &closed_mesh) => {
                             ok = false;
                             let what = match &c.shape {
-                                Shape::Mesh { path, .. } => {
-                                    format!("the mesh `{}` is not closed", path.display())
+                                Shape::Mesh { source, .. } => {
+                                    format!("{} is not closed", source.describe())
                                 }
                                 Shape::Cylinder { .. } | Shape::Cone { .. } => {
                                     format!("this {} is open", c.shape.kind_name())
@@ -243,26 +251,27 @@ impl Builder {
     fn mesh(
         &mut self,
         o: &Object,
-        path: &std::path::Path,
+        source: &MeshSource,
         smooth: bool,
     ) -> Option<(Arc<MeshAsset>, Arc<Mesh>)> {
-        let key = (path.to_path_buf(), smooth);
+        let key = (MeshKey::of(source), smooth);
         if let Some(m) = self.cache.get(&key) {
             return Some(m.clone());
         }
-        match assets::mesh(path, smooth) {
+        match assets::mesh_of(source, smooth) {
             Ok(asset) => {
                 // The file's data, charged before its triangles are laid out and its BVH
                 // built; the prepared mesh is charged once built.
                 if let Err(over) = self.memory.charge(asset_bytes(&asset)) {
-                    let what = format!("the mesh `{}`", path.display());
+                    let what = source.describe();
                     self.diagnostics.push(over.diagnostic(o.span, &what));
                     return None;
                 }
                 // An OBJ file's warnings are about its material library; a glTF file's about
                 // parts rtc does not read (a base colour texture, points and lines).
-                let (code, label) = match assets::indexed::Format::of(path) {
-                    assets::indexed::Format::Gltf => {
+                let format = source.path().map(assets::indexed::Format::of);
+                let (code, label) = match format {
+                    Some(assets::indexed::Format::Gltf) => {
                         ("rtc::mesh::partial", "drawn without what is not read")
                     }
                     _ => ("rtc::mesh::missing_mtl", "drawn with the object's material"),
@@ -272,7 +281,7 @@ impl Builder {
                         Diagnostic::warning(
                             code,
                             o.span,
-                            format!("the mesh `{}` loads, but {w}", path.display()),
+                            format!("{} loads, but {w}", source.describe()),
                         )
                         .with_label(label),
                     );
@@ -285,7 +294,7 @@ impl Builder {
                     material_of: &asset.material_of,
                 }));
                 if let Err(over) = self.memory.charge(mesh.memory() as u64) {
-                    let what = format!("the triangles and BVH of `{}`", path.display());
+                    let what = format!("the triangles and BVH of {}", source.describe());
                     self.diagnostics.push(over.diagnostic(o.span, &what));
                     return None;
                 }
@@ -293,41 +302,93 @@ impl Builder {
                 Some((asset, mesh))
             }
             Err(e) => {
-                self.diagnostics.push(e.diagnostic(o.span, path));
+                self.diagnostics.push(e.diagnostic_of(o.span, source));
                 None
             }
         }
     }
 
-    fn mtl(&mut self, data: &MeshAsset) -> Vec<MaterialId> {
+    fn mtl(&mut self, o: &Object, data: &MeshAsset) -> Vec<MaterialId> {
         if let Some(ids) = self.mtl_ids.get(&data.path) {
             return ids.clone();
         }
-        let ids: Vec<MaterialId> = data
-            .materials
-            .iter()
-            .map(|m| {
-                self.extra_materials.push(m.clone());
-                MaterialId(self.base + self.extra_materials.len() as u32 - 1)
-            })
-            .collect();
+        let mut ids = Vec::with_capacity(data.materials.len());
+        for (k, m) in data.materials.iter().enumerate() {
+            let mut m = m.clone();
+            if let Some(Some(image)) = data.images.get(k) {
+                m.texture = self.base_color_image(o, image);
+            }
+            self.extra_materials.push(m);
+            ids.push(MaterialId(
+                self.base + self.extra_materials.len() as u32 - 1,
+            ));
+        }
         self.mtl_ids.insert(data.path.clone(), ids.clone());
         ids
     }
 }
 
-/// Whether the mesh file is a closed surface (through the asset cache).
-fn closed_mesh(path: &std::path::Path, smooth: bool) -> bool {
-    mesh_bounds(path, smooth).is_some_and(|(_, closed)| closed)
+impl Builder {
+    /// The texture showing a mesh material's base colour image on the mesh's texture
+    /// coordinates (bilinear, as glTF viewers read it), or `None` with a warning when the
+    /// file is not there: the material's colour is used.
+    fn base_color_image(&mut self, o: &Object, image: &std::path::Path) -> Option<TextureId> {
+        if !image.is_file() {
+            self.diagnostics.push(
+                Diagnostic::warning(
+                    "rtc::mesh::missing_image",
+                    o.span,
+                    format!(
+                        "the mesh's material names the image `{}`, which cannot be read",
+                        image.display()
+                    ),
+                )
+                .with_label("drawn with the material's colour")
+                .with_help("put the image beside the mesh file, or fix its name in the material"),
+            );
+            return None;
+        }
+        self.extra_textures.push(Texture::Image {
+            path: image.to_path_buf(),
+            mapping: Mapping::Uv,
+            filter: ImageFilter::Bilinear,
+            span: o.span,
+        });
+        Some(TextureId(
+            self.texture_base + self.extra_textures.len() as u32 - 1,
+        ))
+    }
 }
 
-/// The bounds of a mesh file in its own coordinates and whether it is a closed surface (a
+/// Which loaded mesh an object uses: its file, or the inline value (by address: the scene
+/// holds every inline mesh while it is prepared, so an address names one value).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum MeshKey {
+    File(PathBuf),
+    Inline(usize),
+}
+
+impl MeshKey {
+    fn of(source: &MeshSource) -> MeshKey {
+        match source {
+            MeshSource::File(path) => MeshKey::File(path.clone()),
+            MeshSource::Inline(m) => MeshKey::Inline(Arc::as_ptr(m) as usize),
+        }
+    }
+}
+
+/// Whether the mesh is a closed surface (through the asset cache).
+fn closed_mesh(source: &MeshSource, smooth: bool) -> bool {
+    mesh_bounds(source, smooth).is_some_and(|(_, closed)| closed)
+}
+
+/// The bounds of a mesh in its own coordinates and whether it is a closed surface (a
 /// solid to the enclosure lints); `None` when it does not load.
 pub(crate) fn mesh_bounds(
-    path: &std::path::Path,
+    source: &MeshSource,
     smooth: bool,
 ) -> Option<(crate::geometry::aabb::Aabb, bool)> {
-    let m = assets::mesh(path, smooth).ok()?;
+    let m = assets::mesh_of(source, smooth).ok()?;
     Some((
         crate::geometry::aabb::Aabb::new(m.min, m.max),
         m.is_closed(),
@@ -336,8 +397,8 @@ pub(crate) fn mesh_bounds(
 
 /// Whether point `p` (in the file's coordinates) is inside the closed mesh file; false when it
 /// does not load or is not closed.
-pub(crate) fn inside_mesh(path: &std::path::Path, smooth: bool, p: glam::DVec3) -> bool {
-    assets::mesh(path, smooth).is_ok_and(|m| m.is_closed() && m.contains(p))
+pub(crate) fn inside_mesh(source: &MeshSource, smooth: bool, p: glam::DVec3) -> bool {
+    assets::mesh_of(source, smooth).is_ok_and(|m| m.is_closed() && m.contains(p))
 }
 
 /// Heap bytes of a mesh file's data as loaded.

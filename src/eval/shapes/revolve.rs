@@ -1,5 +1,5 @@
 //! Surfaces of revolution, superquadrics and algebraic surfaces: `lathe(points, spline)`,
-//! `superellipsoid(e, n)`, `poly(order, coefficients)` and its shorthands `cubic` and
+//! `sor(points, open)`, `superellipsoid(e, n)`, `poly(order, coefficients)` and its shorthands `cubic` and
 //! `quartic` (POV-Ray's shapes of those names; docs/language.md).
 
 use crate::eval::args::{ArgVal, CallSite, Params};
@@ -16,6 +16,7 @@ use super::common::{checked, choice, pair};
 /// The constructors of this file.
 pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&LATHE, lathe),
+    (&SOR, sor),
     (&SUPERELLIPSOID, superellipsoid),
     (&POLY, poly),
     (&CUBIC, cubic),
@@ -66,6 +67,47 @@ fn lathe(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
         Some((other, ns)) => return Err(types::mismatch(it, "String", &other, ns).into()),
     };
     checked(Shape::Lathe { points, spline }, s, &[("points", sp)])
+}
+
+/// `sor(points, open)`.
+static SOR: Sig = Sig::new(
+    "sor",
+    Group::Shape,
+    "A surface of revolution about the Y axis (POV-Ray's `sor`): its radius² a cubic of the \
+     height through the `[r, y]` points, the first and last only steering; closed by a base and \
+     a cap disk unless `open`.",
+    &[
+        Param::new(
+            "points",
+            Ty::ListOf(&Ty::Pair(&Ty::Float)),
+            "at least 4 `[r, y]` points, r >= 0, heights increasing from the second to the last but one",
+        )
+        .unit(Unit::Length),
+        Param::new(
+            "open",
+            Ty::Bool,
+            "leaves out the base and cap disks (a surface, not a solid)",
+        )
+        .or(Lit::Bool(false)),
+    ],
+    "Object",
+)
+.examples(&[
+    "sor(points: [[0, -0.5], [0.6, 0], [0.3, 0.6], [0.5, 1.2], [0.8, 1.5]])  // a vase",
+    "sor(points: [[1, -1], [1, 0], [1, 1], [1, 2]], open: true)  // a tube",
+]);
+fn sor(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
+    let mut p = Params::new(s, &SOR, a)?;
+    let (v, sp) = p.req("points")?;
+    let Value::List(items) = &v else {
+        return Err(types::mismatch(it, "List", &v, sp).into());
+    };
+    let mut points = Vec::with_capacity(items.len());
+    for x in items.iter() {
+        points.push(pair(it, x, sp)?.to_array());
+    }
+    let open = p.bool(it, "open")?;
+    checked(Shape::Sor { points, open }, s, &[("points", sp)])
 }
 
 /// `superellipsoid(e, n)`.

@@ -206,6 +206,15 @@ impl Mesh {
         crate::geometry::shapes::plane::point_error(a, n, p)
     }
 
+    /// Where `ray` meets the plane of triangle `slot`, in f64 (`None` when parallel).
+    fn plane_t(&self, slot: usize, ray: &Ray) -> Option<f64> {
+        let [a, b, c] = self.corners(slot).map(|v| v.as_dvec3());
+        let n = (b - a).cross(c - a);
+        let along = n.dot(ray.dir);
+        let t = n.dot(a - ray.origin) / along;
+        t.is_finite().then_some(t)
+    }
+
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
     /// mesh's own size. Returns the shift `s` (t = s + t'), the shifted ray and the f32 range.
     #[inline(always)]
@@ -449,7 +458,11 @@ impl Mesh {
                 for lane in (0..BLOCK).filter(|l| e.mask >> l & 1 == 1) {
                     let (t, b) = e.hit(lane);
                     let mut h = self.hit(slot + lane, t, b);
-                    h.t += s;
+                    // The f32 test's t, shifted back, is off by rounding of the shift's size:
+                    // more than the error bound the CSG walk and a secondary ray's offset
+                    // rely on (a shadow ray found its own face again). The plane's t in f64
+                    // is as exact as an analytic shape's.
+                    h.t = self.plane_t(slot + lane, ray).unwrap_or(h.t + s);
                     h.error = self.point_error(slot + lane, ray.at(h.t));
                     out.push((h, h.geometric.dot(ray.dir) < 0.0));
                 }

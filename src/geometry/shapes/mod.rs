@@ -30,13 +30,13 @@ mod prism;
 mod quadric;
 mod quartic;
 mod ring;
+mod sor;
 pub(crate) mod sphere;
+mod sphere_sweep;
 mod superellipsoid;
 mod text;
 mod torus;
 pub(crate) mod triangle;
-
-use std::path::Path;
 
 use glam::DVec3;
 
@@ -53,6 +53,8 @@ use crate::geometry::shapes::poly::Poly;
 use crate::geometry::shapes::polygon::Polygon;
 use crate::geometry::shapes::quadric::Quadric;
 use crate::geometry::shapes::ring::Ring;
+use crate::geometry::shapes::sor::Sor;
+use crate::geometry::shapes::sphere_sweep::SphereSweep;
 use crate::geometry::shapes::superellipsoid::Superellipsoid;
 use crate::geometry::shapes::torus::Torus;
 use crate::geometry::shapes::triangle::Triangle;
@@ -61,6 +63,7 @@ use crate::ir::{CsgOp, Shape};
 
 mod flaw;
 mod rules;
+mod rules_sweep;
 
 pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 pub(crate) use rules::leaf;
@@ -143,6 +146,10 @@ pub(crate) enum Leaf {
     Extrusion(Box<Extrusion>),
     /// A lathe.
     Lathe(Box<Lathe>),
+    /// A surface of revolution.
+    Sor(Box<Sor>),
+    /// A sphere sweep.
+    SphereSweep(Box<SphereSweep>),
     /// A superellipsoid.
     Superellipsoid(Superellipsoid),
     /// An algebraic surface.
@@ -170,6 +177,8 @@ impl Leaf {
             Leaf::Quadric(x) => x.bounds(),
             Leaf::Extrusion(x) => x.bounds(),
             Leaf::Lathe(x) => x.bounds(),
+            Leaf::Sor(x) => x.bounds(),
+            Leaf::SphereSweep(x) => x.bounds(),
             Leaf::Superellipsoid(x) => x.bounds(),
             Leaf::Poly(x) => x.bounds(),
             Leaf::HeightField(x) => x.bounds(),
@@ -195,6 +204,8 @@ impl Leaf {
             Leaf::Quadric(x) => x.intersect(r, t_min, t_max),
             Leaf::Extrusion(x) => x.intersect(r, t_min, t_max),
             Leaf::Lathe(x) => x.intersect(r, t_min, t_max),
+            Leaf::Sor(x) => x.intersect(r, t_min, t_max),
+            Leaf::SphereSweep(x) => x.intersect(r, t_min, t_max),
             Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
             Leaf::Poly(x) => x.intersect(r, t_min, t_max),
             Leaf::HeightField(x) => x.intersect(r, t_min, t_max),
@@ -220,6 +231,8 @@ impl Leaf {
             Leaf::Quadric(x) => x.point_error(p),
             Leaf::Extrusion(x) => x.point_error(p),
             Leaf::Lathe(x) => x.point_error(p),
+            Leaf::Sor(x) => x.point_error(p),
+            Leaf::SphereSweep(x) => x.point_error(p),
             Leaf::Superellipsoid(x) => x.point_error(p),
             Leaf::Poly(x) => x.point_error(p),
             Leaf::HeightField(x) => x.point_error(p),
@@ -248,6 +261,8 @@ impl Leaf {
             Leaf::Quadric(x) => x.crossings(r, out),
             Leaf::Extrusion(x) => x.crossings(r, out),
             Leaf::Lathe(x) => x.crossings(r, out),
+            Leaf::Sor(x) => x.crossings(r, out),
+            Leaf::SphereSweep(x) => x.crossings(r, out),
             Leaf::Superellipsoid(x) => x.crossings(r, out),
             Leaf::Poly(x) => x.crossings(r, out),
             Leaf::HeightField(x) => x.crossings(r, out),
@@ -259,7 +274,7 @@ impl Leaf {
         }
     }
 
-    /// Point membership in object space (closed solids; surfaces contain nothing).
+    /// Point membership in object space (closed solids; surfaces, an open sor included, contain nothing).
     pub(crate) fn contains(&self, q: DVec3) -> bool {
         match self {
             Leaf::Sphere { center, radius } => sphere::contains(*center, *radius, q),
@@ -272,6 +287,8 @@ impl Leaf {
             Leaf::Quadric(x) => x.contains(q),
             Leaf::Extrusion(x) => x.contains(q),
             Leaf::Lathe(x) => x.contains(q),
+            Leaf::Sor(x) => x.is_closed() && x.contains(q),
+            Leaf::SphereSweep(x) => x.contains(q),
             Leaf::Superellipsoid(x) => x.contains(q),
             Leaf::Poly(x) => x.contains(q),
             Leaf::HeightField(x) => x.contains(q),
@@ -342,10 +359,13 @@ pub(crate) fn bounds(shape: &Shape) -> Option<Aabb> {
 }
 
 /// Whether a shape encloses a volume CSG can classify against: surfaces (triangle, quad,
-/// polygon, disk) and open cylinders and cones do not; a mesh does when `closed_mesh` says its
+/// polygon, disk) and open cylinders, cones and sors do not; a mesh does when `closed_mesh` says its
 /// file is closed; a CSG node when all its operands do (an inverted solid is one; a clipped
 /// surface never).
-pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -> bool) -> bool {
+pub(crate) fn encloses_volume(
+    shape: &Shape,
+    closed_mesh: &dyn Fn(&crate::ir::MeshSource, bool) -> bool,
+) -> bool {
     match shape {
         Shape::Triangle { .. }
         | Shape::Quad { .. }
@@ -353,7 +373,8 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Disk { .. }
         | Shape::Ring { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
-        Shape::Mesh { path, smooth, .. } => closed_mesh(path, *smooth),
+        Shape::Sor { open, .. } => !*open,
+        Shape::Mesh { source, smooth, .. } => closed_mesh(source, *smooth),
         // A clipped surface is open: its clipper's faces are not shown.
         Shape::Csg {
             op: CsgOp::Clip, ..
@@ -370,6 +391,7 @@ pub(crate) fn encloses_volume(shape: &Shape, closed_mesh: &dyn Fn(&Path, bool) -
         | Shape::Prism { .. }
         | Shape::Text { .. }
         | Shape::Lathe { .. }
+        | Shape::SphereSweep { .. }
         | Shape::Superellipsoid { .. }
         | Shape::Poly { .. }
         | Shape::HeightField { .. } => true,

@@ -23,6 +23,7 @@ use super::polygon::{Polygon, PolygonError};
 use super::prism::{self, OutlineError};
 use super::quadric::Quadric;
 use super::ring::Ring;
+use super::rules_sweep::{sor, sphere_sweep};
 use super::superellipsoid::Superellipsoid;
 use super::text;
 use super::torus::Torus;
@@ -298,6 +299,8 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             )?))
         }
         Shape::Lathe { points, spline } => lathe(points, *spline)?,
+        Shape::Sor { points, open } => sor(points, *open)?,
+        Shape::SphereSweep { spline, spheres } => sphere_sweep(*spline, spheres)?,
         Shape::Superellipsoid { e, n } => {
             for (name, v) in [("e", *e), ("n", *n)] {
                 in_range((0.001..=10.0).contains(&v), name, "in 0.001..=10", v)?;
