@@ -3,7 +3,7 @@
 //! the first corner, as the file readers fan), per-vertex normals and texture coordinates, and
 //! at least one face with area, so preparing it cannot fail but for the memory budget.
 
-use glam::{DVec2, DVec3, Vec3A};
+use glam::{DVec3, Vec3A};
 
 use crate::eval::error::{EvalError, R, error};
 use crate::eval::host::Host;
@@ -41,7 +41,7 @@ pub(super) fn read(
                 if !p.is_finite() {
                     return Err(not_finite("uv", k, sp));
                 }
-                uvs.push(DVec2::from(p));
+                uvs.push(p);
             }
             same_count(uvs.len(), vertices.len(), "uv", sp)?;
             uvs
