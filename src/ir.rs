@@ -32,8 +32,8 @@ pub use loaded::Loaded;
 pub use mesh::{InlineMesh, MeshSource};
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
 pub use object::{
-    BlobComponent, Container, CsgOp, GlyphCurve, Object, PrismSweep, Shape, Spindle, Spline,
-    SweepSpline, TextAlign, TextGlyphs, Visibility, poly_terms,
+    BlobComponent, Container, CsgOp, GlyphCurve, HeightGrid, Object, PrismSweep, Shape, Spindle,
+    Spline, SweepSpline, TextAlign, TextGlyphs, Visibility, poly_terms,
 };
 pub use placement::Transform;
 pub use provenance::Provenance;

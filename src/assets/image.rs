@@ -69,12 +69,15 @@ const DECODED_BYTES_PER_PIXEL: u64 = std::mem::size_of::<DVec3>() as u64;
 /// Bytes the image at `path` takes once decoded, from its header alone; `None` when it is not
 /// a regular file within the byte budget or its header cannot be read.
 pub(crate) fn header_bytes(path: &Path) -> Option<u64> {
-    crate::source::open_regular(path, MAX_TEXTURE_FILE_BYTES).ok()?;
-    let (w, h) = image::ImageReader::open(path)
-        .ok()?
-        .into_dimensions()
-        .ok()?;
+    let (w, h) = header_size(path)?;
     Some(u64::from(w) * u64::from(h) * DECODED_BYTES_PER_PIXEL)
+}
+
+/// The width and height of the image at `path` from its header alone; `None` when it is not
+/// a regular file within the byte budget or its header cannot be read.
+pub(crate) fn header_size(path: &Path) -> Option<(u32, u32)> {
+    crate::source::open_regular(path, MAX_TEXTURE_FILE_BYTES).ok()?;
+    image::ImageReader::open(path).ok()?.into_dimensions().ok()
 }
 
 impl Picture {

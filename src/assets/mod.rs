@@ -124,6 +124,15 @@ pub(crate) fn picture_bytes(path: &Path) -> u64 {
     }
 }
 
+/// The width and height of the image at `path`: from the cache if it is there, else from its
+/// header (nothing is decoded); `None` when the header cannot be read.
+pub(crate) fn picture_size(path: &Path) -> Option<(u32, u32)> {
+    match PICTURES.get(&FileKey::of(path, false)) {
+        Some(p) => Some(p.size()),
+        None => image::header_size(path),
+    }
+}
+
 /// The image at `path`, decoded once per process (again when it changes).
 pub fn picture(path: &Path) -> Result<Arc<Picture>, ImageError> {
     PICTURES.get_or_load(

@@ -19,6 +19,7 @@ mod common;
 mod compound;
 mod extrude;
 mod flat;
+mod height_field;
 mod isosurface;
 mod mesh;
 mod mesh_inline;
@@ -28,6 +29,7 @@ mod sweep;
 use common::{checked, direction, point, radius, unit_dir};
 
 pub(crate) use compound::{FNS as COMPOUND_FNS, require_closed, require_closed_to};
+pub(crate) use height_field::FNS as HEIGHT_FIELD_FNS;
 pub(crate) use isosurface::FNS as ISOSURFACE_FNS;
 pub(crate) use revolve::FNS as REVOLVE_FNS;
 pub(crate) use sweep::FNS as SWEEP_FNS;

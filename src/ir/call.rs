@@ -281,6 +281,36 @@ impl Shape {
                 }
                 ("isosurface", a)
             }
+            Shape::HeightField {
+                image,
+                heights,
+                smooth,
+                water_level,
+            } => {
+                let mut a = vec![match image {
+                    Some(path) => ("image", Arg::Path(path.clone())),
+                    // A grid from numbers or a function: its heights, row by row.
+                    None => (
+                        "heights",
+                        List(
+                            heights
+                                .heights
+                                .chunks(heights.nx)
+                                .map(|row| {
+                                    List(row.iter().map(|&h| Number(f64::from(h))).collect())
+                                })
+                                .collect(),
+                        ),
+                    ),
+                }];
+                if *smooth {
+                    a.push(("smooth", Bool(true)));
+                }
+                if *water_level != 0.0 {
+                    a.push(("water_level", Number(*water_level)));
+                }
+                ("height_field", a)
+            }
             Shape::Mesh {
                 source,
                 smooth,

@@ -53,6 +53,10 @@ pub const MAX_MESH_FILE_BYTES: u64 = 4 << 30;
 /// decoded texel takes 24 bytes, so 2²⁶ pixels (8192×8192) are 1.5 GiB.
 pub const MAX_TEXTURE_PIXELS: u64 = 1 << 26;
 
+/// The most points a height field's grid may have (4096 × 4096: 64 MiB of heights), from an
+/// image or a `resolution`.
+pub const MAX_HEIGHT_FIELD_POINTS: u64 = 1 << 24;
+
 /// Largest texture image file rtc opens, in bytes (checked before reading): an uncompressed
 /// 8192×8192 float EXR of three channels is 805 MB.
 pub(crate) const MAX_TEXTURE_FILE_BYTES: u64 = 1 << 30;

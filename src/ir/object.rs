@@ -267,6 +267,19 @@ pub enum Shape {
         /// The glyph outlines laid out (from the font when the text was made).
         glyphs: Arc<TextGlyphs>,
     },
+    /// A height field (POV-Ray's `height_field`): a grid of heights over the unit square
+    /// x, z ∈ [0, 1], each cell two triangles; a solid (below the surface, over the square).
+    HeightField {
+        /// The greyscale image it was read from (resolved), or `None` for a grid given as
+        /// numbers or sampled from a function (`heights` then holds it all).
+        image: Option<PathBuf>,
+        /// The heights.
+        heights: Arc<HeightGrid>,
+        /// Interpolate vertex normals.
+        smooth: bool,
+        /// Parts below this height are cut away (0: none).
+        water_level: f64,
+    },
     /// A triangle mesh from a file (loaded when the scene is prepared; instanced by path) or
     /// written inline.
     Mesh {
@@ -311,10 +324,23 @@ impl Shape {
             Shape::Superellipsoid { .. } => "superellipsoid",
             Shape::Poly { .. } => "poly",
             Shape::Isosurface { .. } => "isosurface",
+            Shape::HeightField { .. } => "height_field",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }
     }
+}
+
+/// A height field's grid: `nx × nz` heights in [0, 1], row by row from z = 0, point `(i, j)`
+/// at x = i/(nx − 1), z = j/(nz − 1).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeightGrid {
+    /// Points along x.
+    pub nx: usize,
+    /// Points along z.
+    pub nz: usize,
+    /// `heights[j·nx + i]`.
+    pub heights: Arc<[f32]>,
 }
 
 /// How a prism's outline or a lathe's profile points are joined (POV-Ray's spline kinds).

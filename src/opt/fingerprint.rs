@@ -38,8 +38,8 @@ fn hex(digest: &[u8]) -> String {
     digest.iter().map(|b| format!("{b:02x}")).collect()
 }
 
-/// Every file the renderer reads for `scene` (textures, meshes and their `mtllib` files), in a
-/// fixed order.
+/// Every file the renderer reads for `scene` (textures, meshes and their `mtllib` files) and
+/// height fields' images, in a fixed order.
 pub fn files_read(scene: &Scene) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for t in &scene.textures {
@@ -47,24 +47,31 @@ pub fn files_read(scene: &Scene) -> Vec<PathBuf> {
             out.push(path.clone());
         }
     }
-    let mut meshes = Vec::new();
+    let (mut meshes, mut maps) = (Vec::new(), Vec::new());
     for o in &scene.objects {
-        collect_meshes(o, &mut meshes);
+        collect_meshes(o, &mut meshes, &mut maps);
     }
     for m in meshes {
         out.extend(material_libraries(&m));
         out.push(m);
     }
+    // Height fields' images (read when the scene is evaluated: their heights are in the IR).
+    out.extend(maps);
     out
 }
 
-fn collect_meshes(o: &Object, out: &mut Vec<PathBuf>) {
+fn collect_meshes(o: &Object, meshes: &mut Vec<PathBuf>, maps: &mut Vec<PathBuf>) {
     match &o.shape {
         Shape::Mesh {
             source: crate::ir::MeshSource::File(path),
             ..
-        } => out.push(path.clone()),
-        Shape::Csg { children, .. } => children.iter().for_each(|c| collect_meshes(c, out)),
+        } => meshes.push(path.clone()),
+        Shape::HeightField {
+            image: Some(path), ..
+        } => maps.push(path.clone()),
+        Shape::Csg { children, .. } => children
+            .iter()
+            .for_each(|c| collect_meshes(c, meshes, maps)),
         _ => {}
     }
 }

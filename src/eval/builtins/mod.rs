@@ -46,6 +46,7 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         super::shapes::COMPOUND_FNS,
         super::shapes::REVOLVE_FNS,
         super::shapes::ISOSURFACE_FNS,
+        super::shapes::HEIGHT_FIELD_FNS,
         super::shapes::SWEEP_FNS,
         super::transform::FNS,
         super::rng::FNS,

@@ -19,6 +19,8 @@ mod cuboid;
 mod cylinder;
 mod disk;
 pub(crate) mod extrusion;
+mod height_field;
+mod height_field_walk;
 pub(crate) mod isosurface;
 mod lathe;
 mod parallelogram;
@@ -45,6 +47,7 @@ use crate::geometry::shapes::cuboid::Cuboid;
 use crate::geometry::shapes::cylinder::Cylinder;
 use crate::geometry::shapes::disk::Disk;
 use crate::geometry::shapes::extrusion::Extrusion;
+use crate::geometry::shapes::height_field::HeightField;
 use crate::geometry::shapes::isosurface::Isosurface;
 use crate::geometry::shapes::lathe::Lathe;
 use crate::geometry::shapes::parallelogram::Quad;
@@ -155,6 +158,8 @@ pub(crate) enum Leaf {
     Poly(Box<Poly>),
     /// An isosurface of a compiled function.
     Isosurface(Box<Isosurface>),
+    /// A height field.
+    HeightField(Box<HeightField>),
 }
 
 impl Leaf {
@@ -181,6 +186,7 @@ impl Leaf {
             Leaf::Superellipsoid(x) => x.bounds(),
             Leaf::Poly(x) => x.bounds(),
             Leaf::Isosurface(x) => x.bounds(),
+            Leaf::HeightField(x) => x.bounds(),
         }
     }
 
@@ -208,6 +214,7 @@ impl Leaf {
             Leaf::Superellipsoid(x) => x.intersect(r, t_min, t_max),
             Leaf::Poly(x) => x.intersect(r, t_min, t_max),
             Leaf::Isosurface(x) => x.intersect(r, t_min, t_max),
+            Leaf::HeightField(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -235,6 +242,7 @@ impl Leaf {
             Leaf::Superellipsoid(x) => x.point_error(p),
             Leaf::Poly(x) => x.point_error(p),
             Leaf::Isosurface(x) => x.point_error(p),
+            Leaf::HeightField(x) => x.point_error(p),
         }
     }
 
@@ -265,6 +273,7 @@ impl Leaf {
             Leaf::Superellipsoid(x) => x.crossings(r, out),
             Leaf::Poly(x) => x.crossings(r, out),
             Leaf::Isosurface(x) => x.crossings(r, out),
+            Leaf::HeightField(x) => x.crossings(r, out),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -291,6 +300,7 @@ impl Leaf {
             Leaf::Superellipsoid(x) => x.contains(q),
             Leaf::Poly(x) => x.contains(q),
             Leaf::Isosurface(x) => x.contains(q),
+            Leaf::HeightField(x) => x.contains(q),
             Leaf::Triangle(_)
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
@@ -393,6 +403,7 @@ pub(crate) fn encloses_volume(
         | Shape::Lathe { .. }
         | Shape::SphereSweep { .. }
         | Shape::Superellipsoid { .. }
-        | Shape::Poly { .. } => true,
+        | Shape::Poly { .. }
+        | Shape::HeightField { .. } => true,
     }
 }

@@ -15,6 +15,7 @@ use super::cylinder::Cylinder;
 use super::disk::Disk;
 use super::extrusion::Sweep;
 use super::flaw::{finite, in_range, positive, vec3};
+use super::height_field::HeightField;
 use super::lathe::{Lathe, segment_count};
 use super::parallelogram::Quad;
 use super::poly::Poly;
@@ -327,6 +328,12 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             *accuracy,
             *open,
         )?)),
+        Shape::HeightField {
+            heights,
+            smooth,
+            water_level,
+            ..
+        } => height_field(heights, *smooth, *water_level)?,
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",
@@ -533,4 +540,59 @@ fn poly(order: u32, coefficients: &[f64]) -> Result<Leaf, ShapeFlaw> {
             )
         })?,
     )))
+}
+
+/// A height field's rules: at least 2 × 2 points and no more than the budget, one height in
+/// [0, 1] per point, a finite water level.
+fn height_field(
+    grid: &crate::ir::HeightGrid,
+    smooth: bool,
+    water_level: f64,
+) -> Result<Leaf, ShapeFlaw> {
+    let (nx, nz) = (grid.nx, grid.nz);
+    if nx < 2 || nz < 2 {
+        return Err(ShapeFlaw::degenerate(
+            "heights",
+            &format!("a height field needs at least 2 × 2 points, found {nx} × {nz}"),
+            "one point has no cell to make triangles of",
+            "use an image (or `resolution`) of at least 2 × 2 points",
+        ));
+    }
+    let points = nx as u64 * nz as u64;
+    let max = crate::ir::limits::MAX_HEIGHT_FIELD_POINTS;
+    if points > max {
+        return Err(ShapeFlaw::other(
+            "heights",
+            OUT_OF_RANGE,
+            format!(
+                "a height field of {nx} × {nz} = {points} points is larger than the {max} allowed"
+            ),
+            "too many points",
+            "use an image (or `resolution`) of at most 4096 × 4096 points",
+        ));
+    }
+    if grid.heights.len() as u64 != points {
+        return Err(ShapeFlaw::other(
+            "heights",
+            OUT_OF_RANGE,
+            format!(
+                "a height field of {nx} × {nz} points has {} heights",
+                grid.heights.len()
+            ),
+            "the rows differ in length",
+            format!("give {nz} rows of {nx} heights each"),
+        ));
+    }
+    for &h in grid.heights.iter() {
+        in_range(
+            (0.0..=1.0).contains(&h),
+            "heights",
+            "in 0..=1",
+            f64::from(h),
+        )?;
+    }
+    in_range(true, "water_level", "finite", water_level)?;
+    HeightField::new(nx, nz, grid.heights.clone(), smooth, water_level)
+        .map(|h| Leaf::HeightField(Box::new(h)))
+        .ok_or_else(|| ShapeFlaw::range("heights", "in 0..=1", f64::NAN))
 }

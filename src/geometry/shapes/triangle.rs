@@ -85,7 +85,7 @@ fn pick(v: DVec3, k: usize) -> f64 {
 }
 
 /// Watertight test in f64 over the whole line: `(t, barycentrics)` or `None`.
-fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
+pub(crate) fn watertight_f64(v: &[DVec3; 3], origin: DVec3, dir: DVec3) -> Option<(f64, [f64; 3])> {
     let (kx, ky, kz) = shear_axes(dir);
     let d = dir.to_array();
     if d[kz] == 0.0 {
