@@ -23,3 +23,8 @@ sor { 6, <0.6, -1.4>, <0.8, -1.2>, <0.5, -0.5>, <0.7, 0.3>, <1, 1>, <0.8, 1.4>
 sphere_sweep { b_spline 6, <-1.6, -0.2, 0>, 0.2, <-1, 0.6, 0.5>, 0.35, <-0.3, -0.6, -0.5>, 0.25,
   <0.4, 0.5, 0>, 0.4, <1, -0.6, 0.5>, 0.3, <1.6, 0.3, 0>, 0.2
   translate <-4.5, -3.2, 0> Shiny(<0.2, 0.7, 0.8>) }
+height_field { function 256, 256 { 0.5 + 0.3*cos(25.1327*(x - 0.5))*cos(25.1327*(y - 0.5)) } smooth
+  translate <-0.5, 0, -0.5> scale <3, 1.2, 3> translate <0, -4.2, 0> Shiny(<0.6, 0.8, 0.4>) }
+isosurface { function { sqrt(pow(sqrt(x*x + z*z) - 0.9, 2) + y*y) - 0.35 - 0.05*sin(8*x) }
+  contained_by { box { <-1.4, -0.5, -1.4>, <1.4, 0.5, 1.4> } } max_gradient 1.5 accuracy 0.001
+  rotate x*30 translate <4.5, -3.2, 0> Shiny(<0.9, 0.3, 0.4>) }
