@@ -11,7 +11,9 @@ mod numerics_support;
 
 use std::sync::Arc;
 
-use geometry_support::{Rng, hemisphere, mirrored_transform, object, ray_at_box, world};
+use geometry_support::{
+    Probe, Rng, axis_scale, mirrored_transform, object, random_ray_invariants, ray_at_box, world,
+};
 use glam::{DAffine3, DVec3};
 use numerics_support::{differing_by, render_rtc, share};
 use rtc::geometry::Ray;
@@ -148,54 +150,18 @@ fn check(case: &Case, xf: DAffine3, seed: u64) {
         .map(|(s, m)| object(s.clone(), xf * *m))
         .collect();
     let w = world(objs);
-    let inv = xf.inverse();
-    let world_scale = xf
-        .matrix3
-        .x_axis
-        .norm()
-        .max(xf.matrix3.y_axis.norm())
-        .max(xf.matrix3.z_axis.norm());
-    let aim = rtc::geometry::Aabb::new(case.aim.0, case.aim.1).transformed(&xf);
-    let bounds = w.bounds();
-    let mut rng = Rng(seed);
-    let mut hits = 0;
-    for i in 0..RAYS {
-        let ray = ray_at_box(&mut rng, aim.min, aim.max);
-        let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
-            continue;
-        };
-        hits += 1;
-        let ctx = format!("{} ray {i}: {ray:?} hit t = {}", case.name, h.t);
-        assert!(h.point.is_finite() && h.normal.is_finite(), "{ctx}: NaN");
-        let q = inv.transform_point3(h.point);
-        let d = (case.dist)(q);
-        assert!(d < 1e-8, "{ctx}: off the surface by {d:e} at {q}");
-        assert!((h.normal.norm() - 1.0).abs() < 1e-12, "{ctx}: |n| ≠ 1");
-        let eps = 1e-6 * world_scale;
-        let out = (case.side)(inv.transform_point3(h.point + eps * h.normal));
-        let inside = (case.side)(inv.transform_point3(h.point - eps * h.normal));
-        assert!(
-            out > 0.0 || inside > out,
-            "{ctx}: the normal points inward ({out:e})"
-        );
-        assert!(
-            bounds.contains(h.point, 1e-9 * world_scale),
-            "{ctx}: outside the bounds {bounds:?}"
-        );
-        let dir = loop {
-            let d = hemisphere(&mut rng, h.normal);
-            if d.dot(h.normal) > 0.2 {
-                break d;
-            }
-        };
-        let again = Ray::new(h.point + 1e-7 * world_scale * h.normal, dir);
-        if let Some(h2) = w.intersect(&again, 0.0, 1e-4 * world_scale) {
-            panic!("{ctx}: re-hit its own surface at t = {:e}", h2.t);
-        }
-    }
-    let share = hits as f64 / RAYS as f64;
-    let want = case.min_hit_share * if xf == DAffine3::IDENTITY { 1.0 } else { 0.4 };
-    assert!(share >= want, "{}: only {share} of rays hit", case.name);
+    let probe = Probe {
+        name: case.name,
+        xf,
+        world_scale: axis_scale(&xf),
+        aim: case.aim,
+        rays: RAYS,
+        min_hit_share: case.min_hit_share,
+        dist: &*case.dist,
+        tolerance: 1e-8,
+        side: &*case.side,
+    };
+    random_ray_invariants(&w, &probe, seed);
 }
 
 #[test]

@@ -135,3 +135,91 @@ pub fn hemisphere(rng: &mut Rng, n: DVec3) -> DVec3 {
     let d = rng.dir();
     if d.dot(n) < 0.0 { -d } else { d }
 }
+
+/// The largest length of `xf`'s axes: how much it scales at most.
+pub fn axis_scale(xf: &DAffine3) -> f64 {
+    xf.matrix3
+        .x_axis
+        .norm()
+        .max(xf.matrix3.y_axis.norm())
+        .max(xf.matrix3.z_axis.norm())
+}
+
+/// What the random-ray invariants need to know of a shape placed by `xf` (object space is
+/// the shape's own, before `xf`).
+pub struct Probe<'a> {
+    /// Names the case in messages.
+    pub name: &'a str,
+    /// Object to world.
+    pub xf: DAffine3,
+    /// The object's size in the world (tolerances and offsets scale with it).
+    pub world_scale: f64,
+    /// Object-space box the rays aim at.
+    pub aim: (DVec3, DVec3),
+    /// How many rays.
+    pub rays: usize,
+    /// Rays from outside must hit at least this share of the time (untransformed; 40 % of it
+    /// under a transform, whose aim box is looser).
+    pub min_hit_share: f64,
+    /// Distance of an object-space point from the surface, found independently of rtc.
+    pub dist: &'a dyn Fn(DVec3) -> f64,
+    /// The largest `dist` a hit may have.
+    pub tolerance: f64,
+    /// Signed, object space: positive outside (or on the front side of a surface).
+    pub side: &'a dyn Fn(DVec3) -> f64,
+}
+
+/// The invariants every shape keeps under random rays at `w` (which holds the probed shape):
+/// no NaN, hits on the surface within the tolerance, unit normals facing out, hits within the
+/// world's bounds, no re-hit of its own surface by a ray leaving it as the renderer spawns
+/// rays, and enough hits.
+pub fn random_ray_invariants(w: &World, p: &Probe, seed: u64) {
+    let inv = p.xf.inverse();
+    let aim = rtc::geometry::Aabb::new(p.aim.0, p.aim.1).transformed(&p.xf);
+    let bounds = w.bounds();
+    let mut rng = Rng(seed);
+    let mut hits = 0;
+    for i in 0..p.rays {
+        let ray = ray_at_box(&mut rng, aim.min, aim.max);
+        let Some(h) = w.intersect(&ray, 0.0, f64::INFINITY) else {
+            continue;
+        };
+        hits += 1;
+        let ctx = format!("{} ray {i}: {ray:?} hit t = {}", p.name, h.t);
+        assert!(h.point.is_finite() && h.normal.is_finite(), "{ctx}: NaN");
+        let q = inv.transform_point3(h.point);
+        let d = (p.dist)(q);
+        assert!(d < p.tolerance, "{ctx}: off the surface by {d:e} at {q}");
+        assert!((h.normal.norm() - 1.0).abs() < 1e-12, "{ctx}: |n| ≠ 1");
+        let eps = 1e-6 * p.world_scale;
+        let out = (p.side)(inv.transform_point3(h.point + eps * h.normal));
+        let inside = (p.side)(inv.transform_point3(h.point - eps * h.normal));
+        // Where the surface is sharper than eps (a 0.05 box's edge) both sides can be out;
+        // the outward side is never the inside one.
+        assert!(
+            out > 0.0 || inside > out,
+            "{ctx}: the normal points inward ({out:e})"
+        );
+        if bounds.is_finite() {
+            assert!(
+                bounds.contains(h.point, 1e-9 * p.world_scale),
+                "{ctx}: outside the bounds {bounds:?}"
+            );
+        }
+        // A ray leaving the surface (~12° or more above its tangent plane) from the point
+        // spawned as the renderer spawns it does not meet the surface again nearby.
+        let dir = loop {
+            let d = hemisphere(&mut rng, h.normal);
+            if d.dot(h.normal) > 0.2 {
+                break d;
+            }
+        };
+        let again = Ray::new(h.point + 1e-7 * p.world_scale * h.normal, dir);
+        if let Some(h2) = w.intersect(&again, 0.0, 1e-4 * p.world_scale) {
+            panic!("{ctx}: re-hit its own surface at t = {:e}", h2.t);
+        }
+    }
+    let share = hits as f64 / p.rays as f64;
+    let want = p.min_hit_share * if p.xf == DAffine3::IDENTITY { 1.0 } else { 0.4 };
+    assert!(share >= want, "{}: only {share} of rays hit", p.name);
+}
