@@ -163,12 +163,15 @@ impl Segment {
         cuts[n] = 1.0;
         n += 1;
         let mut covered = [false; MAX_DEGREE + 1];
-        let mut any = false;
+        let (mut from, mut to) = (f64::INFINITY, f64::NEG_INFINITY);
         for (k, w) in cuts[..n].windows(2).enumerate() {
             covered[k] = eval(&g, 0.5 * (w[0] + w[1])) >= 0.0;
-            any |= covered[k];
+            if covered[k] {
+                from = from.min(w[0]);
+                to = to.max(w[1]);
+            }
         }
-        if !any {
+        if from > to {
             return;
         }
         let dc = derivative(&c);
@@ -179,7 +182,8 @@ impl Segment {
         let mut h = [0.0; 11];
         mul_add(&g, &dc2, 4.0, &mut h);
         mul_add(&dg[..6], &dg[..6], -1.0, &mut h);
-        let stationary = roots_in(&h, 0.0, 1.0);
+        // Only the stationary points inside covered intervals count: a grazing ray's few.
+        let stationary = roots_in(&h, from, to);
         let ends = |s: f64| {
             let (cs, w) = (eval(&c, s), eval(&g, s).max(0.0).sqrt());
             (cs - w, cs + w)
