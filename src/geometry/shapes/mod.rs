@@ -12,6 +12,7 @@
 //! fewer than two operands).
 
 mod blob;
+mod bracket;
 pub(crate) mod circle_quadratic;
 mod cone;
 pub(crate) mod csg;

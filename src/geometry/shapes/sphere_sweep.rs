@@ -18,7 +18,7 @@ use glam::DVec3;
 
 use crate::geometry::ray::equirectangular_uv;
 use crate::geometry::shapes::cone::Cone;
-use crate::geometry::shapes::quartic::{eval, quadratic, roots_in};
+use crate::geometry::shapes::quartic::{MAX_DEGREE, eval, quadratic, roots_in};
 use crate::geometry::shapes::sphere;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 use crate::ir::SweepSpline;
@@ -151,6 +151,29 @@ impl Segment {
             mul_add(&qk, &qk, -1.0, &mut g);
         }
         mul_add(&c, &c, 1.0, &mut g);
+        // The intervals of s where g ≥ 0 (some sphere meets the line); none, and the ray misses
+        // the segment without the degree-10 work below.
+        let g_roots = roots_in(&g, 0.0, 1.0);
+        let mut cuts = [0.0; MAX_DEGREE + 2];
+        let mut n = 1;
+        for r in g_roots.iter() {
+            cuts[n] = r.t;
+            n += 1;
+        }
+        cuts[n] = 1.0;
+        n += 1;
+        let mut covered = [false; MAX_DEGREE + 1];
+        let (mut from, mut to) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (k, w) in cuts[..n].windows(2).enumerate() {
+            covered[k] = eval(&g, 0.5 * (w[0] + w[1])) >= 0.0;
+            if covered[k] {
+                from = from.min(w[0]);
+                to = to.max(w[1]);
+            }
+        }
+        if from > to {
+            return;
+        }
         let dc = derivative(&c);
         let dg = derivative(&g);
         // h = 4·g·c′² − g′²: zero where the entry or the exit is stationary in s.
@@ -159,22 +182,20 @@ impl Segment {
         let mut h = [0.0; 11];
         mul_add(&g, &dc2, 4.0, &mut h);
         mul_add(&dg[..6], &dg[..6], -1.0, &mut h);
-        let mut cuts = vec![0.0];
-        cuts.extend(roots_in(&g, 0.0, 1.0).iter().map(|r| r.t));
-        cuts.push(1.0);
-        let stationary: Vec<f64> = roots_in(&h, 0.0, 1.0).iter().map(|r| r.t).collect();
+        // Only the stationary points inside covered intervals count: a grazing ray's few.
+        let stationary = roots_in(&h, from, to);
         let ends = |s: f64| {
             let (cs, w) = (eval(&c, s), eval(&g, s).max(0.0).sqrt());
             (cs - w, cs + w)
         };
-        for w in cuts.windows(2) {
+        for (k, w) in cuts[..n].windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
-            if eval(&g, 0.5 * (a + b)) < 0.0 {
+            if !covered[k] {
                 continue;
             }
             let mut entry = (f64::INFINITY, a);
             let mut exit = (f64::NEG_INFINITY, a);
-            let inside = stationary.iter().copied().filter(|&s| s > a && s < b);
+            let inside = stationary.iter().map(|r| r.t).filter(|&s| s > a && s < b);
             for s in [a, b].into_iter().chain(inside) {
                 let (e, x) = ends(s);
                 if e < entry.0 {
@@ -248,9 +269,10 @@ impl SphereSweep {
             .max_element()
     }
 
-    /// The union's stretches along the whole line of `ray`, merged, in order: each an entry and
-    /// an exit hit.
-    fn merged(&self, ray: &Ray) -> Vec<(Hit, Hit)> {
+    /// The union's stretches along the line of `ray`, merged, in order: each an entry and an
+    /// exit hit. Spline segments whose box the line meets only outside `(t_min, t_max)` are
+    /// skipped: a part of the union wholly outside the window changes no boundary inside it.
+    fn merged(&self, ray: &Ray, t_min: f64, t_max: f64) -> Vec<(Hit, Hit)> {
         let mut parts: Vec<(Hit, Hit)> = Vec::new();
         let len = ray.dir.norm();
         if len == 0.0 || !len.is_finite() {
@@ -279,6 +301,13 @@ impl SphereSweep {
                     let to = seg.bound_center - ray.origin;
                     let along = to.dot(d);
                     if (to - along * d).length_squared() > seg.bound_radius * seg.bound_radius {
+                        continue;
+                    }
+                    // Then the segment's box (padded well beyond the stretches' rounding): the
+                    // slab test rejects most rays the sphere lets through.
+                    let pad = 1e-6 * seg.bound_radius;
+                    let padded = Aabb::new(seg.bounds.min - pad, seg.bounds.max + pad);
+                    if padded.hit_interval(ray, t_min, t_max).is_none() {
                         continue;
                     }
                     // From the line's point nearest the segment the numbers stay its size.
@@ -320,7 +349,7 @@ impl SphereSweep {
     pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         // Rays that miss the whole sweep's box cost one slab test.
         self.bounds.hit_interval(ray, t_min, t_max)?;
-        self.merged(ray)
+        self.merged(ray, t_min, t_max)
             .into_iter()
             .flat_map(|(a, b)| [a, b])
             .find(|h| h.t > t_min)
@@ -329,7 +358,7 @@ impl SphereSweep {
 
     /// Boundary crossings along the whole line, in order.
     pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
-        for (a, b) in self.merged(ray) {
+        for (a, b) in self.merged(ray, f64::NEG_INFINITY, f64::INFINITY) {
             out.push(Crossing {
                 hit: a,
                 entering: true,
@@ -373,6 +402,14 @@ impl SphereSweep {
                 }
                 Piece::Frustum(cone) => cone.point_error(p).max_element(),
                 Piece::Spline(seg) => {
+                    // Every sphere lies in the segment's box, so outside it the distance to the
+                    // spheres is at least that to the box: a box farther than the best bound
+                    // cannot lower it.
+                    let b = &seg.bounds;
+                    let gap = (b.min - p).max(p - b.max).max(DVec3::ZERO).norm();
+                    if gap + 1e-9 * size >= best {
+                        continue;
+                    }
                     let f = seg.gap(p);
                     let candidates = roots_in(&derivative(&f), 0.0, 1.0);
                     let dist = [0.0, 1.0]

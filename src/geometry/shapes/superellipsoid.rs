@@ -5,14 +5,18 @@
 //! `f` is smooth between the planes where a coordinate vanishes or `|x| = |y|`, so a ray's
 //! chord through the cube is cut at its crossings of those planes (as POV-Ray does) and each
 //! piece again into equal parts (where `f` may bend back, a pinched exponent above 2); every
-//! sign change found is bisected to full precision. Powers and logarithms go through `libm`
-//! and are taken in logarithms, so exponents of 0.05 neither overflow nor underflow.
+//! sign change found is solved to full precision by a bracketed regula falsi
+//! ([`crate::geometry::shapes::bracket`]). With both exponents at most 2, `f + 1` is convex
+//! (a norm raised to a power ≥ 1, plus a convex power), so once it is above 1 and rising along
+//! the ray no later crossing exists and the scan stops there. Powers and logarithms go through
+//! `libm` and are taken in logarithms, so exponents of 0.001 neither overflow nor underflow.
 
 use crate::num::Norm;
 
 use glam::DVec3;
 
 use crate::geometry::ray::equirectangular_uv;
+use crate::geometry::shapes::bracket::brent;
 use crate::geometry::{aabb::Aabb, ray::Crossing, ray::Hit, ray::Ray, rounding};
 
 /// Equal parts each piece of the chord is cut into before looking for sign changes.
@@ -25,13 +29,13 @@ pub(crate) struct Superellipsoid {
     n: f64,
 }
 
-/// `ln(e^a + e^b)` without overflow.
+/// `ln(e^a + e^b)` without overflow: the larger plus `ln(1 + e^−|a − b|)` (two `libm` calls).
 fn log_add(a: f64, b: f64) -> f64 {
     let m = a.max(b);
     if m == f64::NEG_INFINITY {
         return m;
     }
-    m + libm::log(libm::exp(a - m) + libm::exp(b - m))
+    m + libm::log1p(libm::exp(-(a - b).abs()))
 }
 
 impl Superellipsoid {
@@ -43,30 +47,40 @@ impl Superellipsoid {
     }
 
     /// `ln` of the two terms `(|x|^(2/e) + |y|^(2/e))^(e/n)` and `|z|^(2/n)`, and
-    /// `ln(|x|^(2/e) + |y|^(2/e))`.
-    fn log_terms(&self, p: DVec3) -> (f64, f64, f64) {
+    /// `ln(|x|^(2/e) + |y|^(2/e))`, from `l = ln |p|` per coordinate (each taken once).
+    fn log_terms(&self, l: DVec3) -> (f64, f64, f64) {
         let (ie, iz) = (2.0 / self.e, 2.0 / self.n);
-        let ls = log_add(ie * libm::log(p.x.abs()), ie * libm::log(p.y.abs()));
-        (ls * (self.e / self.n), iz * libm::log(p.z.abs()), ls)
+        let ls = log_add(ie * l.x, ie * l.y);
+        (ls * (self.e / self.n), iz * l.z, ls)
+    }
+
+    /// `ln |p|` per coordinate.
+    fn logs(p: DVec3) -> DVec3 {
+        DVec3::new(
+            libm::log(p.x.abs()),
+            libm::log(p.y.abs()),
+            libm::log(p.z.abs()),
+        )
     }
 
     /// The implicit function's sign as a number: `ln(sum of terms)`, negative inside. Its zero
     /// set is the surface, and near it it changes like `f` (no overflow at small exponents).
     fn value(&self, p: DVec3) -> f64 {
-        let (a, b, _) = self.log_terms(p);
+        let (a, b, _) = self.log_terms(Self::logs(p));
         log_add(a, b)
     }
 
     /// The gradient's direction (unit), facing out.
     fn normal(&self, p: DVec3) -> DVec3 {
-        let (_, _, ls) = self.log_terms(p);
+        let l = Self::logs(p);
+        let (_, _, ls) = self.log_terms(l);
         let (ie, iz) = (2.0 / self.e, 2.0 / self.n);
         // ∂f/∂x = (2/n)·S^(e/n − 1)·|x|^(2/e − 1)·sign(x), likewise y; ∂f/∂z = (2/n)·|z|^(2/n − 1)
         // sign(z): their logarithms, shifted by the largest before exponentiating.
         let shared = (self.e / self.n - 1.0) * ls;
-        let lx = shared + (ie - 1.0) * libm::log(p.x.abs());
-        let ly = shared + (ie - 1.0) * libm::log(p.y.abs());
-        let lz = (iz - 1.0) * libm::log(p.z.abs());
+        let lx = shared + (ie - 1.0) * l.x;
+        let ly = shared + (ie - 1.0) * l.y;
+        let lz = (iz - 1.0) * l.z;
         let m = lx.max(ly).max(lz);
         let comp = |l: f64, c: f64| {
             if c == 0.0 || !m.is_finite() {
@@ -94,9 +108,10 @@ impl Superellipsoid {
         Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
     }
 
-    /// Every sign change of `f` along the line of `ray`, in increasing `t`; `rising` when the
-    /// ray leaves the solid.
-    fn roots(&self, ray: &Ray, mut f: impl FnMut(f64, bool)) {
+    /// Every sign change of `f` along the line of `ray` past `t_from`, in increasing `t`;
+    /// `rising` when the ray leaves the solid. `f` returns false to stop (a nearest hit found):
+    /// later roots are then not solved for, nor are those of brackets ending before `t_from`.
+    fn roots(&self, ray: &Ray, t_from: f64, mut f: impl FnMut(f64, bool) -> bool) {
         let len = ray.dir.norm();
         if len == 0.0 || !len.is_finite() {
             return;
@@ -125,6 +140,7 @@ impl Superellipsoid {
         let cuts = &mut cuts[..n];
         cuts.sort_by(f64::total_cmp);
         let at = |t: f64| self.value(o + t * d);
+        let convex = self.e <= 2.0 && self.n <= 2.0;
         let mut lo = 0.0;
         let mut f_lo = at(lo);
         for &hi_piece in cuts.iter().chain(std::iter::once(&span)) {
@@ -132,30 +148,20 @@ impl Superellipsoid {
             for k in 1..=PARTS {
                 let hi = piece_lo + (hi_piece - piece_lo) * (k as f64 / PARTS as f64);
                 let f_hi = at(hi);
-                if (f_lo < 0.0) != (f_hi < 0.0) {
-                    let t = self.bisect(o, d, lo, hi, f_lo < 0.0);
-                    f(t0 + t, f_hi >= 0.0);
+                if (f_lo < 0.0) != (f_hi < 0.0) && t0 + hi > t_from {
+                    let (t, _, _) = brent(at, lo, hi, f_lo, f_hi);
+                    if !f(t0 + t, f_hi >= 0.0) {
+                        return;
+                    }
+                }
+                // Convex and outside and rising (by more than rounding): no crossing after.
+                if convex && f_hi > 0.0 && f_hi - f_lo > 1e-9 * (1.0 + f_hi.abs() + f_lo.abs()) {
+                    return;
                 }
                 lo = hi;
                 f_lo = f_hi;
             }
         }
-    }
-
-    /// The sign change of `f(o + t·d)` in `[lo, hi]`, to full precision.
-    fn bisect(&self, o: DVec3, d: DVec3, mut lo: f64, mut hi: f64, lo_inside: bool) -> f64 {
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            if (self.value(o + mid * d) < 0.0) == lo_inside {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        0.5 * (lo + hi)
     }
 
     fn hit(&self, ray: &Ray, t: f64) -> Hit {
@@ -169,17 +175,25 @@ impl Superellipsoid {
 
     /// Nearest hit in (t_min, t_max).
     pub(crate) fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
-        crate::geometry::shapes::quartic::nearest_root(t_min, t_max, |visit| self.roots(ray, visit))
-            .map(|t| self.hit(ray, t))
+        // The roots come in increasing order: the first past t_min is the nearest.
+        let mut best = None;
+        self.roots(ray, t_min, |t, _| {
+            if t > t_min && t < t_max {
+                best = Some(t);
+            }
+            t <= t_min
+        });
+        best.map(|t| self.hit(ray, t))
     }
 
     /// Boundary crossings along the whole line.
     pub(crate) fn crossings(&self, ray: &Ray, out: &mut Vec<Crossing>) {
-        self.roots(ray, |t, rising| {
+        self.roots(ray, f64::NEG_INFINITY, |t, rising| {
             out.push(Crossing {
                 hit: self.hit(ray, t),
                 entering: !rising,
             });
+            true
         });
     }
 
@@ -188,21 +202,26 @@ impl Superellipsoid {
         self.value(p) <= 0.0
     }
 
-    /// Error bound of a computed point `p` on the surface: where the ray through `p` along
-    /// its normal crosses the surface, found by bisection (so a sharp box's flat value does
-    /// not blow up a gradient-based estimate), plus rounding.
+    /// Error bound of a computed point `p` on the surface: a distance `δ` such that `f`
+    /// changes sign between `p ∓ δ·n` along the normal `n`, so the surface provably lies within
+    /// it (a sign test, not a gradient estimate, so a sharp box's flat value cannot fool it),
+    /// plus rounding. `δ` starts at a few units in the last place of `p` and grows sixteenfold
+    /// until the sign changes (two evaluations for a hit solved to full precision), up to a
+    /// reach of 1e-4 beyond which the bound is that reach.
     pub(crate) fn point_error(&self, p: DVec3) -> DVec3 {
         let nrm = self.normal(p);
         let size = p.abs().max_element().max(1.0);
-        // The surface lies within 1e-6 of a computed hit; look a little further either way.
         let reach = 1e-4 * size;
-        let (a, b) = (p - reach * nrm, p + reach * nrm);
-        let (fa, fb) = (self.value(a), self.value(b));
-        let dist = if (fa < 0.0) != (fb < 0.0) {
-            let t = self.bisect(a, nrm, 0.0, 2.0 * reach, fa < 0.0);
-            (t - reach).abs()
-        } else {
-            reach
+        let mut delta = f64::EPSILON * 0.25 * size;
+        let dist = loop {
+            if delta >= reach {
+                break reach;
+            }
+            let (fa, fb) = (self.value(p - delta * nrm), self.value(p + delta * nrm));
+            if (fa < 0.0) != (fb < 0.0) {
+                break delta;
+            }
+            delta *= 16.0;
         };
         rounding::from_residual(dist, 64, size)
     }
