@@ -86,6 +86,20 @@ pub(super) fn pair(it: &dyn Host, v: &Value, span: Span) -> R<DVec2> {
     }
 }
 
+/// The required list of `[a, b]` pairs `name` (a profile's or an outline's points), with its
+/// span.
+pub(super) fn pairs(it: &dyn Host, p: &mut Params, name: &str) -> R<(Vec<DVec2>, Span)> {
+    let (v, sp) = p.req(name)?;
+    let Value::List(items) = &v else {
+        return Err(types::mismatch(it, "List", &v, sp).into());
+    };
+    let points = items
+        .iter()
+        .map(|x| pair(it, x, sp))
+        .collect::<R<Vec<_>>>()?;
+    Ok((points, sp))
+}
+
 /// The index of `name` among `names`, or `rtc::param::choice` naming them.
 pub(super) fn choice(name: &str, names: &[&str], param: &str, span: Span) -> R<usize> {
     if let Some(k) = names.iter().position(|n| *n == name) {

@@ -62,15 +62,7 @@ pub(super) static PRISM: Sig = Sig::new(
 ]);
 pub(super) fn prism(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &PRISM, a)?;
-    let (v, sp) = p.req("points")?;
-    let items: Vec<Value> = match &v {
-        Value::List(l) => l.to_vec(),
-        other => return Err(types::mismatch(it, "List", other, sp).into()),
-    };
-    let mut points = Vec::with_capacity(items.len());
-    for x in &items {
-        points.push(pair(it, x, sp)?);
-    }
+    let (points, sp) = super::common::pairs(it, &mut p, "points")?;
     let (heights, hs) = match p.get("heights") {
         Some((v, hs)) => (pair(it, &v, hs)?, hs),
         None => (DVec2::new(0.0, 1.0), s.span),

@@ -11,7 +11,7 @@ use crate::eval::value::Value;
 use crate::ir::{Shape, Spline};
 use crate::source::Span;
 
-use super::common::{checked, choice, pair};
+use super::common::{checked, choice, pairs};
 
 /// The constructors of this file.
 pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
@@ -51,14 +51,8 @@ static LATHE: Sig = Sig::new(
 ]);
 fn lathe(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &LATHE, a)?;
-    let (v, sp) = p.req("points")?;
-    let Value::List(items) = &v else {
-        return Err(types::mismatch(it, "List", &v, sp).into());
-    };
-    let mut points = Vec::with_capacity(items.len());
-    for x in items.iter() {
-        points.push(pair(it, x, sp)?.to_array());
-    }
+    let (points, sp) = pairs(it, &mut p, "points")?;
+    let points = points.iter().map(|q| q.to_array()).collect();
     let spline = match p.get("spline") {
         None => Spline::Linear,
         Some((Value::Str(name), ns)) => {
@@ -98,14 +92,8 @@ static SOR: Sig = Sig::new(
 ]);
 fn sor(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
     let mut p = Params::new(s, &SOR, a)?;
-    let (v, sp) = p.req("points")?;
-    let Value::List(items) = &v else {
-        return Err(types::mismatch(it, "List", &v, sp).into());
-    };
-    let mut points = Vec::with_capacity(items.len());
-    for x in items.iter() {
-        points.push(pair(it, x, sp)?.to_array());
-    }
+    let (points, sp) = pairs(it, &mut p, "points")?;
+    let points = points.iter().map(|q| q.to_array()).collect();
     let open = p.bool(it, "open")?;
     checked(Shape::Sor { points, open }, s, &[("points", sp)])
 }
