@@ -405,7 +405,7 @@ fn a_prism_drilled_by_a_cylinder_shows_the_hole() {
 /// scale 1 but for at most 0.1 % of its pixels (rounding at silhouettes).
 #[test]
 fn prisms_and_text_render_the_same_at_every_scale() {
-    use numerics_support::{at, differing_by, render_rtc, share};
+    use numerics_support::{assert_same_at_scales, at};
     let scene = |s: f64| {
         let p = |x: [f64; 3]| at(s, [0.0; 3], x);
         format!(
@@ -427,15 +427,5 @@ fn prisms_and_text_render_the_same_at_every_scale() {
             p([0.0, 0.1, 1.2]),
         )
     };
-    let reference = render_rtc(&scene(1.0));
-    let mut report = Vec::new();
-    let mut worst: f64 = 0.0;
-    for s in [1e-6, 1e-4, 1e-2, 3.7, 1e2, 1e4, 1e6, 1e8] {
-        let img = render_rtc(&scene(s));
-        let n = differing_by(&reference, &img, 1);
-        worst = worst.max(share(&reference, n));
-        report.push(format!("{s:e}: {n} pixels differ"));
-    }
-    println!("{}", report.join("\n"));
-    assert!(worst <= 0.001, "{}", report.join("\n"));
+    assert_same_at_scales(&[1e-6, 1e-4, 1e-2, 3.7, 1e2, 1e4, 1e6, 1e8], scene);
 }

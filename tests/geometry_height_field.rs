@@ -15,7 +15,7 @@ use geometry_support::{
     Probe, Rng, axis_scale, mirrored_transform, object, random_ray_invariants, ray_at_box, world,
 };
 use glam::{DAffine3, DVec3};
-use numerics_support::{differing_by, render_rtc, share};
+use numerics_support::assert_same_at_scales;
 use rtc::geometry::Ray;
 use rtc::ir::{CsgOp, HeightGrid, Object, Shape};
 use rtc::num::Norm;
@@ -295,17 +295,7 @@ fn scene(s: f64) -> String {
 
 #[test]
 fn the_height_field_scene_renders_the_same_at_every_scale() {
-    let reference = render_rtc(&scene(1.0));
-    let mut report = Vec::new();
-    let mut worst: f64 = 0.0;
-    for s in [1e-6, 1e-3, 3.7, 1e3, 1e6, 1e8] {
-        let img = render_rtc(&scene(s));
-        let n = differing_by(&reference, &img, 1);
-        worst = worst.max(share(&reference, n));
-        report.push(format!("{s:e}: {n} pixels differ"));
-    }
-    println!("{}", report.join("\n"));
-    assert!(worst <= 0.001, "{}", report.join("\n"));
+    assert_same_at_scales(&[1e-6, 1e-3, 3.7, 1e3, 1e6, 1e8], scene);
 }
 
 /// Rays straight down and up (their shadow on the ground is one point): on the terrain from

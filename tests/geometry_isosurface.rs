@@ -16,7 +16,7 @@ use geometry_support::{
     Probe, Rng, axis_scale, mirrored_transform, object, random_ray_invariants, ray_at_box, world,
 };
 use glam::{DAffine3, DVec3};
-use numerics_support::{differing_by, render_rtc, share};
+use numerics_support::{assert_same_at_scales, differing_by, render_rtc, share};
 use rtc::diag::Diagnostics;
 use rtc::eval::{EvalOptions, load_source};
 use rtc::ir::{Scene, Shape};
@@ -268,17 +268,7 @@ fn the_isosurface_scene_renders_the_same_at_every_scale() {
         "{SPHERE_F}.translate([-1.3, 0, 0]), {TORUS_F}.rotate(x: 50deg).translate([1.3, 0, 0]), \
          isosurface(f: fn(p) {{ p.y - 0.3 * sin(3rad * p.x) * cos(2rad * p.z) }}).scale(0.6).translate([0, -1.2, 0])"
     );
-    let reference = render_rtc(&flat(&objects, 1.0));
-    let mut report = Vec::new();
-    let mut worst: f64 = 0.0;
-    for s in [1e-6, 1e-3, 3.7, 1e3, 1e6, 1e8] {
-        let img = render_rtc(&flat(&objects, s));
-        let n = differing_by(&reference, &img, 1);
-        worst = worst.max(share(&reference, n));
-        report.push(format!("{s:e}: {n} pixels differ"));
-    }
-    println!("{}", report.join("\n"));
-    assert!(worst <= 0.001, "{}", report.join("\n"));
+    assert_same_at_scales(&[1e-6, 1e-3, 3.7, 1e3, 1e6, 1e8], |s| flat(&objects, s));
 }
 
 /// The diagnostics of evaluating, preparing and rendering `src`: evaluation's, the

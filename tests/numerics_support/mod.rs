@@ -58,3 +58,20 @@ pub fn at(s: f64, shift: [f64; 3], p: [f64; 3]) -> String {
         s * p[2] + shift[2]
     )
 }
+
+/// Renders `scene(s)` at each scale `s` and at 1, and asserts that at most 0.1 % of the pixels
+/// differ from the scale-1 image by more than one level (printing each scale's count): the
+/// scale-invariance check of the numerics suite.
+pub fn assert_same_at_scales(scales: &[f64], scene: impl Fn(f64) -> String) {
+    let reference = render_rtc(&scene(1.0));
+    let mut report = Vec::new();
+    let mut worst: f64 = 0.0;
+    for &s in scales {
+        let img = render_rtc(&scene(s));
+        let n = differing_by(&reference, &img, 1);
+        worst = worst.max(share(&reference, n));
+        report.push(format!("{s:e}: {n} pixels differ"));
+    }
+    println!("{}", report.join("\n"));
+    assert!(worst <= 0.001, "{}", report.join("\n"));
+}
