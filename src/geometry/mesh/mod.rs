@@ -206,13 +206,15 @@ impl Mesh {
         crate::geometry::shapes::plane::point_error(a, n, p)
     }
 
-    /// Where `ray` meets the plane of triangle `slot`, in f64 (`None` when parallel).
-    fn plane_t(&self, slot: usize, ray: &Ray) -> Option<f64> {
+    /// Where `ray` meets the plane of triangle `slot`, in f64 (`fallback` when parallel), and
+    /// that point's error bound ([`Mesh::point_error`]'s), from one read of the corners.
+    fn on_plane(&self, slot: usize, ray: &Ray, fallback: f64) -> (f64, DVec3) {
         let [a, b, c] = self.corners(slot).map(|v| v.as_dvec3());
         let n = (b - a).cross(c - a);
-        let along = n.dot(ray.dir);
-        let t = n.dot(a - ray.origin) / along;
-        t.is_finite().then_some(t)
+        let t = n.dot(a - ray.origin) / n.dot(ray.dir);
+        let t = if t.is_finite() { t } else { fallback };
+        let error = crate::geometry::shapes::plane::point_error(a, n.unit_or(DVec3::Y), ray.at(t));
+        (t, error)
     }
 
     /// The ray restarted near the mesh: f32 traversal then only rounds coordinates of the
@@ -462,8 +464,7 @@ impl Mesh {
                     // more than the error bound the CSG walk and a secondary ray's offset
                     // rely on (a shadow ray found its own face again). The plane's t in f64
                     // is as exact as an analytic shape's.
-                    h.t = self.plane_t(slot + lane, ray).unwrap_or(h.t + s);
-                    h.error = self.point_error(slot + lane, ray.at(h.t));
+                    (h.t, h.error) = self.on_plane(slot + lane, ray, h.t + s);
                     out.push((h, h.geometric.dot(ray.dir) < 0.0));
                 }
             }
