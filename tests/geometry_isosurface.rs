@@ -316,10 +316,11 @@ fn a_max_gradient_too_small_is_reported_and_an_adequate_one_is_not() {
 
 #[test]
 fn a_search_stops_at_its_budget_and_says_so() {
-    // 20 000 rad per unit: about 12 700 sign changes across the box, each bisected when CSG
-    // asks for every crossing along a ray.
+    // 100 000 rad per unit: about 64 000 sign changes across the box, and Lipschitz steps
+    // averaging 0.64 / 100 000, so some 300 000 evaluations when CSG asks for every crossing
+    // along a ray.
     let (_, _, render) = render_findings(
-        "(isosurface(f: fn(p) { sin(20000rad * p.x) }, max_gradient: 20000, accuracy: 0.0001) & box(min: [-2, -2, -2], max: [2, 2, 2])).scale(0.5)",
+        "(isosurface(f: fn(p) { sin(100000rad * p.x) }, max_gradient: 100000, accuracy: 0.000001) & box(min: [-2, -2, -2], max: [2, 2, 2])).scale(0.5)",
     );
     assert!(render.contains(&"rtc::isosurface::budget"), "{render:?}");
 }

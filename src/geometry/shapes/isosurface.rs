@@ -5,8 +5,9 @@
 //!
 //! Along a ray the search is Lipschitz-bounded: with `G` a bound on the function's rate of
 //! change, no surface lies within `|f − threshold| / G` of a sample, so the search steps that
-//! far (never less than `accuracy`), and a sign change between two samples is bisected to
-//! full precision. `G` is the scene's `max_gradient`, or estimated from the function's slopes
+//! far (never less than `accuracy`), and a sign change between two samples is narrowed to
+//! full precision by Brent's method (superlinear where the function is smooth, bisection's
+//! guarantee where it is not). `G` is the scene's `max_gradient`, or estimated from the function's slopes
 //! sampled on a grid over the container. Every step checks the bound against the slope it saw:
 //! steps where the function changed faster are counted in a [`GradientLog`], which the
 //! renderer reports after the render with the value to use. A search stops after
@@ -25,6 +26,7 @@ use crate::num::Norm;
 use crate::pattern::Program;
 use crate::source::Span;
 
+use super::bracket::brent;
 use super::cuboid::Cuboid;
 use super::flaw::{OUT_OF_RANGE, ShapeFlaw, finite, in_range, positive, vec3};
 use super::sphere;
@@ -363,7 +365,7 @@ impl Isosurface {
                 self.log.over(slope);
             }
             if (v < 0.0) != (v1 < 0.0) {
-                let (t, n) = self.bisect(o, d, s, s1, v < 0.0);
+                let (t, n) = self.narrow(o, d, (s, v), (s1, v1));
                 evals += n;
                 if !visit(Event {
                     t: a + t,
@@ -385,23 +387,21 @@ impl Isosurface {
         }
     }
 
-    /// The sign change of the function along `o + s·d` in `[lo, hi]`, to full precision, and
-    /// the evaluations it took.
-    fn bisect(&self, o: DVec3, d: DVec3, mut lo: f64, mut hi: f64, lo_inside: bool) -> (f64, u64) {
+    /// The sign change of the function along `o + s·d` between two samples `(s, value)`, to
+    /// full precision, and the evaluations it took.
+    fn narrow(&self, o: DVec3, d: DVec3, lo: (f64, f64), hi: (f64, f64)) -> (f64, u64) {
         let mut n = 0;
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if mid <= lo || mid >= hi {
-                break;
-            }
-            n += 1;
-            if (self.value(o + mid * d) < 0.0) == lo_inside {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        (0.5 * (lo + hi), n)
+        let (t, _, _) = brent(
+            |s| {
+                n += 1;
+                self.value(o + s * d)
+            },
+            lo.0,
+            hi.0,
+            lo.1,
+            hi.1,
+        );
+        (t, n)
     }
 
     /// The hit of an event: the wall's normal, or the function's gradient (facing out, as the

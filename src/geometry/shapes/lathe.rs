@@ -29,6 +29,8 @@ struct Segment {
     y: [f64; 4],
     /// Lowest and highest `y` on the segment.
     y_range: (f64, f64),
+    /// Least and greatest distance `|r|` of the segment from the axis.
+    r_range: (f64, f64),
 }
 
 /// A lathe in object space.
@@ -139,10 +141,18 @@ impl Lathe {
             if r.iter().all(|&k| k == 0.0) {
                 continue;
             }
+            let (lo, hi) = range01(&r);
+            let far = lo.abs().max(hi.abs());
+            let near = if lo <= 0.0 && hi >= 0.0 {
+                0.0
+            } else {
+                lo.abs().min(hi.abs())
+            };
             segments.push(Segment {
                 r,
                 y,
                 y_range: range01(&y),
+                r_range: (near, far),
             });
         }
         let mut r_max: f64 = 0.0;
@@ -219,6 +229,12 @@ impl Lathe {
             if seg.y_range.1 < ray_lo || seg.y_range.0 > ray_hi {
                 continue;
             }
+            // The segment lies in the shell between the cylinders of radius `r_range` over its
+            // heights: a ray that stays outside the outer one or inside the inner one there
+            // (POV-Ray's per-segment bounding cylinders) cannot meet it.
+            if d.y.abs() > FLAT && self.misses_shell(seg, (o.y, d.y), (ho, hd), pad) {
+                continue;
+            }
             // Roots at s = 1 belong to the next segment's s = 0, except on the last.
             let keep = |s: f64| s >= 0.0 && (s < 1.0 || (k == last && s <= 1.0));
             let mut yy = seg.y;
@@ -270,6 +286,37 @@ impl Lathe {
                 f(t0 + t / len, k, s);
             });
         }
+    }
+
+    /// True when the line `y = oy + τ·dy`, horizontal part `ho + τ·hd` (τ along a unit
+    /// direction) is, at every height of `seg` (widened by `pad`), farther from the axis than
+    /// its largest radius or nearer than its smallest.
+    fn misses_shell(
+        &self,
+        seg: &Segment,
+        (oy, dy): (f64, f64),
+        (ho, hd): (DVec2, DVec2),
+        pad: f64,
+    ) -> bool {
+        let (ya, yb) = (
+            (seg.y_range.0 - pad - oy) / dy,
+            (seg.y_range.1 + pad - oy) / dy,
+        );
+        let (ta, tb) = (ya.min(yb), ya.max(yb));
+        let dist2 = |t: f64| (ho + t * hd).length_squared();
+        let (at_a, at_b) = (dist2(ta), dist2(tb));
+        // Nearest approach to the axis within [ta, tb] (a convex quadratic in τ).
+        let hd2 = hd.length_squared();
+        let nearest = if hd2 > 0.0 {
+            let t = (-ho.dot(hd) / hd2).clamp(ta, tb);
+            dist2(t).min(at_a).min(at_b)
+        } else {
+            at_a.min(at_b)
+        };
+        let farthest = at_a.max(at_b);
+        // The margins cover the rounding of these few operations many times over.
+        let (near, far) = (seg.r_range.0 - pad, seg.r_range.1 + pad);
+        nearest > far * far * (1.0 + 1e-9) || (near > 0.0 && farthest < near * near * (1.0 - 1e-9))
     }
 
     fn hit(&self, ray: &Ray, t: f64, k: usize, s: f64) -> Hit {
