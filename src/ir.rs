@@ -24,7 +24,7 @@ mod settings;
 mod texture;
 
 pub use atmosphere::{Fog, FogPattern, GroundFog, Sky};
-pub(crate) use call::Arg;
+pub(crate) use call::{Arg, COMPILED_FUNCTION};
 pub use camera::{Camera, Projection};
 pub(crate) use flare::Flare;
 pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share};

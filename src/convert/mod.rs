@@ -15,6 +15,7 @@ mod exact;
 mod names;
 mod pattern;
 mod placement;
+mod program;
 mod shapes;
 mod text;
 mod view;

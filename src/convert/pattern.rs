@@ -203,9 +203,10 @@ fn constructor(p: &Pattern, pt_name: &str) -> String {
             format!("crackle(form: \"{form}\", seed: {seed})")
         }
         Pattern::Cells { seed } => seeded("cells", *seed),
-        // No course format makes one; written as a call that stops with a clear error.
-        Pattern::Function(_) => {
-            "pattern(\"a compiled function cannot be written back as source\")".into()
-        }
+        Pattern::Function(f) => format!(
+            "pattern({})",
+            super::program::function_source(f)
+                .unwrap_or_else(|| super::text::string(crate::ir::COMPILED_FUNCTION))
+        ),
     }
 }

@@ -240,6 +240,8 @@ fn argument(a: &Arg, asset: AssetPath<'_>) -> String {
         Arg::Bool(b) => b.to_string(),
         Arg::Path(p) => string(&asset(p)),
         Arg::Str(s) => string(s),
+        Arg::Function(f) => super::program::function_source(f)
+            .unwrap_or_else(|| string(crate::ir::COMPILED_FUNCTION)),
         Arg::List(items) => {
             let items: Vec<String> = items.iter().map(|x| argument(x, asset)).collect();
             format!("[{}]", items.join(", "))

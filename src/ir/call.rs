@@ -7,8 +7,8 @@ use glam::DVec3;
 
 use super::object::{BlobComponent, Container, Shape, Spindle, Spline, SweepSpline};
 
-/// What `rtc convert` writes for a compiled function (an isosurface's `f`): a string, so the
-/// written scene stops with a type error on `f` naming why (as `pattern(f)` does).
+/// What `rtc convert` writes for a compiled function it cannot spell as source (none the
+/// compiler makes): a string, so the written scene stops with a type error naming why.
 pub(crate) const COMPILED_FUNCTION: &str = "a compiled function cannot be written back as source";
 
 /// A constructor call: the built-in's name and its named arguments, in the order written.
@@ -40,6 +40,8 @@ pub enum Arg {
     List(Vec<Arg>),
     /// A record of named fields.
     Record(Vec<(&'static str, Arg)>),
+    /// A compiled function of the point (an isosurface's `f`), written as a `fn(p)` literal.
+    Function(std::sync::Arc<crate::pattern::Program>),
 }
 
 impl Shape {
@@ -243,6 +245,7 @@ impl Shape {
                 ],
             ),
             Shape::Isosurface {
+                function,
                 container,
                 threshold,
                 max_gradient,
@@ -250,7 +253,7 @@ impl Shape {
                 open,
                 ..
             } => {
-                let mut a = vec![("f", Arg::Str(COMPILED_FUNCTION.to_string()))];
+                let mut a = vec![("f", Arg::Function(function.clone()))];
                 match *container {
                     Container::Box { min, max } => {
                         if min != DVec3::splat(-1.0) {
