@@ -10,7 +10,7 @@
 //! object space through the placement `Placement::of(translation p)`, rebuilt from `p` for each
 //! test (a few operations) rather than stored. Folding `p` into the centre and testing in
 //! world space would round differently (the hit point and normal differ in their last bits,
-//! which changed pixels), and the texture frame stays the sphere's own.
+//! which could change pixels), and the texture frame stays the sphere's own.
 
 use glam::{DAffine3, DMat3, DVec3};
 

@@ -7,8 +7,8 @@ use super::Builder;
 use crate::geometry::World;
 use crate::geometry::world::balls::WorldParts;
 use crate::ir::{MaterialId, Object, Scene};
-use crate::opt::{expected_rays, prepare};
-use crate::render::{RenderOptions, Silent, render};
+use crate::opt::{Prepared, expected_rays, material_table, prepare};
+use crate::render::{Image, RenderOptions, Silent, render};
 use crate::source::SourceMap;
 
 /// The scene `body` describes (after a camera, a light and render settings).
@@ -77,14 +77,21 @@ fn only_untransformed_and_translated_spheres_become_balls() {
 /// A world holding `scene`'s objects as primitives only (what the preparation made of every
 /// object before translated spheres became balls).
 fn primitives_only(scene: &Scene, lights: &[crate::opt::PreparedLight]) -> World {
-    let mut b = Builder::new(scene.materials.len() as u32, 0, scene.memory);
+    let (materials, fallback) = material_table(scene);
+    let mut b = Builder::new(materials.len() as u32, 0, scene.memory);
     let mut parts = WorldParts::default();
     for (i, o) in scene.objects.iter().enumerate() {
-        let p = b.object(o, MaterialId(0)).expect("the object prepares");
+        let p = b.object(o, fallback).expect("the object prepares");
         parts.nodes.push(p);
         parts.object_of.push(i as u32);
     }
     World::new(parts, expected_rays(scene, lights))
+}
+
+/// The 8-bit image of `p`.
+fn image(p: &Prepared) -> Image {
+    let film = render(p, &RenderOptions::default(), &Silent).expect("renders");
+    film.to_image()
 }
 
 /// The same scene rendered with its translated spheres as balls and as primitives: the same
@@ -105,8 +112,6 @@ fn translated_balls_render_the_primitives_image_bit_for_bit() {
         );
         let scene = scene(&body);
         let mut folded = prepare(&scene).expect("the scene prepares");
-        let options = RenderOptions::default();
-        let image = |p| render(p, &options, &Silent).expect("renders").to_image();
         let with_balls = image(&folded);
         let e = folded.effects();
         let need_uv = e.textures || e.bump || e.hatching || scene.settings.mode.reads_uv();
