@@ -3,6 +3,8 @@
 
   spheres_literal.rtc  one `sphere(center: [x, y, z], radius: r).material(m)` per line (~7 MB)
   spheres_loop.rtc     a `for` over the same grid that computes the same numbers
+  spheres_translate.rtc  the loop with each sphere written `sphere(radius: r).translate(p)`
+  spheres_scale.rtc    the loop with each sphere written `sphere().scale(r).translate(p)`
   spheres_literal.pov  the POV-Ray 3.7 twin of the literal file
   spheres_loop.pov     the POV-Ray 3.7 twin of the loop file (`#while`, issue 12's 100k row)
   points_literal.rtc   a 100 000-point list literal bound with `let` (the memory case)
@@ -55,6 +57,24 @@ with open(os.path.join(out, "spheres_loop.rtc"), "w") as f:
         "}\n"
     )
 
+# The same loop with the spheres placed by transforms (issue 42 item 4: a sphere's memory must
+# not depend on how it is written). The same spheres, not the same bits: a transformed sphere
+# is intersected in its own space.
+for name, shape in [
+    ("spheres_translate.rtc", "sphere(radius: 0.1 + 0.05 * ((i + j + k) % 3))"),
+    ("spheres_scale.rtc", "sphere().scale(0.1 + 0.05 * ((i + j + k) % 3))"),
+]:
+    with open(os.path.join(out, name), "w") as f:
+        header(f)
+        f.write(
+            f"for i in 0..{nx}, j in 0..{nz}, k in 0..{ny} {{\n"
+            f"  {shape}\n"
+            "    .material(m)\n"
+            "    .translate([i * 0.4 - 20.0, k * 0.4, j * 0.4 - 20.0])\n"
+            "}\n"
+        )
+
+
 def pov_header(f):
     # POV-Ray is left-handed: z is negated so the image is not mirrored.
     f.write("#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n")
@@ -96,6 +116,6 @@ with open(os.path.join(out, "points_literal.rtc"), "w") as f:
     f.write("sphere(center: points[0], radius: 0.5).material(m)\n")
 
 print(
-    f"wrote {out}/spheres_literal.rtc, spheres_loop.rtc, spheres_literal.pov, spheres_loop.pov,"
-    " points_literal.rtc"
+    f"wrote {out}/spheres_literal.rtc, spheres_loop.rtc, spheres_translate.rtc,"
+    " spheres_scale.rtc, spheres_literal.pov, spheres_loop.pov, points_literal.rtc"
 )

@@ -14,11 +14,12 @@ use crate::assets::{self, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::geometry::mesh::{Mesh, MeshParts};
 use crate::geometry::shapes::{self, Leaf, isosurface::Watch};
-use crate::geometry::world::balls::Ball;
+use crate::geometry::world::balls::{Ball, is_origin};
 use crate::geometry::world::primitive::{Geom, MeshRef, Primitive};
 use crate::ir::limits::Memory;
 use crate::ir::{
     ImageFilter, Mapping, Material, MaterialId, MeshSource, Object, Shape, Texture, TextureId,
+    Transform,
 };
 use crate::source::Span;
 
@@ -114,21 +115,28 @@ impl Builder {
     }
 
     /// The compact ball [`Builder::object`]'s primitive for `o` would become in the world
-    /// (`Ball::of`): a valid sphere with no transform and no motion, straight into the world's
-    /// storage without the primitive. `None` for every other object (nothing recorded).
+    /// (`Ball::of`): a valid sphere with no motion and either no transform, or its centre at
+    /// its origin and a (finite) translation, straight into the world's storage without the
+    /// primitive. `None` for every other object (nothing recorded).
+    ///
+    /// Only what keeps every hit bit for bit is folded: a translated ball computes its hits as
+    /// the primitive does (in object space), so a uniform scale, a translated sphere with its
+    /// own centre elsewhere, or any motion stays a primitive (docs/language.md §12).
     pub(crate) fn ball(&self, o: &Object, inherited: MaterialId, object: u32) -> Option<Ball> {
-        match o.shape {
-            Shape::Sphere { center, radius }
-                if o.motion.is_none()
-                    && o.transform.is_identity()
-                    && shapes::check(&o.shape).is_ok() =>
-            {
-                Some(Ball {
-                    center,
-                    radius,
-                    material: o.material.unwrap_or(inherited),
-                    object,
-                })
+        let Shape::Sphere { center, radius } = o.shape else {
+            return None;
+        };
+        if o.motion.is_some() || shapes::check(&o.shape).is_err() {
+            return None;
+        }
+        let material = o.material.unwrap_or(inherited);
+        if o.transform.is_identity() {
+            return Some(Ball::plain(center, radius, material, object));
+        }
+        match o.transform {
+            // A non-finite offset is left to `object`, which reports it.
+            Transform::Translation(offset) if offset.is_finite() && is_origin(center) => {
+                Ball::translated(offset, radius, material, object)
             }
             _ => None,
         }
@@ -430,3 +438,6 @@ fn asset_bytes(a: &MeshAsset) -> u64 {
         + std::mem::size_of_val(a.uvs.as_slice())
         + std::mem::size_of_val(a.material_of.as_slice())) as u64
 }
+
+#[cfg(test)]
+mod tests;

@@ -89,7 +89,8 @@ pub struct World {
     need_uv: bool,
     /// Every object but the plain spheres. Object ids index it, or `balls` when tagged [`BALL`].
     nodes: Vec<Primitive>,
-    /// The untransformed, unmoving spheres (compact: most objects of a large scene).
+    /// The unmoving spheres, untransformed or translated (compact: most objects of a large
+    /// scene).
     balls: Vec<Ball>,
     /// Every leaf and mesh node by its [`SurfaceId`].
     surfaces: Vec<SurfaceInfo>,
@@ -153,7 +154,7 @@ impl World {
         let (mut a, mut b) = (0, 0);
         while a < nodes.len() || b < balls.len() {
             let node_first =
-                b == balls.len() || (a < nodes.len() && object_of[a] < balls[b].object);
+                b == balls.len() || (a < nodes.len() && object_of[a] < balls[b].object());
             let (id, bounds) = if node_first {
                 a += 1;
                 ((a - 1) as u32, nodes[a - 1].bounds)
@@ -173,7 +174,7 @@ impl World {
         stats.unbounded = loose.len();
         let object = |id: u32| match id & BALL {
             0 => object_of[id as usize],
-            _ => balls[(id & !BALL) as usize].object,
+            _ => balls[(id & !BALL) as usize].object(),
         };
         let bvh = if boxes.len() >= MIN_BVH_OBJECTS {
             // Large worlds, and worlds few rays will visit: a build for speed, and leaves of up
@@ -215,8 +216,10 @@ impl World {
         stats.memory_bytes += nodes.len() * std::mem::size_of::<Primitive>()
             + balls.len() * std::mem::size_of::<Ball>()
             + surfaces.len() * std::mem::size_of::<SurfaceInfo>();
-        let (spheres, loose): (Vec<u32>, Vec<u32>) =
-            loose.into_iter().partition(|&id| id & BALL != 0);
+        // Translated balls test rays in their object space, one by one: not in the lanes.
+        let (spheres, loose): (Vec<u32>, Vec<u32>) = loose
+            .into_iter()
+            .partition(|&id| id & BALL != 0 && !balls[(id & !BALL) as usize].is_translated());
         let sphere_ids = spheres;
         let spheres = SphereLanes::new(sphere_ids.iter().map(|&id| {
             let b = &balls[(id & !BALL) as usize];
@@ -490,7 +493,7 @@ impl World {
     /// The top-level object (an index into the scene's objects) a hit belongs to.
     pub fn object(&self, hit: &SurfaceHit) -> u32 {
         if let Some(b) = self.ball(hit) {
-            return b.object;
+            return b.object();
         }
         self.surfaces
             .get(hit.surface.0 as usize)
@@ -509,10 +512,10 @@ impl World {
     }
 
     /// The matrix that carries a gradient at `hit` from its object space (where `local_point`
-    /// lies) to world space (the identity for a ball: its object space is the world's).
+    /// lies) to world space (for a ball, the identity or its translation's).
     pub(crate) fn normal_matrix(&self, hit: &SurfaceHit) -> DMat3 {
-        if self.ball(hit).is_some() {
-            return DMat3::IDENTITY;
+        if let Some(b) = self.ball(hit) {
+            return b.normal_matrix();
         }
         self.surfaces
             .get(hit.surface.0 as usize)

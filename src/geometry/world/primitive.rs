@@ -85,17 +85,25 @@ pub(crate) struct Placement {
     /// Object → parent.
     to_parent: DAffine3,
     /// Normal matrix (inverse transpose of the linear part of `to_parent`).
-    normal_matrix: DMat3,
+    pub(super) normal_matrix: DMat3,
 }
 
 impl Placement {
     /// The placement by `transform` (which must be invertible).
-    fn of(transform: DAffine3) -> Placement {
+    pub(super) fn of(transform: DAffine3) -> Placement {
         Placement {
             to_object: transform.inverse(),
             to_parent: transform,
             normal_matrix: transform.matrix3.inverse().transpose(),
         }
+    }
+
+    /// The offset of a placement that only translates (its matrix part has the identity's
+    /// bits): [`Placement::of`] that translation rebuilds this placement bit for bit.
+    pub(super) fn translation(&self) -> Option<DVec3> {
+        let bits = |m: DMat3| m.to_cols_array().map(f64::to_bits);
+        (bits(self.to_parent.matrix3) == bits(DMat3::IDENTITY))
+            .then_some(self.to_parent.translation)
     }
 }
 
@@ -204,7 +212,7 @@ impl Primitive {
     /// ray): a ray spawned just outside a surface must not meet it again because the transform
     /// moved its origin by more than the spawn offset.
     #[inline]
-    fn local_after(place: Option<&Placement>, ray: &Ray, t_min: f64) -> (Ray, f64) {
+    pub(super) fn local_after(place: Option<&Placement>, ray: &Ray, t_min: f64) -> (Ray, f64) {
         match place {
             None => (*ray, t_min),
             Some(p) => {
@@ -224,7 +232,7 @@ impl Primitive {
 
     /// Moves a hit from object space to the parent's space.
     #[inline]
-    fn out(place: Option<&Placement>, mut h: GeoHit) -> GeoHit {
+    pub(super) fn out(place: Option<&Placement>, mut h: GeoHit) -> GeoHit {
         if let Some(p) = place {
             (h.point, h.error) = rounding::transform_point(&p.to_parent, h.point, h.error);
             h.normal = (p.normal_matrix * h.normal).unit_or(h.normal);
