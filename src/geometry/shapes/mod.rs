@@ -66,6 +66,7 @@ use crate::ir::{CsgOp, Shape};
 
 mod flaw;
 mod rules;
+mod rules_outline;
 mod rules_sweep;
 
 pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
