@@ -312,6 +312,18 @@ impl Shape {
                 }
                 ("height_field", a)
             }
+            Shape::BicubicPatch { points } => (
+                "bicubic_patch",
+                vec![(
+                    "points",
+                    List(
+                        points
+                            .iter()
+                            .map(|row| List(row.iter().map(|p| Point(*p)).collect()))
+                            .collect(),
+                    ),
+                )],
+            ),
             Shape::Mesh {
                 source,
                 smooth,

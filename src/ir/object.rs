@@ -284,6 +284,13 @@ pub enum Shape {
         /// Parts below this height are cut away (0: none).
         water_level: f64,
     },
+    /// A bicubic Bézier patch (POV-Ray's `bicubic_patch`): `Σ Bᵢ(s)·Bⱼ(t)·points[i][j]`, a
+    /// surface (not a solid); uv = `(t, s)`, POV-Ray's.
+    BicubicPatch {
+        /// The 4 × 4 control points, row by row (POV-Ray's order); boxed, as they would
+        /// make every shape four times larger.
+        points: Box<[[DVec3; 4]; 4]>,
+    },
     /// A triangle mesh from a file (loaded when the scene is prepared; instanced by path) or
     /// written inline.
     Mesh {
@@ -329,6 +336,7 @@ impl Shape {
             Shape::Poly { .. } => "poly",
             Shape::Isosurface { .. } => "isosurface",
             Shape::HeightField { .. } => "height_field",
+            Shape::BicubicPatch { .. } => "bicubic_patch",
             Shape::Mesh { .. } => "mesh",
             Shape::Csg { .. } => "csg",
         }

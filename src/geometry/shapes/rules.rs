@@ -8,6 +8,7 @@ use glam::DVec3;
 use crate::diag::number;
 use crate::ir::{Shape, Spindle, poly_terms};
 
+use super::bicubic::BicubicPatch;
 use super::blob::Blob;
 use super::cone::Cone;
 use super::cuboid::Cuboid;
@@ -280,7 +281,7 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             heights,
             spline,
             sweep,
-        } => prism_leaf(points, *heights, *spline, *sweep)?,
+        } => Leaf::Extrusion(Box::new(prism_leaf(points, *heights, *spline, *sweep)?)),
         Shape::Text {
             thickness, glyphs, ..
         } => {
@@ -296,7 +297,7 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
                 },
             )?))
         }
-        Shape::Lathe { points, spline } => lathe(points, *spline)?,
+        Shape::Lathe { points, spline } => Leaf::Lathe(Box::new(lathe(points, *spline)?)),
         Shape::Sor { points, open } => sor(points, *open)?,
         Shape::SphereSweep { spline, spheres } => sphere_sweep(*spline, spheres)?,
         Shape::Superellipsoid { e, n } => {
@@ -332,6 +333,17 @@ pub(crate) fn leaf(shape: &Shape) -> Result<Leaf, ShapeFlaw> {
             water_level,
             ..
         } => height_field(heights, *smooth, *water_level)?,
+        Shape::BicubicPatch { points } => {
+            finite("points", points.as_flattened())?;
+            Leaf::Bicubic(Box::new(BicubicPatch::new(**points).ok_or_else(|| {
+                ShapeFlaw::degenerate(
+                    "points",
+                    "the bicubic patch has no area",
+                    "its points lie on one line, or every row is the same curve",
+                    "move the rows apart, e.g. rows at z = 0, 1, 2, 3",
+                )
+            })?))
+        }
         Shape::Mesh { .. } | Shape::Csg { .. } => {
             return Err(ShapeFlaw::other(
                 "shape",

@@ -1,17 +1,17 @@
 //! The rules of the shapes drawn from a spline outline, `prism` (an outline in the ground
 //! plane, swept up) and `lathe` (a profile, revolved): how many points each spline needs, the
-//! outline closed, some area, each flaw naming the parameter to blame.
+//! outline closed, some area, each flaw naming the parameter to blame. They return the shape,
+//! not its `Leaf`, so this file stays below the module root (no circle through `mod.rs`).
 
 use glam::DVec2;
 
 use crate::diag::number;
 use crate::ir::{PrismSweep, Spline};
 
-use super::extrusion::Sweep;
-use super::flaw::in_range;
+use super::extrusion::{Extrusion, Sweep};
+use super::flaw::{NOT_CLOSED, OUT_OF_RANGE, ShapeFlaw, in_range};
 use super::lathe::{Lathe, segment_count};
 use super::prism::{self, OutlineError};
-use super::{Leaf, NOT_CLOSED, OUT_OF_RANGE, ShapeFlaw};
 
 /// A prism's rules: heights in order (and not below the apex for a conic sweep), enough points
 /// for the spline, every sub-outline closed, some area.
@@ -20,7 +20,7 @@ pub(super) fn prism_leaf(
     heights: [f64; 2],
     spline: Spline,
     sweep: PrismSweep,
-) -> Result<Leaf, ShapeFlaw> {
+) -> Result<Extrusion, ShapeFlaw> {
     let [h0, h1] = heights;
     in_range(h0.is_finite(), "heights", "finite", h0)?;
     in_range(h1.is_finite(), "heights", "finite", h1)?;
@@ -91,21 +91,19 @@ pub(super) fn prism_leaf(
         }
     })?;
     let how = if conic { Sweep::Conic } else { Sweep::Linear };
-    Ok(Leaf::Extrusion(Box::new(
-        prism::build(&subs, how, h0, h1).ok_or_else(|| {
-            ShapeFlaw::degenerate(
-                "points",
-                "the prism's outline encloses no area",
-                "its points lie on one line",
-                "spread the points out so they enclose an area",
-            )
-        })?,
-    )))
+    prism::build(&subs, how, h0, h1).ok_or_else(|| {
+        ShapeFlaw::degenerate(
+            "points",
+            "the prism's outline encloses no area",
+            "its points lie on one line",
+            "spread the points out so they enclose an area",
+        )
+    })
 }
 
 /// A lathe's rules: enough points for its spline, each finite with `r >= 0`, and a profile
 /// with some extent.
-pub(super) fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFlaw> {
+pub(super) fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Lathe, ShapeFlaw> {
     let (least, what) = match spline {
         Spline::Linear => (2, "2 points"),
         Spline::Quadratic => (3, "3 points (the first only steers)"),
@@ -147,14 +145,12 @@ pub(super) fn lathe(points: &[[f64; 2]], spline: Spline) -> Result<Leaf, ShapeFl
         )?;
     }
     debug_assert!(segment_count(spline, points.len()) > 0);
-    Ok(Leaf::Lathe(Box::new(Lathe::new(points, spline).ok_or_else(
-        || {
-            ShapeFlaw::degenerate(
-                "points",
-                "the lathe's profile encloses no area",
-                "its points lie on one line or on the axis",
-                "move points away from the axis and off one line, e.g. `[[0, 0], [1, 0], [1, 1], [0, 1]]`",
-            )
-        },
-    )?)))
+    Lathe::new(points, spline).ok_or_else(|| {
+        ShapeFlaw::degenerate(
+            "points",
+            "the lathe's profile encloses no area",
+            "its points lie on one line or on the axis",
+            "move points away from the axis and off one line, e.g. `[[0, 0], [1, 0], [1, 1], [0, 1]]`",
+        )
+    })
 }
