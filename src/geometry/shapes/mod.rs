@@ -71,7 +71,7 @@ mod rules;
 mod rules_outline;
 mod rules_sweep;
 
-pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
+pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 pub(crate) use rules::leaf;
 
 /// Whether `shape` can be drawn: `Ok` for every valid shape, a mesh (its file is checked when
