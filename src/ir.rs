@@ -21,6 +21,7 @@ mod object;
 mod placement;
 pub mod provenance;
 mod settings;
+mod shape_parts;
 mod texture;
 
 pub use atmosphere::{Fog, FogPattern, GroundFog, Sky};
@@ -31,10 +32,7 @@ pub use light::{Fade, Light, LightKind, PARALLEL_DISTANCE, Spot, cylinder_share}
 pub use loaded::Loaded;
 pub use mesh::{InlineMesh, MeshSource};
 pub(crate) use motion::{CameraMotion, Motion, Shutter};
-pub use object::{
-    BlobComponent, Container, CsgOp, GlyphCurve, HeightGrid, Object, PrismSweep, Shape, Spindle,
-    Spline, SweepSpline, TextAlign, TextGlyphs, Visibility, poly_terms,
-};
+pub use object::{CsgOp, Object, Shape, Visibility};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{
@@ -42,6 +40,10 @@ pub use settings::{
     ShadingModel,
 };
 pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
+pub use shape_parts::{
+    BlobComponent, Container, GlyphCurve, HeightGrid, PrismSweep, Spindle, Spline, SweepSpline,
+    TextAlign, TextGlyphs, poly_terms,
+};
 pub use texture::{
     Bump, ImageFilter, Mapping, MaterialId, Mix, PatternSpace, PatternTexture, Texture, TextureId,
 };

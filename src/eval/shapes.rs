@@ -1,6 +1,6 @@
 //! Shape constructors with schema-checked parameters (groups and CSG are in `compound`, meshes
 //! in `mesh`, prisms and text in `extrude`, lathes, sors, superellipsoids and polynomial surfaces in
-//! `revolve`, sphere sweeps in `sweep`).
+//! `revolve`, sphere sweeps in `sweep`, bicubic patches in `patch`).
 
 use glam::DVec3;
 
@@ -23,6 +23,7 @@ mod height_field;
 mod isosurface;
 mod mesh;
 mod mesh_inline;
+mod patch;
 mod revolve;
 mod sweep;
 
@@ -54,6 +55,7 @@ pub(crate) static FNS: &[(&Sig, BuiltinFn)] = &[
     (&mesh::MESH, mesh::mesh),
     (&extrude::PRISM, extrude::prism),
     (&extrude::TEXT, extrude::text),
+    (&patch::BICUBIC_PATCH, patch::bicubic_patch),
 ];
 
 /// `capped: Bool = true` of cylinders and cones.

@@ -5,7 +5,8 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use super::object::{BlobComponent, Container, Shape, Spindle, Spline, SweepSpline};
+use super::object::Shape;
+use super::shape_parts::{BlobComponent, Container, Spindle, Spline, SweepSpline};
 
 /// What `rtc convert` writes for a compiled function it cannot spell as source (none the
 /// compiler makes): a string, so the written scene stops with a type error naming why.
@@ -314,6 +315,18 @@ impl Shape {
                 }
                 ("height_field", a)
             }
+            Shape::BicubicPatch { points } => (
+                "bicubic_patch",
+                vec![(
+                    "points",
+                    List(
+                        points
+                            .iter()
+                            .map(|row| List(row.iter().map(|p| Point(*p)).collect()))
+                            .collect(),
+                    ),
+                )],
+            ),
             Shape::Mesh {
                 source,
                 smooth,
@@ -345,10 +358,10 @@ impl Shape {
                     ),
                     ("heights", pair(heights[0], heights[1])),
                 ];
-                if *spline != super::object::Spline::Linear {
+                if *spline != super::shape_parts::Spline::Linear {
                     a.push(("spline", Arg::Str(spline.name().to_string())));
                 }
-                if *sweep == super::object::PrismSweep::Conic {
+                if *sweep == super::shape_parts::PrismSweep::Conic {
                     a.push(("sweep", Arg::Str("conic".to_string())));
                 }
                 ("prism", a)
@@ -369,7 +382,7 @@ impl Shape {
                 if *spacing != glam::DVec2::ZERO {
                     a.push(("spacing", List(vec![Number(spacing.x), Number(spacing.y)])));
                 }
-                if *align != super::object::TextAlign::Left {
+                if *align != super::shape_parts::TextAlign::Left {
                     a.push(("align", Arg::Str(align.name().to_string())));
                 }
                 ("text", a)

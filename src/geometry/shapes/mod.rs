@@ -11,6 +11,7 @@
 //! `rtc::param::not_planar` (a polygon off its plane), `rtc::csg::operands` (a CSG node with
 //! fewer than two operands).
 
+mod bicubic;
 mod blob;
 mod bracket;
 pub(crate) mod circle_quadratic;
@@ -42,6 +43,7 @@ pub(crate) mod triangle;
 
 use glam::DVec3;
 
+use crate::geometry::shapes::bicubic::BicubicPatch;
 use crate::geometry::shapes::blob::Blob;
 use crate::geometry::shapes::cone::Cone;
 use crate::geometry::shapes::cuboid::Cuboid;
@@ -66,9 +68,10 @@ use crate::ir::{CsgOp, Shape};
 
 mod flaw;
 mod rules;
+mod rules_outline;
 mod rules_sweep;
 
-pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_CLOSED, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
+pub(crate) use flaw::{CSG_OPERANDS, DEGENERATE, NOT_PLANAR, OUT_OF_RANGE, ShapeFlaw};
 pub(crate) use rules::leaf;
 
 /// Whether `shape` can be drawn: `Ok` for every valid shape, a mesh (its file is checked when
@@ -161,6 +164,8 @@ pub(crate) enum Leaf {
     Isosurface(Box<Isosurface>),
     /// A height field.
     HeightField(Box<HeightField>),
+    /// A bicubic Bézier patch.
+    Bicubic(Box<BicubicPatch>),
 }
 
 impl Leaf {
@@ -188,6 +193,7 @@ impl Leaf {
             Leaf::Poly(x) => x.bounds(),
             Leaf::Isosurface(x) => x.bounds(),
             Leaf::HeightField(x) => x.bounds(),
+            Leaf::Bicubic(x) => x.bounds(),
         }
     }
 
@@ -216,6 +222,7 @@ impl Leaf {
             Leaf::Poly(x) => x.intersect(r, t_min, t_max),
             Leaf::Isosurface(x) => x.intersect(r, t_min, t_max),
             Leaf::HeightField(x) => x.intersect(r, t_min, t_max),
+            Leaf::Bicubic(x) => x.intersect(r, t_min, t_max),
         }
     }
 
@@ -244,6 +251,7 @@ impl Leaf {
             Leaf::Poly(x) => x.point_error(p),
             Leaf::Isosurface(x) => x.point_error(p),
             Leaf::HeightField(x) => x.point_error(p),
+            Leaf::Bicubic(x) => x.point_error(p),
         }
     }
 
@@ -279,7 +287,8 @@ impl Leaf {
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
             | Leaf::Disk(_)
-            | Leaf::Ring(_) => {}
+            | Leaf::Ring(_)
+            | Leaf::Bicubic(_) => {}
         }
     }
 
@@ -306,7 +315,8 @@ impl Leaf {
             | Leaf::Quad(_)
             | Leaf::Polygon(_)
             | Leaf::Disk(_)
-            | Leaf::Ring(_) => false,
+            | Leaf::Ring(_)
+            | Leaf::Bicubic(_) => false,
         }
     }
 
@@ -369,7 +379,7 @@ pub(crate) fn bounds(shape: &Shape) -> Option<Aabb> {
 }
 
 /// Whether a shape encloses a volume CSG can classify against: surfaces (triangle, quad,
-/// polygon, disk) and open cylinders, cones and sors do not; a mesh does when `closed_mesh` says its
+/// polygon, disk, ring, bicubic patch) and open cylinders, cones and sors do not; a mesh does when `closed_mesh` says its
 /// file is closed; a CSG node when all its operands do (an inverted solid is one; a clipped
 /// surface never).
 pub(crate) fn encloses_volume(
@@ -381,7 +391,8 @@ pub(crate) fn encloses_volume(
         | Shape::Quad { .. }
         | Shape::Polygon { .. }
         | Shape::Disk { .. }
-        | Shape::Ring { .. } => false,
+        | Shape::Ring { .. }
+        | Shape::BicubicPatch { .. } => false,
         Shape::Cylinder { capped, .. } | Shape::Cone { capped, .. } => *capped,
         Shape::Isosurface { open, .. } => !*open,
         Shape::Sor { open, .. } => !*open,
