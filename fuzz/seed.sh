@@ -81,6 +81,51 @@ for path in sys.argv[2:]:
             f.write(bytes([flag]) + data[:65536])
 PY
 
+# glTF: flag byte (bit 2 GLB, bit 3 glTF JSON, bit 4 use_mtl), then the file: a quad with
+# texture coordinates, COLOR_0 (normalised bytes) and a 2×2 PNG base colour texture, the image
+# in a buffer view of the GLB's binary chunk or as a data: URI.
+python3 - "$out/mesh_formats" <<'PY'
+import base64, json, struct, sys, zlib
+out = sys.argv[1]
+def chunk(kind, data):
+    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+raw = b"".join(b"\0" + bytes(c for x in range(2) for c in (120 * x, 120 * y, 200)) for y in range(2))
+png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
+       + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+pos = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]
+uv = [(0, 1), (1, 1), (1, 0), (0, 0)]
+col = [(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255, 255, 255, 255)]
+bin_ = (b"".join(struct.pack("<3f", *p) for p in pos) + b"".join(struct.pack("<2f", *t) for t in uv)
+        + b"".join(bytes(c) for c in col) + struct.pack("<6H", 0, 1, 2, 0, 2, 3))
+image_at = len(bin_)
+def doc(buffer, image, length):
+    return {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1, "COLOR_0": 2},
+                                        "indices": 3, "material": 0}]}],
+            "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+            "textures": [{"source": 0}], "images": [image], "buffers": [buffer],
+            "bufferViews": [{"buffer": 0, "byteOffset": o, "byteLength": n}
+                            for o, n in [(0, 48), (48, 32), (80, 16), (96, 12), (image_at, length)]],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                           "min": [-1, -1, 0], "max": [1, 1, 0]},
+                          {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                          {"bufferView": 2, "componentType": 5121, "normalized": True, "count": 4, "type": "VEC4"},
+                          {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}]}
+def pad(b, fill):
+    return b + fill * (-len(b) % 4)
+glb_bin = pad(bin_ + png, b"\0")
+j = pad(json.dumps(doc({"byteLength": len(glb_bin)}, {"bufferView": 4, "mimeType": "image/png"}, len(png))).encode(), b" ")
+glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(j) + 8 + len(glb_bin)) + struct.pack("<I", len(j)) + b"JSON" + j \
+    + struct.pack("<I", len(glb_bin)) + b"BIN\0" + glb_bin
+uri = lambda mime, b: "data:%s;base64,%s" % (mime, base64.b64encode(b).decode())
+gltf = json.dumps(doc({"byteLength": len(bin_), "uri": uri("application/octet-stream", bin_)},
+                      {"uri": uri("image/png", png)}, 1)).encode()
+for name, flag, data in [("quad_glb", 4, glb), ("quad_glb_mtl", 4 | 16, glb),
+                         ("quad_gltf", 8, gltf), ("quad_gltf_mtl_smooth", 8 | 16 | 1, gltf)]:
+    with open("%s/%s" % (out, name), "wb") as f:
+        f.write(bytes([flag]) + data)
+PY
+
 # The hostile probe's shapes of input (issue 35), cut to the fuzzers' input sizes: brackets
 # nested past the budget, long postfix chains, a long `else if` chain, a union grown by
 # `reduce`, a YAML alias tree, an OBJ repeating one face. (Symlinked folders and special files

@@ -1,5 +1,6 @@
 //! The same mesh in OBJ, PLY (ASCII, binary little- and big-endian) and STL (ASCII and binary)
-//! renders the same image, byte for byte. The other files are written here from the course
+//! renders the same image, byte for byte (vertex colours and images inside glTF files:
+//! [`mesh_formats_colours`]). The other files are written here from the course
 //! duck's OBJ text (positions as written, polygons as polygons, so the PLY reader's fan
 //! triangulation is tested against the OBJ reader's): the OBJ reader is the reference.
 
@@ -11,6 +12,9 @@ use std::path::{Path, PathBuf};
 use rtc::eval::EvalOptions;
 use rtc::render::{Image, RenderOptions, render_image};
 use rtc::source::SourceMap;
+
+/// Vertex colours and glTF images inside the file.
+mod mesh_formats_colours;
 
 /// The duck as written: position texts, texture coordinate texts, faces of (v, vt) corners.
 struct Obj {

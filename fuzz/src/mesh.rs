@@ -19,6 +19,7 @@ pub fn exercise(path: &Path, smooth: bool, use_mtl: bool) {
         triangles: &asset.triangles,
         normals: &asset.normals,
         uvs: &asset.uvs,
+        colors: &asset.colors,
         material_of: &asset.material_of,
     });
     let b = mesh.bounds();

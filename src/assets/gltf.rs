@@ -1,21 +1,26 @@
 //! glTF 2.0 meshes (`.gltf` with `.bin` files or embedded base64 buffers, and `.glb`): every
 //! triangle primitive of the default scene (else the first), its node transforms flattened into
-//! the positions, with normals, texture coordinates and the material's base colour factor.
+//! the positions, with normals, texture coordinates, vertex colours (`COLOR_0`) and the
+//! material's base colour factor and texture (an image file beside it or inside it,
+//! [`super::gltf_image`]).
 //!
 //! The `gltf` crate parses and validates the JSON (and the GLB container); its accessor reader
 //! is not used: it subtracts 1 from an accessor's count and asserts on stride and size (panics
-//! on files such as a zero-count accessor). Each accessor is checked here (type, component,
-//! stride, byte range within its view and buffer, with checked arithmetic) before a value is
-//! read. Node trees are walked with a depth and a visit budget (a node may appear in several
+//! on files such as a zero-count accessor). Each accessor is checked ([`super::gltf_accessor`]:
+//! type, component, stride, byte range within its view and buffer, with checked arithmetic)
+//! before a value is read. Node trees are walked with a depth and a visit budget (a node may appear in several
 //! trees; a file can make that grow exponentially) and the triangle budget is checked before
 //! each primitive is read.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{DMat4, DVec3, Vec2, Vec3};
-use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::Mode;
 
+use super::embedded::{EmbeddedImage, ImageSource};
+use super::gltf_accessor as accessor;
 use super::mesh_data::{Indexed, too_many_triangles};
 use super::obj_error::MeshError;
 use crate::ir::Material;
@@ -35,8 +40,8 @@ pub(super) struct GltfMesh {
     /// Per triangle, an index into `materials` (`u32::MAX`: none); empty when none has one.
     pub(super) material_of: Vec<u32>,
     pub(super) materials: Vec<Material>,
-    /// Per material, its base colour texture's image file (beside the glTF file).
-    pub(super) images: Vec<Option<PathBuf>>,
+    /// Per material, its base colour texture's image (beside the glTF file or inside it).
+    pub(super) images: Vec<Option<ImageSource>>,
     pub(super) buffers: Vec<PathBuf>,
     pub(super) warnings: Vec<String>,
 }
@@ -50,7 +55,7 @@ impl GltfMesh {
     }
 }
 
-fn malformed(message: impl Into<String>) -> MeshError {
+pub(super) fn malformed(message: impl Into<String>) -> MeshError {
     MeshError {
         fix: Some("check the file with the Khronos glTF validator, or export it again".to_owned()),
         ..MeshError::new(message, None)
@@ -94,14 +99,18 @@ pub(super) fn parse(
         max_triangles,
         material_slots: vec![None; gltf.document.materials().len()],
         any_uv: false,
+        embedded: HashMap::new(),
+        colors: Vec::new(),
     };
     for node in scene.nodes() {
         walk.node(&node, DMat4::IDENTITY, 0)?;
     }
     let any_uv = walk.any_uv;
+    let colors = std::mem::take(&mut walk.colors);
     if !any_uv {
         out.mesh.uvs.clear();
     }
+    out.mesh.colors = vertex_colors(colors, out.mesh.vertices.len());
     if out.material_of.iter().all(|&m| m == u32::MAX) {
         out.material_of.clear();
     }
@@ -127,6 +136,19 @@ fn validated(bytes: &[u8]) -> Result<gltf::Gltf, MeshError> {
             }
         }
     }
+    // The crate's `Image::source` unwraps both (the specification requires them).
+    for (i, image) in root.images.iter().enumerate() {
+        if image.uri.is_none() && image.buffer_view.is_none() {
+            return Err(malformed(format!(
+                "image {i} has neither a `uri` nor a `bufferView`"
+            )));
+        }
+        if image.buffer_view.is_some() && image.mime_type.is_none() {
+            return Err(malformed(format!(
+                "image {i} is in a buffer view but has no `mimeType`"
+            )));
+        }
+    }
     let document = gltf::Document::from_json(root).map_err(invalid)?;
     Ok(gltf::Gltf { document, blob })
 }
@@ -148,8 +170,8 @@ pub(super) fn buffer_paths(path: &Path, bytes: &[u8]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Where a buffer's relative URI points: beside the glTF file.
-fn buffer_file(path: &Path, uri: &str) -> PathBuf {
+/// Where a buffer's or an image's relative URI points: beside the glTF file.
+pub(super) fn buffer_file(path: &Path, uri: &str) -> PathBuf {
     path.parent()
         .map_or_else(|| PathBuf::from(uri), |d| d.join(uri))
 }
@@ -166,13 +188,9 @@ fn buffer(
             .ok_or_else(|| malformed("a buffer refers to the GLB binary chunk, which is missing"))?
             .to_vec(),
         gltf::buffer::Source::Uri(uri) if uri.starts_with("data:") => {
-            use base64::Engine as _;
-            let Some((_, data)) = uri.split_once(";base64,") else {
-                return Err(malformed("a buffer's `data:` URI is not base64"));
-            };
-            base64::engine::general_purpose::STANDARD
-                .decode(data)
-                .map_err(|e| malformed(format!("a buffer's base64 data is malformed: {e}")))?
+            super::gltf_image::data_uri(uri)
+                .map_err(|why| malformed(format!("buffer {} {why}", b.index())))?
+                .1
         }
         gltf::buffer::Source::Uri(uri) => {
             let file = buffer_file(path, uri);
@@ -210,6 +228,38 @@ struct Walk<'a> {
     /// The rtc material of each glTF material used so far.
     material_slots: Vec<Option<u32>>,
     any_uv: bool,
+    /// The images inside the file cut out so far, by image index.
+    embedded: HashMap<usize, Arc<EmbeddedImage>>,
+    /// Per primitive read: its vertices (first, count), the colour its vertices take
+    /// without `COLOR_0` or multiply theirs by, and its `COLOR_0` if it has one.
+    colors: Vec<PrimitiveColors>,
+}
+
+/// A primitive's vertex colours, see [`Walk::colors`].
+struct PrimitiveColors {
+    first: usize,
+    count: usize,
+    factor: Vec3,
+    color0: Option<Vec<Vec3>>,
+}
+
+/// Per-vertex colours of `count` vertices (empty when no primitive has `COLOR_0`): glTF's
+/// base colour is `COLOR_0` times the material's factor, white where a primitive has none.
+fn vertex_colors(primitives: Vec<PrimitiveColors>, count: usize) -> Vec<Vec3> {
+    if primitives.iter().all(|p| p.color0.is_none()) {
+        return Vec::new();
+    }
+    let mut out = vec![Vec3::ONE; count];
+    for p in primitives {
+        let Some(span) = out.get_mut(p.first..p.first + p.count) else {
+            continue;
+        };
+        match p.color0 {
+            Some(c) => span.iter_mut().zip(c).for_each(|(o, c)| *o = c * p.factor),
+            None => span.fill(p.factor),
+        }
+    }
+    out
 }
 
 impl Walk<'_> {
@@ -249,13 +299,12 @@ impl Walk<'_> {
         let position = p
             .get(&gltf::Semantic::Positions)
             .ok_or_else(|| malformed("a triangle primitive has no POSITION attribute"))?;
-        let positions: Vec<Vec3> = self
-            .floats::<3>(&position, "POSITION")?
+        let positions: Vec<Vec3> = accessor::floats::<3>(self.buffers, &position, "POSITION")?
             .into_iter()
             .map(Vec3::from)
             .collect();
         let indices: Vec<u32> = match p.indices() {
-            Some(a) => self.indices(&a)?,
+            Some(a) => accessor::indices(self.buffers, &a)?,
             None => (0..positions.len() as u32).collect(),
         };
         if let Some(bad) = indices.iter().find(|&&i| i as usize >= positions.len()) {
@@ -269,16 +318,21 @@ impl Walk<'_> {
             return Err(too_many_triangles(count as u64, self.max_triangles));
         }
         let normals = match p.get(&gltf::Semantic::Normals) {
-            Some(a) => Some(self.floats::<3>(&a, "NORMAL")?),
+            Some(a) => Some(accessor::floats::<3>(self.buffers, &a, "NORMAL")?),
             None => None,
         };
         let uvs = match p.get(&gltf::Semantic::TexCoords(0)) {
-            Some(a) => Some(self.floats::<2>(&a, "TEXCOORD_0")?),
+            Some(a) => Some(accessor::floats::<2>(self.buffers, &a, "TEXCOORD_0")?),
+            None => None,
+        };
+        let color0 = match p.get(&gltf::Semantic::Colors(0)) {
+            Some(a) => Some(accessor::colors(self.buffers, &a)?),
             None => None,
         };
         for (name, len) in [
             ("NORMAL", normals.as_ref().map(Vec::len)),
             ("TEXCOORD_0", uvs.as_ref().map(Vec::len)),
+            ("COLOR_0", color0.as_ref().map(Vec::len)),
         ] {
             if len.is_some_and(|n| n != positions.len()) {
                 return Err(malformed(format!(
@@ -288,6 +342,20 @@ impl Walk<'_> {
         }
         let slot = self.material(p.material());
         let base = self.out.mesh.vertices.len() as u32;
+        // The factor multiplies COLOR_0 unless a texture shows (then it is not applied, as
+        // without vertex colours); no material is glTF's default, white.
+        let factor = match slot as usize {
+            s if self.out.images.get(s).is_some_and(Option::is_none) => {
+                self.out.materials[s].color.as_vec3()
+            }
+            _ => Vec3::ONE,
+        };
+        self.colors.push(PrimitiveColors {
+            first: base as usize,
+            count: positions.len(),
+            factor,
+            color0,
+        });
         let normal_matrix = m.inverse().transpose();
         let mesh = &mut self.out.mesh;
         mesh.vertices.extend(
@@ -361,9 +429,9 @@ impl Walk<'_> {
         slot
     }
 
-    /// The image file of material `m`'s base colour texture: an external image beside the
-    /// file, read through `TEXCOORD_0` (others, and images inside the file, are warned of).
-    fn base_color_image(&mut self, m: &gltf::Material<'_>) -> Option<PathBuf> {
+    /// The image of material `m`'s base colour texture, beside the file or inside it, read
+    /// through `TEXCOORD_0` (others, and images that cannot be found, are warned of).
+    fn base_color_image(&mut self, m: &gltf::Material<'_>) -> Option<ImageSource> {
         let info = m.pbr_metallic_roughness().base_color_texture()?;
         if info.tex_coord() != 0 {
             self.out.warn(format!(
@@ -372,112 +440,17 @@ impl Walk<'_> {
             ));
             return None;
         }
-        match info.texture().source().source() {
-            gltf::image::Source::Uri { uri, .. } if !uri.starts_with("data:") => {
-                Some(buffer_file(self.path, uri))
-            }
-            _ => {
-                self.out.warn(
-                    "a base colour texture stored inside the file is not read (only image files beside it): its base colour factor is used"
-                        .to_owned(),
-                );
+        let image = info.texture().source();
+        match super::gltf_image::source(self.path, self.buffers, &image, &mut self.embedded) {
+            Ok(source) => Some(source),
+            Err(why) => {
+                self.out.warn(format!(
+                    "a base colour texture (image {}) {why}: its base colour factor is used",
+                    image.index()
+                ));
                 None
             }
         }
-    }
-
-    /// The bytes of each element of accessor `a` (checked), with its element size.
-    fn elements<'b>(
-        &'b self,
-        a: &gltf::Accessor<'_>,
-        size: usize,
-    ) -> Result<impl Iterator<Item = &'b [u8]>, MeshError> {
-        let name = format!("accessor {}", a.index());
-        if a.sparse().is_some() {
-            return Err(malformed(format!(
-                "{name} is sparse, which rtc does not read"
-            )));
-        }
-        let view = a
-            .view()
-            .ok_or_else(|| malformed(format!("{name} has no buffer view")))?;
-        let data = self
-            .buffers
-            .get(view.buffer().index())
-            .ok_or_else(|| malformed(format!("the buffer of {name} is missing")))?;
-        let stride = view.stride().unwrap_or(size);
-        let view_end = view.offset().checked_add(view.length());
-        let bytes = view_end
-            .and_then(|end| data.get(view.offset()..end))
-            .ok_or_else(|| {
-                malformed(format!("the buffer view of {name} lies outside its buffer"))
-            })?;
-        let count = a.count();
-        let end = count
-            .checked_sub(1)
-            .and_then(|n| n.checked_mul(stride))
-            .and_then(|n| n.checked_add(size))
-            .and_then(|n| n.checked_add(a.offset()));
-        if count == 0 || stride < size || end.is_none_or(|e| e > bytes.len()) {
-            return Err(malformed(format!(
-                "{name} ({count} elements of {size} bytes, stride {stride}) does not fit its buffer view"
-            )));
-        }
-        let start = a.offset();
-        Ok((0..count).map(move |i| &bytes[start + i * stride..start + i * stride + size]))
-    }
-
-    /// The `N`-component float vectors of accessor `a` (the attribute `what`).
-    fn floats<const N: usize>(
-        &self,
-        a: &gltf::Accessor<'_>,
-        what: &str,
-    ) -> Result<Vec<[f32; N]>, MeshError> {
-        let dims = match N {
-            2 => Dimensions::Vec2,
-            _ => Dimensions::Vec3,
-        };
-        if a.data_type() != DataType::F32 || a.dimensions() != dims {
-            return Err(malformed(format!(
-                "{what} is {:?} of {:?}; rtc reads {dims:?} of F32",
-                a.dimensions(),
-                a.data_type()
-            )));
-        }
-        Ok(self
-            .elements(a, 4 * N)?
-            .map(|e| {
-                std::array::from_fn(|k| {
-                    f32::from_le_bytes([e[4 * k], e[4 * k + 1], e[4 * k + 2], e[4 * k + 3]])
-                })
-            })
-            .collect())
-    }
-
-    /// Triangle corner indices (unsigned 8, 16 or 32 bit scalars).
-    fn indices(&self, a: &gltf::Accessor<'_>) -> Result<Vec<u32>, MeshError> {
-        let size = match a.data_type() {
-            DataType::U8 => 1,
-            DataType::U16 => 2,
-            DataType::U32 => 4,
-            other => {
-                return Err(malformed(format!(
-                    "indices of type {other:?}; glTF allows U8, U16 and U32"
-                )));
-            }
-        };
-        if a.dimensions() != Dimensions::Scalar {
-            return Err(malformed("indices must be scalars"));
-        }
-        Ok(self
-            .elements(a, size)?
-            .map(|e| match e {
-                [b] => u32::from(*b),
-                [a, b] => u32::from(u16::from_le_bytes([*a, *b])),
-                [a, b, c, d] => u32::from_le_bytes([*a, *b, *c, *d]),
-                _ => u32::MAX,
-            })
-            .collect())
     }
 }
 

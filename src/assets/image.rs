@@ -31,14 +31,16 @@ pub struct ImageError {
 /// Whether `path` is a JPEG (it starts with the SOI marker FF D8) with no end-of-image marker
 /// (FF D9) after its last start-of-scan (FF DA): cut short, which the decoder does not report.
 fn jpeg_truncated(path: &Path) -> bool {
-    let Ok(bytes) = std::fs::read(path) else {
-        return false;
-    };
+    std::fs::read(path).is_ok_and(|bytes| jpeg_bytes_truncated(&bytes))
+}
+
+/// [`jpeg_truncated`] of a file's bytes.
+pub(super) fn jpeg_bytes_truncated(bytes: &[u8]) -> bool {
     if !bytes.starts_with(&[0xff, 0xd8]) {
         return false;
     }
     let last_scan = bytes.windows(2).rposition(|w| w == [0xff, 0xda]);
-    let after = last_scan.map_or(&bytes[..], |p| &bytes[p..]);
+    let after = last_scan.map_or(bytes, |p| &bytes[p..]);
     !after.windows(2).any(|w| w == [0xff, 0xd9])
 }
 
@@ -116,35 +118,20 @@ impl Picture {
         // The budget is checked on the header's size before decoding (a small file can claim
         // a huge image); the decoder's own limits (512 MiB) stay as a second guard.
         let (w, h) = open()?.into_dimensions().map_err(malformed)?;
-        let pixels = u64::from(w) * u64::from(h);
         let data_window = exr_data_window_pixels(path)?;
-        let over = if pixels > MAX_TEXTURE_PIXELS {
-            Some(format!("it is {w}×{h} = {pixels} pixels"))
-        } else if data_window > MAX_TEXTURE_PIXELS {
-            Some(format!("its data window has {data_window} pixels"))
-        } else {
-            None
-        };
-        if let Some(what) = over {
-            return Err(ImageError {
-                message: format!("{what}; at most {MAX_TEXTURE_PIXELS} are decoded"),
-                missing: false,
-                too_large: true,
-            });
-        }
+        within_budget(w, h, data_window)?;
         if jpeg_truncated(path) {
-            // The JPEG decoder fills a truncated scan with grey and reports nothing.
-            return Err(ImageError {
-                message: "the JPEG data ends before its end-of-image marker: the file is truncated"
-                    .into(),
-                missing: false,
-                too_large: false,
-            });
+            return Err(truncated_jpeg());
         }
         // The format comes from the extension.
         let decoded = open()?.decode().map_err(malformed)?;
+        Picture::of_decoded(&decoded)
+    }
+
+    /// The texels of a decoded image: 8-bit images convert exactly as byte/255 in f64, like
+    /// the course framework; others through f32.
+    pub(super) fn of_decoded(decoded: &image::DynamicImage) -> Result<Picture, ImageError> {
         let (w, h) = (decoded.width(), decoded.height());
-        // 8-bit images convert exactly as byte/255 in f64, like the course framework.
         let texels: Vec<DVec3> =
             if decoded.color().bytes_per_pixel() == decoded.color().channel_count() {
                 let to = |b: u8| f64::from(b) / 255.0;
@@ -217,7 +204,47 @@ impl Picture {
     }
 }
 
+/// The error of an image over the pixel budget (by its header's size or, for EXR, its
+/// largest data window), else `Ok`.
+pub(super) fn within_budget(w: u32, h: u32, data_window: u64) -> Result<(), ImageError> {
+    let pixels = u64::from(w) * u64::from(h);
+    let over = if pixels > MAX_TEXTURE_PIXELS {
+        Some(format!("it is {w}×{h} = {pixels} pixels"))
+    } else if data_window > MAX_TEXTURE_PIXELS {
+        Some(format!("its data window has {data_window} pixels"))
+    } else {
+        None
+    };
+    match over {
+        Some(what) => Err(ImageError {
+            message: format!("{what}; at most {MAX_TEXTURE_PIXELS} are decoded"),
+            missing: false,
+            too_large: true,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The error of a JPEG cut short: the decoder fills a truncated scan with grey and reports
+/// nothing.
+pub(super) fn truncated_jpeg() -> ImageError {
+    ImageError {
+        message: "the JPEG data ends before its end-of-image marker: the file is truncated".into(),
+        missing: false,
+        too_large: false,
+    }
+}
+
 impl ImageError {
+    /// The error of an image that cannot be decoded (`message` says why).
+    pub(super) fn malformed(message: String) -> ImageError {
+        ImageError {
+            message,
+            missing: false,
+            too_large: false,
+        }
+    }
+
     /// The diagnostic for this error on the image `path` named at `span`:
     /// `rtc::texture::{not_found, too_large, malformed}`.
     pub(crate) fn diagnostic(&self, span: Span, path: &Path) -> Diagnostic {

@@ -88,6 +88,7 @@ pub(super) fn inline(mesh: &crate::ir::InlineMesh, smooth: bool) -> Result<Faces
         triangles: mesh.triangles.clone(),
         normals: mesh.normals.iter().map(|v| v.as_vec3()).collect(),
         uvs: mesh.uvs.iter().map(|v| v.as_vec2()).collect(),
+        colors: Vec::new(),
     };
     faces(indexed, Vec::new(), smooth)
 }
@@ -113,8 +114,8 @@ pub fn triangles_in(bytes: &[u8], format: Format) -> Result<usize, MeshError> {
     Ok(faces(mesh, Vec::new(), true)?.triangles.len())
 }
 
-/// The per-corner form of `mesh`: triangles with area only, file normals (for `smooth`) and
-/// texture coordinates per corner, and each triangle's material slot from `material_of` (one
+/// The per-corner form of `mesh`: triangles with area only, file normals (for `smooth`),
+/// texture coordinates and vertex colours per corner, and each triangle's material slot from `material_of` (one
 /// per triangle, or empty).
 pub(super) fn faces(
     mesh: Indexed,
@@ -126,6 +127,7 @@ pub(super) fn faces(
         triangles,
         normals,
         uvs,
+        colors,
     } = mesh;
     let mut kept = Vec::with_capacity(triangles.len());
     let mut materials = Vec::with_capacity(material_of.len());
@@ -156,11 +158,17 @@ pub(super) fn faces(
     } else {
         kept.iter().map(|t| t.map(|v| uvs[v as usize])).collect()
     };
+    let colors = if colors.is_empty() {
+        Vec::new()
+    } else {
+        kept.iter().map(|t| t.map(|v| colors[v as usize])).collect()
+    };
     Ok(Faces {
         vertices,
         triangles: kept,
         file_normals,
         uvs,
+        colors,
         material_of: materials,
         materials: Vec::new(),
         images: Vec::new(),

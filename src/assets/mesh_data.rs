@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use glam::{Vec2, Vec3};
 
+use super::embedded::ImageSource;
 use super::obj_error::MeshError;
 use crate::ir::Material;
 
@@ -17,11 +18,13 @@ pub(crate) struct Faces {
     /// Per-triangle normals from the file (smooth only; `None` where a corner has none).
     pub(crate) file_normals: Vec<Option<[Vec3; 3]>>,
     pub(crate) uvs: Vec<[Vec2; 3]>,
+    /// Per-corner vertex colours (linear, as image texels are read), or empty.
+    pub(crate) colors: Vec<[Vec3; 3]>,
     pub(crate) material_of: Vec<u32>,
     pub(crate) materials: Vec<Material>,
-    /// Per material, the image file of its base colour (MTL `map_Kd`, glTF
-    /// `baseColorTexture`), resolved beside the mesh file.
-    pub(crate) images: Vec<Option<PathBuf>>,
+    /// Per material, the image of its base colour (MTL `map_Kd`, glTF `baseColorTexture`):
+    /// a file resolved beside the mesh file, or an image inside a glTF file.
+    pub(crate) images: Vec<Option<ImageSource>>,
     pub(crate) warnings: Vec<String>,
     pub(crate) libraries: Vec<PathBuf>,
 }
@@ -37,6 +40,9 @@ pub struct Indexed {
     pub normals: Vec<Vec3>,
     /// Per-vertex texture coordinates (empty when the file has none).
     pub uvs: Vec<Vec2>,
+    /// Per-vertex colours, channels in [0, 1] as image texels are read (empty when the file
+    /// has none).
+    pub colors: Vec<Vec3>,
 }
 
 /// Rejects a mesh of `count` triangles when it is over `max` (untrusted files have a budget):

@@ -8,8 +8,11 @@
 //! nothing of BVHs or rendering: geometry builds its structures from the plain data loaded here.
 
 mod cache;
+mod embedded;
 mod font;
 mod gltf;
+mod gltf_accessor;
+mod gltf_image;
 mod image;
 pub mod indexed;
 mod mesh_data;
@@ -29,6 +32,7 @@ mod stl;
 use std::path::Path;
 use std::sync::Arc;
 
+pub use self::embedded::{EmbeddedImage, ImageSource};
 pub use self::font::FontAsset;
 pub(crate) use self::font::{FontError, MAX_TEXT_CHARS};
 pub(crate) use self::image::ImageError;

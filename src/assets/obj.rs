@@ -13,6 +13,7 @@ use glam::{DVec3, Vec2, Vec3, Vec3A};
 
 use rayon::prelude::*;
 
+use super::embedded::ImageSource;
 use super::mesh_data::{Faces, within_budget};
 use super::obj_error::{MeshError, locate};
 use crate::ir::Material;
@@ -38,10 +39,13 @@ pub struct MeshAsset {
     pub material_of: Vec<u32>,
     /// The file's MTL materials converted to rtc materials.
     pub materials: Vec<Material>,
-    /// Per material, the image file of its base colour, if it names one (`map_Kd`, glTF's
-    /// `baseColorTexture`): the preparation stage gives the material that image on the
-    /// mesh's texture coordinates.
-    pub images: Vec<Option<PathBuf>>,
+    /// Per material, the image of its base colour, if it names one (`map_Kd`, glTF's
+    /// `baseColorTexture`: a file beside the mesh or an image inside a glTF file): the
+    /// preparation stage gives the material that image on the mesh's texture coordinates.
+    pub images: Vec<Option<ImageSource>>,
+    /// Per-corner vertex colours, one per triangle (empty when the file has none): with
+    /// `use_mtl` they replace the material's colour (and tint its texture).
+    pub colors: Vec<[Vec3; 3]>,
     /// Warnings met while loading (a missing `.mtl`).
     pub warnings: Vec<String>,
     /// The material libraries its `mtllib` lines name, read or not (the cache reloads the mesh
@@ -131,6 +135,7 @@ impl MeshAsset {
             triangles,
             file_normals,
             uvs,
+            colors,
             material_of,
             materials,
             images,
@@ -180,6 +185,7 @@ impl MeshAsset {
             triangles,
             normals,
             uvs,
+            colors,
             material_of,
             materials,
             images,
@@ -217,13 +223,15 @@ fn convert_materials(
     path: &Path,
     mtl: super::obj_file::Materials,
     warnings: &mut Vec<String>,
-) -> (Vec<Material>, Vec<Option<PathBuf>>) {
+) -> (Vec<Material>, Vec<Option<ImageSource>>) {
     match mtl {
         Ok(m) => {
             let dir = path.parent().unwrap_or(Path::new(""));
             (
                 m.iter().map(super::mtl::convert).collect(),
-                m.iter().map(|m| super::mtl::image(m, dir)).collect(),
+                m.iter()
+                    .map(|m| super::mtl::image(m, dir).map(ImageSource::File))
+                    .collect(),
             )
         }
         Err(e) => {
@@ -308,6 +316,7 @@ fn read_fast(path: &Path, text: &[u8], smooth: bool) -> Option<Result<Faces, Mes
         triangles,
         file_normals,
         uvs,
+        colors: Vec::new(),
         material_of,
         materials,
         images,
@@ -438,6 +447,7 @@ fn read_tobj(path: &Path, text: &[u8], smooth: bool) -> Result<Faces, MeshError>
         triangles: tris,
         file_normals,
         uvs,
+        colors: Vec::new(),
         material_of,
         materials,
         images,

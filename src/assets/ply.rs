@@ -6,9 +6,11 @@
 //! sized from an untrusted number.
 //!
 //! Read: the `vertex` element's `x y z`, normals `nx ny nz`, texture coordinates (`s t`,
-//! `u v`, `texture_u texture_v` or `texture_s texture_t`), and the `face` element's list
-//! `vertex_indices` (or `vertex_index`), each polygon fanned from its first corner. Other
-//! properties and elements (vertex colours, `edge`, `material`, ...) are read past.
+//! `u v`, `texture_u texture_v` or `texture_s texture_t`), colours (`red green blue` or
+//! `diffuse_red diffuse_green diffuse_blue`: a `uchar` is byte/255, a `ushort` /65535, a
+//! float as written, clamped to [0, 1]; no sRGB curve, as image texels are read), and the
+//! `face` element's list `vertex_indices` (or `vertex_index`), each polygon fanned from its
+//! first corner. Other properties and elements (alpha, `edge`, `material`, ...) are read past.
 
 use glam::{Vec2, Vec3};
 
@@ -49,6 +51,19 @@ struct Roles {
     position: [Option<usize>; 3],
     normal: [Option<usize>; 3],
     uv: [Option<usize>; 2],
+    color: [Option<usize>; 3],
+}
+
+/// A colour channel stored as type `s`, in [0, 1]: integers scaled from their type's range
+/// (a `uchar` 255 is 1), floats as written; NaN is 0.
+fn channel(v: f32, s: Scalar) -> f32 {
+    let full = match s {
+        Scalar::U16 => 65535.0,
+        Scalar::F32 | Scalar::F64 => 1.0,
+        _ => 255.0,
+    };
+    let c = v / full;
+    if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) }
 }
 
 fn vertices(body: &mut Body<'_>, e: &Element, mesh: &mut Indexed) -> Result<(), MeshError> {
@@ -66,6 +81,9 @@ fn vertices(body: &mut Body<'_>, e: &Element, mesh: &mut Indexed) -> Result<(), 
             "nz" => &mut roles.normal[2],
             "s" | "u" | "texture_u" | "texture_s" => &mut roles.uv[0],
             "t" | "v" | "texture_v" | "texture_t" => &mut roles.uv[1],
+            "red" | "diffuse_red" => &mut roles.color[0],
+            "green" | "diffuse_green" => &mut roles.color[1],
+            "blue" | "diffuse_blue" => &mut roles.color[2],
             _ => continue,
         };
         slot.get_or_insert(i);
@@ -79,6 +97,12 @@ fn vertices(body: &mut Body<'_>, e: &Element, mesh: &mut Indexed) -> Result<(), 
     };
     let normals = roles.normal.iter().all(Option::is_some);
     let uvs = roles.uv.iter().all(Option::is_some);
+    let colors = roles.color.iter().all(Option::is_some);
+    // Each channel's type (checked scalar above), for its scale.
+    let types = roles.color.map(|i| match i.map(|i| e.properties[i].kind) {
+        Some(Kind::Scalar(s)) => s,
+        _ => Scalar::F32,
+    });
     // The header's count is checked against the file's length: each vertex takes a byte.
     let cap = e.count as usize;
     mesh.vertices.reserve(cap);
@@ -87,6 +111,9 @@ fn vertices(body: &mut Body<'_>, e: &Element, mesh: &mut Indexed) -> Result<(), 
     }
     if uvs {
         mesh.uvs.reserve(cap);
+    }
+    if colors {
+        mesh.colors.reserve(cap);
     }
     let mut values = vec![0f32; e.properties.len()];
     for _ in 0..e.count {
@@ -108,6 +135,10 @@ fn vertices(body: &mut Body<'_>, e: &Element, mesh: &mut Indexed) -> Result<(), 
         if uvs {
             let t = roles.uv.map(|i| values[i.unwrap_or(0)]);
             mesh.uvs.push(Vec2::from_array(t));
+        }
+        if colors {
+            let c = std::array::from_fn(|k| channel(values[roles.color[k].unwrap_or(0)], types[k]));
+            mesh.colors.push(Vec3::from_array(c));
         }
     }
     Ok(())

@@ -85,7 +85,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     if !b.extra_textures.is_empty() {
         // The meshes' base colour images, numbered after the scene's textures.
         content.add_mesh_textures();
-        let extra = textures::load_all(&b.extra_textures, &mut diags, &mut b.memory);
+        let extra = textures::load_mesh_textures(&b.extra_textures, &mut diags, &mut b.memory);
         textures = textures.zip(extra).map(|(mut t, e)| {
             t.extend(e);
             t

@@ -10,7 +10,7 @@ use std::sync::Arc;
 
 use std::time::Duration;
 
-use crate::assets::{self, MeshAsset};
+use crate::assets::{self, ImageSource, MeshAsset};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::geometry::mesh::{Mesh, MeshParts};
 use crate::geometry::shapes::{self, Leaf, isosurface::Watch};
@@ -46,7 +46,7 @@ pub(crate) struct Builder {
     pub(crate) extra_materials: Vec<Material>,
     /// Textures the meshes' materials add (their base colour images), numbered after the
     /// scene's own from `texture_base`.
-    pub(crate) extra_textures: Vec<Texture>,
+    pub(crate) extra_textures: Vec<MeshTexture>,
     texture_base: u32,
     /// Meshes this world placed already: a file placed N times is asked of the process-wide
     /// cache once, and its load warnings are reported once.
@@ -203,7 +203,8 @@ impl Builder {
             } => {
                 let (asset, data) = self.mesh(o, source, *smooth)?;
                 let mtl = (*use_mtl && !asset.materials.is_empty()).then(|| self.mtl(o, &asset));
-                Geom::Mesh(MeshRef { data, mtl })
+                let colors = *use_mtl && data.has_colors();
+                Geom::Mesh(MeshRef { data, mtl, colors })
             }
             Shape::Csg { op, children } => {
                 let mut nodes = Vec::with_capacity(children.len());
@@ -320,6 +321,7 @@ impl Builder {
                     triangles: &asset.triangles,
                     normals: &asset.normals,
                     uvs: &asset.uvs,
+                    colors: &asset.colors,
                     material_of: &asset.material_of,
                 }));
                 if let Err(over) = self.memory.charge(mesh.memory() as u64) {
@@ -360,33 +362,75 @@ impl Builder {
 impl Builder {
     /// The texture showing a mesh material's base colour image on the mesh's texture
     /// coordinates (bilinear, as glTF viewers read it), or `None` with a warning when the
-    /// file is not there: the material's colour is used.
-    fn base_color_image(&mut self, o: &Object, image: &std::path::Path) -> Option<TextureId> {
-        if !image.is_file() {
-            self.diagnostics.push(
-                Diagnostic::warning(
-                    "rtc::mesh::missing_image",
-                    o.span,
-                    format!(
-                        "the mesh's material names the image `{}`, which cannot be read",
-                        image.display()
-                    ),
-                )
-                .with_label("drawn with the material's colour")
-                .with_help("put the image beside the mesh file, or fix its name in the material"),
-            );
-            return None;
-        }
-        self.extra_textures.push(Texture::Image {
-            path: image.to_path_buf(),
-            mapping: Mapping::Uv,
-            filter: ImageFilter::Bilinear,
-            span: o.span,
-        });
+    /// image cannot be read (a file that is not there, an image inside a glTF file that does
+    /// not decode): the material's colour is used.
+    fn base_color_image(&mut self, o: &Object, image: &ImageSource) -> Option<TextureId> {
+        let texture = match image {
+            ImageSource::File(path) => {
+                if !path.is_file() {
+                    self.missing_image(
+                        o,
+                        format!(
+                            "the mesh's material names the image `{}`, which cannot be read",
+                            path.display()
+                        ),
+                        "put the image beside the mesh file, or fix its name in the material",
+                    );
+                    return None;
+                }
+                MeshTexture::File(Texture::Image {
+                    path: path.to_path_buf(),
+                    mapping: Mapping::Uv,
+                    filter: ImageFilter::Bilinear,
+                    span: o.span,
+                })
+            }
+            ImageSource::Embedded(e) => {
+                // Charged from the header's size before it is decoded, as an image file is.
+                if let Err(over) = self.memory.charge(e.decoded_bytes()) {
+                    self.diagnostics
+                        .push(over.diagnostic(o.span, &format!("the texture {}", e.name)));
+                    return None;
+                }
+                match e.picture() {
+                    Ok(p) => MeshTexture::Decoded(p),
+                    Err(err) => {
+                        self.missing_image(
+                            o,
+                            format!(
+                                "the mesh's material shows {}, which cannot be decoded: {}",
+                                e.name, err.message
+                            ),
+                            "export the file again with its textures as PNG or JPEG images",
+                        );
+                        return None;
+                    }
+                }
+            }
+        };
+        self.extra_textures.push(texture);
         Some(TextureId(
             self.texture_base + self.extra_textures.len() as u32 - 1,
         ))
     }
+
+    fn missing_image(&mut self, o: &Object, message: String, help: &str) {
+        self.diagnostics.push(
+            Diagnostic::warning("rtc::mesh::missing_image", o.span, message)
+                .with_label("drawn with the material's colour")
+                .with_help(help),
+        );
+    }
+}
+
+/// A texture a mesh's own material adds: an image file, or an image from inside the mesh
+/// file, decoded already (through [`assets::EmbeddedImage`]).
+#[derive(Clone, Debug)]
+pub(crate) enum MeshTexture {
+    /// An image file, loaded as the scene's own textures are.
+    File(Texture),
+    /// A decoded image, shown on the mesh's texture coordinates, read bilinearly.
+    Decoded(Arc<assets::Picture>),
 }
 
 /// Which loaded mesh an object uses: its file, or the inline value (by address: the scene
@@ -436,7 +480,15 @@ fn asset_bytes(a: &MeshAsset) -> u64 {
         + std::mem::size_of_val(a.triangles.as_slice())
         + std::mem::size_of_val(a.normals.as_slice())
         + std::mem::size_of_val(a.uvs.as_slice())
-        + std::mem::size_of_val(a.material_of.as_slice())) as u64
+        + std::mem::size_of_val(a.colors.as_slice())
+        + std::mem::size_of_val(a.material_of.as_slice())
+        + a.images
+            .iter()
+            .map(|i| match i {
+                Some(ImageSource::Embedded(e)) => e.encoded_len(),
+                _ => 0,
+            })
+            .sum::<usize>()) as u64
 }
 
 #[cfg(test)]

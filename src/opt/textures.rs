@@ -108,6 +108,28 @@ pub(crate) fn load_all(
     (maps.len() == textures.len()).then_some(maps)
 }
 
+/// The textures meshes' own materials add, decoded as [`load_all`] decodes the scene's (an
+/// image from inside a mesh file is decoded already, and was charged when it was).
+pub(crate) fn load_mesh_textures(
+    textures: &[super::objects::MeshTexture],
+    out: &mut Diagnostics,
+    memory: &mut Memory,
+) -> Option<Vec<TextureMap>> {
+    let mut maps = Vec::with_capacity(textures.len());
+    for t in textures {
+        match t {
+            super::objects::MeshTexture::File(t) => {
+                // Every image is tried, so every problem is reported.
+                maps.extend(load_all(std::slice::from_ref(t), out, memory).unwrap_or_default());
+            }
+            super::objects::MeshTexture::Decoded(p) => {
+                maps.push(TextureMap::Bilinear(p.clone(), Mapping::Uv));
+            }
+        }
+    }
+    (maps.len() == textures.len()).then_some(maps)
+}
+
 /// The image at `path` decoded by `decode` once `bytes` are charged to `memory`; `None` with
 /// the problem in `out` when the budget or the file refuses.
 fn decoded(

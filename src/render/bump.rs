@@ -149,6 +149,7 @@ mod tests {
             error: DVec3::ZERO,
             material: MaterialId(0),
             surface: SurfaceId(0),
+            vertex_color: None,
         }
     }
 

@@ -142,6 +142,7 @@ mod tests {
             error: DVec3::ZERO,
             material: crate::ir::MaterialId(0),
             surface: SurfaceId(0),
+            vertex_color: None,
         }
     }
 

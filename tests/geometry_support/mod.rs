@@ -108,6 +108,7 @@ pub fn mesh_of(asset: &MeshAsset) -> Mesh {
         triangles: &asset.triangles,
         normals: &asset.normals,
         uvs: &asset.uvs,
+        colors: &[],
         material_of: &asset.material_of,
     })
 }

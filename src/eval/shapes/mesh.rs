@@ -52,7 +52,7 @@ pub(super) static MESH: Sig = Sig::new(
         Param::new(
             "use_mtl",
             Ty::Bool,
-            "use the file's materials where present (OBJ: its `.mtl`; glTF: base colours)",
+            "use the file's materials and colours where present (OBJ: its `.mtl`; glTF: base colours and textures; PLY and glTF: vertex colours)",
         )
         .or(Lit::Bool(false)),
     ],

@@ -29,6 +29,8 @@ pub struct MeshParts<'a> {
     pub normals: &'a [[Vec3; 3]],
     /// Per-corner texture coordinates, one per triangle, or empty.
     pub uvs: &'a [[Vec2; 3]],
+    /// Per-corner vertex colours, one per triangle, or empty.
+    pub colors: &'a [[Vec3; 3]],
     /// Per-triangle material slot (`u32::MAX`: none), one per triangle, or empty.
     pub material_of: &'a [u32],
 }
@@ -46,6 +48,9 @@ pub struct Mesh {
     normals: Vec<[Vec3; 3]>,
     /// Per-corner texture coordinates in file order (empty when the file has none).
     uvs: Vec<[Vec2; 3]>,
+    /// Per-corner vertex colours in file order (empty when the file has none: a mesh
+    /// without them takes no memory for them).
+    colors: Vec<[Vec3; 3]>,
     /// Per-triangle material slot in file order (`u32::MAX`: none); empty when no face has one.
     material_of: Vec<u32>,
     /// The tree, its leaves in blocks ([`Bvh::into_blocks`]); `order` maps a slot to its
@@ -72,6 +77,9 @@ pub struct MeshHit {
     pub(crate) uv: DVec2,
     /// The face's material slot (an index into the file's MTL materials), if it has one.
     pub(crate) material: Option<u32>,
+    /// The vertex colours interpolated at the hit (the same barycentrics as the normal), if
+    /// the mesh has them.
+    pub(crate) color: Option<Vec3>,
     /// Per-axis bound on how far the object-space hit point lies off the triangle's plane.
     pub(crate) error: DVec3,
 }
@@ -127,12 +135,18 @@ impl Mesh {
             triangles: parts.triangles.len(),
             normals: parts.normals.to_vec(),
             uvs: parts.uvs.to_vec(),
+            colors: parts.colors.to_vec(),
             material_of: parts.material_of.to_vec(),
             bvh,
             bounds,
             margin: 1e-3 * (bounds.max - bounds.min).norm(),
             self_hit: 16.0 * f32::EPSILON as f64 * reach,
         }
+    }
+
+    /// Whether the triangles carry vertex colours.
+    pub(crate) fn has_colors(&self) -> bool {
+        !self.colors.is_empty()
     }
 
     /// Number of triangles.
@@ -155,6 +169,7 @@ impl Mesh {
         self.blocks.len() * std::mem::size_of::<TriBlock>()
             + self.normals.len() * std::mem::size_of::<[Vec3; 3]>()
             + self.uvs.len() * std::mem::size_of::<[Vec2; 3]>()
+            + self.colors.len() * std::mem::size_of::<[Vec3; 3]>()
             + self.material_of.len() * 4
             + self.bvh.memory()
     }
@@ -184,6 +199,10 @@ impl Mesh {
             Some(u) => (u[0] * b[0] + u[1] * b[1] + u[2] * b[2]).as_dvec2(),
             None => DVec2::new(b[1] as f64, b[2] as f64),
         };
+        let color = self
+            .colors
+            .get(file)
+            .map(|c| c[0] * b[0] + c[1] * b[1] + c[2] * b[2]);
         MeshHit {
             t: t as f64,
             geometric,
@@ -194,6 +213,7 @@ impl Mesh {
                 .get(file)
                 .copied()
                 .filter(|&m| m != u32::MAX),
+            color,
             error: DVec3::ZERO,
         }
     }

@@ -73,6 +73,7 @@ fn packets_match_single_rays_bit_for_bit() {
         triangles: &triangles,
         normals: &normals,
         uvs: &[],
+        colors: &[],
         material_of: &[],
     };
     let packets = test_packets(n, &vertices, &mut rnd);
@@ -99,6 +100,7 @@ fn clustered_tree_finds_what_the_per_triangle_tree_finds() {
         triangles: &triangles,
         normals: &[],
         uvs: &[],
+        colors: &[],
         material_of: &[],
     };
     let whole = Mesh::build_with(parts, crate::geometry::mesh::bvh::per_triangle);
@@ -246,6 +248,7 @@ fn ties_and_limits_match_single_rays() {
         triangles: &triangles,
         normals: &[],
         uvs: &uvs,
+        colors: &[],
         material_of: &[],
     });
     let mut rnd = crate::geometry::testing::test_uniform(7);

@@ -49,6 +49,9 @@ pub struct SurfaceHit {
     /// The surface hit: [`World::object`] and [`World::frame`] tell its object and mapping
     /// frame (kept out of the hit so it stays small: hits are copied on every candidate).
     pub surface: SurfaceId,
+    /// A mesh's vertex colours interpolated at the hit, when the object shows them: the
+    /// surface colour in place of the material's.
+    pub(crate) vertex_color: Option<glam::Vec3>,
 }
 
 /// The nearest loose sphere along a ray (its lane position and `t`), from
@@ -442,6 +445,7 @@ impl World {
             error: h.error,
             material: h.material,
             surface: h.surface,
+            vertex_color: h.vertex_color,
         }
     }
 

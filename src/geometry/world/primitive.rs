@@ -5,7 +5,7 @@ use crate::num::Norm;
 use std::borrow::Cow;
 use std::sync::Arc;
 
-use glam::{DAffine3, DMat3, DVec2, DVec3};
+use glam::{DAffine3, DMat3, DVec2, DVec3, Vec3};
 
 use crate::geometry::bvh::packet::PACKET;
 use crate::geometry::shapes::Leaf;
@@ -41,6 +41,8 @@ pub(crate) struct GeoHit {
     pub(crate) surface: SurfaceId,
     /// The material to shade with.
     pub(crate) material: MaterialId,
+    /// A mesh's vertex colours interpolated at the hit, when the object shows them.
+    pub(crate) vertex_color: Option<Vec3>,
 }
 
 /// A boundary crossing of a solid node (for CSG).
@@ -59,6 +61,9 @@ pub(crate) struct MeshRef {
     pub(crate) data: Arc<Mesh>,
     /// Material id of each of the file's MTL materials, when the object uses them.
     pub(crate) mtl: Option<Vec<MaterialId>>,
+    /// Whether hits carry the mesh's vertex colours (the object uses the file's own
+    /// appearance, `use_mtl`, and the mesh has them).
+    pub(crate) colors: bool,
 }
 
 /// Geometry of one node, in object space.
@@ -253,6 +258,7 @@ impl Primitive {
             error: l.point_error(local_point),
             surface: self.surface,
             material: self.material,
+            vertex_color: None,
         }
     }
 
@@ -416,6 +422,7 @@ impl Primitive {
             error: h.error,
             surface: self.surface,
             material,
+            vertex_color: if m.colors { h.color } else { None },
         }
     }
 
@@ -520,6 +527,7 @@ pub(crate) fn plain_sphere_hit_at(
         error: sphere::point_error(center, radius, local_point),
         surface,
         material,
+        vertex_color: None,
     }
 }
 

@@ -369,14 +369,18 @@ impl<'a> Whitted<'a> {
         false
     }
 
-    /// Material colour, or the texture's where the material has one. The texture is read
+    /// Material colour, or the texture's where the material has one; on a mesh showing its
+    /// vertex colours, the interpolated vertex colour in place of the material colour (times
+    /// the texture's, as glTF multiplies `COLOR_0` into its base colour). The texture is read
     /// from a copy of the hit: a hit whose address is taken lives in memory, and reloading it
     /// stalled the batch on store forwarding.
     #[inline(always)]
     pub(crate) fn base_color(&self, hit: &SurfaceHit, mat: &Material) -> Color {
-        match mat.texture {
-            Some(t) if self.effects.textures => self.textured(*hit, t),
-            _ => mat.color,
+        match (mat.texture, hit.vertex_color) {
+            (Some(t), None) if self.effects.textures => self.textured(*hit, t),
+            (_, None) => mat.color,
+            (Some(t), Some(v)) if self.effects.textures => v.as_dvec3() * self.textured(*hit, t),
+            (_, Some(v)) => v.as_dvec3(),
         }
     }
 
