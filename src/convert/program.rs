@@ -124,7 +124,7 @@ impl Writer<'_> {
     /// Operations `from..to` into `lines`, updating `regs`.
     fn block(
         &mut self,
-        regs: &mut Vec<Sym>,
+        regs: &mut [Sym],
         from: usize,
         to: usize,
         lines: &mut Vec<String>,
@@ -148,7 +148,7 @@ impl Writer<'_> {
     /// enclosing block ending at `end`; returns the operation after it.
     fn if_else(
         &mut self,
-        regs: &mut Vec<Sym>,
+        regs: &mut [Sym],
         at: usize,
         cond: Reg,
         other: usize,
@@ -165,7 +165,7 @@ impl Writer<'_> {
             return None;
         }
         let test = regs.get(usize::from(cond))?.as_bool();
-        let (mut then_regs, mut else_regs) = (regs.clone(), regs.clone());
+        let (mut then_regs, mut else_regs) = (regs.to_vec(), regs.to_vec());
         let (mut then_lines, mut else_lines) = (Vec::new(), Vec::new());
         self.block(&mut then_regs, at + 1, other - 1, &mut then_lines)?;
         self.block(&mut else_regs, other, after, &mut else_lines)?;
@@ -320,8 +320,11 @@ impl Writer<'_> {
     }
 }
 
+/// Registers `first..first + width`, as `(first, width)`.
+type Run = (usize, usize);
+
 /// The registers `op` reads (first register and width, each) and writes.
-fn footprint(op: &Op) -> (Vec<(usize, usize)>, Option<(usize, usize)>) {
+fn footprint(op: &Op) -> (Vec<Run>, Option<Run>) {
     let u = usize::from;
     match *op {
         Op::Const { dst, .. } => (vec![], Some((u(dst), 1))),
