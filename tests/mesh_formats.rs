@@ -234,13 +234,19 @@ fn render(dir: &Path, file: &str, material: &str) -> Image {
     let scene = format!(
         "rtc 1\nimport std.layout {{ front_view }}\nlet duck = mesh(path: \"{file}\", smooth: true).material({material})\nlet v = front_view(duck)\ncamera {{ eye: v.eye, center: v.center, up: Y, fov: v.fov, resolution: [96, 96] }}\npoint_light {{ position: v.light, color: rgb(1, 1, 1) }}\nduck\nrender {{ shadows: true }}\n"
     );
-    let path = dir.join(format!("{file}.rtc"));
-    std::fs::write(&path, scene).expect("write the scene");
+    render_text(&dir.join(format!("{file}.rtc")), &scene)
+}
+
+/// The image of the scene `text`, written to `path` first (its assets resolve beside it); it
+/// must load without errors.
+fn render_text(path: &Path, text: &str) -> Image {
+    std::fs::write(path, text).expect("write the scene");
     let mut sources = SourceMap::default();
-    let loaded = rtc::loader::load(&path, &mut sources, &EvalOptions::default());
+    let loaded = rtc::loader::load(path, &mut sources, &EvalOptions::default());
     assert!(
         !loaded.diagnostics.has_errors(),
-        "{file}: {:?}",
+        "{}: {:?}",
+        path.display(),
         loaded.diagnostics.items
     );
     let options = RenderOptions {

@@ -70,20 +70,7 @@ fn quad_render(dir: &Path, file: &str, use_mtl: bool) -> Image {
     let scene = format!(
         "rtc 1.1\ncamera {{ eye: [0, 0, 3], center: [0, 0, 0], up: Y, projection: \"orthographic\", height: 2, resolution: [32, 32] }}\npoint_light {{ position: [0.5, 1, 4] }}\nmesh(path: \"{file}\", use_mtl: {use_mtl}).material(material {{ color: rgb(0.3), ka: 0, kd: 0, ks: 0, emission: rgb(1, 1, 1) }})\nrender {{ encoding: linear }}\n"
     );
-    let path = dir.join(format!("{file}-{use_mtl}.rtc"));
-    std::fs::write(&path, scene).expect("write the scene");
-    let mut sources = SourceMap::default();
-    let loaded = rtc::loader::load(&path, &mut sources, &EvalOptions::default());
-    assert!(
-        !loaded.diagnostics.has_errors(),
-        "{file}: {:?}",
-        loaded.diagnostics.items
-    );
-    let options = RenderOptions {
-        threads: 2,
-        ..Default::default()
-    };
-    render_image(&loaded.scene.expect("a scene"), &options).expect("renders")
+    super::render_text(&dir.join(format!("{file}-{use_mtl}.rtc")), &scene)
 }
 
 /// The colour the analytic rule gives at quad point (s, t) ∈ [0, 1]²: barycentric
