@@ -21,6 +21,8 @@ use gltf::mesh::Mode;
 
 use super::embedded::{EmbeddedImage, ImageSource};
 use super::gltf_accessor as accessor;
+use super::gltf_accessor::malformed;
+use super::gltf_image::buffer_file;
 use super::mesh_data::{Indexed, too_many_triangles};
 use super::obj_error::MeshError;
 use crate::ir::Material;
@@ -52,13 +54,6 @@ impl GltfMesh {
         if !self.warnings.contains(&w) {
             self.warnings.push(w);
         }
-    }
-}
-
-pub(super) fn malformed(message: impl Into<String>) -> MeshError {
-    MeshError {
-        fix: Some("check the file with the Khronos glTF validator, or export it again".to_owned()),
-        ..MeshError::new(message, None)
     }
 }
 
@@ -168,12 +163,6 @@ pub(super) fn buffer_paths(path: &Path, bytes: &[u8]) -> Vec<PathBuf> {
             _ => None,
         })
         .collect()
-}
-
-/// Where a buffer's or an image's relative URI points: beside the glTF file.
-pub(super) fn buffer_file(path: &Path, uri: &str) -> PathBuf {
-    path.parent()
-        .map_or_else(|| PathBuf::from(uri), |d| d.join(uri))
 }
 
 /// The bytes of buffer `b`: the GLB's binary chunk, a `data:` URI, or a file next to `path`.

@@ -6,7 +6,6 @@
 use glam::Vec3;
 use gltf::accessor::{DataType, Dimensions};
 
-use super::gltf::malformed;
 use super::obj_error::MeshError;
 
 /// The bytes of each element of accessor `a` (checked), with its element size.
@@ -136,4 +135,12 @@ pub(super) fn indices(buffers: &[Vec<u8>], a: &gltf::Accessor<'_>) -> Result<Vec
             _ => u32::MAX,
         })
         .collect())
+}
+
+/// A malformed glTF file's error, with the fix every such error shares.
+pub(super) fn malformed(message: impl Into<String>) -> MeshError {
+    MeshError {
+        fix: Some("check the file with the Khronos glTF validator, or export it again".to_owned()),
+        ..MeshError::new(message, None)
+    }
 }

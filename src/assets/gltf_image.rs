@@ -4,7 +4,7 @@
 //! ([`EmbeddedImage`]); it is decoded when the scene is prepared.
 
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::embedded::{EmbeddedImage, ImageSource, format_of_mime};
@@ -23,7 +23,7 @@ pub(super) fn source(
     }
     let (bytes, mime, place) = match image.source() {
         gltf::image::Source::Uri { uri, .. } if !uri.starts_with("data:") => {
-            return Ok(ImageSource::File(super::gltf::buffer_file(path, uri)));
+            return Ok(ImageSource::File(buffer_file(path, uri)));
         }
         gltf::image::Source::Uri { uri, mime_type } => {
             let (mime, bytes) = data_uri(uri)?;
@@ -85,6 +85,12 @@ pub(super) fn data_uri(uri: &str) -> Result<(String, Vec<u8>), String> {
         .decode(data)
         .map_err(|e| format!("is a `data:` URI whose base64 is malformed ({e})"))?;
     Ok((mime, bytes))
+}
+
+/// Where a buffer's or an image's relative URI points: beside the glTF file.
+pub(super) fn buffer_file(path: &Path, uri: &str) -> PathBuf {
+    path.parent()
+        .map_or_else(|| PathBuf::from(uri), |d| d.join(uri))
 }
 
 #[cfg(test)]
