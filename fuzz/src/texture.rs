@@ -83,13 +83,13 @@ pub fn one_object_scene(object: Object) -> Scene {
             motion: None,
             span: Default::default(),
         },
-        lights: vec![Light {
-            kind: LightKind::Point {
+        lights: vec![Light::new(
+            LightKind::Point {
                 position: DVec3::new(3.0, 4.0, 5.0),
             },
-            color: DVec3::ONE,
-            span: Default::default(),
-        }],
+            DVec3::ONE,
+            Default::default(),
+        )],
         materials: vec![Material::default()],
         textures: Vec::new(),
         objects: vec![object],
