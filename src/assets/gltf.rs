@@ -117,6 +117,18 @@ pub(super) fn parse(
 /// tests/mesh_formats_fuzz.rs): every attribute's accessor is checked here first.
 fn validated(bytes: &[u8]) -> Result<gltf::Gltf, MeshError> {
     let invalid = |e: gltf::Error| malformed(format!("not a valid glTF 2.0 file: {e}"));
+    // The crate subtracts the 12-byte header from a GLB's declared length unchecked (an
+    // overflow panic in builds with overflow checks: fuzz/found/mesh_formats-1-glb-short-length).
+    if let Some(length) = bytes
+        .strip_prefix(b"glTF")
+        .and_then(|rest| rest.get(4..8))
+        .map(|l| u32::from_le_bytes([l[0], l[1], l[2], l[3]]))
+        && length < 12
+    {
+        return Err(malformed(format!(
+            "the binary glTF header declares a length of {length} bytes, less than the 12 of the header itself"
+        )));
+    }
     let raw = gltf::Gltf::from_slice_without_validation(bytes).map_err(invalid)?;
     let blob = raw.blob;
     let root = raw.document.into_json();
@@ -512,6 +524,16 @@ mod tests {
                 .too_large
         );
         assert!(parse(Path::new("t.gltf"), b"{not json", 10).is_err());
+        // A GLB header declaring fewer bytes than the header (the crate's unchecked
+        // subtraction; fuzz/found/mesh_formats-1-glb-short-length).
+        for length in [0u32, 11] {
+            let mut glb = b"glTF".to_vec();
+            glb.extend(2u32.to_le_bytes());
+            glb.extend(length.to_le_bytes());
+            glb.extend(b"\0\0\0\0JSON{}");
+            let e = parse(Path::new("t.glb"), &glb, 10).expect_err("refused");
+            assert!(e.message.contains("less than the 12"), "{e:?}");
+        }
         // A POSITION naming an accessor the file lacks (gltf-json's validation indexed it).
         let text = String::from_utf8(file(3, one)).unwrap();
         let e = parse(
