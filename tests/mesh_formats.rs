@@ -159,10 +159,15 @@ fn gltf_json(obj: &Obj, uri: Option<&str>) -> (String, Vec<u8>) {
     (json, bin)
 }
 
-/// The duck as one GLB file: header, JSON chunk, BIN chunk (each padded to 4 bytes).
+/// The duck as one GLB file.
 fn glb(obj: &Obj) -> Vec<u8> {
-    let (json, mut bin) = gltf_json(obj, None);
-    let mut json = json.into_bytes();
+    let (json, bin) = gltf_json(obj, None);
+    glb_of(&json, bin)
+}
+
+/// A GLB: header, JSON chunk, BIN chunk (each padded to 4 bytes).
+fn glb_of(json: &str, mut bin: Vec<u8>) -> Vec<u8> {
+    let mut json = json.as_bytes().to_vec();
     while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }

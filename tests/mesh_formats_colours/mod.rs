@@ -174,28 +174,6 @@ fn ply_vertex_colours_shade_the_mesh() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// A GLB: header, JSON chunk, BIN chunk (each padded to 4 bytes).
-fn glb_of(json: &str, mut bin: Vec<u8>) -> Vec<u8> {
-    let mut json = json.as_bytes().to_vec();
-    while !json.len().is_multiple_of(4) {
-        json.push(b' ');
-    }
-    while !bin.len().is_multiple_of(4) {
-        bin.push(0);
-    }
-    let total = 12 + 8 + json.len() + 8 + bin.len();
-    let mut out = b"glTF".to_vec();
-    out.extend(2u32.to_le_bytes());
-    out.extend((total as u32).to_le_bytes());
-    out.extend((json.len() as u32).to_le_bytes());
-    out.extend(b"JSON");
-    out.extend(json);
-    out.extend((bin.len() as u32).to_le_bytes());
-    out.extend(b"BIN\0");
-    out.extend(bin);
-    out
-}
-
 /// The quad as glTF: positions, texture coordinates, `COLOR_0` (normalised bytes) and u16
 /// indices in one buffer, `extra` bytes after them (an image); `material` and `images` are
 /// the JSON of the material list and the image list, `more_views` extra buffer views.
