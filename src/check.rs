@@ -126,7 +126,16 @@ fn invisible_motion(scene: &Scene, mut spans: Vec<crate::source::Span>, out: &mu
 
 fn no_lights(scene: &Scene, no_objects: bool, out: &mut Diagnostics) {
     let shaded = scene.settings.mode == RenderMode::Shaded;
-    if shaded && scene.lights.is_empty() && !no_objects {
+    let s = &scene.settings;
+    // The path tracer is lit by what emits, too: glowing surfaces and the environment.
+    let path_lit = matches!(s.integrator, crate::ir::Integrator::Path(_))
+        && (s.background != glam::DVec3::ZERO
+            || s.sky.is_some()
+            || scene
+                .materials
+                .iter()
+                .any(|m| m.emission != glam::DVec3::ZERO));
+    if shaded && scene.lights.is_empty() && !no_objects && !path_lit {
         out.push(
             Diagnostic::warning(
                 "rtc::scene::no_lights",
@@ -144,7 +153,8 @@ fn no_lights(scene: &Scene, no_objects: bool, out: &mut Diagnostics) {
 }
 
 fn invisible_bounces(scene: &Scene, out: &mut Diagnostics) {
-    if scene.settings.mode != RenderMode::Shaded || scene.settings.max_depth > 0 {
+    let path = matches!(scene.settings.integrator, crate::ir::Integrator::Path(_));
+    if scene.settings.mode != RenderMode::Shaded || scene.settings.max_depth > 0 || path {
         return;
     }
     if let Some(m) = scene.materials.iter().find(|m| m.refract > 0.0) {

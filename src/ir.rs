@@ -36,8 +36,8 @@ pub use object::{CsgOp, Object, Shape, Visibility};
 pub use placement::Transform;
 pub use provenance::Provenance;
 pub use settings::{
-    AmbientConvention, DepthRange, Encoding, LightSampling, RenderMode, RenderSettings, Sampling,
-    ShadingModel,
+    AmbientConvention, DepthRange, Encoding, Integrator, LightSampling, PathTracing, RenderMode,
+    RenderSettings, Sampling, ShadingModel,
 };
 pub(crate) use settings::{GoochParams, LANGUAGE_CUTOFF};
 pub use shape_parts::{
@@ -163,6 +163,10 @@ pub struct Material {
     pub brilliance: f64,
     /// Light the surface emits whatever the lights, times its colour C (POV-Ray's `emission`).
     pub emission: Color,
+    /// Whether the surface emits on both sides (the default) or only on the side its normal
+    /// points to (the outside of a solid; `u × v` of a quad). The path tracer's rule; Whitted
+    /// adds the emission wherever the surface is seen.
+    pub emits_both_sides: bool,
     /// Where it was defined.
     pub span: Span,
 }
@@ -206,6 +210,7 @@ impl Default for Material {
             metallic: 0.0,
             brilliance: 1.0,
             emission: Color::ZERO,
+            emits_both_sides: true,
             span: Span::default(),
         }
     }

@@ -77,6 +77,9 @@ fn finish(m: &Material, defaults: &Material, fields: &mut Vec<String>) {
     if m.emission != defaults.emission {
         fields.push(format!("emission: {}", color(m.emission)));
     }
+    if m.emits_both_sides != defaults.emits_both_sides {
+        fields.push("emission_sides: 1".to_string());
+    }
 }
 
 /// A mixed material as its constructor: `material_map(..)` or `layers([..])`, its parts by the

@@ -7,8 +7,8 @@ use std::fmt::Write as _;
 use super::shapes;
 use super::text::{color, direction, number, string, vector};
 use crate::ir::{
-    AmbientConvention, Camera, DepthRange, Encoding, Flare, Fog, Light, LightKind, LightSampling,
-    Projection, RenderMode, RenderSettings, Sampling,
+    AmbientConvention, Camera, DepthRange, Encoding, Flare, Fog, Integrator, Light, LightKind,
+    LightSampling, PathTracing, Projection, RenderMode, RenderSettings, Sampling,
 };
 
 /// The camera. With `course_fov`, the course camera (|up| = the size of a pixel at `center`)
@@ -219,6 +219,9 @@ pub(crate) fn render(s: &RenderSettings, doc: &RenderDoc) -> String {
             number(threshold)
         )),
     }
+    if let Integrator::Path(p) = s.integrator {
+        fields.push(format!("integrator: {}", path_tracing(&p)));
+    }
     // A mode without parameters is written by its name in the language's table.
     match s.mode {
         RenderMode::Shaded => {}
@@ -329,6 +332,18 @@ fn fog(f: &Fog, pattern: Option<&str>) -> String {
         }
     }
     format!("fog {{ {} }}", fields.join(", "))
+}
+
+/// The path tracer: `path` for the defaults, else every setting.
+fn path_tracing(p: &PathTracing) -> String {
+    if *p == PathTracing::DEFAULT {
+        "path".into()
+    } else {
+        format!(
+            "path(samples: {}, bounces: {}, roulette: {})",
+            p.samples, p.bounces, p.roulette
+        )
+    }
 }
 
 /// A lens flare: `flare` for the defaults, else the fields that differ from them.

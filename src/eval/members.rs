@@ -157,6 +157,7 @@ fn material_field(m: &super::value::Mat, n: &str, span: Span) -> R<Option<Value>
         "metallic" => Value::Float(m.m.metallic),
         "brilliance" => Value::Float(m.m.brilliance),
         "emission" => Value::Color(m.m.emission),
+        "emission_sides" => Value::Int(if m.m.emits_both_sides { 2 } else { 1 }),
         "texture" => match &m.texture {
             Some(t) => Value::Texture(t.clone()),
             None => return absent("texture"),

@@ -173,6 +173,8 @@ pub(crate) enum Ty {
     Flare,
     /// Fog parameters (`fog { .. }`).
     Fog,
+    /// An integrator (`whitted`, `path(..)`).
+    Integrator,
     /// A sampling scheme (`adaptive(..)`).
     Sampling,
     /// Anything.
@@ -210,6 +212,7 @@ impl Ty {
             Ty::Mapping => "Mapping",
             Ty::Flare => "Flare",
             Ty::Fog => "Fog",
+            Ty::Integrator => "Integrator",
             Ty::Sampling => "Sampling",
             Ty::Any => "Any",
             Ty::OneOf(ts) => {

@@ -67,6 +67,8 @@ pub(crate) enum Value {
     Encoding(ir::Encoding),
     /// Lens flare parameters (`flare { ... }`).
     Flare(ir::Flare),
+    /// An integrator (`whitted`, `path(..)`).
+    Integrator(ir::Integrator),
     /// Fog parameters (`fog { ... }`).
     Fog(Rc<FogVal>),
     /// A keyed random stream.
@@ -318,6 +320,7 @@ impl Value {
             Value::Ambient(_) => "Ambient",
             Value::Encoding(_) => "Encoding",
             Value::Flare(_) => "Flare",
+            Value::Integrator(_) => "Integrator",
             Value::Fog(_) => "Fog",
             Value::Rng(_) => "Rng",
             Value::Module(_) => "Module",

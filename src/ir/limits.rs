@@ -205,6 +205,16 @@ pub fn parse_bytes(text: &str) -> Result<u64, String> {
     Ok(bytes as u64)
 }
 
+/// The most paths the path tracer traces per camera ray.
+pub const MAX_PATH_SAMPLES: u32 = 4096;
+
+/// The most scattering events along one path.
+pub const MAX_BOUNCES: u32 = 256;
+
+/// The most paths per pixel (camera samples × paths): each decision's numbers come from one
+/// scrambled Sobol' sequence per pixel, which holds 2^16 distinct points.
+pub const MAX_PIXEL_PATHS: u32 = 1 << 16;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -51,6 +51,37 @@ pub struct RenderSettings {
     pub cutoff: f64,
     /// How an area light's samples are shared among a pixel's samples.
     pub light_samples: LightSampling,
+    /// How a camera ray's light is found: Whitted recursion or the path tracer.
+    pub integrator: Integrator,
+}
+
+/// How a camera ray's light is found in a shaded image.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Integrator {
+    /// Whitted ray tracing: local shading plus mirror and refraction rays (the course's).
+    Whitted,
+    /// A unidirectional path tracer with next-event estimation (docs/gi.md).
+    Path(PathTracing),
+}
+
+/// The path tracer's settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PathTracing {
+    /// Paths traced per camera ray (a pixel gets `supersampling² · samples`).
+    pub samples: u32,
+    /// The most scattering events along a path.
+    pub bounces: u32,
+    /// The bounce from which Russian roulette may end a path (`bounces` or more: never).
+    pub roulette: u32,
+}
+
+impl PathTracing {
+    /// `path` without arguments.
+    pub const DEFAULT: PathTracing = PathTracing {
+        samples: 16,
+        bounces: 16,
+        roulette: 3,
+    };
 }
 
 /// The language's default insignificance cut-off: half of the smallest step of the sRGB curve
@@ -129,6 +160,7 @@ impl Default for RenderSettings {
             flare: None,
             cutoff: 0.0,
             light_samples: LightSampling::PerSample,
+            integrator: Integrator::Whitted,
         }
     }
 }

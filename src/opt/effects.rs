@@ -3,8 +3,8 @@
 use std::fmt;
 
 use crate::ir::{
-    Camera, LightKind, Object, RenderMode, RenderSettings, Sampling, Scene, ShadingModel, Shape,
-    Texture,
+    Camera, Integrator, LightKind, Object, RenderMode, RenderSettings, Sampling, Scene,
+    ShadingModel, Shape, Texture,
 };
 
 /// Which effects a scene uses. Each flag gates work in the renderer.
@@ -79,6 +79,8 @@ pub struct Effects {
     pub emission: bool,
     /// Some reflecting and refracting material conserves energy (`conserve_energy`).
     pub conserve_energy: bool,
+    /// Light bounces between surfaces: the path tracer (`render { integrator: path }`).
+    pub global_illumination: bool,
 }
 
 /// What a scene holds that costs time to render, before its settings decide what is used.
@@ -235,7 +237,12 @@ impl Effects {
     /// The effects of a scene holding `content`, rendered with `settings` through `camera`.
     pub(crate) fn new(content: &Content, s: &RenderSettings, camera: &Camera) -> Effects {
         let shaded = s.mode == RenderMode::Shaded;
-        let bounces = shaded && s.max_depth > 0;
+        let path = match s.integrator {
+            Integrator::Path(p) if shaded => Some(p),
+            _ => None,
+        };
+        // The path tracer's bounces take the place of Whitted's `max_depth`.
+        let bounces = shaded && path.map_or(s.max_depth > 0, |p| p.bounces > 0);
         let model_used = |want: fn(&ShadingModel) -> bool, in_material: bool| {
             shaded && (want(&s.shading) || in_material)
         };
@@ -284,6 +291,7 @@ impl Effects {
             brilliance: shaded && content.lights && content.finish.brilliance,
             emission: shaded && content.finish.emission,
             conserve_energy: bounces && content.finish.conserve_energy,
+            global_illumination: path.is_some(),
         }
     }
 
@@ -324,6 +332,7 @@ impl Effects {
             (self.brilliance, "brilliance"),
             (self.emission, "emission"),
             (self.conserve_energy, "conserve energy"),
+            (self.global_illumination, "global illumination"),
         ];
         all.iter().filter(|(on, _)| *on).map(|(_, n)| *n).collect()
     }

@@ -9,6 +9,7 @@
 //! check means the render will start.
 
 mod effects;
+mod emitters;
 pub mod fingerprint;
 pub(crate) mod objects;
 mod prepared;
@@ -24,6 +25,7 @@ use crate::ir::{LightKind, Material, MaterialId, Object, Scene, Visibility};
 
 pub(crate) use effects::Content;
 pub use effects::Effects;
+pub use emitters::{Emitter, EmitterShape};
 pub use prepared::{Prepared, Quality};
 pub(crate) use prepared::{PreparedLight, Stats};
 pub(crate) use textures::{PreparedPattern, TextureMap};
@@ -64,6 +66,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
     let mut instanced = 0;
     // Filled once some object is hidden from some rays (earlier ones are seen by all).
     let mut visibility: Vec<Visibility> = Vec::new();
+    // Glowing spheres and quads the path tracer aims at (none for a Whitted scene).
+    let path_traced = matches!(scene.settings.integrator, crate::ir::Integrator::Path(_));
+    let mut emitters = Vec::new();
     // One pass validates, surveys and prepares each object (and frees it, when owned).
     for (i, o) in objects.into_iter().enumerate() {
         let o = o.borrow();
@@ -72,6 +77,9 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         if !o.visibility.is_all() || !visibility.is_empty() {
             visibility.resize(i, Visibility::ALL);
             visibility.push(o.visibility);
+        }
+        if path_traced && let Some(e) = emitters::of(o, i as u32, &materials, fallback) {
+            emitters.push(e);
         }
         if let Some(ball) = b.ball(o, fallback, i as u32) {
             parts.push_ball(ball);
@@ -142,6 +150,7 @@ fn prepare_objects<O: std::borrow::Borrow<Object>>(
         own_gloss_samples,
         textures,
         lights,
+        emitters,
         settings: scene.settings.clone(),
         content,
         effects,

@@ -5,6 +5,7 @@
 use std::time::Duration;
 
 use super::effects::{Content, Effects};
+use super::emitters::Emitter;
 use super::textures::TextureMap;
 use super::validate;
 use crate::diag::Diagnostic;
@@ -74,6 +75,7 @@ pub struct Prepared {
     pub(super) materials: Vec<Material>,
     pub(super) textures: Vec<TextureMap>,
     pub(super) lights: Vec<PreparedLight>,
+    pub(super) emitters: Vec<Emitter>,
     pub(super) settings: RenderSettings,
     pub(super) content: Content,
     pub(super) effects: Effects,
@@ -187,7 +189,12 @@ impl Prepared {
         &self.lights
     }
 
-    /// How to render.
+    /// The glowing spheres and quads the path tracer samples (empty for a Whitted scene).
+    pub fn emitters(&self) -> &[Emitter] {
+        &self.emitters
+    }
+
+    /// The render settings.
     pub fn settings(&self) -> &RenderSettings {
         &self.settings
     }
@@ -217,10 +224,11 @@ impl Prepared {
         self.stats
     }
 
-    /// Whether anything draws random numbers (a lens, an area light, an open shutter or a
-    /// glossy lobe).
+    /// Whether anything draws random numbers (a lens, an area light, an open shutter, a
+    /// glossy lobe or the path tracer).
     pub fn random(&self) -> bool {
-        self.camera.aperture > 0.0
+        self.effects.global_illumination
+            || self.camera.aperture > 0.0
             || self.effects.motion_blur
             || self.effects.glossy
             || self

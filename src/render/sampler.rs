@@ -112,6 +112,28 @@ impl Rng {
     }
 }
 
+impl Rng {
+    /// The generator of path `j` of the `n` a path tracer traces for this camera sample: its
+    /// sample index is `sample·n + j`, so all the paths of a pixel walk one Sobol' sequence
+    /// (the render settings keep a pixel's paths within its 2^16 points).
+    pub(crate) fn path(&self, j: u32, n: u32) -> Rng {
+        Rng {
+            seed: self.seed,
+            sample: self.sample.wrapping_mul(n).wrapping_add(j) & 0xffff,
+        }
+    }
+
+    /// A generator of its own for the decisions of group `key` (one bounce of a path):
+    /// re-seeded, at the same sample index, so each group's points stay stratified over the
+    /// pixel's samples and no two groups share them.
+    pub(crate) fn derive(&self, key: u32) -> Rng {
+        Rng {
+            seed: hash(self.seed ^ hash(key ^ 0x2545_f491)),
+            sample: self.sample,
+        }
+    }
+}
+
 fn hash(mut x: u32) -> u32 {
     x ^= x >> 16;
     x = x.wrapping_mul(0x7feb_352d);

@@ -5,9 +5,11 @@
 #[cfg(test)]
 mod doc_tables;
 mod fog;
+mod integrator;
 mod lights;
 pub(crate) mod lists;
 mod looks;
+mod material;
 mod math;
 mod mixes;
 pub(crate) mod noise;
@@ -20,7 +22,7 @@ mod scene;
 mod schema_tests;
 mod settings;
 
-pub(crate) use looks::{fields as material_fields, mat_warnings, set_mat_field};
+pub(crate) use material::{fields as material_fields, mat_warnings, set_mat_field};
 pub(crate) use math::{CROSS, DISTANCE, DOT, LENGTH, MAX, MIN, NORMALIZE};
 
 use crate::syntax::intern::Sym;
@@ -35,12 +37,14 @@ fn functions() -> Vec<(&'static Sig, BuiltinFn)> {
         math::FNS,
         lists::FNS,
         looks::FNS,
+        material::FNS,
         patterns::FNS,
         noise::FNS,
         mixes::FNS,
         scene::FNS,
         lights::FNS,
         settings::FNS,
+        integrator::FNS,
         fog::FNS,
         super::shapes::FNS,
         super::shapes::COMPOUND_FNS,
@@ -71,6 +75,7 @@ fn table() -> Vec<(&'static str, Value)> {
     }
     t.extend(math::constants());
     t.extend(settings::constants());
+    t.extend(integrator::constants());
     t
 }
 

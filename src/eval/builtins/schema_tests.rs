@@ -87,7 +87,7 @@ fn default(sig: &crate::eval::schema::Sig, name: &str) -> Lit {
 #[test]
 fn material_defaults_are_the_irs() {
     let m = crate::ir::Material::default();
-    let sig = &super::looks::MATERIAL;
+    let sig = &super::material::MATERIAL;
     assert_eq!(default(sig, "color"), Lit::Color(m.color.to_array()));
     for (name, v) in [
         ("ka", m.ka),

@@ -356,6 +356,12 @@ pub(super) static RENDER: Sig = Sig::new(
             "an alpha channel in PNG and EXR output: the share of a pixel's camera samples that meet something",
         )
         .or(Lit::Bool(false)),
+        Param::new(
+            "integrator",
+            Ty::Integrator,
+            "how a camera ray's light is found: `whitted` or the path tracer `path(..)` (docs/gi.md)",
+        )
+        .or(Lit::Name("whitted")),
     ],
     "Render",
 )
@@ -459,6 +465,10 @@ fn render(it: &mut dyn Host, s: CallSite, a: Vec<ArgVal>) -> R<Value> {
                 ));
             }
         };
+    }
+    if let Some((v, sp)) = p.get("integrator") {
+        st.integrator = super::integrator::integrator_of(it, v, sp)?;
+        super::integrator::check_paths_per_pixel(st.integrator, st.sampling, sp)?;
     }
     st.background = p.color(it, "background")?.0;
     st.alpha = p.bool(it, "alpha")?;

@@ -4,12 +4,13 @@
 
 pub(crate) mod depth;
 mod normal;
+mod path;
 mod uv;
 pub mod whitted;
 
 use crate::diag::Diagnostic;
 use crate::geometry::Ray;
-use crate::ir::{Color, RenderMode, Visibility};
+use crate::ir::{Color, Integrator as Method, RenderMode, Visibility};
 use crate::opt::Prepared;
 
 use super::context::Ctx;
@@ -19,6 +20,7 @@ use super::record::{NoRecord, Recorder};
 use super::view::FirstRays;
 use depth::DepthImage;
 use normal::NormalImage;
+use path::PathTracer;
 use uv::UvImage;
 use whitted::Whitted;
 
@@ -26,6 +28,8 @@ use whitted::Whitted;
 pub(crate) enum Integrator<'a> {
     /// Shaded colour: Whitted recursion with a shading model.
     Whitted(Whitted<'a>),
+    /// Shaded colour with global illumination: the path tracer.
+    Path(PathTracer<'a>),
     /// The first hit's normal as a colour.
     Normal(NormalImage<'a>),
     /// The first hit's distance as grey.
@@ -43,7 +47,10 @@ impl<'a> Integrator<'a> {
         pool: &rayon::ThreadPool,
     ) -> Result<Integrator<'a>, Diagnostic> {
         Ok(match scene.settings().mode {
-            RenderMode::Shaded => Integrator::Whitted(Whitted::new(scene)),
+            RenderMode::Shaded => match scene.settings().integrator {
+                Method::Whitted => Integrator::Whitted(Whitted::new(scene)),
+                Method::Path(p) => Integrator::Path(PathTracer::new(scene, p)),
+            },
             RenderMode::Normal => Integrator::Normal(NormalImage::new(scene)),
             RenderMode::Uv => Integrator::Uv(UvImage::new(scene)),
             RenderMode::Depth(range) => {
@@ -56,6 +63,7 @@ impl<'a> Integrator<'a> {
     pub(crate) fn channels(&self) -> &'static [Channel] {
         match self {
             Integrator::Whitted(_)
+            | Integrator::Path(_)
             | Integrator::Normal(_)
             | Integrator::Depth(_)
             | Integrator::Uv(_) => &[Channel::Color],
@@ -92,6 +100,7 @@ impl<'a> Integrator<'a> {
         }
         out[0] = match self {
             Integrator::Whitted(w) => w.trace_with(ray, Path::CAMERA, ctx, rec),
+            Integrator::Path(p) => first_hit(p.scene(), ray, rec, |r| p.trace(r, ctx)),
             Integrator::Normal(n) => first_hit(n.scene(), ray, rec, |r| n.color(r)),
             Integrator::Depth(d) => first_hit(d.scene(), ray, rec, |r| d.color(r)),
             Integrator::Uv(u) => first_hit(u.scene(), ray, rec, |r| u.color(r)),

@@ -286,7 +286,7 @@ impl<'a> Whitted<'a> {
     /// unit normal facing the ray (before any bump map). Always inlined: returned from a call,
     /// the 208-byte surface was copied twice more (`memcpy`) on its way into a batch.
     #[inline(always)]
-    fn surface<'m>(
+    pub(crate) fn surface<'m>(
         &self,
         ray: &Ray,
         hit: &SurfaceHit,

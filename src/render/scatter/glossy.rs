@@ -35,8 +35,7 @@ pub(crate) fn direction(axis: DVec3, side: DVec3, gloss: f64, (a, b): (f64, f64)
 /// The density per unit solid angle of [`direction`]'s rays at unit `wi`: the cone's uniform
 /// density where `wi` is in the cone, plus the same again where its mirror image about the
 /// surface plane is (the rays folded back). Zero below the surface and for `gloss` 0 (a delta
-/// has no density). The tests' only: Whitted weighs a glossy lobe's directions alike.
-#[cfg(test)]
+/// has no density). Whitted weighs a glossy lobe's directions alike; the path tracer needs it.
 pub(crate) fn pdf(axis: DVec3, side: DVec3, gloss: f64, wi: DVec3) -> f64 {
     let cos_max = cos_max(gloss);
     let solid_angle = 2.0 * std::f64::consts::PI * (1.0 - cos_max);

@@ -60,22 +60,31 @@ pub(crate) struct Lobe {
     weight: f64,
 }
 
-/// A direction drawn from a lobe (the tests check the lobes' densities through it; Whitted's
-/// constant weights need only [`Lobe::direction_about`]).
-#[cfg(test)]
+/// A direction drawn from a lobe (the path tracer weighs it by its density; Whitted's constant
+/// weights need only [`Lobe::direction_about`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Sample {
+pub(crate) struct Sample {
     /// The unit direction the light arrives from (the ray to trace).
-    dir: DVec3,
+    pub(crate) dir: DVec3,
     /// `eval / pdf` for a lobe with a density; the lobe's weight for a delta.
-    weight: f64,
+    pub(crate) weight: f64,
     /// The density of `dir` per unit solid angle (1 for a delta).
-    pdf: f64,
+    pub(crate) pdf: f64,
     /// Whether the lobe is a delta (its one direction has no density).
-    delta: bool,
+    pub(crate) delta: bool,
 }
 
 impl Lobe {
+    /// The share of the light arriving along its rays it passes on.
+    pub(crate) fn weight(&self) -> f64 {
+        self.weight
+    }
+
+    /// The same lobe passing `weight` of its light.
+    pub(crate) fn with_weight(self, weight: f64) -> Lobe {
+        Lobe { weight, ..self }
+    }
+
     /// Whether the lobe is a delta (one direction, no density).
     pub(crate) fn is_delta(&self) -> bool {
         self.spread == Spread::Delta
@@ -110,8 +119,7 @@ impl Lobe {
     }
 
     /// [`Lobe::sample`] for an integrator that already has the lobe's [`Lobe::axis`].
-    #[cfg(test)]
-    fn sample_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> Sample {
+    pub(crate) fn sample_about(&self, axis: DVec3, n: DVec3, u: (f64, f64)) -> Sample {
         let dir = self.direction_about(axis, n, u);
         match self.spread {
             Spread::Delta => Sample {
@@ -141,8 +149,7 @@ impl Lobe {
 
     /// The density of the lobe's rays at unit `wi`, for incoming `d` at facing normal `n`
     /// (0 for a delta, and under total internal reflection).
-    #[cfg(test)]
-    fn pdf(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
+    pub(crate) fn pdf(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
         match (self.spread, self.axis(d, n)) {
             (Spread::Cone { gloss }, Some(axis)) => glossy::pdf(axis, self.side(n), gloss, wi),
             _ => 0.0,
@@ -151,8 +158,7 @@ impl Lobe {
 
     /// The lobe's scattering density (weight per unit solid angle) for the pair (`d`, `wi`):
     /// `weight · pdf` (0 for a delta).
-    #[cfg(test)]
-    fn eval(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
+    pub(crate) fn eval(&self, d: DVec3, n: DVec3, wi: DVec3) -> f64 {
         self.weight * self.pdf(d, n, wi)
     }
 }

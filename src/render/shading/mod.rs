@@ -41,7 +41,7 @@ fn occluder(scene: &Prepared, s: &Surface<'_>, ls: &LightSample) -> Option<Surfa
 /// The share of light sample `ls` reaching `s`, per channel: `Some(ONE)` when nothing blocks
 /// it, `None` when something opaque does, and with light through glass the tint of the glass
 /// in between ([`glass_shadow`]).
-fn transmission(
+pub(crate) fn transmission(
     scene: &Prepared,
     s: &Surface<'_>,
     ls: &LightSample,
