@@ -161,9 +161,9 @@ def spheres_env():
         "quads": [quad([-20, 0, 20], [40, 0, 0], [0, 0, -40], "grey", "the floor",
                        facing=[0, 1, 0])],
         "spheres": [
-            sphere([-1.4, 0.7, 0.4], 0.7, "orange", "left"),
-            sphere([0.4, 1.0, -1.0], 1.0, "blue", "back"),
-            sphere([1.6, 0.5, 1.0], 0.5, "white", "front right"),
+            sphere([-1.4, 0.7, 0.4], 0.7, "orange", "left sphere"),
+            sphere([0.4, 1.0, -1.0], 1.0, "blue", "back sphere"),
+            sphere([1.6, 0.5, 1.0], 0.5, "white", "front right sphere"),
         ],
         "spp": 1 << 18,
     }
@@ -195,31 +195,48 @@ def rgb(c):
     return "rgb(" + ", ".join(num(x) for x in c) + ")"
 
 
+WIDTH = 100  # rtc fmt's line width: the twins are written in its canonical layout
+
+
+def block(head, fields):
+    """`head { a: x, b: y }` on one line if it fits, else one field a line (rtc fmt's layout)."""
+    line = head + " { " + ", ".join(f"{k}: {v}" for k, v in fields) + " }"
+    if len(line) <= WIDTH:
+        return [line]
+    return [head + " {"] + [f"    {k}: {v}" for k, v in fields] + ["}"]
+
+
+def call(fn, args, tail=""):
+    """`fn(a: x, b: y)tail` on one line if it fits, else one argument a line (rtc fmt's)."""
+    line = fn + "(" + ", ".join(f"{k}: {v}" for k, v in args) + ")" + tail
+    if len(line) <= WIDTH:
+        return [line]
+    return [fn + "("] + [f"    {k}: {v}," for k, v in args] + [")" + tail]
+
+
 def rtc_material(albedo, emission):
     if any(emission):
         # emission·color is the radiance, kd·color the albedo: one colour serves both only when
         # the emitter is black, which every emitter here is.
         assert not any(albedo), "emitters here are black (albedo 0)"
-        return ("material { color: rgb(1, 1, 1), ka: 0, kd: 0, ks: 0, "
-                f"emission: {rgb(emission)}, emission_sides: 1 }}")
-    return f"material {{ color: {rgb(albedo)}, ka: 0, kd: 1, ks: 0 }}"
+        return [("color", "rgb(1, 1, 1)"), ("ka", "0"), ("kd", "0"), ("ks", "0"),
+                ("emission", rgb(emission)), ("emission_sides", "1")]
+    return [("color", rgb(albedo)), ("ka", "0"), ("kd", "1"), ("ks", "0")]
 
 
-def rtc_source(name, scene, res, render_line, with_materials=True):
+def rtc_source(name, scene, res, render_fields, with_materials=True):
     c = scene["camera"]
     head = (f"{name}.rtc: the rtc twin of a Mitsuba 3 reference, written by "
-             "benches/gi/mitsuba_refs.py from the same data (edit the script, not this file). "
-             + scene["doc"])
-    lines = ["// " + line for line in textwrap.wrap(head, 96)] + [
-        "rtc 1",
-        "",
-        f"camera {{ eye: {vec(c['eye'])}, center: {vec(c['center'])}, up: {vec(c['up'])}, "
-        f"fov: {num(c['fov'])}deg, resolution: [{res}, {res}] }}",
-        "",
-    ]
+            "benches/gi/mitsuba_refs.py from the same data (edit the script, not this file). "
+            + scene["doc"])
+    lines = ["// " + line for line in textwrap.wrap(head, 96)] + ["rtc 1", ""]
+    lines += block("camera", [("eye", vec(c["eye"])), ("center", vec(c["center"])),
+                              ("up", vec(c["up"])), ("fov", num(c["fov"]) + "deg"),
+                              ("resolution", f"[{res}, {res}]")])
+    lines.append("")
     if with_materials:
         for mname, m in scene["materials"].items():
-            lines.append(f"let {mname} = {rtc_material(m['albedo'], m['emission'])}")
+            lines += block(f"let {mname} = material", rtc_material(m["albedo"], m["emission"]))
         lines.append("")
 
     def tail(obj):
@@ -227,24 +244,26 @@ def rtc_source(name, scene, res, render_line, with_materials=True):
 
     for q in scene["quads"]:
         lines.append(f"// {q['label']}")
-        lines.append(f"quad(corner: {vec(q['corner'])}, u: {vec(q['u'])}, v: {vec(q['v'])})"
-                     + tail(q))
+        lines += call("quad", [("corner", vec(q["corner"])), ("u", vec(q["u"])),
+                               ("v", vec(q["v"]))], tail(q))
     for s in scene["spheres"]:
-        lines.append(f"sphere(center: {vec(s['center'])}, radius: {num(s['radius'])})" + tail(s)
-                     + f"  // {s['label']}")
-    lines += ["", render_line, ""]
-    return "\n".join(lines)
+        lines.append(f"// {s['label']}")
+        lines += call("sphere", [("center", vec(s["center"])), ("radius", num(s["radius"]))],
+                      tail(s))
+    lines.append("")
+    lines += block("render", render_fields)
+    return "\n".join(lines) + "\n"
 
 
 def rtc_twin(name, scene, res=64, spp=64):
-    render = (f"render {{ integrator: path(samples: {spp}, bounces: {BOUNCES}), "
-              f"background: {rgb(scene['environment'])}, encoding: linear, cutoff: 0 }}")
+    render = [("integrator", f"path(samples: {spp}, bounces: {BOUNCES})"),
+              ("background", rgb(scene["environment"])), ("encoding", "linear"), ("cutoff", "0")]
     return rtc_source(name, scene, res, render)
 
 
 def rtc_normals(name, scene, res=64):
     """The same camera and geometry as an AOV scene the current rtc renders: (N + 1)/2."""
-    return rtc_source(name, scene, res, "render { mode: normal, encoding: linear }",
+    return rtc_source(name, scene, res, [("mode", "normal"), ("encoding", "linear")],
                       with_materials=False)
 
 
