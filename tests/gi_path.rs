@@ -318,3 +318,28 @@ fn light_sampling_with_mis_and_bsdf_sampling_alone_agree() {
         );
     }
 }
+
+#[test]
+fn a_floor_under_a_gradient_sky_returns_its_irradiance() {
+    // A sky of radiance L(θ) = c0 + (c1 − c0)·cos θ above the horizon (a `gradient` along +Y)
+    // gives a horizontal floor the irradiance π·c0 + (2π/3)·(c1 − c0); a Lambertian floor of
+    // albedo ρ shows ρ·(c0 + 2(c1 − c0)/3). The sky is sampled by its brightness and by the
+    // BSDF, weighed by MIS: the mean over the image within 4 standard errors.
+    let scene = load(
+        "camera { eye: [0, 50, 0], center: [0, 0, 0], up: -Z, projection: \"orthographic\",
+                  height: 8, resolution: [16, 16] }
+         plane(point: [0, 0, 0], normal: Y).material(material { color: rgb(0.5, 0.5, 0.5), ka: 0, kd: 1, ks: 0 })
+         render { integrator: path(samples: 16, bounces: 1),
+                  sky: gradient(axis: Y).colors([rgb(0.2, 0.4, 1.0), rgb(1.0, 0.6, 0.2)]) }",
+    );
+    let values = pixels(&render(&scene));
+    let (c0, c1) = ([0.2, 0.4, 1.0], [1.0, 0.6, 0.2]);
+    for c in 0..3 {
+        let want = 0.5 * (c0[c] + 2.0 * (c1[c] - c0[c]) / 3.0);
+        let (mean, err) = mean_and_error(&values, c);
+        assert!(
+            (mean - want).abs() <= 4.0 * err + 1e-3 * want,
+            "channel {c}: {mean} ± {err}, want {want}"
+        );
+    }
+}

@@ -28,8 +28,9 @@ use whitted::Whitted;
 pub(crate) enum Integrator<'a> {
     /// Shaded colour: Whitted recursion with a shading model.
     Whitted(Whitted<'a>),
-    /// Shaded colour with global illumination: the path tracer.
-    Path(PathTracer<'a>),
+    /// Shaded colour with global illumination: the path tracer (boxed: its tables make it
+    /// far larger than the others).
+    Path(Box<PathTracer<'a>>),
     /// The first hit's normal as a colour.
     Normal(NormalImage<'a>),
     /// The first hit's distance as grey.
@@ -49,7 +50,7 @@ impl<'a> Integrator<'a> {
         Ok(match scene.settings().mode {
             RenderMode::Shaded => match scene.settings().integrator {
                 Method::Whitted => Integrator::Whitted(Whitted::new(scene)),
-                Method::Path(p) => Integrator::Path(PathTracer::new(scene, p)),
+                Method::Path(p) => Integrator::Path(Box::new(PathTracer::new(scene, p))),
             },
             RenderMode::Normal => Integrator::Normal(NormalImage::new(scene)),
             RenderMode::Uv => Integrator::Uv(UvImage::new(scene)),

@@ -11,6 +11,7 @@
 
 mod bsdf;
 mod emitters;
+mod environment;
 
 use std::f64::consts::PI;
 
@@ -27,6 +28,7 @@ use crate::render::shading::{self, Surface, light_sample};
 use crate::render::{fog, mix, sky};
 use bsdf::Bsdf;
 use emitters::Emitters;
+use environment::Environment;
 
 use super::whitted::Whitted;
 
@@ -36,6 +38,8 @@ const DIRECTION: u32 = 2;
 const ROULETTE: u32 = 3;
 const EMITTER: u32 = 4;
 const EMITTER_POINT: u32 = 5;
+const SKY: u32 = 6;
+const SKY_DIRECTION: u32 = 7;
 
 /// The path tracer over a prepared scene.
 pub(crate) struct PathTracer<'a> {
@@ -47,6 +51,8 @@ pub(crate) struct PathTracer<'a> {
     settings: PathTracing,
     /// The glowing spheres and quads next-event estimation aims at.
     emitters: Emitters<'a>,
+    /// The sky tabulated for sampling by brightness (`None` without a sky).
+    environment: Option<Environment>,
     /// Whether light is tested for blockers (`render { shadows: .. }`).
     shadows: bool,
     background: Color,
@@ -65,6 +71,10 @@ impl<'a> PathTracer<'a> {
             effects: scene.effects(),
             settings,
             emitters: Emitters::new(scene.emitters()),
+            environment: s
+                .sky
+                .as_ref()
+                .and_then(|sky| Environment::new(|d| sky::color(scene, sky, d, s.background))),
             shadows: s.shadows,
             background: s.background,
             sky: s.sky.as_ref(),
@@ -111,8 +121,12 @@ impl<'a> PathTracer<'a> {
                     // Transparent black: the film's colour is premultiplied by the alpha.
                     return Color::ZERO;
                 }
-                let (add, keep) = self.fog_over(&ray, fog::MISS_DISTANCE, path);
-                light += beta * (add + keep * self.environment(ray.dir));
+                let weight = match &self.environment {
+                    // Sky sampling could have found this direction too: weigh the two ways.
+                    Some(env) if bsdf_pdf > 0.0 => power_heuristic(bsdf_pdf, env.pdf(ray.dir)),
+                    _ => 1.0,
+                };
+                light += beta * self.sky_seen(&ray, path) * weight;
                 break;
             };
             let (add, keep) = self.fog_over(&ray, hit.t, path);
@@ -154,6 +168,7 @@ impl<'a> PathTracer<'a> {
             if bsdf.has_density() {
                 light += beta * self.direct(&s, &bsdf, &rng, ctx);
                 light += beta * self.direct_emitter(&s, &bsdf, &rng, ctx);
+                light += beta * self.direct_sky(&s, &bsdf, path, &rng, ctx);
             }
             let pick = rng.get2(PICK).0;
             let Some(out) = bsdf.sample(pick, rng.get2(DIRECTION)) else {
@@ -277,6 +292,40 @@ impl<'a> PathTracer<'a> {
             }
         }
         f * e.radiance * (power_heuristic(e.pdf, bsdf.pdf(e.wi)) / e.pdf)
+    }
+
+    /// Next-event estimation towards the sky: one direction drawn by the sky's brightness,
+    /// weighed against the BSDF's way of finding it.
+    fn direct_sky(
+        &self,
+        s: &Surface<'_>,
+        bsdf: &Bsdf,
+        path: Path,
+        rng: &Rng,
+        ctx: &mut Ctx,
+    ) -> Color {
+        let Some(env) = &self.environment else {
+            return Color::ZERO;
+        };
+        let (dir, pdf) = env.sample(rng.get2(SKY).0, rng.get2(SKY_DIRECTION));
+        let f = bsdf.f_cos(dir);
+        if f == Color::ZERO || pdf <= 0.0 {
+            return Color::ZERO;
+        }
+        let ray = Ray::new(s.spawn.origin_towards(dir), dir).at_time(s.time);
+        if self.shadows {
+            ctx.stats.shadow_rays += 1;
+            if self.scene.shadowed(&ray, 0.0, f64::INFINITY) {
+                return Color::ZERO;
+            }
+        }
+        f * self.sky_seen(&ray, path) * (power_heuristic(pdf, bsdf.pdf(dir)) / pdf)
+    }
+
+    /// What `ray` of `path` sees where it meets nothing: the environment through the fog.
+    fn sky_seen(&self, ray: &Ray, path: Path) -> Color {
+        let (add, keep) = self.fog_over(ray, fog::MISS_DISTANCE, path);
+        add + keep * self.environment(ray.dir)
     }
 
     /// The environment's radiance along unit `dir`: the sky, or the background colour.
