@@ -2,6 +2,8 @@
 //! closed forms, Whitted's direct light, agreement of its estimators and determinism. Every
 //! expected value is computed here from the physics, never read from a render.
 
+mod common;
+
 use std::path::Path;
 
 use rtc::eval::{EvalOptions, load_source};
@@ -11,21 +13,11 @@ use rtc::render::{RenderOptions, render_scene};
 use rtc::source::SourceMap;
 
 fn load(src: &str) -> Scene {
+    let path = Path::new("gi.rtc");
     let mut sources = SourceMap::default();
     let text = format!("rtc 1.1\n{src}");
-    let loaded = load_source(
-        Path::new("gi.rtc"),
-        &text,
-        &mut sources,
-        &EvalOptions::default(),
-    );
-    let codes: Vec<String> = loaded
-        .diagnostics
-        .items
-        .iter()
-        .map(|d| format!("{}: {}", d.code, d.message))
-        .collect();
-    loaded.scene.unwrap_or_else(|| panic!("{codes:?}"))
+    let loaded = load_source(path, &text, &mut sources, &EvalOptions::default());
+    common::scene_of(loaded, path)
 }
 
 fn render_with(scene: &Scene, threads: usize) -> Film {
@@ -341,5 +333,46 @@ fn a_floor_under_a_gradient_sky_returns_its_irradiance() {
             (mean - want).abs() <= 4.0 * err + 1e-3 * want,
             "channel {c}: {mean} ± {err}, want {want}"
         );
+    }
+}
+
+#[test]
+fn a_furnace_under_a_sampled_sky_has_no_bias_block_by_block() {
+    // The furnace again, its uniform environment given as a `sky` (a one-colour checker), so
+    // the sky is also sampled by brightness and each path's estimate varies (MIS between sky
+    // and BSDF samples): the truth is still exactly 0.75 everywhere. Over 8 × 6 blocks of 4 × 4
+    // pixels at 256 paths, each block's mean and the image's must be within 4 standard errors
+    // of it, and 4 standard errors of the image's mean must be under 0.2 % of it, so an
+    // estimator biased by 0.2 % overall fails.
+    let scene = load(
+        "camera { eye: [0, 3, 8], center: [0, 0.5, 0], fov: 40deg, resolution: [32, 24] }
+         let white = material { color: rgb(1, 1, 1), ka: 0, kd: 1, ks: 0 }
+         sphere(center: [1.2, 1, 0], radius: 1).material(white)
+         quad(corner: [-3, 0, -2], u: [0, 0, 4], v: [3, 0, 0]).material(white)
+         quad(corner: [-3, 0, -2], u: [3, 0, 0], v: [0, 2, 0]).material(white)
+         quad(corner: [-3, 0, -2], u: [0, 2, 0], v: [0, 0, 4]).material(white)
+         render { integrator: path(samples: 256, bounces: 256),
+                  sky: checker(a: rgb(0.75, 0.75, 0.75), b: rgb(0.75, 0.75, 0.75)) }",
+    );
+    let values = pixels(&render(&scene));
+    let varies = values.iter().any(|p| (p[0] - 0.75).abs() > 1e-9);
+    assert!(varies, "the estimate should vary from path to path here");
+    let (mean, err) = mean_and_error(&values, 1);
+    assert!((mean - 0.75).abs() <= 4.0 * err, "image: {mean} ± {err}");
+    assert!(
+        4.0 * err < 0.002 * 0.75,
+        "too noisy to see a 0.2 % bias: ± {err}"
+    );
+    for by in 0..6 {
+        for bx in 0..8 {
+            let block: Vec<[f64; 3]> = (0..16)
+                .map(|k| values[(by * 4 + k / 4) * 32 + bx * 4 + k % 4])
+                .collect();
+            let (m, e) = mean_and_error(&block, 1);
+            assert!(
+                (m - 0.75).abs() <= 4.0 * e.max(1e-6),
+                "block ({bx}, {by}): {m} ± {e}"
+            );
+        }
     }
 }
