@@ -266,16 +266,19 @@ impl Setting {
 
 /// The knobs `effects` says the scene uses: pixel samples and adaptive sampling always (every
 /// image has edges; with a lens they are also the lens samples), light samples with soft shadows, gloss samples with a glossy material, bounces
-/// and the cut-off with reflection or refraction.
+/// and the cut-off with reflection or refraction. Under the path tracer gloss samples, bounces
+/// and the cut-off are Whitted's and change nothing, so they are not swept (pixel samples then
+/// multiply the paths per pixel).
 pub(crate) fn used_knobs(effects: &Effects) -> Vec<Knob> {
+    let whitted = !effects.global_illumination;
     Knob::ALL
         .into_iter()
         .filter(|k| match k {
             Knob::PixelSamples => true,
             Knob::AdaptiveThreshold => true,
             Knob::LightSamples => effects.soft_shadows,
-            Knob::GlossSamples => effects.glossy,
-            Knob::MaxDepth | Knob::Cutoff => effects.reflection || effects.refraction,
+            Knob::GlossSamples => whitted && effects.glossy,
+            Knob::MaxDepth | Knob::Cutoff => whitted && (effects.reflection || effects.refraction),
         })
         .collect()
 }
@@ -370,4 +373,32 @@ pub(crate) fn joint_settings(knobs: &[Knob], own: &Setting) -> Vec<Setting> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod used_tests {
+    use super::*;
+
+    #[test]
+    fn the_path_tracer_is_not_offered_whitteds_knobs() {
+        let whitted = Effects {
+            reflection: true,
+            glossy: true,
+            soft_shadows: true,
+            ..Effects::default()
+        };
+        assert_eq!(used_knobs(&whitted), Knob::ALL.to_vec());
+        let path = Effects {
+            global_illumination: true,
+            ..whitted
+        };
+        assert_eq!(
+            used_knobs(&path),
+            vec![
+                Knob::PixelSamples,
+                Knob::AdaptiveThreshold,
+                Knob::LightSamples
+            ]
+        );
+    }
 }
