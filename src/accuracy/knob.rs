@@ -8,10 +8,11 @@
 //! report and the plot take every knob the same way.
 
 use crate::diag::Diagnostic;
+use crate::ir::limits::MAX_BOUNCES;
 use crate::ir::limits::{
     MAX_DEPTH, MAX_GLOSS_SAMPLES, MAX_LIGHT_SAMPLES_PER_AXIS, MAX_PIXEL_SAMPLES_PER_AXIS,
 };
-use crate::ir::{LANGUAGE_CUTOFF, Sampling};
+use crate::ir::{Integrator, LANGUAGE_CUTOFF, PathTracing, Sampling};
 use crate::opt::{Effects, Prepared, Quality};
 
 /// A quality knob: one dimension of the sweep.
@@ -31,17 +32,23 @@ pub enum Knob {
     MaxDepth,
     /// The insignificance cut-off: secondary rays lighter than it are not traced.
     Cutoff,
+    /// The path tracer's paths per camera ray (`path(samples: n)`).
+    PathSamples,
+    /// The path tracer's bounces (`path(bounces: n)`).
+    Bounces,
 }
 
 impl Knob {
     /// Every knob, in report order.
-    const ALL: [Knob; 6] = [
+    const ALL: [Knob; 8] = [
         Knob::PixelSamples,
         Knob::AdaptiveThreshold,
         Knob::LightSamples,
         Knob::GlossSamples,
         Knob::MaxDepth,
         Knob::Cutoff,
+        Knob::PathSamples,
+        Knob::Bounces,
     ];
 
     /// The name in tables and plot legends.
@@ -53,6 +60,8 @@ impl Knob {
             Knob::GlossSamples => "gloss samples",
             Knob::MaxDepth => "max depth",
             Knob::Cutoff => "cut-off",
+            Knob::PathSamples => "path samples",
+            Knob::Bounces => "bounces",
         }
     }
 
@@ -65,6 +74,8 @@ impl Knob {
             Knob::GlossSamples => "gloss_samples",
             Knob::MaxDepth => "max_depth",
             Knob::Cutoff => "cutoff",
+            Knob::PathSamples => "path_samples",
+            Knob::Bounces => "bounces",
         }
     }
 
@@ -118,6 +129,14 @@ impl Knob {
                 .iter()
                 .map(|&cutoff| Setting { cutoff, ..*base })
                 .collect(),
+            Knob::PathSamples => PATH_SAMPLES_LADDER
+                .iter()
+                .filter_map(|&samples| base.with_path(|p| PathTracing { samples, ..p }))
+                .collect(),
+            Knob::Bounces => BOUNCES_LADDER
+                .iter()
+                .filter_map(|&bounces| base.with_path(|p| PathTracing { bounces, ..p }))
+                .collect(),
         }
     }
 }
@@ -136,6 +155,17 @@ const GLOSS_LADDER: [u32; 5] = [1, 2, 4, 8, 16];
 /// reference's): about three steps per decade, with the language's default
 /// [`LANGUAGE_CUTOFF`] (≈ 3.0e-4, half an sRGB level at black) among them.
 pub const CUTOFF_LADDER: [f64; 7] = [0.1, 0.03, 0.01, 0.003, 0.001, LANGUAGE_CUTOFF, 0.0];
+
+/// The path tracer's paths per camera ray swept; the reference uses [`REFERENCE_PATH_SAMPLES`].
+const PATH_SAMPLES_LADDER: [u32; 6] = [1, 2, 4, 8, 16, 32];
+/// The path tracer's bounces swept; the reference uses [`REFERENCE_BOUNCES`].
+const BOUNCES_LADDER: [u32; 6] = [1, 2, 3, 4, 6, 8];
+/// The reference's paths per camera ray, or the scene's own if more (at most 256, so that the
+/// reference's 16×16 grid stays within the 2^16 paths a pixel may take).
+const REFERENCE_PATH_SAMPLES: u32 = 16;
+/// The reference's bounces, or the scene's own if more: Russian roulette ends most paths long
+/// before, so the last bounces cost little.
+const REFERENCE_BOUNCES: u32 = 64;
 
 /// The reference's pixel grid: 16×16 = 256 samples per pixel (twice the ladder's top per axis),
 /// or the scene's own if finer.
@@ -166,6 +196,8 @@ pub struct Setting {
     pub gloss_samples: Option<u32>,
     /// The insignificance cut-off.
     pub cutoff: f64,
+    /// The integrator, with the path tracer's samples and bounces.
+    pub(crate) integrator: Integrator,
 }
 
 impl Setting {
@@ -177,6 +209,18 @@ impl Setting {
             light_samples: None,
             gloss_samples: None,
             cutoff: scene.settings().cutoff,
+            integrator: scene.settings().integrator,
+        }
+    }
+
+    /// This setting with the path tracer's settings changed by `f`; `None` for Whitted.
+    fn with_path(&self, f: impl Fn(PathTracing) -> PathTracing) -> Option<Setting> {
+        match self.integrator {
+            Integrator::Path(p) => Some(Setting {
+                integrator: Integrator::Path(f(p)),
+                ..*self
+            }),
+            Integrator::Whitted => None,
         }
     }
 
@@ -192,6 +236,7 @@ impl Setting {
             max_depth: self.max_depth,
             cutoff: self.cutoff,
             gloss_samples: self.gloss_samples,
+            integrator: self.integrator,
         })?;
         match self.light_samples {
             Some(n) => scene.set_light_samples(&vec![[n, n]; own_lights.len()]),
@@ -215,14 +260,20 @@ impl Setting {
                 threshold,
             } => format!("adaptive {min}-{max} t{threshold}"),
         }];
-        parts.push(format!("depth {}", self.max_depth));
+        match self.integrator {
+            Integrator::Path(p) => {
+                parts.push(format!("paths {}, bounces {}", p.samples, p.bounces))
+            }
+            Integrator::Whitted => parts.push(format!("depth {}", self.max_depth)),
+        }
         if let Some(n) = self.light_samples {
             parts.push(format!("light {n}"));
         }
         if let Some(n) = self.gloss_samples {
             parts.push(format!("gloss {n}"));
         }
-        if self.cutoff != LANGUAGE_CUTOFF {
+        // The cut-off is Whitted's: the path tracer ignores it.
+        if self.cutoff != LANGUAGE_CUTOFF && self.integrator == Integrator::Whitted {
             parts.push(format!("cutoff {:.1e}", self.cutoff));
         }
         parts.join(", ")
@@ -246,10 +297,16 @@ impl Setting {
         } else {
             format!(", cutoff: {}", self.cutoff)
         };
-        let mut block = format!(
-            "render {{ {sampling}, max_depth: {}{cutoff} }}",
-            self.max_depth
-        );
+        let mut block = match self.integrator {
+            Integrator::Path(p) => format!(
+                "render {{ {sampling}, integrator: path(samples: {}, bounces: {}, roulette: {}) }}",
+                p.samples, p.bounces, p.roulette
+            ),
+            Integrator::Whitted => format!(
+                "render {{ {sampling}, max_depth: {}{cutoff} }}",
+                self.max_depth
+            ),
+        };
         let mut also = Vec::new();
         if let Some(n) = self.light_samples {
             also.push(format!("every area_light {{ samples: {n} }}"));
@@ -279,6 +336,7 @@ pub(crate) fn used_knobs(effects: &Effects) -> Vec<Knob> {
             Knob::LightSamples => effects.soft_shadows,
             Knob::GlossSamples => whitted && effects.glossy,
             Knob::MaxDepth | Knob::Cutoff => whitted && (effects.reflection || effects.refraction),
+            Knob::PathSamples | Knob::Bounces => !whitted,
         })
         .collect()
 }
@@ -317,6 +375,22 @@ pub(crate) fn reference_setting(
             }
             Knob::MaxDepth => r.max_depth = REFERENCE_MAX_DEPTH.max(own.max_depth).min(MAX_DEPTH),
             Knob::Cutoff => r.cutoff = 0.0,
+            Knob::PathSamples => {
+                if let Some(s) = r.with_path(|p| PathTracing {
+                    samples: REFERENCE_PATH_SAMPLES.max(p.samples).min(256),
+                    ..p
+                }) {
+                    r = s;
+                }
+            }
+            Knob::Bounces => {
+                if let Some(s) = r.with_path(|p| PathTracing {
+                    bounces: REFERENCE_BOUNCES.max(p.bounces).min(MAX_BOUNCES),
+                    ..p
+                }) {
+                    r = s;
+                }
+            }
         }
     }
     r
@@ -387,7 +461,7 @@ mod used_tests {
             soft_shadows: true,
             ..Effects::default()
         };
-        assert_eq!(used_knobs(&whitted), Knob::ALL.to_vec());
+        assert_eq!(used_knobs(&whitted), Knob::ALL[..6].to_vec());
         let path = Effects {
             global_illumination: true,
             ..whitted
@@ -397,8 +471,50 @@ mod used_tests {
             vec![
                 Knob::PixelSamples,
                 Knob::AdaptiveThreshold,
-                Knob::LightSamples
+                Knob::LightSamples,
+                Knob::PathSamples,
+                Knob::Bounces
             ]
+        );
+    }
+
+    #[test]
+    fn the_path_ladders_step_samples_and_bounces_and_only_under_the_path_tracer() {
+        let whitted = Setting {
+            sampling: Sampling::Grid { factor: 2 },
+            max_depth: 5,
+            light_samples: None,
+            gloss_samples: None,
+            cutoff: 0.0,
+            integrator: Integrator::Whitted,
+        };
+        assert!(Knob::PathSamples.ladder(&whitted).is_empty());
+        assert!(Knob::Bounces.ladder(&whitted).is_empty());
+        let path = Setting {
+            integrator: Integrator::Path(PathTracing::DEFAULT),
+            ..whitted
+        };
+        let samples: Vec<u32> = Knob::PathSamples
+            .ladder(&path)
+            .iter()
+            .map(|s| match s.integrator {
+                Integrator::Path(p) => p.samples,
+                Integrator::Whitted => 0,
+            })
+            .collect();
+        assert_eq!(samples, PATH_SAMPLES_LADDER.to_vec());
+        let r = reference_setting(&[Knob::PathSamples, Knob::Bounces], &path, 1, 1);
+        assert_eq!(
+            r.integrator,
+            Integrator::Path(PathTracing {
+                samples: REFERENCE_PATH_SAMPLES,
+                bounces: REFERENCE_BOUNCES,
+                ..PathTracing::DEFAULT
+            })
+        );
+        assert_eq!(
+            path.render_block(),
+            "render { supersampling: 2, integrator: path(samples: 16, bounces: 16, roulette: 3) }"
         );
     }
 }

@@ -12,8 +12,8 @@ use crate::diag::Diagnostic;
 use crate::geometry::shapes::isosurface::Watch;
 use crate::geometry::{Ray, SurfaceHit, World};
 use crate::ir::{
-    Camera, Color, Fade, LightKind, Material, MaterialId, RenderSettings, Sampling, Spot,
-    Visibility,
+    Camera, Color, Fade, Integrator, LightKind, Material, MaterialId, RenderSettings, Sampling,
+    Spot, Visibility,
 };
 
 /// A light prepared for shading: sample positions are generated per shading point.
@@ -102,6 +102,8 @@ pub struct Quality {
     pub cutoff: f64,
     /// Rays per glossy lobe of every material; `None` keeps each material's own.
     pub gloss_samples: Option<u32>,
+    /// How a camera ray's light is found (the path tracer's samples and bounces).
+    pub integrator: Integrator,
 }
 
 impl Quality {
@@ -112,6 +114,7 @@ impl Quality {
             max_depth: settings.max_depth,
             cutoff: settings.cutoff,
             gloss_samples: None,
+            integrator: settings.integrator,
         }
     }
 }
@@ -245,6 +248,7 @@ impl Prepared {
             sampling: q.sampling,
             max_depth: q.max_depth,
             cutoff: q.cutoff,
+            integrator: q.integrator,
             ..self.settings.clone()
         };
         validate::settings(&settings)?;

@@ -278,6 +278,27 @@ pub(crate) fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
             format!("use at most {MAX_PIXEL_SAMPLES_PER_AXIS} samples per axis"),
         );
     }
+    if let crate::ir::Integrator::Path(p) = s.integrator {
+        use crate::ir::limits::{MAX_BOUNCES, MAX_PATH_SAMPLES, MAX_PIXEL_PATHS};
+        let paths = u64::from(factor) * u64::from(factor) * u64::from(p.samples);
+        if p.samples == 0 || p.samples > MAX_PATH_SAMPLES || p.bounces > MAX_BOUNCES {
+            return too_big(
+                format!(
+                    "a path tracer of {} paths per camera ray and {} bounces",
+                    p.samples, p.bounces
+                ),
+                format!(
+                    "use 1..={MAX_PATH_SAMPLES} paths per camera ray and at most {MAX_BOUNCES} bounces"
+                ),
+            );
+        }
+        if paths > u64::from(MAX_PIXEL_PATHS) {
+            return too_big(
+                format!("{paths} paths per pixel is more than {MAX_PIXEL_PATHS}"),
+                "lower the path tracer's samples or the supersampling".to_string(),
+            );
+        }
+    }
     if !(0.0..=1.0).contains(&s.cutoff) {
         return too_big(
             format!(
@@ -306,4 +327,33 @@ pub(crate) fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ir::{Integrator, PathTracing};
+
+    #[test]
+    fn the_path_tracer_settings_keep_their_budgets() {
+        let path = |samples, bounces, factor| RenderSettings {
+            integrator: Integrator::Path(PathTracing {
+                samples,
+                bounces,
+                roulette: 3,
+            }),
+            sampling: Sampling::Grid { factor },
+            ..RenderSettings::language_defaults()
+        };
+        assert!(settings(&path(16, 16, 4)).is_ok());
+        assert!(settings(&path(256, 256, 16)).is_ok());
+        for bad in [
+            path(0, 16, 1),
+            path(5000, 16, 1),
+            path(16, 300, 1),
+            path(257, 16, 16),
+        ] {
+            assert_eq!(settings(&bad).unwrap_err().code, "rtc::render::limit");
+        }
+    }
 }
