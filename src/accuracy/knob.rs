@@ -36,11 +36,13 @@ pub enum Knob {
     PathSamples,
     /// The path tracer's bounces (`path(bounces: n)`).
     Bounces,
+    /// The bounce from which the path tracer's Russian roulette may end a path.
+    Roulette,
 }
 
 impl Knob {
     /// Every knob, in report order.
-    const ALL: [Knob; 8] = [
+    const ALL: [Knob; 9] = [
         Knob::PixelSamples,
         Knob::AdaptiveThreshold,
         Knob::LightSamples,
@@ -49,6 +51,7 @@ impl Knob {
         Knob::Cutoff,
         Knob::PathSamples,
         Knob::Bounces,
+        Knob::Roulette,
     ];
 
     /// The name in tables and plot legends.
@@ -62,6 +65,7 @@ impl Knob {
             Knob::Cutoff => "cut-off",
             Knob::PathSamples => "path samples",
             Knob::Bounces => "bounces",
+            Knob::Roulette => "roulette",
         }
     }
 
@@ -76,6 +80,7 @@ impl Knob {
             Knob::Cutoff => "cutoff",
             Knob::PathSamples => "path_samples",
             Knob::Bounces => "bounces",
+            Knob::Roulette => "roulette",
         }
     }
 
@@ -137,6 +142,10 @@ impl Knob {
                 .iter()
                 .filter_map(|&bounces| base.with_path(|p| PathTracing { bounces, ..p }))
                 .collect(),
+            Knob::Roulette => ROULETTE_LADDER
+                .iter()
+                .filter_map(|&roulette| base.with_path(|p| PathTracing { roulette, ..p }))
+                .collect(),
         }
     }
 }
@@ -160,6 +169,8 @@ pub const CUTOFF_LADDER: [f64; 7] = [0.1, 0.03, 0.01, 0.003, 0.001, LANGUAGE_CUT
 const PATH_SAMPLES_LADDER: [u32; 6] = [1, 2, 4, 8, 16, 32];
 /// The path tracer's bounces swept; the reference uses [`REFERENCE_BOUNCES`].
 const BOUNCES_LADDER: [u32; 6] = [1, 2, 3, 4, 6, 8];
+/// Roulette starts swept, from early (cheap, noisier) to late; the reference plays none.
+const ROULETTE_LADDER: [u32; 5] = [0, 1, 2, 3, 5];
 /// The reference's paths per camera ray, or the scene's own if more (at most 256, so that the
 /// reference's 16×16 grid stays within the 2^16 paths a pixel may take).
 const REFERENCE_PATH_SAMPLES: u32 = 16;
@@ -261,9 +272,14 @@ impl Setting {
             } => format!("adaptive {min}-{max} t{threshold}"),
         }];
         match self.integrator {
-            Integrator::Path(p) => {
-                parts.push(format!("paths {}, bounces {}", p.samples, p.bounces))
-            }
+            Integrator::Path(p) if p.roulette >= p.bounces => parts.push(format!(
+                "paths {}, bounces {}, no roulette",
+                p.samples, p.bounces
+            )),
+            Integrator::Path(p) => parts.push(format!(
+                "paths {}, bounces {}, roulette {}",
+                p.samples, p.bounces, p.roulette
+            )),
             Integrator::Whitted => parts.push(format!("depth {}", self.max_depth)),
         }
         if let Some(n) = self.light_samples {
@@ -336,7 +352,7 @@ pub(crate) fn used_knobs(effects: &Effects) -> Vec<Knob> {
             Knob::LightSamples => effects.soft_shadows,
             Knob::GlossSamples => whitted && effects.glossy,
             Knob::MaxDepth | Knob::Cutoff => whitted && (effects.reflection || effects.refraction),
-            Knob::PathSamples | Knob::Bounces => !whitted,
+            Knob::PathSamples | Knob::Bounces | Knob::Roulette => !whitted,
         })
         .collect()
 }
@@ -386,6 +402,15 @@ pub(crate) fn reference_setting(
             Knob::Bounces => {
                 if let Some(s) = r.with_path(|p| PathTracing {
                     bounces: REFERENCE_BOUNCES.max(p.bounces).min(MAX_BOUNCES),
+                    ..p
+                }) {
+                    r = s;
+                }
+            }
+            // No roulette: the reference's paths end only at its bounces.
+            Knob::Roulette => {
+                if let Some(s) = r.with_path(|p| PathTracing {
+                    roulette: MAX_BOUNCES,
                     ..p
                 }) {
                     r = s;
@@ -473,7 +498,8 @@ mod used_tests {
                 Knob::AdaptiveThreshold,
                 Knob::LightSamples,
                 Knob::PathSamples,
-                Knob::Bounces
+                Knob::Bounces,
+                Knob::Roulette
             ]
         );
     }
@@ -503,15 +529,17 @@ mod used_tests {
             })
             .collect();
         assert_eq!(samples, PATH_SAMPLES_LADDER.to_vec());
-        let r = reference_setting(&[Knob::PathSamples, Knob::Bounces], &path, 1, 1);
+        let knobs = [Knob::PathSamples, Knob::Bounces, Knob::Roulette];
+        let r = reference_setting(&knobs, &path, 1, 1);
         assert_eq!(
             r.integrator,
             Integrator::Path(PathTracing {
                 samples: REFERENCE_PATH_SAMPLES,
                 bounces: REFERENCE_BOUNCES,
-                ..PathTracing::DEFAULT
+                roulette: MAX_BOUNCES,
             })
         );
+        assert_eq!(Knob::Roulette.ladder(&path).len(), ROULETTE_LADDER.len());
         assert_eq!(
             path.render_block(),
             "render { supersampling: 2, integrator: path(samples: 16, bounces: 16, roulette: 3) }"
