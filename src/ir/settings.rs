@@ -82,6 +82,12 @@ impl PathTracing {
         bounces: 16,
         roulette: 3,
     };
+
+    /// The paths a pixel of `camera_samples` camera samples gets (each carries `samples`);
+    /// the budget `limits::MAX_PIXEL_PATHS` bounds it.
+    pub fn paths_per_pixel(&self, camera_samples: u32) -> u64 {
+        u64::from(camera_samples) * u64::from(self.samples)
+    }
 }
 
 /// The language's default insignificance cut-off: half of the smallest step of the sRGB curve

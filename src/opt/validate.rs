@@ -280,7 +280,7 @@ pub(crate) fn settings(s: &RenderSettings) -> Result<(), Diagnostic> {
     }
     if let crate::ir::Integrator::Path(p) = s.integrator {
         use crate::ir::limits::{MAX_BOUNCES, MAX_PATH_SAMPLES, MAX_PIXEL_PATHS};
-        let paths = u64::from(factor) * u64::from(factor) * u64::from(p.samples);
+        let paths = p.paths_per_pixel(factor * factor);
         if p.samples == 0 || p.samples > MAX_PATH_SAMPLES || p.bounces > MAX_BOUNCES {
             return too_big(
                 format!(

@@ -98,7 +98,7 @@ pub(super) fn check_paths_per_pixel(
         ir::Sampling::Grid { factor } => factor,
         ir::Sampling::Adaptive { max, .. } => max,
     };
-    let total = u64::from(per_axis) * u64::from(per_axis) * u64::from(p.samples);
+    let total = p.paths_per_pixel(per_axis * per_axis);
     if total <= u64::from(MAX_PIXEL_PATHS) {
         return Ok(());
     }
